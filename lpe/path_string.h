@@ -1,0 +1,26 @@
+#pragma once
+// Paths as text, for teaching (`lightpath explain`, `lpe match`) and for tests. Never used in the
+// renderer's hot loop.
+#include <string>
+#include <string_view>
+
+#include "lpe/event.h"
+
+namespace lpe {
+
+// Parses either form, telling them apart by the presence of whitespace or quotes:
+//   compact Heckbert: "ESDL"  -- E camera, D/G/S/s a reflection with that scattering, L emitter,
+//                                B background, R/T a reflection/transmission with no scattering.
+//   tuples:           "C TS TS RD'1' L'key'" -- type letter, scattering letter (`_` or nothing for
+//                                none), optional quoted label; events separated by spaces.
+// Throws SyntaxError naming the position.
+Path parsePath(std::string_view text);
+
+// "ESDL": loses transmission vs reflection and labels (a T event prints its scattering letter).
+std::string toCompactString(const Path& path);
+// "E RS RD'floor' L'key'": lossless; parsePath(toTupleString(p)) == p. Labels cannot contain '.
+std::string toTupleString(const Path& path);
+// The compact form when it loses nothing, the tuple form otherwise: for reports and examples.
+std::string toDisplayString(const Path& path);
+
+}  // namespace lpe

@@ -1,0 +1,46 @@
+// lightpath: a ray tracer for teaching light transport. Every contribution carries its light
+// path; light path expressions split the render into AOVs that sum to the beauty.
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+#include "cli/exit_codes.h"
+#include "cli/explain_command.h"
+#include "cli/lpe_command.h"
+#include "cli/render_command.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"lightpath: a ray tracer that records every contribution's light path (Heckbert's E(S*)(D|G)L)\n"
+                 "and splits the image into AOVs by light path expressions."};
+    app.require_subcommand(1);
+    app.footer(
+        "Examples:\n"
+        "  lightpath render scenes/lecture-room.toml -o out/room.png     beauty + one PNG per AOV\n"
+        "  lightpath explain scenes/lecture-room.toml --pixel 320,240    why a pixel has its colour\n"
+        "  lightpath lpe match 'E(D|G)L' EDL ESDL                        does a path match?\n"
+        "  lightpath lpe check --set classes                             is the AOV set a partition?\n"
+        "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n\n"
+        "Run `lightpath COMMAND --help` for each command's options.");
+    lightpath::addRenderCommand(app);
+    lightpath::addExplainCommand(app);
+    lightpath::addLpeCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::RuntimeError& e) {
+        std::cerr << "lightpath: " << e.what() << "\n";
+        return e.get_exit_code();
+    } catch (const CLI::ParseError& e) {
+        // Wrong arguments are bad input, whatever CLI11's own code for them.
+        app.exit(e);
+        return lightpath::kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "lightpath: error: " << e.what() << "\n";
+        return lightpath::kExitFailure;
+    }
+    return lightpath::kExitOk;
+}

@@ -1,0 +1,87 @@
+#include "cli/render_command.h"
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "cli/exit_codes.h"
+#include "cli/render_setup.h"
+#include "io/image_writer.h"
+
+namespace lightpath {
+namespace {
+
+struct RenderCommand {
+    RenderSetup setup;
+    std::string output;
+    bool stats = false;
+};
+
+void printStats(const RenderStats& stats) {
+    const RayCounters& r = stats.rays;
+    std::printf("rays      camera %llu, shadow %llu, reflection %llu, refraction %llu (total %llu)\n",
+                static_cast<unsigned long long>(r.camera), static_cast<unsigned long long>(r.shadow),
+                static_cast<unsigned long long>(r.reflection), static_cast<unsigned long long>(r.refraction),
+                static_cast<unsigned long long>(r.total()));
+    std::printf("time      %.3f s on %d thread%s: %.0f samples/s, %.2f M rays/s\n", stats.seconds, stats.threads,
+                stats.threads == 1 ? "" : "s", static_cast<double>(stats.samples) / stats.seconds,
+                static_cast<double>(r.total()) / stats.seconds * 1e-6);
+    std::printf("non-finite contributions dropped: %llu\n", static_cast<unsigned long long>(r.nonFinite));
+}
+
+void run(const RenderCommand& command) {
+    const Scene scene = command.setup.loadScene();
+    const AovSet aovs = command.setup.buildAovSet();
+    const RenderOptions options = command.setup.renderOptions();
+    std::unique_ptr<Renderer> renderer;
+    try {
+        renderer = std::make_unique<Renderer>(scene, aovs, options);
+    } catch (const std::invalid_argument& e) {
+        throw CLI::RuntimeError(e.what(), kExitBadInput);
+    }
+    // Check the output name before spending time on the render.
+    const Film probe(1, 1, aovs.layerNames());
+    try {
+        outputFiles(probe, command.output);
+    } catch (const ImageWriteError& e) {
+        throw CLI::RuntimeError(std::string("-o: ") + e.what(), kExitBadInput);
+    }
+
+    const RenderResult result = renderer->render();
+    ImageMetadata metadata{{"lightpath:scene", command.setup.scenePath},
+                           {"lightpath:integrator", options.integrator},
+                           {"lightpath:spp", std::to_string(options.samplesPerPixel)},
+                           {"lightpath:max_depth", std::to_string(options.maxDepth)},
+                           {"lightpath:seconds", std::to_string(result.stats.seconds)}};
+    for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
+    try {
+        for (const auto& file : writeFilm(result.film, command.output, metadata)) std::cout << "wrote " << file.string() << "\n";
+    } catch (const ImageWriteError& e) {
+        throw CLI::RuntimeError(e.what(), kExitFailure);
+    }
+    if (command.stats) printStats(result.stats);
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+    auto command = std::make_shared<RenderCommand>();
+    CLI::App* sub = app.add_subcommand("render", "Render a scene into a beauty image and its light path AOVs");
+    command->setup.addOptions(*sub);
+    sub->add_option("-o,--output", command->output,
+                    "Output: NAME.exr (one multi-layer EXR) or NAME.png (NAME.png + NAME.<aov>.png)")
+        ->required();
+    sub->add_flag("--stats", command->stats, "Print rays cast by kind, time and throughput");
+    sub->footer(
+        "Without --lpe the `classes` AOVs are written: raycast E(D|G)L, raytrace ES+(D|G)L, mirror ES+L,\n"
+        "emission EL, indirect ES*(D|G)(D|G|S)+L. `rest` (light no AOV accepts) is always written.\n\n"
+        "Examples:\n"
+        "  lightpath render scenes/lecture-room.toml -o out/room.png\n"
+        "  lightpath render scenes/mirror-sphere.toml -o out/m.exr --integrator whitted --max-depth 8 --stats\n"
+        "  lightpath render scenes/szymczak-three-lights.toml -o out/s.png --lpe \"ambient=E.*<L'ambient'>\"\n"
+        "      --lpe \"key=E.*<L'key'>\"\n"
+        "  lightpath render scenes/glass-sphere.toml -o out/g.png --spp 16 --resolution 320x240");
+    sub->callback([command] { run(*command); });
+}
+
+}  // namespace lightpath

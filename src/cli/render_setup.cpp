@@ -1,0 +1,103 @@
+#include "cli/render_setup.h"
+
+#include <iostream>
+
+#include "cli/exit_codes.h"
+#include "lpe/analysis.h"
+#include "lpe/error.h"
+#include "lpe/path_string.h"
+#include "scene/scene_loader.h"
+
+namespace lightpath {
+namespace {
+
+constexpr int kMaxResolution = 16384;
+constexpr int kMaxSamplesPerPixel = 1 << 20;
+
+[[noreturn]] void badInput(const std::string& message) { throw CLI::RuntimeError(message, kExitBadInput); }
+
+}  // namespace
+
+void RenderSetup::addOptions(CLI::App& command) {
+    command.add_option("scene", scenePath, "Scene file (TOML, see scenes/README.md)")->required();
+    command.add_option("--integrator", integrator, "raycast: first hit only; whitted: adds mirror and refraction rays")
+        ->check(CLI::IsMember({"raycast", "whitted"}))
+        ->capture_default_str();
+    command.add_option("--lpe", lpes,
+                       "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "
+                       "classes set unless --aovs classes is also given");
+    command.add_option("--aovs", aovs, "Predefined AOV set: classes (DESIGN.md's partition) or none")
+        ->check(CLI::IsMember({"classes", "none"}));
+    command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel))
+        ->capture_default_str();
+    command.add_option("--max-depth", maxDepth, "Most specular bounces (whitted)")
+        ->check(CLI::Range(0, kMaxDepth))
+        ->capture_default_str();
+    command.add_option("--resolution", resolution,
+                       "Image size WxH, overriding the scene's; the vertical field of view is kept");
+    command.add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+    command.add_option("--seed", seed, "Seed of the per-pixel sample sequences");
+}
+
+Scene RenderSetup::loadScene() const {
+    Scene scene;
+    try {
+        scene = lightpath::loadScene(scenePath);
+    } catch (const SceneError& e) {
+        badInput(e.what());
+    }
+    if (!resolution.empty()) {
+        int width = 0, height = 0;
+        char x = 0, extra = 0;
+        const int read = std::sscanf(resolution.c_str(), "%d%c%d%c", &width, &x, &height, &extra);
+        if (read != 3 || (x != 'x' && x != 'X'))
+            badInput("--resolution: expected WIDTHxHEIGHT such as 640x480, got \"" + resolution + "\"");
+        if (width < 1 || height < 1 || width > kMaxResolution || height > kMaxResolution)
+            badInput("--resolution: each side must be 1.." + std::to_string(kMaxResolution) + ", got " + resolution);
+        scene.camera.width = width;
+        scene.camera.height = height;
+    }
+    return scene;
+}
+
+std::vector<lpe::NamedExpression> RenderSetup::expressions() const {
+    std::vector<lpe::NamedExpression> set;
+    const std::string preset = aovs.empty() ? (lpes.empty() ? "classes" : "none") : aovs;
+    if (preset == "classes") set = lpe::classesSet();
+    for (std::size_t i = 0; i < lpes.size(); ++i) set.push_back(parseNamedExpression(lpes[i], i + 1));
+    return set;
+}
+
+AovSet RenderSetup::buildAovSet() const {
+    const auto set = expressions();
+    try {
+        AovSet aovs(set);
+        if (set.size() > 1) {
+            // Overlapping AOVs count the same light twice; say so with a path both accept.
+            for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps)
+                std::cerr << "warning: AOVs " << set[o.first].name << " and " << set[o.second].name
+                          << " overlap: both accept " << lpe::toCompactString(o.example) << " ("
+                          << lpe::toTupleString(o.example) << "); their sum counts such light twice\n";
+        }
+        return aovs;
+    } catch (const lpe::SyntaxError& e) {
+        for (const auto& expression : set)
+            if (expression.expression == e.text()) badInput("--lpe " + expression.name + ": " + e.what());
+        badInput(e.what());
+    } catch (const std::exception& e) {
+        badInput(std::string("--lpe: ") + e.what());
+    }
+}
+
+RenderOptions RenderSetup::renderOptions() const {
+    RenderOptions options;
+    options.integrator = integrator;
+    options.maxDepth = maxDepth;
+    options.samplesPerPixel = samplesPerPixel;
+    options.threads = threads;
+    options.seed = seed;
+    return options;
+}
+
+}  // namespace lightpath

@@ -1,0 +1,35 @@
+#pragma once
+// The options `render` and `explain` share, and how they become a scene, an AOV set and render
+// options. Every error here is the user's input: it is reported as a CLI::Error with exit code 2.
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace lightpath {
+
+struct RenderSetup {
+    std::string scenePath;
+    std::string integrator = "whitted";
+    std::vector<std::string> lpes;   // [name=]EXPR
+    std::string aovs;                // "classes", "none" or empty (classes unless --lpe is given)
+    int samplesPerPixel = 1;
+    int maxDepth = 5;
+    int threads = 0;
+    std::uint64_t seed = 0;
+    std::string resolution;          // WxH, empty for the scene's
+
+    void addOptions(CLI::App& command);
+
+    Scene loadScene() const;                           // with --resolution applied
+    std::vector<lpe::NamedExpression> expressions() const;
+    AovSet buildAovSet() const;                        // warns on stderr when AOVs overlap
+    RenderOptions renderOptions() const;
+};
+
+}  // namespace lightpath

@@ -1,0 +1,26 @@
+#pragma once
+// Ray-primitive intersection tests (Szymczak, "Ray-primitive intersections"; Magnusson,
+// "Intersection testing"). Each returns the smallest t in (tMin, tMax), or a negative number for
+// no hit. Only intersection: normals and hit points are the caller's job.
+#include "geometry/shapes.h"
+#include "math/ray.h"
+
+namespace lightpath {
+
+inline constexpr float kNoHit = -1.0f;
+
+// Numerically careful ray/sphere: the discriminant from r^2 - |f - (f.d)d|^2 instead of
+// b^2 - 4ac, and the stable pair of roots q = -(b + sign(b) sqrt(disc)), t0 = c/q, t1 = q
+// (Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems 2019).
+float intersectSphere(const Ray& ray, const Sphere& sphere, float tMin);
+
+float intersectPlane(const Ray& ray, const Plane& plane, float tMin);
+
+// Watertight ray/triangle (Woop, Benthin and Wald, JCGT 2013): no edge is ever missed between two
+// triangles that share it, and no scale-dependent determinant threshold.
+float intersectTriangle(const Ray& ray, const Triangle& triangle, float tMin);
+
+Vec3 sphereNormal(const Sphere& sphere, const Vec3& point);
+Vec3 triangleNormal(const Triangle& triangle);
+
+}  // namespace lightpath

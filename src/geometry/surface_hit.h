@@ -1,0 +1,20 @@
+#pragma once
+#include <cstdint>
+
+#include "math/types.h"
+
+namespace lightpath {
+
+enum class ShapeKind : std::uint8_t { Sphere, Plane, Triangle };
+
+// The closest intersection of a ray with the scene.
+struct SurfaceHit {
+    float t = 0.0f;
+    Vec3 point{0.0f};
+    Vec3 normal{0.0f};      // unit geometric normal as the shape defines it (outward for spheres)
+    std::uint32_t object = 0;
+    ShapeKind shape = ShapeKind::Sphere;
+    std::uint32_t primitive = 0;  // index within its shape array
+};
+
+}  // namespace lightpath

@@ -1,0 +1,42 @@
+#pragma once
+// The events of the light path currently being traced, kept on a fixed-size stack so recording
+// costs no allocation. Only `lightpath explain` ever turns them into strings.
+#include <array>
+#include <cassert>
+#include <cstddef>
+#include <cstdint>
+
+#include "lpe/event.h"
+
+namespace lightpath {
+
+// What an event touched: a scene object or light index, or one of the special subjects.
+inline constexpr std::int32_t kSubjectNone = -1;     // the camera, the background
+inline constexpr std::int32_t kSubjectAmbient = -2;  // the ambient term ka * Ia
+
+struct PathEvent {
+    lpe::EventType type = lpe::EventType::Camera;
+    lpe::Scatter scatter = lpe::Scatter::None;
+    std::int32_t subject = kSubjectNone;
+};
+
+// Longest recorded path: the camera, kMaxDepth specular bounces, one surface and the light.
+inline constexpr int kMaxDepth = 64;
+inline constexpr std::size_t kMaxPathEvents = kMaxDepth + 4;
+
+class PathRecord {
+public:
+    void push(const PathEvent& event) {
+        assert(size_ < events_.size());
+        events_[size_++] = event;
+    }
+    void pop() { --size_; }
+    std::size_t size() const { return size_; }
+    const PathEvent& operator[](std::size_t i) const { return events_[i]; }
+
+private:
+    std::array<PathEvent, kMaxPathEvents> events_{};
+    std::size_t size_ = 0;
+};
+
+}  // namespace lightpath

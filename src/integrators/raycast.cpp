@@ -1,0 +1,26 @@
+#include "integrators/raycast.h"
+
+#include "integrators/local_illumination.h"
+
+namespace lightpath {
+
+void addBackground(lpe::Automaton::State state, const Rgb& throughput, Tracer& tracer) {
+    const Rgb& background = tracer.context.scene.background;
+    if (isBlack(background)) return;
+    tracer.emit(state, {lpe::EventType::Background, lpe::Scatter::None, kSubjectNone},
+                tracer.context.symbols.background, throughput * background);
+}
+
+void RaycastIntegrator::traceCameraRay(const Ray& ray, lpe::Automaton::State state, Tracer& tracer) const {
+    const auto hit = tracer.context.geometry.intersect(ray);
+    if (!hit) {
+        addBackground(state, Rgb{1.0f}, tracer);
+        return;
+    }
+    // N points to the side the ray came from (Szymczak: "N should point to the side containing
+    // the viewpoint").
+    const Vec3 normal = glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
+    addLocalIllumination(*hit, normal, -ray.direction, state, Rgb{1.0f}, tracer);
+}
+
+}  // namespace lightpath

@@ -1,0 +1,86 @@
+#include "integrators/whitted.h"
+
+#include <cmath>
+
+#include "geometry/ray_offset.h"
+#include "integrators/local_illumination.h"
+#include "integrators/raycast.h"
+
+namespace lightpath {
+namespace {
+
+// Snell's law for unit vectors; false on total internal reflection. `normal` faces the incoming
+// ray and eta = n_incident / n_transmitted.
+bool refractDirection(const Vec3& incident, const Vec3& normal, float eta, Vec3& transmitted) {
+    const float cosIncident = -glm::dot(incident, normal);
+    const float sin2Transmitted = eta * eta * (1.0f - cosIncident * cosIncident);
+    if (sin2Transmitted >= 1.0f) return false;
+    const float cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
+    transmitted = glm::normalize(eta * incident + (eta * cosIncident - cosTransmitted) * normal);
+    return true;
+}
+
+Ray spawnRay(const Vec3& point, const Vec3& sideNormal, const Vec3& direction) {
+    Ray ray;
+    ray.origin = offsetRayOrigin(point, sideNormal);
+    ray.direction = direction;
+    return ray;
+}
+
+}  // namespace
+
+void WhittedIntegrator::traceCameraRay(const Ray& ray, lpe::Automaton::State state, Tracer& tracer) const {
+    trace(ray, state, Rgb{1.0f}, 0, tracer);
+}
+
+void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const Rgb& throughput,
+                              int depth, Tracer& tracer) const {
+    const RenderContext& ctx = tracer.context;
+    const auto hit = ctx.geometry.intersect(ray);
+    if (!hit) {
+        addBackground(state, throughput, tracer);
+        return;
+    }
+    const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
+    const Vec3 normal = entering ? hit->normal : -hit->normal;
+    addLocalIllumination(*hit, normal, -ray.direction, state, throughput, tracer);
+    if (depth >= ctx.maxDepth) return;
+
+    const PhongMaterial& material = ctx.scene.materials[ctx.scene.objects[hit->object].material];
+    const SurfaceSymbols& symbols = ctx.symbols.objects[hit->object];
+    const auto subject = static_cast<std::int32_t>(hit->object);
+    const PathEvent mirrorEvent{lpe::EventType::Reflection, lpe::Scatter::Specular, subject};
+    const Vec3 mirrorDirection = glm::reflect(ray.direction, normal);
+
+    if (!isBlack(material.kr)) {
+        ++tracer.counters.reflection;
+        traceSpecular(spawnRay(hit->point, normal, mirrorDirection), mirrorEvent, symbols.mirror, state,
+                      throughput * material.kr, depth, tracer);
+    }
+    if (!isBlack(material.kt)) {
+        // Entering the surface goes from vacuum (1) into the material (ior), leaving goes back.
+        const float eta = entering ? 1.0f / material.ior : material.ior;
+        Vec3 transmitted;
+        if (refractDirection(ray.direction, normal, eta, transmitted)) {
+            ++tracer.counters.refraction;
+            traceSpecular(spawnRay(hit->point, -normal, transmitted),
+                          {lpe::EventType::Transmission, lpe::Scatter::Specular, subject},
+                          symbols.refraction, state, throughput * material.kt, depth, tracer);
+        } else {
+            // Total internal reflection: the transmitted share is reflected instead.
+            ++tracer.counters.reflection;
+            traceSpecular(spawnRay(hit->point, normal, mirrorDirection), mirrorEvent, symbols.mirror,
+                          state, throughput * material.kt, depth, tracer);
+        }
+    }
+}
+
+void WhittedIntegrator::traceSpecular(const Ray& ray, const PathEvent& event, lpe::Automaton::Symbol symbol,
+                                      lpe::Automaton::State state, const Rgb& throughput, int depth,
+                                      Tracer& tracer) const {
+    tracer.path.push(event);
+    trace(ray, tracer.context.automaton.step(state, symbol), throughput, depth + 1, tracer);
+    tracer.path.pop();
+}
+
+}  // namespace lightpath

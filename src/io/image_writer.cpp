@@ -1,0 +1,112 @@
+#include "io/image_writer.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lightpath {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+fs::path temporaryName(const fs::path& target) {
+    return target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
+}
+
+// One image file: `channels` interleaved values per pixel of type `format`.
+void writeImageFile(const fs::path& target, const fs::path& temporary, const OIIO::ImageSpec& spec,
+                    OIIO::TypeDesc format, const void* data) {
+    auto out = OIIO::ImageOutput::create(target.string());
+    if (!out) throw ImageWriteError(target.string() + ": cannot create an image writer (" + OIIO::geterror() + ")");
+    if (!out->open(temporary.string(), spec) || !out->write_image(format, data) || !out->close()) {
+        const std::string message = out->geterror();
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw ImageWriteError(target.string() + ": cannot write image (" + message + ")");
+    }
+}
+
+void writeExr(const Film& film, const fs::path& target, const fs::path& temporary, const ImageMetadata& metadata) {
+    const std::size_t pixels = static_cast<std::size_t>(film.width()) * static_cast<std::size_t>(film.height());
+    const std::size_t channels = 3 * film.layerCount();
+    OIIO::ImageSpec spec(film.width(), film.height(), static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
+    spec.channelnames.clear();
+    for (std::size_t l = 0; l < film.layerCount(); ++l) {
+        const std::string prefix = l == 0 ? "" : film.layerNames()[l] + ".";
+        for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(prefix + c);
+    }
+    spec.attribute("compression", "zip");
+    for (const auto& [key, value] : metadata) spec.attribute(key, value);
+
+    std::vector<float> interleaved(pixels * channels);
+    for (std::size_t l = 0; l < film.layerCount(); ++l) {
+        const auto layer = film.layer(l);
+        for (std::size_t p = 0; p < pixels; ++p)
+            for (int c = 0; c < 3; ++c) interleaved[p * channels + 3 * l + static_cast<std::size_t>(c)] = layer[p][c];
+    }
+    writeImageFile(target, temporary, spec, OIIO::TypeDesc::FLOAT, interleaved.data());
+}
+
+void writePng(const Film& film, std::size_t layer, const fs::path& target, const fs::path& temporary,
+              const ImageMetadata& metadata) {
+    OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::UINT8);
+    for (const auto& [key, value] : metadata) spec.attribute(key, value);
+    const auto pixels = film.layer(layer);
+    std::vector<unsigned char> encoded(pixels.size() * 3);
+    for (std::size_t p = 0; p < pixels.size(); ++p)
+        for (int c = 0; c < 3; ++c) encoded[p * 3 + static_cast<std::size_t>(c)] = toSrgb8(pixels[p][c]);
+    writeImageFile(target, temporary, spec, OIIO::TypeDesc::UINT8, encoded.data());
+}
+
+}  // namespace
+
+unsigned char toSrgb8(float linear) {
+    const float v = std::isfinite(linear) ? std::clamp(linear, 0.0f, 1.0f) : 0.0f;
+    const float encoded = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+    return static_cast<unsigned char>(std::lround(encoded * 255.0f));
+}
+
+std::vector<fs::path> outputFiles(const Film& film, const fs::path& path) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".exr") return {path};
+    if (ext != ".png")
+        throw ImageWriteError(path.string() + ": unsupported output extension \"" + path.extension().string() +
+                              "\"; expected .exr (one multi-layer file) or .png (one file per layer)");
+    std::vector<fs::path> files{path};
+    for (std::size_t l = 1; l < film.layerCount(); ++l) {
+        fs::path file = path;
+        file.replace_extension(film.layerNames()[l] + path.extension().string());
+        files.push_back(file);
+    }
+    return files;
+}
+
+std::vector<fs::path> writeFilm(const Film& film, const fs::path& path, const ImageMetadata& metadata) {
+    const std::vector<fs::path> targets = outputFiles(film, path);
+    std::vector<fs::path> temporaries;
+    try {
+        if (path.has_parent_path()) fs::create_directories(path.parent_path());
+        for (std::size_t i = 0; i < targets.size(); ++i) {
+            temporaries.push_back(temporaryName(targets[i]));
+            if (lowerExtension(path) == ".exr") writeExr(film, targets[i], temporaries[i], metadata);
+            else writePng(film, i, targets[i], temporaries[i], metadata);
+        }
+        for (std::size_t i = 0; i < targets.size(); ++i) fs::rename(temporaries[i], targets[i]);
+    } catch (const std::exception& e) {
+        std::error_code ignored;
+        for (const fs::path& t : temporaries) fs::remove(t, ignored);
+        if (dynamic_cast<const ImageWriteError*>(&e)) throw;
+        throw ImageWriteError(path.string() + ": " + e.what());
+    }
+    return targets;
+}
+
+}  // namespace lightpath

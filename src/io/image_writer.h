@@ -1,0 +1,36 @@
+#pragma once
+// Writes a film with OpenImageIO (DESIGN.md, "Output"):
+//   NAME.exr  one multi-layer EXR: beauty as R,G,B and each other layer as <layer>.R/.G/.B, the
+//             metadata as header attributes;
+//   NAME.png  the beauty, plus NAME.<layer>.png per other layer, clamped and sRGB-encoded.
+// Every file is written under a temporary name in the same folder and renamed only when all were
+// written, so a failed run leaves no half-written file and keeps any older image of that name.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "film/film.h"
+
+namespace lightpath {
+
+class ImageWriteError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// The files that `writeFilm` would produce for `path`, beauty first. Throws ImageWriteError for
+// an extension other than .exr or .png.
+std::vector<std::filesystem::path> outputFiles(const Film& film, const std::filesystem::path& path);
+
+// Returns the files written.
+std::vector<std::filesystem::path> writeFilm(const Film& film, const std::filesystem::path& path,
+                                             const ImageMetadata& metadata);
+
+// The sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], in 0..255.
+unsigned char toSrgb8(float linear);
+
+}  // namespace lightpath

@@ -1,0 +1,112 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "math/random.h"
+
+namespace lightpath {
+namespace {
+
+constexpr int kTileSize = 16;
+
+}  // namespace
+
+Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options)
+    : scene_(scene),
+      aovs_(aovs),
+      options_(options),
+      geometry_(scene.spheres, scene.planes, scene.triangles),
+      symbols_(scene, aovs.automaton()),
+      camera_(scene.camera),
+      integrator_(makeIntegrator(options.integrator)),
+      context_{scene_, geometry_, aovs_.automaton(), symbols_, options.maxDepth} {
+    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast or whitted");
+    if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
+        throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
+    if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+}
+
+void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
+    const int spp = options_.samplesPerPixel;
+    for (int s = 0; s < spp; ++s) {
+        // One sample goes through the pixel centre, as in the lecture; more are jittered within it.
+        float dx = 0.5f, dy = 0.5f;
+        if (spp > 1) {
+            Pcg32 rng = pixelSampleRng(x, y, s, options_.seed);
+            dx = rng.nextFloat();
+            dy = rng.nextFloat();
+        }
+        const Ray ray = camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+        ++tracer.counters.camera;
+        tracer.path.push({lpe::EventType::Camera, lpe::Scatter::None, kSubjectNone});
+        integrator_->traceCameraRay(ray, context_.automaton.step(context_.automaton.start(), symbols_.camera), tracer);
+        tracer.path.pop();
+    }
+    const float weight = 1.0f / static_cast<float>(spp);
+    for (Rgb& layer : layers) layer *= weight;
+}
+
+RenderResult Renderer::render() const {
+    const auto started = std::chrono::steady_clock::now();
+    const int width = camera_.width(), height = camera_.height();
+    Film film(width, height, aovs_.layerNames());
+    const int tilesX = (width + kTileSize - 1) / kTileSize;
+    const int tilesY = (height + kTileSize - 1) / kTileSize;
+    const int tileCount = tilesX * tilesY;
+    int threadCount = options_.threads > 0 ? options_.threads : static_cast<int>(std::thread::hardware_concurrency());
+    threadCount = std::clamp(threadCount, 1, std::max(1, tileCount));
+
+    std::atomic<int> nextTile{0};
+    std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
+    auto work = [&](int worker) {
+        std::vector<Rgb> layers(film.layerCount());
+        ContributionSink sink(layers);
+        Tracer tracer(context_, sink, counters[static_cast<std::size_t>(worker)]);
+        // Tiles are handed out dynamically; each pixel is written by exactly one worker.
+        for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
+            const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+            for (int y = y0; y < std::min(y0 + kTileSize, height); ++y) {
+                for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+                    std::fill(layers.begin(), layers.end(), Rgb{0.0f});
+                    renderPixel(x, y, layers, tracer);
+                    for (std::size_t l = 0; l < layers.size(); ++l) film.at(l, x, y) = layers[l];
+                }
+            }
+        }
+    };
+    std::vector<std::jthread> workers;
+    for (int w = 1; w < threadCount; ++w) workers.emplace_back(work, w);
+    work(0);
+    workers.clear();
+
+    RenderStats stats;
+    for (const RayCounters& c : counters) stats.rays += c;
+    stats.samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+                    static_cast<std::uint64_t>(options_.samplesPerPixel);
+    stats.threads = threadCount;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return {std::move(film), stats};
+}
+
+std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {
+    if (x < 0 || y < 0 || x >= camera_.width() || y >= camera_.height())
+        throw std::invalid_argument("pixel " + std::to_string(x) + "," + std::to_string(y) +
+                                    " is outside the " + std::to_string(camera_.width()) + "x" +
+                                    std::to_string(camera_.height()) + " image");
+    std::vector<Rgb> layers(aovs_.layerCount());
+    std::vector<LoggedContribution> log;
+    ContributionSink sink(layers, &log);
+    RayCounters counters;
+    Tracer tracer(context_, sink, counters);
+    renderPixel(x, y, layers, tracer);
+    // Logged values are per sample; scale them like the pixel so they sum to it.
+    const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
+    for (LoggedContribution& c : log) c.value *= weight;
+    return log;
+}
+
+}  // namespace lightpath

@@ -1,0 +1,64 @@
+#pragma once
+// Turns a scene and a set of outputs into a film: camera rays per pixel, tiles handed out to
+// worker threads, every pixel's samples drawn from its own deterministic sequence so the image is
+// bit-identical for any number of threads.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "film/film.h"
+#include "geometry/scene_geometry.h"
+#include "integrators/contribution_sink.h"
+#include "integrators/event_symbols.h"
+#include "integrators/integrator.h"
+#include "integrators/ray_counters.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+
+namespace lightpath {
+
+struct RenderOptions {
+    std::string integrator = "whitted";
+    int maxDepth = 5;
+    int samplesPerPixel = 1;
+    int threads = 0;  // 0: all hardware threads
+    std::uint64_t seed = 0;
+};
+
+struct RenderStats {
+    RayCounters rays;
+    double seconds = 0.0;
+    std::uint64_t samples = 0;
+    int threads = 1;
+};
+
+struct RenderResult {
+    Film film;
+    RenderStats stats;
+};
+
+class Renderer {
+public:
+    // Throws std::invalid_argument for an unknown integrator or an option out of range.
+    Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options);
+
+    RenderResult render() const;
+    // Every contribution to pixel (x, y), in the order the integrator produced them.
+    std::vector<LoggedContribution> explainPixel(int x, int y) const;
+
+private:
+    void renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const;
+
+    const Scene& scene_;
+    const AovSet& aovs_;
+    RenderOptions options_;
+    SceneGeometry geometry_;
+    EventSymbols symbols_;
+    PinholeCamera camera_;
+    std::unique_ptr<Integrator> integrator_;
+    RenderContext context_;
+};
+
+}  // namespace lightpath

@@ -1,0 +1,43 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geometry/shapes.h"
+#include "math/types.h"
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/material.h"
+
+namespace lightpath {
+
+// One named thing in the scene file: a sphere, a plane, a triangle (later a mesh). Its label in
+// light paths is its name, or its material's name when it has none.
+struct SceneObject {
+    std::string name;
+    std::uint32_t material = 0;
+};
+
+// Everything a scene file describes, as plain data.
+struct Scene {
+    std::filesystem::path source;
+    CameraDescription camera;
+    Rgb background{0.0f};  // radiance of rays that escape (a `B` event)
+    Rgb ambient{0.0f};     // Ia of the illumination formula (an `L'ambient'` event)
+
+    std::vector<PhongMaterial> materials;
+    std::vector<PointLight> lights;
+    std::vector<SceneObject> objects;
+
+    std::vector<Sphere> spheres;
+    std::vector<Plane> planes;
+    std::vector<Triangle> triangles;
+
+    const std::string& labelOf(std::uint32_t object) const {
+        const SceneObject& o = objects[object];
+        return o.name.empty() ? materials[o.material].name : o.name;
+    }
+};
+
+}  // namespace lightpath

@@ -1,0 +1,110 @@
+// DESIGN.md's central promise: the AOVs and `rest` sum to the beauty, for every shipped scene and
+// every integrator; `rest` is zero for the `classes` partition.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "lpe/analysis.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace lightpath {
+namespace {
+
+std::vector<std::filesystem::path> shippedScenes() {
+    std::vector<std::filesystem::path> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes"))
+        if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+Film renderSmall(const std::filesystem::path& file, const AovSet& aovs, const std::string& integrator,
+                 int threads = 0) {
+    Scene scene = loadScene(file);
+    // Keep the scene's aspect ratio at about 64 pixels wide.
+    scene.camera.height = std::max(1, scene.camera.height * 64 / scene.camera.width);
+    scene.camera.width = 64;
+    RenderOptions options;
+    options.integrator = integrator;
+    options.samplesPerPixel = 2;
+    options.threads = threads;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+// Sum of every layer but the beauty, against the beauty, per pixel and channel.
+void checkLayersSumToBeauty(const Film& film) {
+    double worst = 0.0;
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            Rgb sum{0.0f};
+            for (std::size_t l = 1; l < film.layerCount(); ++l) sum += film.at(l, x, y);
+            const Rgb beauty = film.at(0, x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double error = std::fabs(double(sum[c]) - double(beauty[c]));
+                const double tolerance = 1e-5 * std::fabs(double(beauty[c])) + 1e-7;
+                worst = std::max(worst, error / tolerance);
+            }
+        }
+    }
+    CHECK(worst <= 1.0);
+}
+
+TEST_CASE("every shipped scene: the classes AOVs sum to the beauty and rest is zero") {
+    const AovSet aovs(lpe::classesSet());
+    const auto scenes = shippedScenes();
+    REQUIRE(scenes.size() >= 5);
+    for (const auto& file : scenes) {
+        for (const char* integrator : {"raycast", "whitted"}) {
+            CAPTURE(file.filename().string());
+            CAPTURE(integrator);
+            const Film film = renderSmall(file, aovs, integrator);
+            checkLayersSumToBeauty(film);
+            const auto rest = film.layer(film.layerCount() - 1);
+            CHECK(std::all_of(rest.begin(), rest.end(), [](const Rgb& v) { return v == Rgb{0.0f}; }));
+            const auto beauty = film.layer(0);
+            CHECK(std::any_of(beauty.begin(), beauty.end(), [](const Rgb& v) { return v != Rgb{0.0f}; }));
+        }
+    }
+}
+
+TEST_CASE("every shipped scene: a partial set plus rest sums to the beauty") {
+    // Two AOVs that cover only part of the light; rest must carry everything else.
+    const AovSet aovs({{"ambient", "E.*<L'ambient'>"}, {"highlights", "E S* G L"}});
+    for (const auto& file : shippedScenes()) {
+        CAPTURE(file.filename().string());
+        checkLayersSumToBeauty(renderSmall(file, aovs, "whitted"));
+    }
+}
+
+TEST_CASE("the lecture room: all default AOVs but indirect are non-zero under Whitted") {
+    const AovSet aovs(lpe::classesSet());
+    const Film film = renderSmall(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml", aovs, "whitted");
+    const auto names = aovs.layerNames();
+    for (std::size_t l = 1; l + 1 < film.layerCount(); ++l) {
+        CAPTURE(names[l]);
+        const auto layer = film.layer(l);
+        const bool nonZero = std::any_of(layer.begin(), layer.end(), [](const Rgb& v) { return v != Rgb{0.0f}; });
+        CHECK(nonZero == (names[l] != "indirect"));
+    }
+}
+
+TEST_CASE("the image is bit-identical for 1, 2 and 5 threads") {
+    const AovSet aovs(lpe::classesSet());
+    const auto file = std::filesystem::path(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml");
+    const Film one = renderSmall(file, aovs, "whitted", 1);
+    for (int threads : {2, 5}) {
+        const Film many = renderSmall(file, aovs, "whitted", threads);
+        for (std::size_t l = 0; l < one.layerCount(); ++l) {
+            const auto a = one.layer(l), b = many.layer(l);
+            CHECK(std::equal(a.begin(), a.end(), b.begin()));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lightpath
