@@ -8,7 +8,7 @@
 namespace lightpath {
 
 // A scene file that cannot be used. what() reads "FILE:LINE:COLUMN: KEY: what was expected",
-// e.g. "scenes/a.toml:12:10: sphere[2].radius: expected a positive number, got -1".
+// e.g. "scenes/a.toml:12:10: spheres[2].radius: expected a positive number, got -1".
 class SceneError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;

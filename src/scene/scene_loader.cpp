@@ -1,0 +1,266 @@
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+#include "scene/spelling.h"
+#include "scene/toml_reader.h"
+
+namespace lightpath {
+namespace {
+
+// Names become labels in light path expressions, written between single quotes (<L'key'>), so
+// they are kept to characters that can always be typed there.
+bool isLabelCharacter(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-' || c == '.';
+}
+
+bool isValidName(std::string_view name) {
+    return !name.empty() && std::all_of(name.begin(), name.end(), isLabelCharacter);
+}
+
+constexpr std::string_view kNameCharacters = "letters, digits, '_', '-' or '.'";
+
+std::string readName(const TomlValue& value) {
+    std::string name = value.string();
+    if (!isValidName(name)) value.expected("a name of " + std::string(kNameCharacters));
+    return name;
+}
+
+// The cross product of two parallel vectors vanishes; compare against their lengths so the test
+// does not depend on how long the student wrote them.
+bool areParallel(const Vec3& a, const Vec3& b) {
+    const glm::dvec3 da(a), db(b);
+    return glm::length(glm::cross(da, db)) <= 1e-6 * glm::length(da) * glm::length(db);
+}
+
+Vec3 readNonZeroVector(const TomlValue& value) {
+    const Vec3 v = value.vec3();
+    if (v == Vec3(0.0f)) value.fail("expected a non-zero vector, got " + formatVec3(v));
+    return v;
+}
+
+CameraDescription readCamera(const TomlTable& table) {
+    table.allowOnly({"eye", "look_at", "up", "fov", "resolution"});
+    CameraDescription camera;
+    if (auto eye = table.find("eye")) camera.eye = eye->vec3();
+    if (auto lookAt = table.find("look_at")) camera.lookAt = lookAt->vec3();
+    if (camera.lookAt == camera.eye) {
+        table.failAtKey("look_at", "expected a point other than camera.eye, got the same point " +
+                                       formatVec3(camera.eye));
+    }
+    if (auto up = table.find("up")) camera.up = readNonZeroVector(*up);
+    const Vec3 view = camera.lookAt - camera.eye;
+    if (areParallel(camera.up, view)) {
+        table.failAtKey("up", "expected a vector not parallel to look_at - eye = " +
+                                  formatVec3(view) + ", got " + formatVec3(camera.up));
+    }
+    if (auto fov = table.find("fov")) {
+        constexpr NumberRule openDegrees{0.0, 180.0, true, true,
+                                         "a vertical field of view in degrees, 0 < fov < 180"};
+        camera.verticalFovDegrees = fov->number(openDegrees);
+    }
+    if (auto resolution = table.find("resolution")) {
+        constexpr int maxPixels = 16384;
+        const std::vector<TomlValue> size = resolution->array(2, "2 integers [width, height]");
+        camera.width = size[0].integer(1, maxPixels);
+        camera.height = size[1].integer(1, maxPixels);
+    }
+    return camera;
+}
+
+void readWorld(const TomlTable& table, Scene& scene) {
+    table.allowOnly({"background", "ambient"});
+    if (auto background = table.find("background")) scene.background = background->rgb();
+    if (auto ambient = table.find("ambient")) scene.ambient = ambient->rgb();
+}
+
+// Keys the file leaves out keep the defaults of PhongMaterial (material.h).
+PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
+    table.allowOnly({"ka", "kd", "ks", "n", "kr", "kt", "ior"});
+    PhongMaterial material;
+    material.name = name;
+    if (auto ka = table.find("ka")) material.ka = ka->rgb();
+    if (auto kd = table.find("kd")) material.kd = kd->rgb();
+    if (auto ks = table.find("ks")) material.ks = ks->rgb();
+    if (auto n = table.find("n")) material.n = n->number(nonNegative);
+    if (auto kr = table.find("kr")) material.kr = kr->rgb();
+    if (auto kt = table.find("kt")) material.kt = kt->rgb();
+    if (auto ior = table.find("ior")) material.ior = ior->number(positive);
+    return material;
+}
+
+// Materials keep the order in which the file defines them.
+std::vector<PhongMaterial> readMaterials(const TomlTable& table) {
+    std::vector<PhongMaterial> materials;
+    for (const auto& [name, value] : table.entries()) {
+        if (!isValidName(name)) {
+            value.fail("expected a material name of " + std::string(kNameCharacters) + ", got \"" +
+                       name + "\"");
+        }
+        materials.push_back(readMaterial(name, value.table()));
+    }
+    return materials;
+}
+
+// The label 'ambient' belongs to the ambient term of the illumination formula (DESIGN.md).
+constexpr std::string_view kAmbientLabel = "ambient";
+
+PointLight readLight(const TomlTable& table) {
+    table.allowOnly({"name", "type", "position", "intensity", "attenuation"});
+    PointLight light;
+    if (auto name = table.find("name")) {
+        light.name = readName(*name);
+        if (light.name == kAmbientLabel) {
+            name->fail("expected a light name other than \"ambient\", which is reserved for the "
+                       "ambient term");
+        }
+    }
+    if (auto type = table.find("type")) {
+        // Only point lights exist so far; area lights are planned.
+        const std::vector<std::string> knownTypes{"point"};
+        const std::string typeName = type->string();
+        if (typeName != "point") {
+            type->fail(unknownNameMessage("light type", typeName, knownTypes, ListKnown::always));
+        }
+    }
+    light.position = table.required("position").vec3();
+    if (auto intensity = table.find("intensity")) light.intensity = intensity->rgb();
+    if (auto attenuation = table.find("attenuation")) {
+        light.attenuation = attenuation->vec3(nonNegative);
+        if (light.attenuation == Vec3(0.0f)) {
+            attenuation->fail("expected c0, c1, c2 not all zero (1 / (c0 + c1 d + c2 d^2) would "
+                              "divide by zero), got " + formatVec3(light.attenuation));
+        }
+    }
+    return light;
+}
+
+std::uint32_t findMaterial(const TomlValue& reference,
+                           const std::vector<PhongMaterial>& materials) {
+    const std::string name = reference.string();
+    std::vector<std::string> known;
+    for (std::uint32_t i = 0; i < materials.size(); ++i) {
+        if (materials[i].name == name) return i;
+        known.push_back(materials[i].name);
+    }
+    std::sort(known.begin(), known.end());
+    reference.fail(unknownNameMessage("material", name, known, ListKnown::always));
+}
+
+// Every shape is one scene object: its name (optional) and material are read here; the returned
+// index is what the shape stores in its `object` field.
+std::uint32_t addObject(const TomlTable& table, Scene& scene) {
+    SceneObject object;
+    if (auto name = table.find("name")) object.name = readName(*name);
+    object.material = findMaterial(table.required("material"), scene.materials);
+    scene.objects.push_back(object);
+    return static_cast<std::uint32_t>(scene.objects.size() - 1);
+}
+
+Sphere readSphere(const TomlTable& table, Scene& scene) {
+    table.allowOnly({"name", "center", "radius", "material"});
+    Sphere sphere;
+    sphere.center = table.required("center").vec3();
+    sphere.radius = table.required("radius").number(positive);
+    sphere.object = addObject(table, scene);
+    return sphere;
+}
+
+Plane readPlane(const TomlTable& table, Scene& scene) {
+    table.allowOnly({"name", "point", "normal", "material"});
+    Plane plane;
+    plane.point = table.required("point").vec3();
+    plane.normal = glm::normalize(readNonZeroVector(table.required("normal")));
+    plane.object = addObject(table, scene);
+    return plane;
+}
+
+Triangle readTriangle(const TomlTable& table, Scene& scene) {
+    table.allowOnly({"name", "vertices", "material"});
+    const TomlValue vertices = table.required("vertices");
+    const std::vector<TomlValue> abc = vertices.array(3, "3 points [[x,y,z], [x,y,z], [x,y,z]]");
+    Triangle triangle;
+    triangle.a = abc[0].vec3();
+    triangle.b = abc[1].vec3();
+    triangle.c = abc[2].vec3();
+    // A triangle without area has no normal: the shading would produce NaN.
+    if (areParallel(triangle.b - triangle.a, triangle.c - triangle.a)) {
+        vertices.fail("expected the corners of a triangle, got 3 points on one line");
+    }
+    triangle.object = addObject(table, scene);
+    return triangle;
+}
+
+// The whole file as text. Reading it here (rather than in toml++) lets a missing file report the
+// operating system's reason.
+std::string readFile(const std::filesystem::path& path) {
+    const auto cannotOpen = [&](std::error_code reason) {
+        return SceneError(path.string() + ": cannot open scene file (" + reason.message() + ")");
+    };
+    std::error_code ignored;  // if the check itself fails, opening the file below says why
+    if (std::filesystem::is_directory(path, ignored)) {
+        throw cannotOpen(std::make_error_code(std::errc::is_a_directory));
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw cannotOpen(std::error_code(errno, std::generic_category()));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+toml::table parseFile(const std::filesystem::path& path) {
+    const std::string text = readFile(path);
+    try {
+        return toml::parse(text, path.string());
+    } catch (const toml::parse_error& error) {
+        const toml::source_position& at = error.source().begin;
+        throw SceneError(path.string() + ":" + std::to_string(at.line) + ":" +
+                         std::to_string(at.column) + ": TOML syntax error: " +
+                         std::string(error.description()));
+    }
+}
+
+// Calls `read` on every [[key]] section of the file, in file order.
+template <typename Read>
+void forEachSection(const TomlTable& root, std::string_view key, Read read) {
+    if (auto sections = root.find(key)) {
+        for (const TomlTable& section : sections->tables()) read(section);
+    }
+}
+
+}  // namespace
+
+Scene loadScene(const std::filesystem::path& path) {
+    const toml::table document = parseFile(path);
+    const TomlTable root(document, "");
+    root.allowOnly({"camera", "world", "materials", "lights", "spheres", "planes", "triangles"});
+
+    Scene scene;
+    scene.source = path;
+    if (auto camera = root.find("camera")) scene.camera = readCamera(camera->table());
+    if (auto world = root.find("world")) readWorld(world->table(), scene);
+    if (auto materials = root.find("materials")) {
+        scene.materials = readMaterials(materials->table());
+    }
+    forEachSection(root, "lights", [&](const TomlTable& light) {
+        scene.lights.push_back(readLight(light));
+    });
+    // Objects are numbered spheres first, then planes, then triangles, each in file order.
+    forEachSection(root, "spheres", [&](const TomlTable& sphere) {
+        scene.spheres.push_back(readSphere(sphere, scene));
+    });
+    forEachSection(root, "planes", [&](const TomlTable& plane) {
+        scene.planes.push_back(readPlane(plane, scene));
+    });
+    forEachSection(root, "triangles", [&](const TomlTable& triangle) {
+        scene.triangles.push_back(readTriangle(triangle, scene));
+    });
+    return scene;
+}
+
+}  // namespace lightpath

@@ -1,0 +1,503 @@
+// The scene loader: every shipped scene loads, a written scene reads back exactly, and every
+// kind of mistake a student makes is reported with file, line, column, key path and a message
+// that says what was expected and what was found.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+#include <string_view>
+
+#include "scene/scene_loader.h"
+
+namespace fs = std::filesystem;
+using lightpath::Rgb;
+using lightpath::Scene;
+using lightpath::SceneError;
+using lightpath::Vec3;
+
+namespace {
+
+// Scene files written by one test, in a folder of their own that is removed afterwards. The
+// folder name is random because ctest may run several test processes at once.
+class SceneFiles {
+public:
+    SceneFiles()
+        : dir_(fs::temp_directory_path() /
+               ("lightpath-scene-tests-" + std::to_string(std::random_device{}()))) {
+        fs::create_directories(dir_);
+    }
+    ~SceneFiles() {
+        std::error_code ignored;
+        fs::remove_all(dir_, ignored);
+    }
+    SceneFiles(const SceneFiles&) = delete;
+    SceneFiles& operator=(const SceneFiles&) = delete;
+
+    const fs::path& dir() const { return dir_; }
+
+    fs::path write(std::string_view name, std::string_view text) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path) << text;
+        return path;
+    }
+
+    Scene load(std::string_view text) const {
+        return lightpath::loadScene(write("scene.toml", text));
+    }
+
+    // The error loading `text` gives, with the folder left out: "scene.toml:3:10: key: message".
+    std::string errorOf(std::string_view text) const {
+        try {
+            lightpath::loadScene(write("scene.toml", text));
+        } catch (const SceneError& error) {
+            return withoutFolder(error.what());
+        }
+        return "(loaded without error)";
+    }
+
+    std::string withoutFolder(std::string message) const {
+        const std::string folder = dir_.string() + "/";
+        if (message.starts_with(folder)) message.erase(0, folder.size());
+        return message;
+    }
+
+private:
+    fs::path dir_;
+};
+
+bool hasMirrorMaterial(const Scene& scene) {
+    for (const auto& m : scene.materials) {
+        if (!lightpath::isBlack(m.kr)) return true;
+    }
+    return false;
+}
+
+bool hasGlassMaterial(const Scene& scene) {
+    for (const auto& m : scene.materials) {
+        if (!lightpath::isBlack(m.kt)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("every shipped scene loads and names its lights") {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes")) {
+        if (entry.path().extension() != ".toml") continue;
+        CAPTURE(entry.path().string());
+        Scene scene;
+        REQUIRE_NOTHROW(scene = lightpath::loadScene(entry.path()));
+        CHECK(scene.source == entry.path());
+        CHECK_FALSE(scene.lights.empty());
+        CHECK_FALSE(scene.objects.empty());
+        for (const auto& light : scene.lights) CHECK_FALSE(light.name.empty());
+        ++count;
+    }
+    CHECK(count >= 5);
+}
+
+TEST_CASE("the lecture room has what the default AOVs need") {
+    const Scene scene = lightpath::loadScene(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml");
+    CHECK_FALSE(lightpath::isBlack(scene.background));  // the emission and mirror AOVs see it
+    CHECK_FALSE(lightpath::isBlack(scene.ambient));
+    CHECK(hasMirrorMaterial(scene));  // raytrace and mirror need specular paths
+    CHECK(hasGlassMaterial(scene));
+    CHECK(scene.camera.width == 640);
+    CHECK(scene.camera.height == 480);
+}
+
+// The format reference must not document a file the loader refuses.
+TEST_CASE_FIXTURE(SceneFiles, "the example in scenes/README.md loads as described") {
+    std::ifstream readme(LIGHTPATH_SOURCE_DIR "/scenes/README.md");
+    const std::string text((std::istreambuf_iterator<char>(readme)), {});
+    const std::string fence = "```toml\n";
+    const std::size_t begin = text.find(fence);
+    REQUIRE(begin != std::string::npos);
+    const std::size_t end = text.find("```", begin + fence.size());
+    REQUIRE(end != std::string::npos);
+
+    const Scene scene = load(text.substr(begin + fence.size(), end - begin - fence.size()));
+    REQUIRE(scene.objects.size() == 3);
+    CHECK(scene.labelOf(scene.spheres.at(0).object) == "ball");
+    CHECK(scene.labelOf(scene.planes.at(0).object) == "floor");
+    CHECK(scene.labelOf(scene.triangles.at(0).object) == "red");
+    REQUIRE(scene.lights.size() == 1);
+    CHECK(scene.lights[0].name == "key");
+    CHECK(scene.lights[0].attenuation == Vec3(1, 0.1f, 0.01f));
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a scene reads back with exactly the values written") {
+    const Scene scene = load(R"(
+[camera]
+eye = [1, 2, 3]
+look_at = [0, 0.5, -1]
+up = [0, 2, 0]
+fov = 30.5
+resolution = [320, 200]
+
+[world]
+background = [0.25, 0.5, 0.75]
+ambient = 0.125
+
+[materials.red]
+ka = [0.1, 0, 0]
+kd = [0.7, 0.25, 0.5]
+ks = 0.3
+n = 50
+kr = 0.125
+kt = [0, 0.5, 1]
+ior = 1.25
+
+[materials.plain]
+
+[[lights]]
+name = "key"
+type = "point"
+position = [2, 4, 3]
+intensity = [1, 0.5, 0.25]
+attenuation = [1, 0.1, 0.01]
+
+[[lights]]
+position = [-1, 1, 0]
+intensity = 2
+
+[[spheres]]
+name = "ball"
+center = [0, 1, -2]
+radius = 2
+material = "red"
+
+[[planes]]
+point = [0, -1, 0]
+normal = [0, 3, 4]
+material = "plain"
+
+[[triangles]]
+name = "tri"
+vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]
+material = "red"
+)");
+    CHECK(scene.source == dir() / "scene.toml");
+
+    SUBCASE("camera") {
+        CHECK(scene.camera.eye == Vec3(1, 2, 3));
+        CHECK(scene.camera.lookAt == Vec3(0, 0.5f, -1));
+        CHECK(scene.camera.up == Vec3(0, 2, 0));  // the camera normalises it, not the loader
+        CHECK(scene.camera.verticalFovDegrees == 30.5f);
+        CHECK(scene.camera.width == 320);
+        CHECK(scene.camera.height == 200);
+    }
+    SUBCASE("world: one number is grey") {
+        CHECK(scene.background == Rgb(0.25f, 0.5f, 0.75f));
+        CHECK(scene.ambient == Rgb(0.125f, 0.125f, 0.125f));
+    }
+    SUBCASE("materials, per channel and in file order") {
+        REQUIRE(scene.materials.size() == 2);
+        const auto& red = scene.materials[0];
+        CHECK(red.name == "red");
+        CHECK(red.ka == Rgb(0.1f, 0, 0));
+        CHECK(red.kd == Rgb(0.7f, 0.25f, 0.5f));
+        CHECK(red.ks == Rgb(0.3f, 0.3f, 0.3f));
+        CHECK(red.n == 50.0f);
+        CHECK(red.kr == Rgb(0.125f));
+        CHECK(red.kt == Rgb(0, 0.5f, 1));
+        CHECK(red.ior == 1.25f);
+        CHECK(scene.materials[1].name == "plain");
+    }
+    SUBCASE("lights") {
+        REQUIRE(scene.lights.size() == 2);
+        const auto& key = scene.lights[0];
+        CHECK(key.name == "key");
+        CHECK(key.position == Vec3(2, 4, 3));
+        CHECK(key.intensity == Rgb(1, 0.5f, 0.25f));
+        CHECK(key.attenuation == Vec3(1, 0.1f, 0.01f));
+        CHECK(scene.lights[1].name.empty());
+        CHECK(scene.lights[1].intensity == Rgb(2, 2, 2));
+    }
+    SUBCASE("shapes and their objects") {
+        REQUIRE(scene.objects.size() == 3);
+        REQUIRE(scene.spheres.size() == 1);
+        REQUIRE(scene.planes.size() == 1);
+        REQUIRE(scene.triangles.size() == 1);
+
+        CHECK(scene.spheres[0].center == Vec3(0, 1, -2));
+        CHECK(scene.spheres[0].radius == 2.0f);
+        CHECK(scene.planes[0].point == Vec3(0, -1, 0));
+        CHECK(scene.planes[0].normal.x == 0.0f);
+        CHECK(scene.planes[0].normal.y == doctest::Approx(0.6));
+        CHECK(scene.planes[0].normal.z == doctest::Approx(0.8));
+        CHECK(scene.triangles[0].a == Vec3(0, 0, 0));
+        CHECK(scene.triangles[0].b == Vec3(1, 0, 0));
+        CHECK(scene.triangles[0].c == Vec3(0, 1, 0));
+
+        // Spheres are numbered first, then planes, then triangles.
+        CHECK(scene.spheres[0].object == 0);
+        CHECK(scene.planes[0].object == 1);
+        CHECK(scene.triangles[0].object == 2);
+        CHECK(scene.objects[0].material == 0);
+        CHECK(scene.objects[1].material == 1);
+        CHECK(scene.objects[2].material == 0);
+    }
+    SUBCASE("labels: the object's name, else its material's") {
+        CHECK(scene.labelOf(0) == "ball");
+        CHECK(scene.labelOf(1) == "plain");
+        CHECK(scene.labelOf(2) == "tri");
+    }
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "keys left out take the documented defaults") {
+    const Scene scene = load(R"(
+[materials.plain]
+[[lights]]
+position = [0, 3, 0]
+[[spheres]]
+center = [0, 0, 0]
+radius = 1
+material = "plain"
+)");
+    CHECK(scene.camera.eye == Vec3(0, 0, 5));
+    CHECK(scene.camera.lookAt == Vec3(0, 0, 0));
+    CHECK(scene.camera.up == Vec3(0, 1, 0));
+    CHECK(scene.camera.verticalFovDegrees == 45.0f);
+    CHECK(scene.camera.width == 640);
+    CHECK(scene.camera.height == 480);
+    CHECK(scene.background == Rgb(0));
+    CHECK(scene.ambient == Rgb(0));
+
+    REQUIRE(scene.materials.size() == 1);
+    const auto& plain = scene.materials[0];
+    CHECK(plain.ka == Rgb(0));
+    CHECK(plain.kd == Rgb(0));
+    CHECK(plain.ks == Rgb(0));
+    CHECK(plain.kr == Rgb(0));
+    CHECK(plain.kt == Rgb(0));
+    CHECK(plain.n == 20.0f);
+    CHECK(plain.ior == 1.5f);
+
+    REQUIRE(scene.lights.size() == 1);
+    CHECK(scene.lights[0].name.empty());
+    CHECK(scene.lights[0].intensity == Rgb(1));
+    CHECK(scene.lights[0].attenuation == Vec3(1, 0, 0));
+    CHECK(scene.objects[0].name.empty());
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "an empty file is an empty scene") {
+    const Scene scene = load("# nothing yet\n");
+    CHECK(scene.objects.empty());
+    CHECK(scene.lights.empty());
+    CHECK(scene.materials.empty());
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a TOML syntax error reports toml++'s position and description") {
+    CHECK(errorOf("[camera]\nfov = [1, 2\n") ==
+          "scene.toml:2:13: TOML syntax error: Error while parsing array: encountered "
+          "end-of-file");
+    CHECK(errorOf("[camera]\nfov = 40\nfov = 50\n") ==
+          "scene.toml:3:7: TOML syntax error: Error while parsing key-value pair: cannot "
+          "redefine existing integer 'fov'");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a file that cannot be opened says why") {
+    const fs::path missing = dir() / "missing.toml";
+    CHECK_THROWS_WITH_AS(lightpath::loadScene(missing),
+                         (missing.string() + ": cannot open scene file (No such file or directory)")
+                             .c_str(),
+                         SceneError);
+    CHECK_THROWS_WITH_AS(lightpath::loadScene(dir()),
+                         (dir().string() + ": cannot open scene file (Is a directory)").c_str(),
+                         SceneError);
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "an unknown key is named, with a suggestion when one is close") {
+    CHECK(errorOf("[materials.red]\n[[spheres]]\ncenter = [0, 0, 0]\nraduis = 1\n") ==
+          "scene.toml:4:1: spheres[0].raduis: unknown key \"raduis\"; did you mean \"radius\"?");
+    CHECK(errorOf("[camera]\n  zoom = 2\n") ==
+          "scene.toml:2:3: camera.zoom: unknown key \"zoom\" "
+          "(known: eye, look_at, up, fov, resolution)");
+    CHECK(errorOf("[materials.red]\nkd = 1\nKs = 0.5\n") ==
+          "scene.toml:3:1: materials.red.Ks: unknown key \"Ks\"; did you mean \"ks\"?");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "an unknown top-level table is an error") {
+    CHECK(errorOf("[camera]\nfov = 40\n\n[[sphere]]\nradius = 1\n") ==
+          "scene.toml:4:3: sphere: unknown key \"sphere\"; did you mean \"spheres\"?");
+    CHECK(errorOf("[render]\nspp = 4\n") ==
+          "scene.toml:1:2: render: unknown key \"render\" (known: camera, world, materials, "
+          "lights, spheres, planes, triangles)");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a value of the wrong type says what was expected and found") {
+    CHECK(errorOf("[materials.red]\n[[spheres]]\ncenter = \"origin\"\n") ==
+          "scene.toml:3:10: spheres[0].center: expected an array of 3 numbers, got a string "
+          "(\"origin\")");
+    CHECK(errorOf("[[spheres]]\ncenter = [0, 1]\n") ==
+          "scene.toml:2:10: spheres[0].center: expected an array of 3 numbers, got an array of "
+          "2 elements");
+    CHECK(errorOf("[[spheres]]\ncenter = [0, true, 0]\n") ==
+          "scene.toml:2:14: spheres[0].center[1]: expected a number, got a boolean");
+    CHECK(errorOf("[materials.red]\nkd = \"red\"\n") ==
+          "scene.toml:2:6: materials.red.kd: expected a number or an array of 3 numbers, got a "
+          "string (\"red\")");
+    CHECK(errorOf("[[lights]]\nname = 7\nposition = [0, 0, 0]\n") ==
+          "scene.toml:2:8: lights[0].name: expected a string, got 7");
+    CHECK(errorOf("camera = 5\n") == "scene.toml:1:10: camera: expected a table, got 5");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "single brackets where an array of tables was meant") {
+    CHECK(errorOf("[spheres]\nradius = 1\n") ==
+          "scene.toml:1:1: spheres: expected an array of tables ([[spheres]] sections), got a "
+          "table");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a negative radius is refused") {
+    CHECK(errorOf("[materials.red]\n\n[[spheres]]\ncenter = [0, 0, 0]\nradius = -1\n") ==
+          "scene.toml:5:10: spheres[0].radius: expected a positive number, got -1");
+    CHECK(errorOf("[[spheres]]\ncenter = [0, 0, 0]\nradius = 0.0\n") ==
+          "scene.toml:3:10: spheres[0].radius: expected a positive number, got 0");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "nan and inf are refused by name") {
+    CHECK(errorOf("[[spheres]]\ncenter = [0, 0, 0]\nradius = nan\n") ==
+          "scene.toml:3:10: spheres[0].radius: expected a finite number, got nan");
+    CHECK(errorOf("[materials.red]\nka = [0, -inf, 0]\n") ==
+          "scene.toml:2:10: materials.red.ka[1]: expected a finite number, got -inf");
+    CHECK(errorOf("[camera]\neye = [0, 0, 1e300]\n") ==
+          "scene.toml:2:14: camera.eye[2]: expected a number within single-precision range, "
+          "got 1e+300");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a zero plane normal is refused") {
+    CHECK(errorOf("[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 0, 0]\n") ==
+          "scene.toml:3:10: planes[0].normal: expected a non-zero vector, got [0, 0, 0]");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "the camera's up vector must be usable") {
+    SUBCASE("zero") {
+        CHECK(errorOf("[camera]\nup = [0, 0, 0]\n") ==
+              "scene.toml:2:6: camera.up: expected a non-zero vector, got [0, 0, 0]");
+    }
+    SUBCASE("parallel to the view direction, written") {
+        CHECK(errorOf("[camera]\neye = [0, 0, 5]\nup = [0, 0, -2]\n") ==
+              "scene.toml:3:6: camera.up: expected a vector not parallel to look_at - eye = "
+              "[0, 0, -5], got [0, 0, -2]");
+    }
+    SUBCASE("parallel to the view direction, by default: located at the camera table") {
+        CHECK(errorOf("\n[camera]\neye = [0, 10, 0]\n") ==
+              "scene.toml:2:1: camera.up: expected a vector not parallel to look_at - eye = "
+              "[0, -10, 0], got [0, 1, 0]");
+    }
+    SUBCASE("eye and look_at coincide") {
+        CHECK(errorOf("[camera]\neye = [1, 1, 1]\nlook_at = [1, 1, 1]\n") ==
+              "scene.toml:3:11: camera.look_at: expected a point other than camera.eye, got the "
+              "same point [1, 1, 1]");
+    }
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "the field of view must lie strictly between 0 and 180 degrees") {
+    for (const std::string fov : {"0", "180", "-5", "200.5"}) {
+        CAPTURE(fov);
+        CHECK(errorOf("[camera]\nfov = " + fov + "\n") ==
+              "scene.toml:2:7: camera.fov: expected a vertical field of view in degrees, "
+              "0 < fov < 180, got " + fov);
+    }
+    CHECK(load("[camera]\nfov = 179.5\n").camera.verticalFovDegrees == 179.5f);
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "the resolution must be two integers from 1 to 16384") {
+    CHECK(errorOf("[camera]\nresolution = [0, 480]\n") ==
+          "scene.toml:2:15: camera.resolution[0]: expected an integer from 1 to 16384, got 0");
+    CHECK(errorOf("[camera]\nresolution = [640, 16385]\n") ==
+          "scene.toml:2:20: camera.resolution[1]: expected an integer from 1 to 16384, got "
+          "16385");
+    CHECK(errorOf("[camera]\nresolution = [640.5, 480]\n") ==
+          "scene.toml:2:15: camera.resolution[0]: expected an integer from 1 to 16384, got "
+          "640.5");
+    CHECK(errorOf("[camera]\nresolution = 640\n") ==
+          "scene.toml:2:14: camera.resolution: expected an array of 2 integers [width, height], "
+          "got 640");
+    const Scene extreme = load("[camera]\nresolution = [1, 16384]\n");
+    CHECK(extreme.camera.width == 1);
+    CHECK(extreme.camera.height == 16384);
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "an unknown material gets a suggestion and the list of known ones") {
+    const std::string materials = "[materials.red]\n[materials.grey]\n";
+    CHECK(errorOf(materials +
+                  "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"rde\"\n") ==
+          "scene.toml:6:12: spheres[0].material: unknown material \"rde\"; did you mean "
+          "\"red\"? (known: grey, red)");
+    CHECK(errorOf(materials + "[[triangles]]\nvertices = [[0,0,0], [1,0,0], [0,1,0]]\n"
+                              "material = \"gold\"\n") ==
+          "scene.toml:5:12: triangles[0].material: unknown material \"gold\" (known: grey, red)");
+    CHECK(errorOf("[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\nmaterial = \"grey\"\n") ==
+          "scene.toml:4:12: planes[0].material: unknown material \"grey\" (known: none)");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a missing required key is located at its table") {
+    CHECK(errorOf("[materials.red]\n\n[[spheres]]\nradius = 1\nmaterial = \"red\"\n") ==
+          "scene.toml:3:1: spheres[0]: missing required key \"center\"");
+    const std::string sphere = "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"red\"\n";
+    CHECK(errorOf("[materials.red]\n" + sphere + sphere + "[[spheres]]\ncenter = [0, 0, 0]\n") ==
+          "scene.toml:10:1: spheres[2]: missing required key \"radius\"");
+    CHECK(errorOf("[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\n") ==
+          "scene.toml:1:1: planes[0]: missing required key \"material\"");
+    CHECK(errorOf("[[triangles]]\nmaterial = \"red\"\n") ==
+          "scene.toml:1:1: triangles[0]: missing required key \"vertices\"");
+    CHECK(errorOf("[[lights]]\nname = \"key\"\n") ==
+          "scene.toml:1:1: lights[0]: missing required key \"position\"");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "attenuation coefficients must not all be zero") {
+    CHECK(errorOf("[[lights]]\nposition = [0, 1, 0]\nattenuation = [0, 0, 0]\n") ==
+          "scene.toml:3:15: lights[0].attenuation: expected c0, c1, c2 not all zero "
+          "(1 / (c0 + c1 d + c2 d^2) would divide by zero), got [0, 0, 0]");
+    CHECK(errorOf("[[lights]]\nposition = [0, 1, 0]\nattenuation = [1, -0.5, 0]\n") ==
+          "scene.toml:3:19: lights[0].attenuation[1]: expected a number >= 0, got -0.5");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "material parameters are range-checked") {
+    CHECK(errorOf("[materials.shiny]\nn = -3\n") ==
+          "scene.toml:2:5: materials.shiny.n: expected a number >= 0, got -3");
+    CHECK(errorOf("[materials.glass]\nior = 0\n") ==
+          "scene.toml:2:7: materials.glass.ior: expected a positive number, got 0");
+    CHECK(errorOf("[materials.glass]\nior = -1.5\n") ==
+          "scene.toml:2:7: materials.glass.ior: expected a positive number, got -1.5");
+    CHECK(errorOf("[materials.red]\nkd = [0.7, 0, -0.1]\n") ==
+          "scene.toml:2:15: materials.red.kd[2]: expected a number >= 0, got -0.1");
+    CHECK(errorOf("[materials.red]\nks = -1\n") ==
+          "scene.toml:2:6: materials.red.ks: expected a number >= 0, got -1");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "only point lights exist so far") {
+    CHECK(errorOf("[[lights]]\ntype = \"area\"\nposition = [0, 1, 0]\n") ==
+          "scene.toml:2:8: lights[0].type: unknown light type \"area\" (known: point)");
+    CHECK(errorOf("[[lights]]\ntype = \"pont\"\nposition = [0, 1, 0]\n") ==
+          "scene.toml:2:8: lights[0].type: unknown light type \"pont\"; did you mean "
+          "\"point\"? (known: point)");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "names must be usable as light path labels") {
+    CHECK(errorOf("[[lights]]\nname = \"ambient\"\nposition = [0, 1, 0]\n") ==
+          "scene.toml:2:8: lights[0].name: expected a light name other than \"ambient\", which "
+          "is reserved for the ambient term");
+    CHECK(errorOf("[materials.red]\n[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\n"
+                  "name = \"my ball\"\n") ==
+          "scene.toml:5:8: spheres[0].name: expected a name of letters, digits, '_', '-' or "
+          "'.', got a string (\"my ball\")");
+    CHECK(errorOf("[materials.\"it's red\"]\n") ==
+          "scene.toml:1:1: materials.it's red: expected a material name of letters, digits, "
+          "'_', '-' or '.', got \"it's red\"");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a triangle without area is refused") {
+    CHECK(errorOf("[[triangles]]\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n") ==
+          "scene.toml:2:12: triangles[0].vertices: expected the corners of a triangle, got 3 "
+          "points on one line");
+    CHECK(errorOf("[[triangles]]\nvertices = [[0, 0, 0], [1, 1]]\n") ==
+          "scene.toml:2:12: triangles[0].vertices: expected an array of 3 points "
+          "[[x,y,z], [x,y,z], [x,y,z]], got an array of 2 elements");
+}
