@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Runs a command and checks what a user would see:
+#   expect.sh EXIT_CODE OUTPUT_PATTERN [--absent FILE]... -- COMMAND...
+# EXIT_CODE must match exactly, OUTPUT_PATTERN (grep -E) must occur in stdout+stderr, and every
+# --absent FILE must not exist afterwards (no half-written output).
+set -u
+expected_code=$1 pattern=$2
+shift 2
+absent=()
+while [ "$1" != "--" ]; do
+  [ "$1" = "--absent" ] && absent+=("$2") && shift 2 && continue
+  echo "expect.sh: unknown argument $1" >&2; exit 2
+done
+shift
+for f in "${absent[@]}"; do rm -f "$f"; done
+output=$("$@" 2>&1)
+code=$?
+status=0
+printf '%s\n' "$output"
+if [ "$code" != "$expected_code" ]; then echo "FAIL: exit code $code, expected $expected_code"; status=1; fi
+if ! grep -Eq -- "$pattern" <<<"$output"; then echo "FAIL: output lacks /$pattern/"; status=1; fi
+for f in "${absent[@]}"; do
+  if [ -e "$f" ]; then echo "FAIL: $f was written"; status=1; fi
+  # Nor any temporary file beside it.
+  if compgen -G "$(dirname "$f")/.$(basename "$f").tmp-*" >/dev/null; then echo "FAIL: temporary file left for $f"; status=1; fi
+done
+exit $status
