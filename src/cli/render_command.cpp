@@ -19,14 +19,21 @@ struct RenderCommand {
 
 void printStats(const RenderStats& stats) {
     const RayCounters& r = stats.rays;
-    std::printf("rays      camera %llu, shadow %llu, reflection %llu, refraction %llu (total %llu)\n",
-                static_cast<unsigned long long>(r.camera), static_cast<unsigned long long>(r.shadow),
-                static_cast<unsigned long long>(r.reflection), static_cast<unsigned long long>(r.refraction),
-                static_cast<unsigned long long>(r.total()));
-    std::printf("time      %.3f s on %d thread%s: %.0f samples/s, %.2f M rays/s\n", stats.seconds, stats.threads,
+    const auto n = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
+    std::printf("rays cast     camera %llu, shadow %llu, reflection %llu, refraction %llu (total %llu)\n",
+                n(r.camera), n(r.shadow), n(r.reflection), n(r.refraction), n(r.total()));
+    std::printf("rays skipped  camera %llu (no requested output can accept)\n", n(r.cameraDead));
+    std::printf("              shadow %llu: %llu light behind the surface, %llu zero contribution, "
+                "%llu no requested output accepts the light\n",
+                n(r.shadowBehind + r.shadowZero + r.shadowDead), n(r.shadowBehind), n(r.shadowZero), n(r.shadowDead));
+    std::printf("              reflection %llu, refraction %llu (no requested output can accept)\n",
+                n(r.reflectionDead), n(r.refractionDead));
+    std::printf("highlights    %llu evaluated, %llu skipped (material has ks = 0)\n", n(r.highlightEvaluated),
+                n(r.highlightNoKs));
+    std::printf("time          %.3f s on %d thread%s: %.0f samples/s, %.2f M rays/s\n", stats.seconds, stats.threads,
                 stats.threads == 1 ? "" : "s", static_cast<double>(stats.samples) / stats.seconds,
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);
-    std::printf("non-finite contributions dropped: %llu\n", static_cast<unsigned long long>(r.nonFinite));
+    std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
 }
 
 void run(const RenderCommand& command) {
@@ -40,7 +47,7 @@ void run(const RenderCommand& command) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
     }
     // Check the output name before spending time on the render.
-    const Film probe(1, 1, aovs.layerNames());
+    const Film probe(1, 1, renderer->layerNames());
     try {
         outputFiles(probe, command.output);
     } catch (const ImageWriteError& e) {

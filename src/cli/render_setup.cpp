@@ -38,6 +38,10 @@ void RenderSetup::addOptions(CLI::App& command) {
                        "Image size WxH, overriding the scene's; the vertical field of view is kept");
     command.add_option("--threads", threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
     command.add_option("--seed", seed, "Seed of the per-pixel sample sequences");
+    command.add_flag("--no-beauty", noBeauty,
+                     "Compute only the requested AOVs (no beauty, no rest): paths none of them accepts are not traced");
+    command.add_flag("--no-skip", noSkip,
+                     "Trace every ray and evaluate every term, even those that cannot contribute (for comparison)");
 }
 
 Scene RenderSetup::loadScene() const {
@@ -97,6 +101,8 @@ RenderOptions RenderSetup::renderOptions() const {
     options.samplesPerPixel = samplesPerPixel;
     options.threads = threads;
     options.seed = seed;
+    options.writeBeauty = !noBeauty;
+    options.skip = !noSkip;
     return options;
 }
 

@@ -23,6 +23,8 @@ struct RenderSetup {
     int threads = 0;
     std::uint64_t seed = 0;
     std::string resolution;          // WxH, empty for the scene's
+    bool noBeauty = false;
+    bool noSkip = false;
 
     void addOptions(CLI::App& command);
 

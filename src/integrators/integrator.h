@@ -12,6 +12,7 @@
 #include "lpe/automaton.h"
 #include "math/ray.h"
 #include "scene/scene.h"
+#include "scene/scene_analysis.h"
 
 namespace lightpath {
 
@@ -20,7 +21,15 @@ struct RenderContext {
     const SceneGeometry& geometry;
     const lpe::Automaton& automaton;
     const EventSymbols& symbols;
+    const SceneAnalysis& analysis;
     int maxDepth = 5;  // specular bounces after the first hit (Whitted)
+    // The outputs the user asked for. When every contribution is wanted (the beauty or `rest` is
+    // written, or skipping is off) nothing may be skipped on their account.
+    lpe::OutputMask requested = 0;
+    bool keepAllPaths = true;
+    // Off (`--no-skip`): evaluate every term and trace every ray, even those that cannot add
+    // anything, so tests and lectures can compare against the work skipping saves.
+    bool skipEnabled = true;
 };
 
 // One worker's view of a render: the shared context plus its own sink, counters and path stack.
@@ -36,6 +45,15 @@ public:
     // The same for a path that ends without a surface event (background, emitter hit directly).
     void emit(lpe::Automaton::State state, const PathEvent& light, lpe::Automaton::Symbol lightSymbol,
               const Rgb& value);
+
+    // Would a contribution accepted by `accepted` reach a requested output?
+    bool wants(lpe::OutputMask accepted) const {
+        return context.keepAllPaths || (accepted & context.requested) != 0;
+    }
+    // Can a branch in `state` still reach a requested output (DESIGN.md: dead states stop)?
+    bool alive(lpe::Automaton::State state) const {
+        return context.keepAllPaths || !context.automaton.isDead(state, context.requested);
+    }
 
     const RenderContext& context;
     RayCounters& counters;

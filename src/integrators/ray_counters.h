@@ -3,12 +3,25 @@
 
 namespace lightpath {
 
-// Rays cast by kind, kept per worker thread and summed at the end (`--stats`).
+// What a render cast and what it skipped, and why (`--stats`). Kept per worker thread and summed.
 struct RayCounters {
     std::uint64_t camera = 0;
     std::uint64_t shadow = 0;
     std::uint64_t reflection = 0;
     std::uint64_t refraction = 0;
+
+    // Skipped rays by reason.
+    std::uint64_t cameraDead = 0;          // no requested output accepts any path from here
+    std::uint64_t shadowBehind = 0;        // light behind the surface: N.(b - p) <= 0
+    std::uint64_t shadowZero = 0;          // the light's attenuated diffuse and highlight terms are 0
+    std::uint64_t shadowDead = 0;          // no requested output accepts light from this light here
+    std::uint64_t reflectionDead = 0;      // automaton state dead after the mirror event
+    std::uint64_t refractionDead = 0;      // automaton state dead after the refraction event
+
+    // Highlight terms (H.N)^n evaluated, and skipped because the material's ks is 0.
+    std::uint64_t highlightEvaluated = 0;
+    std::uint64_t highlightNoKs = 0;
+
     std::uint64_t nonFinite = 0;  // contributions dropped because they were NaN or infinite
 
     std::uint64_t total() const { return camera + shadow + reflection + refraction; }
@@ -18,6 +31,14 @@ struct RayCounters {
         shadow += o.shadow;
         reflection += o.reflection;
         refraction += o.refraction;
+        cameraDead += o.cameraDead;
+        shadowBehind += o.shadowBehind;
+        shadowZero += o.shadowZero;
+        shadowDead += o.shadowDead;
+        reflectionDead += o.reflectionDead;
+        refractionDead += o.refractionDead;
+        highlightEvaluated += o.highlightEvaluated;
+        highlightNoKs += o.highlightNoKs;
         nonFinite += o.nonFinite;
         return *this;
     }

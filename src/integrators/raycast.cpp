@@ -6,7 +6,7 @@ namespace lightpath {
 
 void addBackground(lpe::Automaton::State state, const Rgb& throughput, Tracer& tracer) {
     const Rgb& background = tracer.context.scene.background;
-    if (isBlack(background)) return;
+    if (isBlack(background) && tracer.context.skipEnabled) return;
     tracer.emit(state, {lpe::EventType::Background, lpe::Scatter::None, kSubjectNone},
                 tracer.context.symbols.background, throughput * background);
 }

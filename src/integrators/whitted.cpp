@@ -46,29 +46,30 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
     addLocalIllumination(*hit, normal, -ray.direction, state, throughput, tracer);
     if (depth >= ctx.maxDepth) return;
 
-    const PhongMaterial& material = ctx.scene.materials[ctx.scene.objects[hit->object].material];
+    const std::uint32_t materialIndex = ctx.scene.objects[hit->object].material;
+    const PhongMaterial& material = ctx.scene.materials[materialIndex];
+    const MaterialTerms& terms = ctx.analysis.materials[materialIndex];
     const SurfaceSymbols& symbols = ctx.symbols.objects[hit->object];
     const auto subject = static_cast<std::int32_t>(hit->object);
     const PathEvent mirrorEvent{lpe::EventType::Reflection, lpe::Scatter::Specular, subject};
     const Vec3 mirrorDirection = glm::reflect(ray.direction, normal);
 
-    if (!isBlack(material.kr)) {
-        ++tracer.counters.reflection;
+    // Secondary rays only from surfaces that have the term (scene analysis), and only while some
+    // requested output can still accept the path (the automaton's dead states).
+    if (terms.mirror || !ctx.skipEnabled) {
         traceSpecular(spawnRay(hit->point, normal, mirrorDirection), mirrorEvent, symbols.mirror, state,
                       throughput * material.kr, depth, tracer);
     }
-    if (!isBlack(material.kt)) {
+    if (terms.refraction || !ctx.skipEnabled) {
         // Entering the surface goes from vacuum (1) into the material (ior), leaving goes back.
         const float eta = entering ? 1.0f / material.ior : material.ior;
         Vec3 transmitted;
         if (refractDirection(ray.direction, normal, eta, transmitted)) {
-            ++tracer.counters.refraction;
             traceSpecular(spawnRay(hit->point, -normal, transmitted),
                           {lpe::EventType::Transmission, lpe::Scatter::Specular, subject},
                           symbols.refraction, state, throughput * material.kt, depth, tracer);
         } else {
             // Total internal reflection: the transmitted share is reflected instead.
-            ++tracer.counters.reflection;
             traceSpecular(spawnRay(hit->point, normal, mirrorDirection), mirrorEvent, symbols.mirror,
                           state, throughput * material.kt, depth, tracer);
         }
@@ -78,8 +79,15 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
 void WhittedIntegrator::traceSpecular(const Ray& ray, const PathEvent& event, lpe::Automaton::Symbol symbol,
                                       lpe::Automaton::State state, const Rgb& throughput, int depth,
                                       Tracer& tracer) const {
+    const bool reflection = event.type == lpe::EventType::Reflection;
+    const auto next = tracer.context.automaton.step(state, symbol);
+    if (!tracer.alive(next)) {
+        ++(reflection ? tracer.counters.reflectionDead : tracer.counters.refractionDead);
+        return;
+    }
+    ++(reflection ? tracer.counters.reflection : tracer.counters.refraction);
     tracer.path.push(event);
-    trace(ray, tracer.context.automaton.step(state, symbol), throughput, depth + 1, tracer);
+    trace(ray, next, throughput, depth + 1, tracer);
     tracer.path.pop();
 }
 

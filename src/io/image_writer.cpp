@@ -11,6 +11,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr const char* kBeautyLayer = "beauty";
+
 std::string lowerExtension(const fs::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -40,7 +42,8 @@ void writeExr(const Film& film, const fs::path& target, const fs::path& temporar
     OIIO::ImageSpec spec(film.width(), film.height(), static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
     spec.channelnames.clear();
     for (std::size_t l = 0; l < film.layerCount(); ++l) {
-        const std::string prefix = l == 0 ? "" : film.layerNames()[l] + ".";
+        const std::string& name = film.layerNames()[l];
+        const std::string prefix = name == kBeautyLayer ? "" : name + ".";
         for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(prefix + c);
     }
     spec.attribute("compression", "zip");
@@ -80,10 +83,10 @@ std::vector<fs::path> outputFiles(const Film& film, const fs::path& path) {
     if (ext != ".png")
         throw ImageWriteError(path.string() + ": unsupported output extension \"" + path.extension().string() +
                               "\"; expected .exr (one multi-layer file) or .png (one file per layer)");
-    std::vector<fs::path> files{path};
-    for (std::size_t l = 1; l < film.layerCount(); ++l) {
+    std::vector<fs::path> files;
+    for (const std::string& name : film.layerNames()) {
         fs::path file = path;
-        file.replace_extension(film.layerNames()[l] + path.extension().string());
+        if (name != kBeautyLayer) file.replace_extension(name + path.extension().string());
         files.push_back(file);
     }
     return files;

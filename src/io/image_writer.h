@@ -1,8 +1,9 @@
 #pragma once
 // Writes a film with OpenImageIO (DESIGN.md, "Output"):
-//   NAME.exr  one multi-layer EXR: beauty as R,G,B and each other layer as <layer>.R/.G/.B, the
-//             metadata as header attributes;
-//   NAME.png  the beauty, plus NAME.<layer>.png per other layer, clamped and sRGB-encoded.
+//   NAME.exr  one multi-layer EXR: the layer "beauty" as R,G,B and each other layer as
+//             <layer>.R/.G/.B, the metadata as header attributes;
+//   NAME.png  the beauty as NAME.png and every other layer as NAME.<layer>.png, clamped and
+//             sRGB-encoded.
 // Every file is written under a temporary name in the same folder and renamed only when all were
 // written, so a failed run leaves no half-written file and keeps any older image of that name.
 #include <filesystem>
@@ -22,7 +23,7 @@ public:
 
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
-// The files that `writeFilm` would produce for `path`, beauty first. Throws ImageWriteError for
+// The files that `writeFilm` would produce for `path`, in layer order. Throws ImageWriteError for
 // an extension other than .exr or .png.
 std::vector<std::filesystem::path> outputFiles(const Film& film, const std::filesystem::path& path);
 

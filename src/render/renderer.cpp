@@ -21,13 +21,21 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       options_(options),
       geometry_(scene.spheres, scene.planes, scene.triangles),
       symbols_(scene, aovs.automaton()),
+      analysis_(scene),
       camera_(scene.camera),
       integrator_(makeIntegrator(options.integrator)),
-      context_{scene_, geometry_, aovs_.automaton(), symbols_, options.maxDepth} {
+      context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, options.maxDepth,
+               aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
     if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast or whitted");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+    if (!options.writeBeauty && aovs.expressions().empty())
+        throw std::invalid_argument("nothing to render: no beauty and no AOVs requested");
+    for (std::size_t l = 0; l < aovs.layerCount(); ++l) {
+        const bool beautyOrRest = l == 0 || l + 1 == aovs.layerCount();
+        if (options.writeBeauty || !beautyOrRest) writtenLayers_.push_back(l);
+    }
 }
 
 void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
@@ -40,20 +48,32 @@ void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) 
             dx = rng.nextFloat();
             dy = rng.nextFloat();
         }
+        const auto state = context_.automaton.step(context_.automaton.start(), symbols_.camera);
+        if (!tracer.alive(state)) {
+            ++tracer.counters.cameraDead;
+            continue;
+        }
         const Ray ray = camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
         ++tracer.counters.camera;
         tracer.path.push({lpe::EventType::Camera, lpe::Scatter::None, kSubjectNone});
-        integrator_->traceCameraRay(ray, context_.automaton.step(context_.automaton.start(), symbols_.camera), tracer);
+        integrator_->traceCameraRay(ray, state, tracer);
         tracer.path.pop();
     }
     const float weight = 1.0f / static_cast<float>(spp);
     for (Rgb& layer : layers) layer *= weight;
 }
 
+std::vector<std::string> Renderer::layerNames() const {
+    const auto all = aovs_.layerNames();
+    std::vector<std::string> names;
+    for (std::size_t l : writtenLayers_) names.push_back(all[l]);
+    return names;
+}
+
 RenderResult Renderer::render() const {
     const auto started = std::chrono::steady_clock::now();
     const int width = camera_.width(), height = camera_.height();
-    Film film(width, height, aovs_.layerNames());
+    Film film(width, height, layerNames());
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
@@ -63,7 +83,7 @@ RenderResult Renderer::render() const {
     std::atomic<int> nextTile{0};
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
     auto work = [&](int worker) {
-        std::vector<Rgb> layers(film.layerCount());
+        std::vector<Rgb> layers(aovs_.layerCount());
         ContributionSink sink(layers);
         Tracer tracer(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
@@ -73,7 +93,7 @@ RenderResult Renderer::render() const {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
                     renderPixel(x, y, layers, tracer);
-                    for (std::size_t l = 0; l < layers.size(); ++l) film.at(l, x, y) = layers[l];
+                    for (std::size_t l = 0; l < writtenLayers_.size(); ++l) film.at(l, x, y) = layers[writtenLayers_[l]];
                 }
             }
         }

@@ -15,6 +15,7 @@
 #include "integrators/integrator.h"
 #include "integrators/ray_counters.h"
 #include "scene/camera.h"
+#include "scene/scene_analysis.h"
 #include "scene/scene.h"
 
 namespace lightpath {
@@ -25,6 +26,10 @@ struct RenderOptions {
     int samplesPerPixel = 1;
     int threads = 0;  // 0: all hardware threads
     std::uint64_t seed = 0;
+    // Without the beauty (and so without `rest`, its complement) only the requested AOVs are
+    // computed, and every path none of them can accept is skipped.
+    bool writeBeauty = true;
+    bool skip = true;  // false: `--no-skip`, trace and evaluate everything
 };
 
 struct RenderStats {
@@ -45,6 +50,8 @@ public:
     Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options);
 
     RenderResult render() const;
+    // The layers render() produces, in order.
+    std::vector<std::string> layerNames() const;
     // Every contribution to pixel (x, y), in the order the integrator produced them.
     std::vector<LoggedContribution> explainPixel(int x, int y) const;
 
@@ -56,7 +63,9 @@ private:
     RenderOptions options_;
     SceneGeometry geometry_;
     EventSymbols symbols_;
+    SceneAnalysis analysis_;
     PinholeCamera camera_;
+    std::vector<std::size_t> writtenLayers_;  // indices into AovSet::layerNames()
     std::unique_ptr<Integrator> integrator_;
     RenderContext context_;
 };

@@ -1,0 +1,11 @@
+#pragma once
+// `lightpath lpe`: the LPE engine on the command line (match paths, check AOV sets, draw automata).
+#include <CLI/CLI.hpp>
+
+namespace lightpath {
+
+// Registers `lpe` and its subcommands `match`, `check` and `dot`. Errors in expressions or paths
+// are thrown as CLI::RuntimeError carrying the engine's message, with exit code 2 (bad input).
+void addLpeCommand(CLI::App& app);
+
+}  // namespace lightpath
