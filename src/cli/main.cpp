@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 
+#include "cli/bench_command.h"
 #include "cli/exit_codes.h"
 #include "cli/explain_command.h"
 #include "cli/lpe_command.h"
@@ -20,11 +21,13 @@ int main(int argc, char** argv) {
         "  lightpath explain scenes/lecture-room.toml --pixel 320,240    why a pixel has its colour\n"
         "  lightpath lpe match 'E(D|G)L' EDL ESDL                        does a path match?\n"
         "  lightpath lpe check --set classes                             is the AOV set a partition?\n"
-        "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n\n"
+        "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n"
+        "  lightpath bench skip                                          what skipping saves\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
     lightpath::addRenderCommand(app);
     lightpath::addExplainCommand(app);
     lightpath::addLpeCommand(app);
+    lightpath::addBenchCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,5 +1,7 @@
 #pragma once
-// Image layers of linear RGB, all the same size: the beauty, each AOV, and rest.
+// Image layers of linear RGB, all the same size: the beauty, each AOV, and rest. Stored pixel by
+// pixel with a pixel's layers side by side, as the renderer writes them and as an EXR interleaves
+// its channels.
 #include <span>
 #include <string>
 #include <vector>
@@ -17,14 +19,19 @@ public:
     std::size_t layerCount() const { return layerNames_.size(); }
     const std::vector<std::string>& layerNames() const { return layerNames_; }
 
-    Rgb& at(std::size_t layer, int x, int y) { return pixels_[index(layer, x, y)]; }
-    const Rgb& at(std::size_t layer, int x, int y) const { return pixels_[index(layer, x, y)]; }
-    std::span<const Rgb> layer(std::size_t layer) const;
+    Rgb& at(std::size_t layer, int x, int y) { return pixels_[index(x, y) + layer]; }
+    const Rgb& at(std::size_t layer, int x, int y) const { return pixels_[index(x, y) + layer]; }
+    // All layers of one pixel, in layer order.
+    std::span<Rgb> pixel(int x, int y) { return {pixels_.data() + index(x, y), layerCount()}; }
+    // Every layer of every pixel, row by row: the interleaved order of a multi-layer EXR.
+    std::span<const Rgb> interleaved() const { return pixels_; }
+    // One layer's pixels, row by row (a copy).
+    std::vector<Rgb> layer(std::size_t layer) const;
 
 private:
-    std::size_t index(std::size_t layer, int x, int y) const {
-        return (layer * static_cast<std::size_t>(height_) + static_cast<std::size_t>(y)) *
-                   static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+    std::size_t index(int x, int y) const {
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) *
+               layerNames_.size();
     }
 
     int width_, height_;

@@ -37,7 +37,6 @@ void writeImageFile(const fs::path& target, const fs::path& temporary, const OII
 }
 
 void writeExr(const Film& film, const fs::path& target, const fs::path& temporary, const ImageMetadata& metadata) {
-    const std::size_t pixels = static_cast<std::size_t>(film.width()) * static_cast<std::size_t>(film.height());
     const std::size_t channels = 3 * film.layerCount();
     OIIO::ImageSpec spec(film.width(), film.height(), static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
     spec.channelnames.clear();
@@ -49,13 +48,9 @@ void writeExr(const Film& film, const fs::path& target, const fs::path& temporar
     spec.attribute("compression", "zip");
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
 
-    std::vector<float> interleaved(pixels * channels);
-    for (std::size_t l = 0; l < film.layerCount(); ++l) {
-        const auto layer = film.layer(l);
-        for (std::size_t p = 0; p < pixels; ++p)
-            for (int c = 0; c < 3; ++c) interleaved[p * channels + 3 * l + static_cast<std::size_t>(c)] = layer[p][c];
-    }
-    writeImageFile(target, temporary, spec, OIIO::TypeDesc::FLOAT, interleaved.data());
+    // Rgb is three packed floats, so the film is already the EXR's interleaved channel order.
+    static_assert(sizeof(Rgb) == 3 * sizeof(float));
+    writeImageFile(target, temporary, spec, OIIO::TypeDesc::FLOAT, film.interleaved().data());
 }
 
 void writePng(const Film& film, std::size_t layer, const fs::path& target, const fs::path& temporary,

@@ -59,8 +59,10 @@ void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) 
         integrator_->traceCameraRay(ray, state, tracer);
         tracer.path.pop();
     }
-    const float weight = 1.0f / static_cast<float>(spp);
-    for (Rgb& layer : layers) layer *= weight;
+    if (spp > 1) {
+        const float weight = 1.0f / static_cast<float>(spp);
+        for (Rgb& layer : layers) layer *= weight;
+    }
 }
 
 std::vector<std::string> Renderer::layerNames() const {
@@ -93,7 +95,8 @@ RenderResult Renderer::render() const {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
                     renderPixel(x, y, layers, tracer);
-                    for (std::size_t l = 0; l < writtenLayers_.size(); ++l) film.at(l, x, y) = layers[writtenLayers_[l]];
+                    const std::span<Rgb> pixel = film.pixel(x, y);
+                    for (std::size_t l = 0; l < writtenLayers_.size(); ++l) pixel[l] = layers[writtenLayers_[l]];
                 }
             }
         }
