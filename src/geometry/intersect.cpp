@@ -33,6 +33,21 @@ float intersectSphere(const Ray& ray, const Sphere& sphere, float tMin) {
     return kNoHit;
 }
 
+float intersectSphereNaive(const Ray& ray, const Sphere& sphere, float tMin) {
+    const Vec3 co = ray.origin - sphere.center;
+    const float a = glm::dot(ray.direction, ray.direction);
+    const float b = 2.0f * glm::dot(co, ray.direction);
+    const float c = glm::dot(co, co) - sphere.radius * sphere.radius;
+    const float discriminant = b * b - 4.0f * a * c;
+    if (discriminant < 0.0f) return kNoHit;
+    const float root = std::sqrt(discriminant);
+    const float t0 = (-b - root) / (2.0f * a);
+    const float t1 = (-b + root) / (2.0f * a);
+    if (t0 > tMin && t0 < ray.tMax) return t0;
+    if (t1 > tMin && t1 < ray.tMax) return t1;
+    return kNoHit;
+}
+
 float intersectPlane(const Ray& ray, const Plane& plane, float tMin) {
     const float denominator = glm::dot(plane.normal, ray.direction);
     if (denominator == 0.0f) return kNoHit;  // parallel: no single point in common
@@ -74,6 +89,23 @@ float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin) {
 
     const float az = sz * a.z, bz = sz * b.z, cz = sz * c.z;
     const float t = (u * az + v * bz + w * cz) / det;
+    return (t > tMin && t < ray.tMax) ? t : kNoHit;
+}
+
+float intersectTriangleMollerTrumbore(const Ray& ray, const Triangle& tri, float tMin) {
+    constexpr float kDeterminantEpsilon = 1e-6f;
+    const Vec3 edge1 = tri.b - tri.a, edge2 = tri.c - tri.a;
+    const Vec3 p = glm::cross(ray.direction, edge2);
+    const float det = glm::dot(edge1, p);
+    if (std::fabs(det) < kDeterminantEpsilon) return kNoHit;
+    const float inverse = 1.0f / det;
+    const Vec3 s = ray.origin - tri.a;
+    const float u = glm::dot(s, p) * inverse;
+    if (u < 0.0f || u > 1.0f) return kNoHit;
+    const Vec3 q = glm::cross(s, edge1);
+    const float v = glm::dot(ray.direction, q) * inverse;
+    if (v < 0.0f || u + v > 1.0f) return kNoHit;
+    const float t = glm::dot(edge2, q) * inverse;
     return (t > tMin && t < ray.tMax) ? t : kNoHit;
 }
 

@@ -7,64 +7,73 @@
 namespace lightpath {
 
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
-                             std::vector<Triangle> triangles)
-    : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)) {}
+                             std::vector<Triangle> triangles, NumericsOptions numerics)
+    : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
+      numerics_(numerics) {}
+
+float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const {
+    if (id == ray.ignoredPrimitive) return kNoHit;
+    if (id < spheres_.size()) {
+        const Sphere& s = spheres_[id];
+        return numerics_.sphere == SphereTest::Stable ? intersectSphere(ray, s, ray.tMin)
+                                                      : intersectSphereNaive(ray, s, ray.tMin);
+    }
+    id -= static_cast<std::uint32_t>(spheres_.size());
+    if (id < planes_.size()) return intersectPlane(ray, planes_[id], ray.tMin);
+    id -= static_cast<std::uint32_t>(planes_.size());
+    const Triangle& t = triangles_[id];
+    return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, t, ray.tMin)
+                                                          : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
+}
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     // The lecture's loop: test every primitive, keep the smallest t.
     Ray closest = ray;
-    ShapeKind kind = ShapeKind::Sphere;
-    std::uint32_t index = 0;
-    bool found = false;
-    auto consider = [&](float t, ShapeKind k, std::size_t i) {
-        if (t == kNoHit) return;
+    std::uint32_t found = kNoPrimitive;
+    const auto count = static_cast<std::uint32_t>(primitiveCount());
+    for (std::uint32_t id = 0; id < count; ++id) {
+        const float t = intersectPrimitive(closest, id);
+        if (t == kNoHit) continue;
         closest.tMax = t;
-        kind = k;
-        index = static_cast<std::uint32_t>(i);
-        found = true;
-    };
-    for (std::size_t i = 0; i < spheres_.size(); ++i)
-        consider(intersectSphere(closest, spheres_[i], 0.0f), ShapeKind::Sphere, i);
-    for (std::size_t i = 0; i < planes_.size(); ++i)
-        consider(intersectPlane(closest, planes_[i], 0.0f), ShapeKind::Plane, i);
-    for (std::size_t i = 0; i < triangles_.size(); ++i)
-        consider(intersectTriangle(closest, triangles_[i], 0.0f), ShapeKind::Triangle, i);
-    if (!found) return std::nullopt;
-
-    SurfaceHit hit;
-    hit.t = closest.tMax;
-    hit.point = ray.at(hit.t);
-    hit.shape = kind;
-    hit.primitive = index;
-    switch (kind) {
-        case ShapeKind::Sphere: {
-            const Sphere& s = spheres_[index];
-            hit.normal = sphereNormal(s, hit.point);
-            // Snap the point back onto the sphere: ray.at(t) carries the rounding of t.
-            hit.point = s.center + hit.normal * s.radius;
-            hit.object = s.object;
-            break;
-        }
-        case ShapeKind::Plane:
-            hit.normal = planes_[index].normal;
-            hit.object = planes_[index].object;
-            break;
-        case ShapeKind::Triangle:
-            hit.normal = triangleNormal(triangles_[index]);
-            hit.object = triangles_[index].object;
-            break;
+        found = id;
     }
-    return hit;
+    if (found == kNoPrimitive) return std::nullopt;
+    return describeHit(ray, closest.tMax, found);
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
-    for (const Sphere& s : spheres_)
-        if (intersectSphere(ray, s, 0.0f) != kNoHit) return true;
-    for (const Plane& p : planes_)
-        if (intersectPlane(ray, p, 0.0f) != kNoHit) return true;
-    for (const Triangle& t : triangles_)
-        if (intersectTriangle(ray, t, 0.0f) != kNoHit) return true;
+    const auto count = static_cast<std::uint32_t>(primitiveCount());
+    for (std::uint32_t id = 0; id < count; ++id)
+        if (intersectPrimitive(ray, id) != kNoHit) return true;
     return false;
+}
+
+SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id) const {
+    SurfaceHit hit;
+    hit.t = t;
+    hit.point = ray.at(t);
+    hit.primitive = id;
+    if (id < spheres_.size()) {
+        const Sphere& s = spheres_[id];
+        hit.shape = ShapeKind::Sphere;
+        hit.normal = sphereNormal(s, hit.point);
+        // Snap the point back onto the sphere: ray.at(t) carries the rounding of t.
+        hit.point = s.center + hit.normal * s.radius;
+        hit.object = s.object;
+        return hit;
+    }
+    id -= static_cast<std::uint32_t>(spheres_.size());
+    if (id < planes_.size()) {
+        hit.shape = ShapeKind::Plane;
+        hit.normal = planes_[id].normal;
+        hit.object = planes_[id].object;
+        return hit;
+    }
+    id -= static_cast<std::uint32_t>(planes_.size());
+    hit.shape = ShapeKind::Triangle;
+    hit.normal = triangleNormal(triangles_[id]);
+    hit.object = triangles_[id].object;
+    return hit;
 }
 
 }  // namespace lightpath

@@ -14,7 +14,7 @@ struct SurfaceHit {
     Vec3 normal{0.0f};      // unit geometric normal as the shape defines it (outward for spheres)
     std::uint32_t object = 0;
     ShapeKind shape = ShapeKind::Sphere;
-    std::uint32_t primitive = 0;  // index within its shape array
+    std::uint32_t primitive = 0;  // scene-wide primitive id: spheres, then planes, then triangles
 };
 
 }  // namespace lightpath

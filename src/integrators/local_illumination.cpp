@@ -2,24 +2,10 @@
 
 #include <cmath>
 
-#include "geometry/ray_offset.h"
+#include "geometry/spawn_ray.h"
 
 namespace lightpath {
 namespace {
-
-// Shadow segments stop this fraction short of the light, so a light placed on a surface does not
-// shadow itself.
-constexpr float kShadowShortening = 1e-5f;
-
-Ray spawnShadowRay(const Vec3& point, const Vec3& normal, const Vec3& lightPosition) {
-    Ray ray;
-    ray.origin = offsetRayOrigin(point, normal);
-    const Vec3 toLight = lightPosition - ray.origin;
-    const float distance = glm::length(toLight);
-    ray.direction = toLight / distance;
-    ray.tMax = distance * (1.0f - kShadowShortening);
-    return ray;
-}
 
 // (H.N)^n with H the halfway vector of l and v (Blinn's form of Phong's highlight).
 float highlightFactor(const Vec3& normal, const Vec3& l, const Vec3& v, float exponent) {
@@ -90,7 +76,7 @@ void addLocalIllumination(const SurfaceHit& hit, const Vec3& normal, const Vec3&
         }
 
         ++counters.shadow;
-        if (ctx.geometry.occluded(spawnShadowRay(hit.point, normal, light.position))) continue;
+        if (ctx.geometry.occluded(spawnShadowRay(hit, light.position, ctx.geometry.numerics()))) continue;
 
         const PathEvent lightEvent{lpe::EventType::Emitter, lpe::Scatter::None, static_cast<std::int32_t>(i)};
         if (diffuseWanted && !(skip && isBlack(diffuse)))

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/ray_offset.h"
+#include "geometry/spawn_ray.h"
 #include "integrators/local_illumination.h"
 #include "integrators/raycast.h"
 
@@ -18,13 +18,6 @@ bool refractDirection(const Vec3& incident, const Vec3& normal, float eta, Vec3&
     const float cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
     transmitted = glm::normalize(eta * incident + (eta * cosIncident - cosTransmitted) * normal);
     return true;
-}
-
-Ray spawnRay(const Vec3& point, const Vec3& sideNormal, const Vec3& direction) {
-    Ray ray;
-    ray.origin = offsetRayOrigin(point, sideNormal);
-    ray.direction = direction;
-    return ray;
 }
 
 }  // namespace
@@ -53,11 +46,12 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
     const auto subject = static_cast<std::int32_t>(hit->object);
     const PathEvent mirrorEvent{lpe::EventType::Reflection, lpe::Scatter::Specular, subject};
     const Vec3 mirrorDirection = glm::reflect(ray.direction, normal);
+    const NumericsOptions& numerics = ctx.geometry.numerics();
 
     // Secondary rays only from surfaces that have the term (scene analysis), and only while some
     // requested output can still accept the path (the automaton's dead states).
     if (terms.mirror || !ctx.skipEnabled) {
-        traceSpecular(spawnRay(hit->point, normal, mirrorDirection), mirrorEvent, symbols.mirror, state,
+        traceSpecular(spawnRay(*hit, mirrorDirection, numerics), mirrorEvent, symbols.mirror, state,
                       throughput * material.kr, depth, tracer);
     }
     if (terms.refraction || !ctx.skipEnabled) {
@@ -65,12 +59,12 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
         const float eta = entering ? 1.0f / material.ior : material.ior;
         Vec3 transmitted;
         if (refractDirection(ray.direction, normal, eta, transmitted)) {
-            traceSpecular(spawnRay(hit->point, -normal, transmitted),
+            traceSpecular(spawnRay(*hit, transmitted, numerics),
                           {lpe::EventType::Transmission, lpe::Scatter::Specular, subject},
                           symbols.refraction, state, throughput * material.kt, depth, tracer);
         } else {
             // Total internal reflection: the transmitted share is reflected instead.
-            traceSpecular(spawnRay(hit->point, normal, mirrorDirection), mirrorEvent, symbols.mirror,
+            traceSpecular(spawnRay(*hit, mirrorDirection, numerics), mirrorEvent, symbols.mirror,
                           state, throughput * material.kt, depth, tracer);
         }
     }

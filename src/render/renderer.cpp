@@ -19,7 +19,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     : scene_(scene),
       aovs_(aovs),
       options_(options),
-      geometry_(scene.spheres, scene.planes, scene.triangles),
+      geometry_(scene.spheres, scene.planes, scene.triangles, options.numerics),
       symbols_(scene, aovs.automaton()),
       analysis_(scene),
       camera_(scene.camera),

@@ -9,6 +9,7 @@
 
 #include "film/aov_set.h"
 #include "film/film.h"
+#include "geometry/numerics.h"
 #include "geometry/scene_geometry.h"
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
@@ -30,6 +31,7 @@ struct RenderOptions {
     // computed, and every path none of them can accept is skipped.
     bool writeBeauty = true;
     bool skip = true;  // false: `--no-skip`, trace and evaluate everything
+    NumericsOptions numerics;
 };
 
 struct RenderStats {
