@@ -55,7 +55,7 @@ float intersectPlane(const Ray& ray, const Plane& plane, float tMin) {
     return (t > tMin && t < ray.tMax) ? t : kNoHit;
 }
 
-float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin) {
+float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin, Vec3* barycentrics) {
     // Shear and scale so the ray becomes the +z axis through the origin; then the three edge
     // functions are 2D cross products evaluated identically for a shared edge.
     const Vec3 absDir = glm::abs(ray.direction);
@@ -89,7 +89,9 @@ float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin) {
 
     const float az = sz * a.z, bz = sz * b.z, cz = sz * c.z;
     const float t = (u * az + v * bz + w * cz) / det;
-    return (t > tMin && t < ray.tMax) ? t : kNoHit;
+    if (!(t > tMin && t < ray.tMax)) return kNoHit;
+    if (barycentrics != nullptr) *barycentrics = Vec3{u, v, w} / det;
+    return t;
 }
 
 float intersectTriangleMollerTrumbore(const Ray& ray, const Triangle& tri, float tMin) {

@@ -21,7 +21,9 @@ float intersectPlane(const Ray& ray, const Plane& plane, float tMin);
 
 // Watertight ray/triangle (Woop, Benthin and Wald, JCGT 2013): no edge is ever missed between two
 // triangles that share it, and no scale-dependent determinant threshold.
-float intersectTriangle(const Ray& ray, const Triangle& triangle, float tMin);
+// With `barycentrics`, also returns the hit's barycentric weights of (a, b, c), from which the
+// hit point is formed: more accurate than origin + t * direction.
+float intersectTriangle(const Ray& ray, const Triangle& triangle, float tMin, Vec3* barycentrics = nullptr);
 
 // Moller and Trumbore 1997 with the common |det| < 1e-6 parallel test. Kept to show its failures:
 // rays through shared edges and vertices slip through, and a small mesh becomes invisible.

@@ -7,9 +7,9 @@
 namespace lightpath {
 
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
-                             std::vector<Triangle> triangles, NumericsOptions numerics)
+                             std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator)
     : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
-      numerics_(numerics) {}
+      numerics_(numerics), accelerator_(accelerator) {}
 
 float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const {
     if (id == ray.ignoredPrimitive) return kNoHit;
@@ -59,6 +59,7 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id)
         hit.normal = sphereNormal(s, hit.point);
         // Snap the point back onto the sphere: ray.at(t) carries the rounding of t.
         hit.point = s.center + hit.normal * s.radius;
+        hit.shadingNormal = hit.normal;
         hit.object = s.object;
         return hit;
     }
@@ -66,13 +67,19 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id)
     if (id < planes_.size()) {
         hit.shape = ShapeKind::Plane;
         hit.normal = planes_[id].normal;
+        hit.shadingNormal = hit.normal;
         hit.object = planes_[id].object;
         return hit;
     }
     id -= static_cast<std::uint32_t>(planes_.size());
+    const Triangle& tri = triangles_[id];
     hit.shape = ShapeKind::Triangle;
-    hit.normal = triangleNormal(triangles_[id]);
-    hit.object = triangles_[id].object;
+    hit.normal = triangleNormal(tri);
+    hit.shadingNormal = hit.normal;
+    hit.object = tri.object;
+    Vec3 weights;
+    if (intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit)
+        hit.point = weights.x * tri.a + weights.y * tri.b + weights.z * tri.c;
     return hit;
 }
 

@@ -11,7 +11,8 @@ enum class ShapeKind : std::uint8_t { Sphere, Plane, Triangle };
 struct SurfaceHit {
     float t = 0.0f;
     Vec3 point{0.0f};
-    Vec3 normal{0.0f};      // unit geometric normal as the shape defines it (outward for spheres)
+    Vec3 normal{0.0f};         // unit geometric normal as the shape defines it (outward for spheres)
+    Vec3 shadingNormal{0.0f};  // unit normal for shading: interpolated vertex normals, else `normal`
     std::uint32_t object = 0;
     ShapeKind shape = ShapeKind::Sphere;
     std::uint32_t primitive = 0;  // scene-wide primitive id: spheres, then planes, then triangles

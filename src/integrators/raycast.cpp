@@ -19,7 +19,7 @@ void RaycastIntegrator::traceCameraRay(const Ray& ray, lpe::Automaton::State sta
     }
     // N points to the side the ray came from (Szymczak: "N should point to the side containing
     // the viewpoint").
-    const Vec3 normal = glm::dot(hit->normal, ray.direction) < 0.0f ? hit->normal : -hit->normal;
+    const Vec3 normal = glm::dot(hit->normal, ray.direction) < 0.0f ? hit->shadingNormal : -hit->shadingNormal;
     addLocalIllumination(*hit, normal, -ray.direction, state, Rgb{1.0f}, tracer);
 }
 

@@ -35,7 +35,7 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
         return;
     }
     const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
-    const Vec3 normal = entering ? hit->normal : -hit->normal;
+    const Vec3 normal = entering ? hit->shadingNormal : -hit->shadingNormal;
     addLocalIllumination(*hit, normal, -ray.direction, state, throughput, tracer);
     if (depth >= ctx.maxDepth) return;
 

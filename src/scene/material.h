@@ -17,6 +17,7 @@ struct PhongMaterial {
     Rgb kr{0.0f};        // mirror reflection weight
     Rgb kt{0.0f};        // transmission (refraction) weight
     float ior = 1.5f;    // index of refraction of the inside, > 0
+    Rgb emission{0.0f};  // emitted radiance: makes the surface an area light (an L event)
 
     bool isSpecular() const { return !isBlack(kr) || !isBlack(kt); }
 };
