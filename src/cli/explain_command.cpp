@@ -19,15 +19,19 @@ struct ExplainCommand {
 
 // What an event touched, as a student reads it: the object's or light's name.
 std::string subjectName(const Scene& scene, const PathEvent& event) {
-    if (event.subject == kSubjectAmbient) return "ambient";
-    if (event.subject == kSubjectNone) return event.type == lpe::EventType::Background ? "background" : "camera";
-    const auto i = static_cast<std::size_t>(event.subject);
-    if (event.type == lpe::EventType::Emitter) {
-        const std::string& name = scene.lights[i].name;
-        return name.empty() ? "light #" + std::to_string(i) : name;
+    switch (event.subject) {
+        case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
+        case Subject::Ambient: return "ambient";
+        case Subject::PointLight: {
+            const std::string& name = scene.lights[event.index].name;
+            return name.empty() ? "light #" + std::to_string(event.index) : name;
+        }
+        case Subject::Object: {
+            const std::string& name = scene.objects[event.index].name;
+            return name.empty() ? "object #" + std::to_string(event.index) + " (" + scene.labelOf(event.index) + ")" : name;
+        }
     }
-    const std::string& name = scene.objects[i].name;
-    return name.empty() ? "object #" + std::to_string(i) + " (" + scene.labelOf(static_cast<std::uint32_t>(i)) + ")" : name;
+    return {};
 }
 
 // The recorded path as the LPE engine's Path, labelled as the automaton saw it.
@@ -36,9 +40,9 @@ lpe::Path toLpePath(const Scene& scene, const PathRecord& record) {
     for (std::size_t i = 0; i < record.size(); ++i) {
         const PathEvent& e = record[i];
         lpe::Event event{e.type, e.scatter, {}};
-        if (e.subject == kSubjectAmbient) event.label = "ambient";
-        else if (e.subject >= 0 && e.type == lpe::EventType::Emitter) event.label = scene.lights[static_cast<std::size_t>(e.subject)].name;
-        else if (e.subject >= 0) event.label = scene.labelOf(static_cast<std::uint32_t>(e.subject));
+        if (e.subject == Subject::Ambient) event.label = kAmbientLabel;
+        else if (e.subject == Subject::PointLight) event.label = scene.lights[e.index].name;
+        else if (e.subject == Subject::Object) event.label = scene.labelOf(e.index);
         path.push_back(event);
     }
     return path;

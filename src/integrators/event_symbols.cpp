@@ -15,7 +15,8 @@ EventSymbols::EventSymbols(const Scene& scene, const lpe::Automaton& automaton) 
         objects.push_back({automaton.symbol(EventType::Reflection, Scatter::Diffuse, label),
                            automaton.symbol(EventType::Reflection, Scatter::Glossy, label),
                            automaton.symbol(EventType::Reflection, Scatter::Specular, label),
-                           automaton.symbol(EventType::Transmission, Scatter::Specular, label)});
+                           automaton.symbol(EventType::Transmission, Scatter::Specular, label),
+                           automaton.symbol(EventType::Emitter, Scatter::None, label)});
     }
 }
 

@@ -13,6 +13,7 @@ struct SurfaceSymbols {
     lpe::Automaton::Symbol glossy;      // R G: the ks (H.N)^n highlight
     lpe::Automaton::Symbol mirror;      // R S: the kr-weighted mirror ray (and total internal reflection)
     lpe::Automaton::Symbol refraction;  // T S: the kt-weighted refracted ray
+    lpe::Automaton::Symbol emission;    // L: the surface itself emitting (an area light)
 };
 
 struct EventSymbols {

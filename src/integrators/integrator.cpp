@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "integrators/path.h"
 #include "integrators/raycast.h"
 #include "integrators/whitted.h"
 
@@ -34,6 +35,7 @@ void Tracer::emit(lpe::Automaton::State state, const PathEvent& light,
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
     if (name == "raycast") return std::make_unique<RaycastIntegrator>();
     if (name == "whitted") return std::make_unique<WhittedIntegrator>();
+    if (name == "path") return std::make_unique<PathIntegrator>();
     return nullptr;
 }
 

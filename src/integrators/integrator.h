@@ -9,9 +9,11 @@
 #include "integrators/event_symbols.h"
 #include "integrators/path_record.h"
 #include "integrators/ray_counters.h"
+#include "lights/emitters.h"
 #include "lpe/automaton.h"
 #include "math/ray.h"
 #include "scene/scene.h"
+#include "sampling/sampler.h"
 #include "scene/scene_analysis.h"
 
 namespace lightpath {
@@ -22,7 +24,8 @@ struct RenderContext {
     const lpe::Automaton& automaton;
     const EventSymbols& symbols;
     const SceneAnalysis& analysis;
-    int maxDepth = 5;  // specular bounces after the first hit (Whitted)
+    const EmitterSet& emitters;
+    int maxDepth = 5;  // Whitted: specular bounces after the first hit; path: scattering events
     // The outputs the user asked for. When every contribution is wanted (the beauty or `rest` is
     // written, or skipping is off) nothing may be skipped on their account.
     lpe::OutputMask requested = 0;
@@ -58,6 +61,7 @@ public:
     const RenderContext& context;
     RayCounters& counters;
     PathRecord path;
+    Sampler* sampler = nullptr;  // the current pixel sample's random numbers
 
 private:
     ContributionSink& sink_;
@@ -71,7 +75,7 @@ public:
     virtual void traceCameraRay(const Ray& ray, lpe::Automaton::State state, Tracer& tracer) const = 0;
 };
 
-// "raycast" or "whitted"; nullptr for an unknown name.
+// "raycast", "whitted" or "path"; nullptr for an unknown name.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 
 }  // namespace lightpath

@@ -10,14 +10,19 @@
 
 namespace lightpath {
 
-// What an event touched: a scene object or light index, or one of the special subjects.
-inline constexpr std::int32_t kSubjectNone = -1;     // the camera, the background
-inline constexpr std::int32_t kSubjectAmbient = -2;  // the ambient term ka * Ia
+// What an event touched.
+enum class Subject : std::uint8_t {
+    None,        // the camera, the background
+    Object,      // scene object `index`: a surface it scattered from, or an emissive surface
+    PointLight,  // scene.lights[index]
+    Ambient,     // the ambient term ka * Ia
+};
 
 struct PathEvent {
     lpe::EventType type = lpe::EventType::Camera;
     lpe::Scatter scatter = lpe::Scatter::None;
-    std::int32_t subject = kSubjectNone;
+    Subject subject = Subject::None;
+    std::uint32_t index = 0;
 };
 
 // Longest recorded path: the camera, kMaxDepth specular bounces, one surface and the light.

@@ -10,7 +10,10 @@ public:
     void traceCameraRay(const Ray& ray, lpe::Automaton::State state, Tracer& tracer) const override;
 };
 
-// Shared by both classic integrators: the background seen along an escaped ray, a `B` event.
+// Shared by the integrators: the background seen along an escaped ray, a `B` event.
 void addBackground(lpe::Automaton::State state, const Rgb& throughput, Tracer& tracer);
+// An emissive surface seen along a ray: an `L` event labelled with the surface's object.
+void addSurfaceEmission(const SurfaceHit& hit, const Vec3& towardViewer, lpe::Automaton::State state,
+                        const Rgb& throughput, Tracer& tracer);
 
 }  // namespace lightpath

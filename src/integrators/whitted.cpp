@@ -36,6 +36,7 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
     }
     const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
     const Vec3 normal = entering ? hit->shadingNormal : -hit->shadingNormal;
+    addSurfaceEmission(*hit, -ray.direction, state, throughput, tracer);
     addLocalIllumination(*hit, normal, -ray.direction, state, throughput, tracer);
     if (depth >= ctx.maxDepth) return;
 
@@ -43,8 +44,8 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
     const PhongMaterial& material = ctx.scene.materials[materialIndex];
     const MaterialTerms& terms = ctx.analysis.materials[materialIndex];
     const SurfaceSymbols& symbols = ctx.symbols.objects[hit->object];
-    const auto subject = static_cast<std::int32_t>(hit->object);
-    const PathEvent mirrorEvent{lpe::EventType::Reflection, lpe::Scatter::Specular, subject};
+    const std::uint32_t subject = hit->object;
+    const PathEvent mirrorEvent{lpe::EventType::Reflection, lpe::Scatter::Specular, Subject::Object, subject};
     const Vec3 mirrorDirection = glm::reflect(ray.direction, normal);
     const NumericsOptions& numerics = ctx.geometry.numerics();
 
@@ -60,7 +61,7 @@ void WhittedIntegrator::trace(const Ray& ray, lpe::Automaton::State state, const
         Vec3 transmitted;
         if (refractDirection(ray.direction, normal, eta, transmitted)) {
             traceSpecular(spawnRay(*hit, transmitted, numerics),
-                          {lpe::EventType::Transmission, lpe::Scatter::Specular, subject},
+                          {lpe::EventType::Transmission, lpe::Scatter::Specular, Subject::Object, subject},
                           symbols.refraction, state, throughput * material.kt, depth, tracer);
         } else {
             // Total internal reflection: the transmitted share is reflected instead.

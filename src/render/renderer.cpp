@@ -6,7 +6,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "math/random.h"
+#include "render/progress.h"
+#include "sampling/sampler.h"
 
 namespace lightpath {
 namespace {
@@ -19,14 +20,16 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     : scene_(scene),
       aovs_(aovs),
       options_(options),
-      geometry_(scene.spheres, scene.planes, scene.triangles, options.numerics),
+      geometry_(scene.spheres, scene.planes, scene.triangles, options.numerics, options.accelerator,
+                scene.triangleNormals),
       symbols_(scene, aovs.automaton()),
       analysis_(scene),
+      emitters_(scene_, geometry_),
       camera_(scene.camera),
       integrator_(makeIntegrator(options.integrator)),
-      context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, options.maxDepth,
+      context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, emitters_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
-    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast or whitted");
+    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted or path");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
@@ -41,21 +44,20 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
 void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
     const int spp = options_.samplesPerPixel;
     for (int s = 0; s < spp; ++s) {
+        Sampler sampler(x, y, s, options_.seed);
+        tracer.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are jittered within it.
-        float dx = 0.5f, dy = 0.5f;
-        if (spp > 1) {
-            Pcg32 rng = pixelSampleRng(x, y, s, options_.seed);
-            dx = rng.nextFloat();
-            dy = rng.nextFloat();
-        }
+        Vec2 offset{0.5f};
+        const Vec2 jitter = sampler.next2D();
+        if (spp > 1) offset = jitter;
         const auto state = context_.automaton.step(context_.automaton.start(), symbols_.camera);
         if (!tracer.alive(state)) {
             ++tracer.counters.cameraDead;
             continue;
         }
-        const Ray ray = camera_.generateRay(static_cast<float>(x) + dx, static_cast<float>(y) + dy);
+        const Ray ray = camera_.generateRay(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
         ++tracer.counters.camera;
-        tracer.path.push({lpe::EventType::Camera, lpe::Scatter::None, kSubjectNone});
+        tracer.path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None});
         integrator_->traceCameraRay(ray, state, tracer);
         tracer.path.pop();
     }
@@ -82,6 +84,7 @@ RenderResult Renderer::render() const {
     int threadCount = options_.threads > 0 ? options_.threads : static_cast<int>(std::thread::hardware_concurrency());
     threadCount = std::clamp(threadCount, 1, std::max(1, tileCount));
 
+    ProgressBar progress(tileCount, options_.progress);
     std::atomic<int> nextTile{0};
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
     auto work = [&](int worker) {
@@ -99,6 +102,7 @@ RenderResult Renderer::render() const {
                     for (std::size_t l = 0; l < writtenLayers_.size(); ++l) pixel[l] = layers[writtenLayers_[l]];
                 }
             }
+            progress.tileDone();
         }
     };
     std::vector<std::jthread> workers;
@@ -111,6 +115,7 @@ RenderResult Renderer::render() const {
     stats.samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
                     static_cast<std::uint64_t>(options_.samplesPerPixel);
     stats.threads = threadCount;
+    stats.accelerator = geometry_.acceleratorStats();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return {std::move(film), stats};
 }

@@ -14,6 +14,7 @@
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
+#include "lights/emitters.h"
 #include "integrators/ray_counters.h"
 #include "scene/camera.h"
 #include "scene/scene_analysis.h"
@@ -32,6 +33,8 @@ struct RenderOptions {
     bool writeBeauty = true;
     bool skip = true;  // false: `--no-skip`, trace and evaluate everything
     NumericsOptions numerics;
+    Accelerator accelerator = Accelerator::Bvh;
+    bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
 };
 
 struct RenderStats {
@@ -39,6 +42,7 @@ struct RenderStats {
     double seconds = 0.0;
     std::uint64_t samples = 0;
     int threads = 1;
+    AcceleratorStats accelerator;  // what building the BVH (or Embree's) cost, before the render
 };
 
 struct RenderResult {
@@ -66,6 +70,7 @@ private:
     SceneGeometry geometry_;
     EventSymbols symbols_;
     SceneAnalysis analysis_;
+    EmitterSet emitters_;
     PinholeCamera camera_;
     std::vector<std::size_t> writtenLayers_;  // indices into AovSet::layerNames()
     std::unique_ptr<Integrator> integrator_;
