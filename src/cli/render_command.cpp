@@ -36,6 +36,16 @@ void printStats(const RenderStats& stats) {
     std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
 }
 
+void printAcceleratorStats(const std::string& accel, const AcceleratorStats& a) {
+    if (accel == "none") {
+        std::printf("accelerator   none: every ray tests every primitive\n");
+        return;
+    }
+    std::printf("accelerator   %s: built in %.1f ms, BVH %zu nodes (%.1f KiB)%s\n", accel.c_str(), a.buildSeconds * 1e3,
+                a.nodes, static_cast<double>(a.nodeBytes) / 1024.0,
+                accel == "embree" ? " over the spheres; Embree holds the triangles" : "");
+}
+
 void run(const RenderCommand& command) {
     const Scene scene = command.setup.loadScene();
     const AovSet aovs = command.setup.buildAovSet();
@@ -66,7 +76,10 @@ void run(const RenderCommand& command) {
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
-    if (command.stats) printStats(result.stats);
+    if (command.stats) {
+        printStats(result.stats);
+        printAcceleratorStats(command.setup.accel, result.stats.accelerator);
+    }
 }
 
 }  // namespace

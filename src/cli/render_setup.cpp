@@ -20,8 +20,10 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 
 void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("scene", scenePath, "Scene file (TOML, see scenes/README.md)")->required();
-    command.add_option("--integrator", integrator, "raycast: first hit only; whitted: adds mirror and refraction rays")
-        ->check(CLI::IsMember({"raycast", "whitted"}))
+    command.add_option("--integrator", integrator,
+                       "raycast: first hit only; whitted: adds mirror and refraction rays; "
+                       "path: path tracing with global illumination (physically based reading)")
+        ->check(CLI::IsMember({"raycast", "whitted", "path"}))
         ->capture_default_str();
     command.add_option("--lpe", lpes,
                        "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "
@@ -31,7 +33,7 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
         ->capture_default_str();
-    command.add_option("--max-depth", maxDepth, "Most specular bounces (whitted)")
+    command.add_option("--max-depth", maxDepth, "Most specular bounces (whitted) or scattering events (path)")
         ->check(CLI::Range(0, kMaxDepth))
         ->capture_default_str();
     command.add_option("--resolution", resolution,
@@ -40,6 +42,12 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("--seed", seed, "Seed of the per-pixel sample sequences");
     command.add_flag("--no-beauty", noBeauty,
                      "Compute only the requested AOVs (no beauty, no rest): paths none of them accepts are not traced");
+    command.add_option("--accel", accel,
+                       "Closest-hit and shadow-ray search: bvh (ours), embree (if built with it; triangles) "
+                       "or none (test every primitive)")
+        ->check(CLI::IsMember({"bvh", "embree", "none"}))
+        ->capture_default_str();
+    command.add_flag("--quiet", quiet, "No progress bar (shown on a terminal for renders over a second)");
     command.add_flag("--no-skip", noSkip,
                      "Trace every ray and evaluate every term, even those that cannot contribute (for comparison)");
 }
@@ -103,6 +111,10 @@ RenderOptions RenderSetup::renderOptions() const {
     options.seed = seed;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;
+    options.accelerator = accel == "embree" ? Accelerator::Embree
+                          : accel == "none" ? Accelerator::BruteForce
+                                            : Accelerator::Bvh;
+    options.progress = !quiet;
     return options;
 }
 

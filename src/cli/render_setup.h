@@ -25,6 +25,8 @@ struct RenderSetup {
     std::string resolution;          // WxH, empty for the scene's
     bool noBeauty = false;
     bool noSkip = false;
+    std::string accel = "bvh";       // bvh, embree or none (brute force)
+    bool quiet = false;              // no progress bar
 
     void addOptions(CLI::App& command);
 

@@ -1,15 +1,79 @@
 #include "geometry/scene_geometry.h"
 
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "geometry/intersect.h"
+#ifdef LIGHTPATH_HAS_EMBREE
+#include "accel/embree_accelerator.h"
+#endif
 
 namespace lightpath {
+namespace {
+
+// Primitive tests round: a hit they report may lie a few ulps outside the exact shape, so boxes
+// grow by a margin far above that rounding (2^-16 relative) and traversal never drops such a hit.
+Bounds padded(Bounds b) {
+    const Vec3 magnitude = glm::max(glm::abs(b.lo), glm::abs(b.hi));
+    const Vec3 margin = (magnitude + (b.hi - b.lo)) * 0x1p-16f;
+    b.lo -= margin;
+    b.hi += margin;
+    return b;
+}
+
+Bounds sphereBounds(const Sphere& s) {
+    return padded({s.center - Vec3(s.radius), s.center + Vec3(s.radius)});
+}
+
+Bounds triangleBounds(const Triangle& t) {
+    Bounds b;
+    b.grow(t.a);
+    b.grow(t.b);
+    b.grow(t.c);
+    return padded(b);
+}
+
+}  // namespace
+
+bool embreeAvailable() {
+#ifdef LIGHTPATH_HAS_EMBREE
+    return true;
+#else
+    return false;
+#endif
+}
 
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
-                             std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator)
+                             std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
+                             std::vector<TriangleNormals> vertexNormals)
     : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
-      numerics_(numerics), accelerator_(accelerator) {}
+      vertexNormals_(std::move(vertexNormals)), numerics_(numerics), accelerator_(accelerator) {
+    if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
+        throw std::invalid_argument("vertex normals: expected one entry per triangle");
+    if (accelerator_ == Accelerator::BruteForce) return;
+    if (accelerator_ == Accelerator::Embree && !embreeAvailable())
+        throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
+    const auto started = std::chrono::steady_clock::now();
+    std::vector<BvhPrimitive> primitives;
+    for (std::uint32_t i = 0; i < spheres_.size(); ++i) primitives.push_back({sphereBounds(spheres_[i]), i});
+    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+    if (accelerator_ == Accelerator::Bvh) {
+        for (std::uint32_t i = 0; i < triangles_.size(); ++i)
+            primitives.push_back({triangleBounds(triangles_[i]), firstTriangle + i});
+    }
+    bvh_ = Bvh(std::move(primitives));
+#ifdef LIGHTPATH_HAS_EMBREE
+    if (accelerator_ == Accelerator::Embree && !triangles_.empty())
+        embree_ = std::make_shared<const EmbreeScene>(triangles_);
+#endif
+    stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    stats_.nodes = bvh_.stats().nodes;
+    stats_.nodeBytes = bvh_.stats().nodeBytes;
+}
+
+SceneGeometry::~SceneGeometry() = default;
 
 float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const {
     if (id == ray.ignoredPrimitive) return kNoHit;
@@ -27,6 +91,44 @@ float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const 
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
+    const std::optional<PrimitiveHit> found = closestPrimitive(ray);
+    if (!found) return std::nullopt;
+    return describeHit(ray, found->t, found->primitive);
+}
+
+std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) const {
+    if (accelerator_ == Accelerator::BruteForce) return closestBruteForce(ray);
+    // The brute-force answer is the smallest t, ties to the smallest id (a later primitive must
+    // be strictly nearer). Candidates arrive in another order here, so each is tested against a
+    // limit one ulp beyond the best t, and an equal t wins only with a smaller id.
+    PrimitiveHit best{ray.tMax, kNoPrimitive};
+    Ray probe = ray;
+    const auto consider = [&](std::uint32_t id) {
+        const float t = intersectPrimitive(probe, id);
+        if (t == kNoHit) return;
+        if (t < best.t || (t == best.t && id < best.primitive)) {
+            best = {t, id};
+            probe.tMax = std::nextafter(t, std::numeric_limits<float>::infinity());
+        }
+    };
+    bvh_.closest(ray, best.t, consider);
+    const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
+    for (std::uint32_t i = 0; i < planes_.size(); ++i) consider(firstPlane + i);
+#ifdef LIGHTPATH_HAS_EMBREE
+    if (embree_) {
+        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+        const std::uint32_t ignored =
+            ray.ignoredPrimitive >= firstTriangle ? ray.ignoredPrimitive - firstTriangle : kNoPrimitive;
+        float t = 0.0f;
+        std::uint32_t index = 0;
+        if (embree_->intersect(ray, best.t, ignored, t, index) && t < best.t) best = {t, firstTriangle + index};
+    }
+#endif
+    if (best.primitive == kNoPrimitive) return std::nullopt;
+    return best;
+}
+
+std::optional<PrimitiveHit> SceneGeometry::closestBruteForce(const Ray& ray) const {
     // The lecture's loop: test every primitive, keep the smallest t.
     Ray closest = ray;
     std::uint32_t found = kNoPrimitive;
@@ -38,10 +140,27 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
         found = id;
     }
     if (found == kNoPrimitive) return std::nullopt;
-    return describeHit(ray, closest.tMax, found);
+    return PrimitiveHit{closest.tMax, found};
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
+    if (accelerator_ == Accelerator::BruteForce) return occludedBruteForce(ray);
+    const auto blocks = [&](std::uint32_t id) { return intersectPrimitive(ray, id) != kNoHit; };
+    const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
+    for (std::uint32_t i = 0; i < planes_.size(); ++i)
+        if (blocks(firstPlane + i)) return true;
+#ifdef LIGHTPATH_HAS_EMBREE
+    if (embree_) {
+        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+        const std::uint32_t ignored =
+            ray.ignoredPrimitive >= firstTriangle ? ray.ignoredPrimitive - firstTriangle : kNoPrimitive;
+        if (embree_->occluded(ray, ignored)) return true;
+    }
+#endif
+    return bvh_.any(ray, blocks);
+}
+
+bool SceneGeometry::occludedBruteForce(const Ray& ray) const {
     const auto count = static_cast<std::uint32_t>(primitiveCount());
     for (std::uint32_t id = 0; id < count; ++id)
         if (intersectPrimitive(ray, id) != kNoHit) return true;
@@ -78,8 +197,16 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id)
     hit.shadingNormal = hit.normal;
     hit.object = tri.object;
     Vec3 weights;
-    if (intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit)
+    if (intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit) {
         hit.point = weights.x * tri.a + weights.y * tri.b + weights.z * tri.c;
+        if (!vertexNormals_.empty()) {
+            const TriangleNormals& n = vertexNormals_[id];
+            const Vec3 smooth = weights.x * n.a + weights.y * n.b + weights.z * n.c;
+            const float length = glm::length(smooth);
+            // A flat triangle (zero normals) or a degenerate blend keeps the geometric normal.
+            if (length > 0.0f && std::isfinite(length)) hit.shadingNormal = smooth / length;
+        }
+    }
     return hit;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include "accel/bvh.h"
 #include "geometry/numerics.h"
 #include "geometry/shapes.h"
 #include "geometry/surface_hit.h"
@@ -15,24 +17,58 @@ namespace lightpath {
 // How closest-hit and any-hit queries find their candidates.
 enum class Accelerator {
     BruteForce,  // the lecture's loop over every primitive
+    Bvh,         // our BVH over spheres and triangles (src/accel/bvh.h); planes are tested apart
+    Embree,      // Embree for the triangles (when built with LIGHTPATH_EMBREE), our BVH for spheres
 };
+
+// What building the acceleration structure cost.
+struct AcceleratorStats {
+    double buildSeconds = 0.0;
+    std::size_t nodes = 0;
+    std::size_t nodeBytes = 0;
+};
+
+// The nearest hit as an accelerator reports it, before describeHit: t and the scene-wide id.
+struct PrimitiveHit {
+    float t = 0.0f;
+    std::uint32_t primitive = kNoPrimitive;
+};
+
+class EmbreeScene;
+
+// True when this build includes the Embree backend.
+bool embreeAvailable();
 
 class SceneGeometry {
 public:
     SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes, std::vector<Triangle> triangles,
-                  NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce);
+                  NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
+                  std::vector<TriangleNormals> vertexNormals = {});
+    // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
+    ~SceneGeometry();
+    SceneGeometry(SceneGeometry&&) noexcept = default;
+    SceneGeometry& operator=(SceneGeometry&&) noexcept = default;
+    SceneGeometry(const SceneGeometry&) = default;
+    SceneGeometry& operator=(const SceneGeometry&) = default;
+
+    // Closest hit: smallest t, and among equal t the smallest id, whatever the accelerator
+    // (Embree: its own triangle test decides, so rare ties and edge hits may differ).
+    std::optional<PrimitiveHit> closestPrimitive(const Ray& ray) const;
 
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
 
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }
+    const AcceleratorStats& acceleratorStats() const { return stats_; }
     const std::vector<Sphere>& spheres() const { return spheres_; }
     const std::vector<Plane>& planes() const { return planes_; }
     const std::vector<Triangle>& triangles() const { return triangles_; }
     std::size_t primitiveCount() const { return spheres_.size() + planes_.size() + triangles_.size(); }
 
 private:
+    std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
+    bool occludedBruteForce(const Ray& ray) const;
     // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit.
     float intersectPrimitive(const Ray& ray, std::uint32_t id) const;
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id) const;
@@ -40,8 +76,12 @@ private:
     std::vector<Sphere> spheres_;
     std::vector<Plane> planes_;
     std::vector<Triangle> triangles_;
+    std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     NumericsOptions numerics_;
     Accelerator accelerator_;
+    Bvh bvh_;  // spheres and triangles (Bvh), spheres only (Embree)
+    std::shared_ptr<const EmbreeScene> embree_;
+    AcceleratorStats stats_;
 };
 
 }  // namespace lightpath

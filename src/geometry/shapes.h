@@ -25,4 +25,10 @@ struct Triangle {
     std::uint32_t object = 0;
 };
 
+// The unit normals at a triangle's corners (a mesh's vertex normals), for smooth shading; all
+// zero for a flat triangle.
+struct TriangleNormals {
+    Vec3 a{0.0f}, b{0.0f}, c{0.0f};
+};
+
 }  // namespace lightpath

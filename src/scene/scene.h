@@ -12,8 +12,8 @@
 
 namespace lightpath {
 
-// One named thing in the scene file: a sphere, a plane, a triangle (later a mesh). Its label in
-// light paths is its name, or its material's name when it has none.
+// One named thing in the scene file: a sphere, a plane, a triangle, or the part of a mesh with
+// one material. Its label in light paths is its name, or its material's name when it has none.
 struct SceneObject {
     std::string name;
     std::uint32_t material = 0;
@@ -33,6 +33,8 @@ struct Scene {
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
     std::vector<Triangle> triangles;
+    // Empty when no triangle has vertex normals, else one entry per triangle (meshes' `vn`).
+    std::vector<TriangleNormals> triangleNormals;
 
     const std::string& labelOf(std::uint32_t object) const {
         const SceneObject& o = objects[object];

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <system_error>
 
+#include "scene/obj_loader.h"
 #include "scene/spelling.h"
 #include "scene/toml_reader.h"
 
@@ -81,7 +84,7 @@ void readWorld(const TomlTable& table, Scene& scene) {
 
 // Keys the file leaves out keep the defaults of PhongMaterial (material.h).
 PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
-    table.allowOnly({"ka", "kd", "ks", "n", "kr", "kt", "ior"});
+    table.allowOnly({"ka", "kd", "ks", "n", "kr", "kt", "ior", "emission"});
     PhongMaterial material;
     material.name = name;
     if (auto ka = table.find("ka")) material.ka = ka->rgb();
@@ -91,6 +94,7 @@ PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
     if (auto kr = table.find("kr")) material.kr = kr->rgb();
     if (auto kt = table.find("kt")) material.kt = kt->rgb();
     if (auto ior = table.find("ior")) material.ior = ior->number(positive);
+    if (auto emission = table.find("emission")) material.emission = emission->rgb();
     return material;
 }
 
@@ -196,6 +200,103 @@ Triangle readTriangle(const TomlTable& table, Scene& scene) {
     return triangle;
 }
 
+// scale, then rotate_y, then translate: a mesh is placed as its file describes it, resized about
+// its own origin, turned about the vertical axis and moved.
+struct MeshPlacement {
+    Vec3 scale{1.0f};
+    float rotateY = 0.0f;  // radians
+    Vec3 translate{0.0f};
+
+    Vec3 point(Vec3 p) const {
+        p *= scale;
+        const float c = std::cos(rotateY), s = std::sin(rotateY);
+        return Vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z) + translate;
+    }
+    // Normals take the inverse transpose: divide by the scale, rotate like points.
+    Vec3 normal(Vec3 n) const {
+        if (n == Vec3(0.0f)) return n;
+        n /= scale;
+        const float c = std::cos(rotateY), s = std::sin(rotateY);
+        return glm::normalize(Vec3(c * n.x + s * n.z, n.y, -s * n.x + c * n.z));
+    }
+};
+
+MeshPlacement readPlacement(const TomlTable& table) {
+    MeshPlacement placement;
+    if (auto scale = table.find("scale")) {
+        placement.scale = scale->rgb();
+        if (placement.scale.x <= 0.0f || placement.scale.y <= 0.0f || placement.scale.z <= 0.0f)
+            scale->fail("expected a positive number or 3 positive numbers, got " + formatVec3(placement.scale));
+    }
+    if (auto rotate = table.find("rotate_y")) placement.rotateY = glm::radians(rotate->number());
+    if (auto translate = table.find("translate")) placement.translate = translate->vec3();
+    return placement;
+}
+
+// The scene material called `name`, added from the mesh's MTL unless the scene (its
+// [materials] or an earlier mesh) already has one of that name, which then wins.
+std::uint32_t sceneMaterialFor(const PhongMaterial& mtl, Scene& scene) {
+    for (std::uint32_t i = 0; i < scene.materials.size(); ++i)
+        if (scene.materials[i].name == mtl.name) return i;
+    scene.materials.push_back(mtl);
+    return static_cast<std::uint32_t>(scene.materials.size() - 1);
+}
+
+// A [[meshes]] entry: every MTL material used becomes one scene object (labelled by the mesh's
+// name, else by the material's MTL name); `material` puts the whole mesh in one scene material.
+void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Scene& scene) {
+    table.allowOnly({"name", "file", "material", "scale", "rotate_y", "translate"});
+    const TomlValue fileValue = table.required("file");
+    const std::filesystem::path file = sceneFile.parent_path() / fileValue.string();
+    ObjMesh mesh;
+    try {
+        mesh = loadObj(file);
+    } catch (const SceneError& e) {
+        fileValue.fail(e.what());
+    }
+    std::string name;
+    if (auto nameValue = table.find("name")) name = readName(*nameValue);
+    std::optional<std::uint32_t> override;
+    if (auto material = table.find("material")) override = findMaterial(*material, scene.materials);
+    const MeshPlacement placement = readPlacement(table);
+
+    // Scene object of each MTL material index, created on first use, in order of first use.
+    std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
+    const auto objectFor = [&](std::uint32_t mtlIndex) {
+        const std::size_t slot = mtlIndex == kNoMeshMaterial ? mesh.materials.size() : mtlIndex;
+        if (objectOf[slot] != kNoMeshMaterial) return objectOf[slot];
+        SceneObject object;
+        object.name = name;
+        if (override) {
+            object.material = *override;
+        } else if (mtlIndex == kNoMeshMaterial) {
+            fileValue.fail(file.string() + ": has faces without a material (no usemtl); give the mesh a `material`");
+        } else {
+            const PhongMaterial& mtl = mesh.materials[mtlIndex];
+            if (!isValidName(mtl.name))
+                fileValue.fail(file.string() + ": material \"" + mtl.name + "\" is not a name of " +
+                               std::string(kNameCharacters) + "; give the mesh a `material`");
+            object.material = sceneMaterialFor(mtl, scene);
+        }
+        scene.objects.push_back(object);
+        objectOf[slot] = static_cast<std::uint32_t>(scene.objects.size() - 1);
+        return objectOf[slot];
+    };
+
+    const bool smooth = !mesh.normals.empty();
+    if (smooth && scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const Triangle& t = mesh.triangles[i];
+        scene.triangles.push_back({placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)});
+        if (smooth) {
+            const TriangleNormals& n = mesh.normals[i];
+            scene.triangleNormals.push_back({placement.normal(n.a), placement.normal(n.b), placement.normal(n.c)});
+        } else if (!scene.triangleNormals.empty()) {
+            scene.triangleNormals.emplace_back();
+        }
+    }
+}
+
 // The whole file as text. Reading it here (rather than in toml++) lets a missing file report the
 // operating system's reason.
 std::string readFile(const std::filesystem::path& path) {
@@ -238,7 +339,7 @@ void forEachSection(const TomlTable& root, std::string_view key, Read read) {
 Scene loadScene(const std::filesystem::path& path) {
     const toml::table document = parseFile(path);
     const TomlTable root(document, "");
-    root.allowOnly({"camera", "world", "materials", "lights", "spheres", "planes", "triangles"});
+    root.allowOnly({"camera", "world", "materials", "lights", "spheres", "planes", "triangles", "meshes"});
 
     Scene scene;
     scene.source = path;
@@ -260,6 +361,8 @@ Scene loadScene(const std::filesystem::path& path) {
     forEachSection(root, "triangles", [&](const TomlTable& triangle) {
         scene.triangles.push_back(readTriangle(triangle, scene));
     });
+    forEachSection(root, "meshes", [&](const TomlTable& mesh) { readMesh(mesh, path, scene); });
+    if (!scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
     return scene;
 }
 

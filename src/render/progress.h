@@ -1,0 +1,37 @@
+#pragma once
+// A progress bar on stderr for long renders: tiles done, elapsed time and an estimate of the time
+// left. It appears only when stderr is a terminal and the render has run for a second, redraws a
+// few times a second from its own thread (workers only bump a counter) and erases itself at the end.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+namespace lightpath {
+
+class ProgressBar {
+public:
+    // `enabled` false (e.g. --quiet) or stderr not a terminal: does nothing at all.
+    ProgressBar(int totalTiles, bool enabled);
+    ~ProgressBar();
+    ProgressBar(const ProgressBar&) = delete;
+    ProgressBar& operator=(const ProgressBar&) = delete;
+
+    void tileDone() { done_.fetch_add(1, std::memory_order_relaxed); }
+
+private:
+    void run();
+    void draw(double elapsedSeconds) const;
+
+    const int total_;
+    std::atomic<int> done_{0};
+    std::chrono::steady_clock::time_point started_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool stopping_ = false;
+    bool drawn_ = false;
+    std::thread thread_;
+};
+
+}  // namespace lightpath
