@@ -1,5 +1,6 @@
 #include "geometry/intersect.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -12,37 +13,62 @@ int maxDimension(const Vec3& v) {
 
 Vec3 permute(const Vec3& v, int x, int y, int z) { return {v[x], v[y], v[z]}; }
 
+// Higham's gamma_n = n u / (1 - n u), u = 2^-24: the relative error bound of n float operations.
+constexpr float gamma(int n) {
+    constexpr float u = 0x1p-24f;
+    return static_cast<float>(n) * u / (1.0f - static_cast<float>(n) * u);
+}
+
 }  // namespace
 
+bool sphereRoots(const Ray& ray, const Sphere& sphere, float& t0, float& t1) {
+    // a t^2 + 2 b t + c = 0 with f = origin - centre, a = d.d, b = f.d, c = f.f - r^2.
+    const glm::dvec3 f = glm::dvec3(ray.origin) - glm::dvec3(sphere.center);  // exact: float inputs
+    const glm::dvec3 d(ray.direction);
+    const double a = glm::dot(d, d);
+    if (!(a > 0.0)) return false;  // zero or NaN direction
+    const double b = glm::dot(f, d);
+    const double r = sphere.radius;
+    // b^2 - a c = a (r^2 - |f - (b/a) d|^2): the distance of the centre from the line, without the
+    // cancellation of two large squares (Haines et al. 2019, eq. 7.5).
+    const glm::dvec3 perpendicular = f - (b / a) * d;
+    const double discriminant = a * (r * r - glm::dot(perpendicular, perpendicular));
+    if (!(discriminant >= 0.0)) return false;
+    const double c = glm::dot(f, f) - r * r;
+    // The root that adds magnitudes first, the other from Vieta's t0 t1 = c / a (Haines eq. 7.6).
+    const double q = -(b + std::copysign(std::sqrt(discriminant), b));
+    double r0 = q / a;
+    double r1 = q != 0.0 ? c / q : r0;
+    if (r0 > r1) std::swap(r0, r1);
+    t0 = static_cast<float>(r0);
+    t1 = static_cast<float>(r1);
+    return true;
+}
+
+bool sphereRootsNaive(const Ray& ray, const Sphere& sphere, float& t0, float& t1) {
+    const Vec3 co = ray.origin - sphere.center;
+    const float a = glm::dot(ray.direction, ray.direction);
+    const float b = 2.0f * glm::dot(co, ray.direction);
+    const float c = glm::dot(co, co) - sphere.radius * sphere.radius;
+    const float discriminant = b * b - 4.0f * a * c;
+    if (!(discriminant >= 0.0f)) return false;
+    const float root = std::sqrt(discriminant);
+    t0 = (-b - root) / (2.0f * a);
+    t1 = (-b + root) / (2.0f * a);
+    return true;
+}
+
 float intersectSphere(const Ray& ray, const Sphere& sphere, float tMin) {
-    const Vec3 f = ray.origin - sphere.center;  // from the centre to the ray origin
-    const Vec3& d = ray.direction;              // unit, so a = 1
-    const float b = glm::dot(f, d);
-    const Vec3 perpendicular = f - b * d;       // f minus its projection on the ray
-    const float r2 = sphere.radius * sphere.radius;
-    const float discriminant = r2 - glm::dot(perpendicular, perpendicular);
-    if (discriminant < 0.0f) return kNoHit;
-    const float c = glm::dot(f, f) - r2;
-    const float q = -(b + std::copysign(std::sqrt(discriminant), b));
-    float t0 = c / q;
-    float t1 = q;
-    if (q == 0.0f) t0 = t1 = 0.0f;  // ray origin at the centre of a degenerate sphere
-    if (t0 > t1) std::swap(t0, t1);
+    float t0 = 0.0f, t1 = 0.0f;
+    if (!sphereRoots(ray, sphere, t0, t1)) return kNoHit;
     if (t0 > tMin && t0 < ray.tMax) return t0;
     if (t1 > tMin && t1 < ray.tMax) return t1;
     return kNoHit;
 }
 
 float intersectSphereNaive(const Ray& ray, const Sphere& sphere, float tMin) {
-    const Vec3 co = ray.origin - sphere.center;
-    const float a = glm::dot(ray.direction, ray.direction);
-    const float b = 2.0f * glm::dot(co, ray.direction);
-    const float c = glm::dot(co, co) - sphere.radius * sphere.radius;
-    const float discriminant = b * b - 4.0f * a * c;
-    if (discriminant < 0.0f) return kNoHit;
-    const float root = std::sqrt(discriminant);
-    const float t0 = (-b - root) / (2.0f * a);
-    const float t1 = (-b + root) / (2.0f * a);
+    float t0 = 0.0f, t1 = 0.0f;
+    if (!sphereRootsNaive(ray, sphere, t0, t1)) return kNoHit;
     if (t0 > tMin && t0 < ray.tMax) return t0;
     if (t1 > tMin && t1 < ray.tMax) return t1;
     return kNoHit;
@@ -90,6 +116,18 @@ float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin, Vec3* b
     const float az = sz * a.z, bz = sz * b.z, cz = sz * c.z;
     const float t = (u * az + v * bz + w * cz) / det;
     if (!(t > tMin && t < ray.tMax)) return kNoHit;
+    // Conservative bound of t's rounding error (pbrt-v4, section 6.8.4): a t this small may be
+    // the surface the ray starts on, seen through rounding, so it is no hit.
+    const float maxZ = std::max({std::fabs(az), std::fabs(bz), std::fabs(cz)});
+    const float maxX = std::max({std::fabs(ax), std::fabs(bx), std::fabs(cx)});
+    const float maxY = std::max({std::fabs(ay), std::fabs(by), std::fabs(cy)});
+    const float deltaZ = gamma(3) * maxZ;
+    const float deltaX = gamma(5) * (maxX + maxZ);
+    const float deltaY = gamma(5) * (maxY + maxZ);
+    const float deltaE = 2.0f * (gamma(2) * maxX * maxY + deltaY * maxX + deltaX * maxY);
+    const float maxE = std::max({std::fabs(u), std::fabs(v), std::fabs(w)});
+    const float deltaT = 3.0f * (gamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) / std::fabs(det);
+    if (t <= deltaT) return kNoHit;
     if (barycentrics != nullptr) *barycentrics = Vec3{u, v, w} / det;
     return t;
 }

@@ -15,7 +15,8 @@ enum class TriangleTest {
 };
 
 enum class RayOffset {
-    Robust,        // origin moved past a bound of the hit point's rounding error
+    Robust,        // origin moved past a bound of the hit point's rounding error (pbrt-v4)
+    WachterBinder, // Wachter and Binder 2019: a fixed number of ulps, absolute near the origin
     FixedEpsilon,  // the lecture's fix: start at t_min = epsilon
     None,          // start exactly at the computed hit point: shadow acne
     OwnPrimitive,  // the lecture's "treat the primitive containing p differently": ignore it

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace lightpath {
 namespace {
@@ -11,7 +12,7 @@ constexpr float kOrigin = 1.0f / 32.0f;     // below this magnitude use the abso
 constexpr float kFloatScale = 1.0f / 65536.0f;
 constexpr float kIntScale = 256.0f;         // ulps per unit of normal
 
-float offsetCoordinate(float p, float n) {
+float offsetCoordinateWachterBinder(float p, float n) {
     const auto ulps = static_cast<std::int32_t>(kIntScale * n);
     const auto bits = std::bit_cast<std::int32_t>(p);
     // Adding to the integer representation moves by ulps; the sign picks the direction.
@@ -19,10 +20,27 @@ float offsetCoordinate(float p, float n) {
     return std::fabs(p) < kOrigin ? p + kFloatScale * n : moved;
 }
 
+// One float further along the normal's sign, so rounding of p + offset cannot undo the move.
+float roundAway(float moved, float normal) {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    if (normal > 0.0f) return std::nextafter(moved, inf);
+    if (normal < 0.0f) return std::nextafter(moved, -inf);
+    return moved;
+}
+
 }  // namespace
 
 Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n) {
-    return {offsetCoordinate(p.x, n.x), offsetCoordinate(p.y, n.y), offsetCoordinate(p.z, n.z)};
+    const Vec3 error = kPointErrorScale * glm::abs(p);
+    const float distance = glm::dot(glm::abs(n), error);
+    const Vec3 offset = distance * n;
+    const Vec3 moved = p + offset;
+    return {roundAway(moved.x, n.x), roundAway(moved.y, n.y), roundAway(moved.z, n.z)};
+}
+
+Vec3 offsetRayOriginWachterBinder(const Vec3& p, const Vec3& n) {
+    return {offsetCoordinateWachterBinder(p.x, n.x), offsetCoordinateWachterBinder(p.y, n.y),
+            offsetCoordinateWachterBinder(p.z, n.z)};
 }
 
 }  // namespace lightpath
