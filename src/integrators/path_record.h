@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "lpe/event.h"
+#include "math/random.h"
 
 namespace lightpath {
 
@@ -37,6 +38,16 @@ public:
     }
     void pop() { --size_; }
     std::size_t size() const { return size_; }
+    // A hash of the events so far: names the vertex this path has reached.
+    std::uint64_t key() const {
+        std::uint64_t key = size_;
+        for (std::size_t i = 0; i < size_; ++i) {
+            const PathEvent& e = events_[i];
+            key = mixBits(key ^ ((std::uint64_t{static_cast<std::uint8_t>(e.type)} << 40) |
+                                 (std::uint64_t{static_cast<std::uint8_t>(e.scatter)} << 32) | e.index));
+        }
+        return key;
+    }
     const PathEvent& operator[](std::size_t i) const { return events_[i]; }
 
 private:

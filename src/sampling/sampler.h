@@ -10,7 +10,12 @@ namespace lightpath {
 
 class Sampler {
 public:
-    Sampler(int x, int y, int sampleIndex, std::uint64_t seed) : rng_(pixelSampleRng(x, y, sampleIndex, seed)) {}
+    Sampler(int x, int y, int sampleIndex, std::uint64_t seed)
+        : rng_(pixelSampleRng(x, y, sampleIndex, seed)), key_(mixBits(rng_.nextUint() ^ (std::uint64_t{rng_.nextUint()} << 32))) {}
+
+    // An independent stream for one vertex of a branching path, keyed by the path that leads to
+    // it: its numbers do not depend on which other branches were traced (or skipped) before it.
+    Pcg32 streamFor(std::uint64_t pathKey) const { return Pcg32(mixBits(key_ ^ pathKey), pathKey); }
 
     float next1D() { return rng_.nextFloat(); }
     Vec2 next2D() {
@@ -20,6 +25,7 @@ public:
 
 private:
     Pcg32 rng_;
+    std::uint64_t key_;
 };
 
 }  // namespace lightpath
