@@ -1,0 +1,173 @@
+// chi-square tests of the path tracer's importance sampling against its evaluated densities, the
+// way Nori's chi2test does it: histogram many sampled directions over (cos theta, phi) cells,
+// integrate pdf() over the same cells for the expected counts, pool sparse cells, and judge the
+// statistic with a significance level corrected for the number of tests (Sidak).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "materials/phong_bsdf.h"
+#include "sampling/warp.h"
+#include "statistics.h"
+
+namespace lightpath {
+namespace {
+
+constexpr int kCosBins = 16, kPhiBins = 32, kSamples = 200000;
+constexpr int kTests = 8;
+const double kSignificance = 1.0 - std::pow(1.0 - 0.01, 1.0 / kTests);
+
+struct Case {
+    const char* name;
+    PhongMaterial material;
+    float cosOut;
+};
+
+PhongMaterial makeMaterial(Rgb kd, Rgb ks, float n) {
+    PhongMaterial m;
+    m.kd = kd;
+    m.ks = ks;
+    m.n = n;
+    return m;
+}
+
+// Bin of a direction in the frame of the normal +z: cos theta in [-1, 1], phi in [0, 2 pi).
+int binOf(const Vec3& w) {
+    const int c = std::clamp(static_cast<int>((w.z + 1.0f) * 0.5f * kCosBins), 0, kCosBins - 1);
+    float phi = std::atan2(w.y, w.x);
+    if (phi < 0.0f) phi += 2.0f * kPi;
+    const int p = std::clamp(static_cast<int>(phi / (2.0f * kPi) * kPhiBins), 0, kPhiBins - 1);
+    return c * kPhiBins + p;
+}
+
+// p-value that directions drawn by `sampling` follow the density `density` claims.
+double chiSquarePValue(const PhongBsdf& sampling, const PhongBsdf& density, float cosOut) {
+    const float sinOut = std::sqrt(1.0f - cosOut * cosOut);
+    const Vec3 wo{sinOut, 0, cosOut};
+
+    // Observed: sampled directions; the last cell counts samples that returned nothing.
+    std::vector<double> observed(kCosBins * kPhiBins + 1, 0.0);
+    std::mt19937_64 rng(12345);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (int i = 0; i < kSamples; ++i) {
+        const auto s = sampling.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
+        observed[s ? binOf(s->direction) : kCosBins * kPhiBins] += 1.0;
+    }
+
+    // Expected: the density integrated over each cell (midpoint rule on a fine grid; dw = dcos dphi).
+    std::vector<double> expected(observed.size(), 0.0);
+    constexpr int kSub = 12;
+    double total = 0.0;
+    for (int c = 0; c < kCosBins; ++c) {
+        for (int p = 0; p < kPhiBins; ++p) {
+            double integral = 0.0;
+            for (int a = 0; a < kSub; ++a) {
+                for (int b = 0; b < kSub; ++b) {
+                    const double z = -1.0 + 2.0 * (c + (a + 0.5) / kSub) / kCosBins;
+                    const double phi = 2.0 * M_PI * (p + (b + 0.5) / kSub) / kPhiBins;
+                    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+                    const Vec3 wi{float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)};
+                    integral += density.pdf(Lobe::Diffuse, wo, wi) + density.pdf(Lobe::Glossy, wo, wi);
+                }
+            }
+            const double cell = integral * (2.0 / kCosBins) * (2.0 * M_PI / kPhiBins) / (kSub * kSub);
+            expected[c * kPhiBins + p] = cell * kSamples;
+            total += cell;
+        }
+    }
+    expected.back() = std::max(0.0, 1.0 - total) * kSamples;
+
+    // Pool cells expecting fewer than 5 samples into one, as Pearson's test requires.
+    double statistic = 0.0, pooledObserved = 0.0, pooledExpected = 0.0;
+    int cells = 0;
+    for (std::size_t i = 0; i < observed.size(); ++i) {
+        if (expected[i] < 5.0) {
+            pooledObserved += observed[i];
+            pooledExpected += expected[i];
+            continue;
+        }
+        statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+        ++cells;
+    }
+    if (pooledExpected >= 5.0) {
+        statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
+        ++cells;
+    } else if (pooledObserved > 10.0) {
+        return 0.0;  // samples where the density says there are (almost) none
+    }
+    return test::chiSquarePValue(statistic, cells - 1);
+}
+
+TEST_CASE("chi-square: Lambert and normalised Phong sampling follow their densities") {
+    const Case cases[kTests] = {
+        {"diffuse, normal incidence", makeMaterial(Rgb{0.8f}, Rgb{0}, 1), 1.0f},
+        {"diffuse, grazing", makeMaterial(Rgb{0.5f}, Rgb{0}, 1), 0.1f},
+        {"phong n=1", makeMaterial(Rgb{0}, Rgb{0.9f}, 1), 0.7f},
+        {"phong n=10", makeMaterial(Rgb{0}, Rgb{0.9f}, 10), 0.5f},
+        {"phong n=100, grazing", makeMaterial(Rgb{0}, Rgb{0.9f}, 100), 0.2f},
+        {"phong n=40", makeMaterial(Rgb{0}, Rgb{0.5f}, 40), 0.9f},
+        {"diffuse + phong n=20", makeMaterial(Rgb{0.4f}, Rgb{0.3f}, 20), 0.6f},
+        {"coloured diffuse + phong n=5", makeMaterial({0.7f, 0.2f, 0.1f}, {0.1f, 0.1f, 0.6f}, 5), 0.3f},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        const PhongBsdf bsdf(c.material, {0, 0, 1}, true);
+        CHECK(chiSquarePValue(bsdf, bsdf, c.cosOut) > kSignificance);
+    }
+}
+
+TEST_CASE("chi-square machinery rejects a wrong density") {
+    // Sampling the n = 10 lobe while the density claims n = 12 must fail the same test.
+    const PhongMaterial sampled = makeMaterial(Rgb{0}, Rgb{0.9f}, 10);
+    const PhongMaterial claimed = makeMaterial(Rgb{0}, Rgb{0.9f}, 12);
+    const PhongBsdf sampling(sampled, {0, 0, 1}, true), density(claimed, {0, 0, 1}, true);
+    CHECK(chiSquarePValue(sampling, density, 0.8f) < kSignificance);
+}
+
+TEST_CASE("dielectric: reflection frequency is Fresnel's and refraction obeys Snell's law") {
+    PhongMaterial glass;
+    glass.kt = Rgb{1.0f};
+    glass.ior = 1.5f;
+    for (const bool entering : {true, false}) {
+        for (const float cosOut : {1.0f, 0.8f, 0.4f, 0.1f}) {
+            CAPTURE(entering);
+            CAPTURE(cosOut);
+            const PhongBsdf bsdf(glass, {0, 0, 1}, entering);
+            const double eta = entering ? 1.0 / 1.5 : 1.5;  // n_i / n_t
+            const double sinOut = std::sqrt(1.0 - double(cosOut) * cosOut);
+            // Fresnel for unpolarised light, written out in double (Hecht, Optics, 4.4).
+            double expectedReflectance = 1.0;
+            const double sinT = eta * sinOut;
+            if (sinT < 1.0) {
+                const double cosT = std::sqrt(1.0 - sinT * sinT), ci = cosOut;
+                const double rs = (eta * ci - cosT) / (eta * ci + cosT), rp = (ci - eta * cosT) / (ci + eta * cosT);
+                expectedReflectance = 0.5 * (rs * rs + rp * rp);
+            }
+            const Vec3 wo{float(sinOut), 0, cosOut};
+            std::mt19937_64 rng(5);
+            std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+            constexpr int kTrials = 40000;
+            int reflected = 0;
+            for (int i = 0; i < kTrials; ++i) {
+                const auto s = bsdf.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
+                REQUIRE(s);
+                if (!s->transmitted) {
+                    ++reflected;
+                    continue;
+                }
+                // Snell: n_i sin(theta_i) = n_t sin(theta_t), on the other side of the surface.
+                const double sinTransmitted = std::sqrt(double(s->direction.x) * s->direction.x + double(s->direction.y) * s->direction.y);
+                CHECK(s->direction.z < 0.0f);
+                CHECK(sinTransmitted == doctest::Approx(eta * sinOut).epsilon(1e-4));
+            }
+            const double mean = expectedReflectance * kTrials;
+            const double sigma = std::sqrt(kTrials * expectedReflectance * (1.0 - expectedReflectance));
+            CHECK(std::fabs(reflected - mean) <= 5.0 * sigma + 1e-9);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lightpath

@@ -1,0 +1,76 @@
+// Secondary rays: every one leaves its surface by more than the hit point's rounding error, at
+// any scale, and stays finite when the hit is degenerate.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "geometry/ray_offset.h"
+#include "geometry/scene_geometry.h"
+#include "geometry/spawn_ray.h"
+#include "reference.h"
+
+namespace lightpath {
+namespace {
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+TEST_CASE("the robust offset puts the origin on the leaving side of the exact plane, at every scale") {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (const float scale : {1e-4f, 1.0f, 1e6f}) {
+        CAPTURE(scale);
+        const Triangle tri{scale * Vec3{0.3f, 0.1f, 0.2f}, scale * Vec3{1.1f, 0.4f, -0.3f}, scale * Vec3{0.2f, 0.9f, 0.7f}, 0};
+        const SceneGeometry geometry({}, {}, {tri});
+        int wrongSide = 0, selfHits = 0;
+        for (int i = 0; i < 5000; ++i) {
+            const Vec3 target = tri.a + 0.3f * (tri.b - tri.a) * u(rng) + 0.3f * (tri.c - tri.a) * u(rng);
+            Ray camera;
+            camera.origin = target + scale * Vec3{0.2f, 0.3f, 2.0f};
+            camera.direction = glm::normalize(target - camera.origin);
+            const auto hit = geometry.intersect(camera);
+            REQUIRE(hit);
+            const Vec3 light = hit->point + scale * glm::normalize(-camera.direction + Vec3{u(rng), 0.0f, u(rng)});
+            const Ray shadow = spawnShadowRay(*hit, light, geometry.numerics());
+            const long double side = test::planeDistance(tri, shadow.origin) * test::planeDistance(tri, light);
+            wrongSide += !(side > 0);
+            selfHits += geometry.occluded(shadow);
+        }
+        CHECK(wrongSide == 0);
+        CHECK(selfHits == 0);
+    }
+}
+
+TEST_CASE("the offset scales with the point: a contact gap of 1e-3 of a tiny scene stays closed") {
+    const Vec3 p{1e-4f, 2e-4f, -1e-4f};
+    const Vec3 moved = offsetRayOrigin(p, {0.0f, 1.0f, 0.0f});
+    CHECK(moved.y > p.y);
+    CHECK(moved.y - p.y < 1e-3f * 1e-4f);
+    // Wachter and Binder's absolute offset near the origin is larger than that gap.
+    CHECK(offsetRayOriginWachterBinder(p, {0.0f, 1.0f, 0.0f}).y - p.y > 1e-7f);
+}
+
+TEST_CASE("spawned rays stay finite from a zero-length or NaN normal and towards a light on the point") {
+    SurfaceHit hit;
+    hit.point = {1.0f, 2.0f, 3.0f};
+    for (const Vec3 normal : {Vec3{0.0f}, Vec3{std::numeric_limits<float>::quiet_NaN()}}) {
+        hit.normal = normal;
+        const Ray ray = spawnRay(hit, {0.0f, 1.0f, 0.0f}, NumericsOptions{});
+        CHECK(finite(ray.origin));
+        CHECK(ray.origin.y > hit.point.y);
+        const Ray shadow = spawnShadowRay(hit, hit.point, NumericsOptions{});
+        CHECK(finite(shadow.origin));
+        CHECK_FALSE(std::isnan(shadow.tMax));
+    }
+}
+
+TEST_CASE("shadow segments stop short of the light") {
+    SurfaceHit hit;
+    hit.point = {0.0f, 0.0f, 0.0f};
+    hit.normal = {0.0f, 1.0f, 0.0f};
+    const Ray shadow = spawnShadowRay(hit, {0.0f, 4.0f, 0.0f}, NumericsOptions{});
+    CHECK(shadow.tMax < 4.0f);
+    CHECK(shadow.tMax > 3.999f);
+}
+
+}  // namespace
+}  // namespace lightpath
