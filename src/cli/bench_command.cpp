@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bench/machine.h"
+#include "bench/ray_benchmark.h"
 #include "bench/skip_benchmark.h"
 #include "cli/exit_codes.h"
 #include "io/text_file.h"
@@ -57,6 +58,89 @@ void runSkip(const SkipOptions& options) {
     writeTextFileAtomically(options.json, json.str());
 }
 
+struct RaysOptions {
+    std::string json;
+    bool quick = false;
+};
+
+// The figure of `accel` for the same scene, kind and thread count as `row`, or 0.
+double counterpart(const RayBenchmarkResult& r, const RayBenchmarkRow& row, const std::string& accel, int threads) {
+    for (const RayBenchmarkRow& other : r.rows)
+        if (other.scene == row.scene && other.rays == row.rays && other.accel == accel && other.threads == threads)
+            return other.millionsPerSecond;
+    return 0.0;
+}
+
+void printRaysTable(const RayBenchmarkResult& r) {
+    std::printf("%-20s %-8s %-7s %7s %12s %14s %12s\n", "scene", "rays", "accel", "threads", "M/s", "ours/embree",
+                "x 1 thread");
+    for (const RayBenchmarkRow& row : r.rows) {
+        std::string ratio = "", scaling = "";
+        char text[32];
+        const double embree = row.rays == "build" ? counterpart(r, row, "embree", r.allThreads)
+                                                  : counterpart(r, row, "embree", row.threads);
+        if (row.accel == "bvh" && embree > 0.0) {
+            std::snprintf(text, sizeof text, "%.2f", row.millionsPerSecond / embree);
+            ratio = text;
+        }
+        const double single = counterpart(r, row, row.accel, 1);
+        if (row.threads > 1 && row.rays != "build" && single > 0.0) {
+            std::snprintf(text, sizeof text, "%.2fx", row.millionsPerSecond / single);
+            scaling = text;
+        }
+        std::printf("%-20s %-8s %-7s %7d %12.2f %14s %12s\n", row.scene.c_str(), row.rays.c_str(), row.accel.c_str(),
+                    row.threads, row.millionsPerSecond, ratio.c_str(), scaling.c_str());
+    }
+}
+
+void runRays(const RaysOptions& options) {
+    RayBenchmarkResult r;
+    try {
+        r = runRayBenchmark(std::filesystem::path(shippedScene("bunny.toml")).parent_path(), options.quick,
+                            [](const std::string& line) { std::fprintf(stderr, "bench rays: %s\n", line.c_str()); });
+    } catch (const SceneError& e) {
+        throw CLI::RuntimeError(e.what(), kExitBadInput);
+    }
+    std::printf("bench rays: million rays per second (build: million triangles per second), wall time,\n"
+                "median of %d interleaved runs; primary %dx%d pinhole, %d random rays, shadow rays from the\n"
+                "primary hits to the first light. Triangles only, the same rays for every accelerator.\n"
+                "Our build runs on 1 thread, Embree's on %d.%s\nmachine: %s\n\n",
+                r.repetitions, r.primarySide, r.primarySide, r.randomRays, r.allThreads,
+                r.embree ? "" : " This build has no Embree (LIGHTPATH_EMBREE=OFF): no comparison.",
+                describeMachine().c_str());
+    printRaysTable(r);
+    std::printf("\n");
+    for (const RenderThroughput& t : r.renders)
+        std::printf("render   CornellBox-Mirror, Whitted, %s, %d threads: %.3f s, %llu rays, %.2f M rays/s; "
+                    "shading overhead %.0f%% of the estimated traversal time (%.3f s)\n",
+                    t.accel.c_str(), t.threads, t.seconds, t.rays, t.millionRaysPerSecond, 100.0 * t.shadingOverhead,
+                    t.traversalSeconds);
+    for (const std::string& note : r.notes) std::printf("note     %s\n", note.c_str());
+    std::printf("\ntargets (figures, not tests): bunny ours/embree >= 0.75 primary and shadow, >= 0.60 random;\n"
+                "build >= 2 M triangles/s per thread; >= 1.8x from 1 to 2 threads; shading overhead <= 50%%\n");
+    if (options.json.empty()) return;
+    std::ostringstream json;
+    json << "[";
+    bool first = true;
+    const auto separator = [&] {
+        json << (first ? "\n  " : ",\n  ");
+        first = false;
+    };
+    for (const RayBenchmarkRow& row : r.rows) {
+        separator();
+        json << "{\"scene\": " << jsonString(row.scene) << ", \"rays\": " << jsonString(row.rays)
+             << ", \"accel\": " << jsonString(row.accel) << ", \"threads\": " << row.threads << ", \""
+             << (row.rays == "build" ? "mtris_per_s" : "mrays_per_s") << "\": " << row.millionsPerSecond << "}";
+    }
+    for (const RenderThroughput& t : r.renders) {
+        separator();
+        json << "{\"scene\": \"CornellBox-Mirror\", \"rays\": \"render\", \"accel\": " << jsonString(t.accel)
+             << ", \"threads\": " << t.threads << ", \"mrays_per_s\": " << t.millionRaysPerSecond << "}";
+    }
+    json << "\n]\n";
+    writeTextFileAtomically(options.json, json.str());
+}
+
 }  // namespace
 
 void addBenchCommand(CLI::App& app) {
@@ -75,6 +159,21 @@ void addBenchCommand(CLI::App& app) {
         "  lightpath bench skip\n"
         "  lightpath bench skip --quick --json out/skip.json");
     sub->callback([skip] { runSkip(*skip); });
+
+    auto rays = std::make_shared<RaysOptions>();
+    CLI::App* raysCommand =
+        bench->add_subcommand("rays", "Ray throughput of our BVH and of Embree on the same rays, 1 thread and all");
+    raysCommand->add_option("--json", rays->json,
+                            "Also write the rows [{\"scene\", \"rays\", \"accel\", \"threads\", \"mrays_per_s\"}, ...]");
+    raysCommand->add_flag("--quick", rays->quick, "256x256 primary rays, 65536 random rays, 1 run: for CI");
+    raysCommand->footer(
+        "Primary (pinhole), random (origins in the bounding box, uniform directions) and shadow rays, and\n"
+        "the build, on CornellBox-Original, CornellBox-Sphere and the bunny; then a Whitted render of\n"
+        "CornellBox-Mirror. Prints M rays/s and ours/Embree.\n\n"
+        "Examples:\n"
+        "  lightpath bench rays\n"
+        "  lightpath bench rays --quick --json out/rays.json");
+    raysCommand->callback([rays] { runRays(*rays); });
 }
 
 }  // namespace lightpath

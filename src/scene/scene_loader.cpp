@@ -114,24 +114,20 @@ std::vector<PhongMaterial> readMaterials(const TomlTable& table) {
 // The label 'ambient' belongs to the ambient term of the illumination formula (DESIGN.md).
 constexpr std::string_view kAmbientLabel = "ambient";
 
-PointLight readLight(const TomlTable& table) {
+std::string readLightName(const TomlTable& table) {
+    auto name = table.find("name");
+    if (!name) return {};
+    const std::string light = readName(*name);
+    if (light == kAmbientLabel) {
+        name->fail("expected a light name other than \"ambient\", which is reserved for the ambient term");
+    }
+    return light;
+}
+
+PointLight readPointLight(const TomlTable& table) {
     table.allowOnly({"name", "type", "position", "intensity", "attenuation"});
     PointLight light;
-    if (auto name = table.find("name")) {
-        light.name = readName(*name);
-        if (light.name == kAmbientLabel) {
-            name->fail("expected a light name other than \"ambient\", which is reserved for the "
-                       "ambient term");
-        }
-    }
-    if (auto type = table.find("type")) {
-        // Only point lights exist so far; area lights are planned.
-        const std::vector<std::string> knownTypes{"point"};
-        const std::string typeName = type->string();
-        if (typeName != "point") {
-            type->fail(unknownNameMessage("light type", typeName, knownTypes, ListKnown::always));
-        }
-    }
+    light.name = readLightName(table);
     light.position = table.required("position").vec3();
     if (auto intensity = table.find("intensity")) light.intensity = intensity->rgb();
     if (auto attenuation = table.find("attenuation")) {
@@ -142,6 +138,57 @@ PointLight readLight(const TomlTable& table) {
         }
     }
     return light;
+}
+
+// An area light is an emissive object: a material of its own that only emits, and the shapes
+// that carry it. Its label is the light's name, or "area-light-K" for the K-th unnamed one.
+std::uint32_t addEmitterObject(const TomlTable& table, Scene& scene) {
+    PhongMaterial material;
+    material.name = "area-light-" + std::to_string(scene.materials.size());
+    material.emission = table.required("radiance").rgb();
+    scene.materials.push_back(material);
+    scene.objects.push_back({readLightName(table), static_cast<std::uint32_t>(scene.materials.size() - 1)});
+    return static_cast<std::uint32_t>(scene.objects.size() - 1);
+}
+
+// A parallelogram corner + s edge1 + t edge2 (s, t in [0, 1]) emitting on the side of
+// edge1 x edge2, as two triangles.
+void readQuadLight(const TomlTable& table, Scene& scene) {
+    table.allowOnly({"name", "type", "corner", "edge1", "edge2", "radiance"});
+    const Vec3 corner = table.required("corner").vec3();
+    const Vec3 edge1 = table.required("edge1").vec3();
+    const Vec3 edge2 = table.required("edge2").vec3();
+    if (glm::length(glm::cross(edge1, edge2)) == 0.0f) {
+        table.required("edge2").fail("expected an edge not parallel to edge1 (the quad has no area), got " +
+                                     formatVec3(edge2));
+    }
+    const std::uint32_t object = addEmitterObject(table, scene);
+    scene.triangles.push_back({corner, corner + edge1, corner + edge1 + edge2, object});
+    scene.triangles.push_back({corner, corner + edge1 + edge2, corner + edge2, object});
+}
+
+// A sphere emitting on both sides of its surface.
+void readSphereLight(const TomlTable& table, Scene& scene) {
+    table.allowOnly({"name", "type", "center", "radius", "radiance"});
+    Sphere sphere;
+    sphere.center = table.required("center").vec3();
+    sphere.radius = table.required("radius").number(positive);
+    sphere.object = addEmitterObject(table, scene);
+    scene.spheres.push_back(sphere);
+}
+
+void readLight(const TomlTable& table, Scene& scene) {
+    std::string type = "point";
+    if (auto value = table.find("type")) {
+        type = value->string();
+        const std::vector<std::string> knownTypes{"point", "quad", "sphere"};
+        if (std::find(knownTypes.begin(), knownTypes.end(), type) == knownTypes.end()) {
+            value->fail(unknownNameMessage("light type", type, knownTypes, ListKnown::always));
+        }
+    }
+    if (type == "quad") readQuadLight(table, scene);
+    else if (type == "sphere") readSphereLight(table, scene);
+    else scene.lights.push_back(readPointLight(table));
 }
 
 std::uint32_t findMaterial(const TomlValue& reference,
@@ -263,7 +310,8 @@ void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Sc
     // Scene object of each MTL material index, created on first use, in order of first use.
     std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
     const auto objectFor = [&](std::uint32_t mtlIndex) {
-        const std::size_t slot = mtlIndex == kNoMeshMaterial ? mesh.materials.size() : mtlIndex;
+        // With `material`, the whole mesh is one object.
+        const std::size_t slot = override || mtlIndex == kNoMeshMaterial ? mesh.materials.size() : mtlIndex;
         if (objectOf[slot] != kNoMeshMaterial) return objectOf[slot];
         SceneObject object;
         object.name = name;
@@ -348,9 +396,7 @@ Scene loadScene(const std::filesystem::path& path) {
     if (auto materials = root.find("materials")) {
         scene.materials = readMaterials(materials->table());
     }
-    forEachSection(root, "lights", [&](const TomlTable& light) {
-        scene.lights.push_back(readLight(light));
-    });
+    forEachSection(root, "lights", [&](const TomlTable& light) { readLight(light, scene); });
     // Objects are numbered spheres first, then planes, then triangles, each in file order.
     forEachSection(root, "spheres", [&](const TomlTable& sphere) {
         scene.spheres.push_back(readSphere(sphere, scene));
