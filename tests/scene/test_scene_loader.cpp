@@ -327,7 +327,7 @@ TEST_CASE_FIXTURE(SceneFiles, "an unknown top-level table is an error") {
           "scene.toml:4:3: sphere: unknown key \"sphere\"; did you mean \"spheres\"?");
     CHECK(errorOf("[render]\nspp = 4\n") ==
           "scene.toml:1:2: render: unknown key \"render\" (known: camera, world, materials, "
-          "lights, spheres, planes, triangles)");
+          "lights, spheres, planes, triangles, meshes)");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "a value of the wrong type says what was expected and found") {
@@ -474,10 +474,10 @@ TEST_CASE_FIXTURE(SceneFiles, "material parameters are range-checked") {
 
 TEST_CASE_FIXTURE(SceneFiles, "only point lights exist so far") {
     CHECK(errorOf("[[lights]]\ntype = \"area\"\nposition = [0, 1, 0]\n") ==
-          "scene.toml:2:8: lights[0].type: unknown light type \"area\" (known: point)");
+          "scene.toml:2:8: lights[0].type: unknown light type \"area\" (known: point, quad, sphere)");
     CHECK(errorOf("[[lights]]\ntype = \"pont\"\nposition = [0, 1, 0]\n") ==
           "scene.toml:2:8: lights[0].type: unknown light type \"pont\"; did you mean "
-          "\"point\"? (known: point)");
+          "\"point\"? (known: point, quad, sphere)");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "names must be usable as light path labels") {
@@ -501,3 +501,34 @@ TEST_CASE_FIXTURE(SceneFiles, "a triangle without area is refused") {
           "scene.toml:2:12: triangles[0].vertices: expected an array of 3 points "
           "[[x,y,z], [x,y,z], [x,y,z]], got an array of 2 elements");
 }
+
+namespace lightpath {
+namespace {
+
+TEST_CASE("area lights become emissive objects labelled by the light's name") {
+    const std::string text =
+        "[[lights]]\nname = \"panel\"\ntype = \"quad\"\ncorner = [0, 2, 0]\nedge1 = [1, 0, 0]\n"
+        "edge2 = [0, 0, 1]\nradiance = [4, 3, 2]\n\n"
+        "[[lights]]\ntype = \"sphere\"\ncenter = [0, 5, 0]\nradius = 0.5\nradiance = 10\n";
+    const auto dir = std::filesystem::temp_directory_path() / "lightpath-area-lights";
+    std::filesystem::create_directories(dir);
+    const auto file = dir / "scene.toml";
+    std::ofstream(file) << text;
+    const Scene scene = loadScene(file);
+    REQUIRE(scene.triangles.size() == 2);
+    REQUIRE(scene.spheres.size() == 1);
+    CHECK(scene.lights.empty());
+    CHECK(scene.labelOf(scene.triangles[0].object) == "panel");
+    CHECK(scene.materials[scene.objects[scene.triangles[0].object].material].emission == Rgb{4, 3, 2});
+    // The quad emits on the side of edge1 x edge2 = (0, 0, 1) x ... : here (1,0,0) x (0,0,1) = (0,-1,0).
+    const Triangle& t = scene.triangles[0];
+    CHECK(glm::cross(t.b - t.a, t.c - t.a).y < 0.0f);
+    CHECK(t.a == Vec3{0, 2, 0});
+    CHECK(t.c == Vec3{1, 2, 1});
+    // An unnamed area light is labelled by its generated material name.
+    CHECK(scene.labelOf(scene.spheres[0].object).rfind("area-light-", 0) == 0);
+    CHECK(scene.materials[scene.objects[scene.spheres[0].object].material].emission == Rgb{10.0f});
+}
+
+}  // namespace
+}  // namespace lightpath
