@@ -10,6 +10,7 @@
 #include "cli/explain_command.h"
 #include "cli/lpe_command.h"
 #include "cli/render_command.h"
+#include "cli/stress_command.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"lightpath: a ray tracer that records every contribution's light path (Heckbert's E(S*)(D|G)L)\n"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
     lightpath::addExplainCommand(app);
     lightpath::addLpeCommand(app);
     lightpath::addBenchCommand(app);
+    lightpath::addStressCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

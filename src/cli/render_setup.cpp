@@ -48,6 +48,22 @@ void RenderSetup::addOptions(CLI::App& command) {
         ->check(CLI::IsMember({"bvh", "embree", "none"}))
         ->capture_default_str();
     command.add_flag("--quiet", quiet, "No progress bar (shown on a terminal for renders over a second)");
+    command.add_option("--robust", robust,
+                       "Numerics: on (stable sphere test, watertight triangles, error-bound ray offsets) or off "
+                       "(the lecture's b^2-4ac, Moller-Trumbore with |det| < 1e-6, t_min = --epsilon)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+    command.add_option("--sphere-test", sphereTest, "Override --robust for spheres: stable or naive")
+        ->check(CLI::IsMember({"stable", "naive"}));
+    command.add_option("--triangle-test", triangleTest, "Override --robust for triangles: watertight or moller-trumbore")
+        ->check(CLI::IsMember({"watertight", "moller-trumbore"}));
+    command.add_option("--ray-offset", rayOffset,
+                       "Override --robust for secondary ray origins: robust, wachter-binder, epsilon, none or "
+                       "own-primitive (the lecture's: ignore the surface the ray leaves)")
+        ->check(CLI::IsMember({"robust", "wachter-binder", "epsilon", "none", "own-primitive"}));
+    command.add_option("--epsilon", epsilon, "t_min of --ray-offset epsilon")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     command.add_flag("--no-skip", noSkip,
                      "Trace every ray and evaluate every term, even those that cannot contribute (for comparison)");
 }
@@ -115,6 +131,17 @@ RenderOptions RenderSetup::renderOptions() const {
                           : accel == "none" ? Accelerator::BruteForce
                                             : Accelerator::Bvh;
     options.progress = !quiet;
+    options.numerics = robust == "off" ? NumericsOptions::naive() : NumericsOptions{};
+    if (!sphereTest.empty()) options.numerics.sphere = sphereTest == "naive" ? SphereTest::Naive : SphereTest::Stable;
+    if (!triangleTest.empty())
+        options.numerics.triangle = triangleTest == "watertight" ? TriangleTest::Watertight : TriangleTest::MollerTrumbore;
+    if (!rayOffset.empty())
+        options.numerics.offset = rayOffset == "robust"           ? RayOffset::Robust
+                                  : rayOffset == "wachter-binder" ? RayOffset::WachterBinder
+                                  : rayOffset == "epsilon"        ? RayOffset::FixedEpsilon
+                                  : rayOffset == "none"           ? RayOffset::None
+                                                                  : RayOffset::OwnPrimitive;
+    options.numerics.epsilon = epsilon;
     return options;
 }
 

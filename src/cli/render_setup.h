@@ -27,6 +27,9 @@ struct RenderSetup {
     bool noSkip = false;
     std::string accel = "bvh";       // bvh, embree or none (brute force)
     bool quiet = false;              // no progress bar
+    std::string robust = "on";       // on: robust numerics (default); off: the lecture's naive ones
+    std::string sphereTest, triangleTest, rayOffset;  // per-method choices; empty: as --robust says
+    float epsilon = 1e-4f;           // t_min of --ray-offset epsilon
 
     void addOptions(CLI::App& command);
 

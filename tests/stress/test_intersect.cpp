@@ -50,7 +50,7 @@ TEST_CASE("naive b^2 - 4ac gets silhouettes wrong at 1e3 radii, which the lectur
     CHECK(wrong > 100);
 }
 
-TEST_CASE("a ray from inside a sphere finds the far side; one leaving the surface outward finds nothing") {
+TEST_CASE("a ray from inside a sphere finds the far side, and a tangent ray agrees with the exact answer") {
     const Sphere sphere{{3.0f, -2.0f, 7.0f}, 0.5f, 0};
     Ray inside;
     inside.origin = sphere.center;
