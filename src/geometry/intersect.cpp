@@ -75,10 +75,15 @@ float intersectSphereNaive(const Ray& ray, const Sphere& sphere, float tMin) {
 }
 
 float intersectPlane(const Ray& ray, const Plane& plane, float tMin) {
-    const float denominator = glm::dot(plane.normal, ray.direction);
-    if (denominator == 0.0f) return kNoHit;  // parallel: no single point in common
-    const float t = glm::dot(plane.point - ray.origin, plane.normal) / denominator;
-    return (t > tMin && t < ray.tMax) ? t : kNoHit;
+    // In double, so the sign of the origin's distance from the plane is right even for an origin
+    // a few ulps off it (a spawned ray), however far the plane's anchor point is.
+    const glm::dvec3 normal(plane.normal);
+    const double denominator = glm::dot(normal, glm::dvec3(ray.direction));
+    if (!(denominator != 0.0)) return kNoHit;  // parallel: no single point in common (or NaN)
+    const double t = glm::dot(glm::dvec3(plane.point) - glm::dvec3(ray.origin), normal) / denominator;
+    if (!(t > 0.0)) return kNoHit;  // behind, even if it rounds to a float t of 0
+    const auto tf = static_cast<float>(t);
+    return (tf > tMin && tf < ray.tMax) ? tf : kNoHit;
 }
 
 float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin, Vec3* barycentrics) {

@@ -1,5 +1,6 @@
 #include "geometry/ray_offset.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -30,9 +31,11 @@ float roundAway(float moved, float normal) {
 
 }  // namespace
 
-Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n) {
-    const Vec3 error = kPointErrorScale * glm::abs(p);
-    const float distance = glm::dot(glm::abs(n), error);
+Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n, float travelled) {
+    const Vec3 magnitude = glm::abs(p);
+    const float t = std::isfinite(travelled) ? std::fabs(travelled) : 0.0f;
+    const float error = kPointErrorScale * (std::max({magnitude.x, magnitude.y, magnitude.z}) + 2.0f * t);
+    const float distance = error * (std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z));
     const Vec3 offset = distance * n;
     const Vec3 moved = p + offset;
     return {roundAway(moved.x, n.x), roundAway(moved.y, n.y), roundAway(moved.z, n.z)};

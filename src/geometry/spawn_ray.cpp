@@ -28,7 +28,7 @@ Ray leave(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& n
     ray.origin = hit.point;
     switch (numerics.offset) {
         case RayOffset::Robust:
-            ray.origin = offsetRayOrigin(hit.point, leavingSide(hit, direction));
+            ray.origin = offsetRayOrigin(hit.point, leavingSide(hit, direction), hit.t);
             break;
         case RayOffset::WachterBinder:
             ray.origin = offsetRayOriginWachterBinder(hit.point, leavingSide(hit, direction));

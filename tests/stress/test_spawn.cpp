@@ -42,7 +42,7 @@ TEST_CASE("the robust offset puts the origin on the leaving side of the exact pl
 
 TEST_CASE("the offset scales with the point: a contact gap of 1e-3 of a tiny scene stays closed") {
     const Vec3 p{1e-4f, 2e-4f, -1e-4f};
-    const Vec3 moved = offsetRayOrigin(p, {0.0f, 1.0f, 0.0f});
+    const Vec3 moved = offsetRayOrigin(p, {0.0f, 1.0f, 0.0f}, 1e-4f);
     CHECK(moved.y > p.y);
     CHECK(moved.y - p.y < 1e-3f * 1e-4f);
     // Wachter and Binder's absolute offset near the origin is larger than that gap.
