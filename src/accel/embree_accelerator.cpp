@@ -56,16 +56,14 @@ struct EmbreeScene::Handles {
     RTCScene scene = nullptr;
 };
 
-EmbreeScene::EmbreeScene(std::span<const Triangle> triangles) : handles_(new Handles) {
+EmbreeScene::EmbreeScene(std::span<const Triangle> triangles) : handles_(std::make_unique<Handles>()) {
     const auto started = std::chrono::steady_clock::now();
     handles_->device = rtcNewDevice(nullptr);
     if (!handles_->device) {
-        delete handles_;
         throw std::runtime_error("Embree: cannot create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
     }
     handles_->scene = rtcNewScene(handles_->device);
     rtcSetSceneFlags(handles_->scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-    rtcSetSceneBuildQuality(handles_->scene, RTC_BUILD_QUALITY_HIGH);
     RTCGeometry mesh = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                  3 * sizeof(float), 3 * triangles.size()));
@@ -88,7 +86,6 @@ EmbreeScene::EmbreeScene(std::span<const Triangle> triangles) : handles_(new Han
 EmbreeScene::~EmbreeScene() {
     rtcReleaseScene(handles_->scene);
     rtcReleaseDevice(handles_->device);
-    delete handles_;
 }
 
 bool EmbreeScene::intersect(const Ray& ray, float tFar, std::uint32_t ignored, float& t, std::uint32_t& index) const {

@@ -4,6 +4,7 @@
 // Embree applies its own triangle test, so on shared edges and exact ties its answer may differ
 // from ours in the last ulp or the primitive chosen.
 #include <cstdint>
+#include <memory>
 #include <span>
 
 #include "geometry/shapes.h"
@@ -27,7 +28,7 @@ public:
 
 private:
     struct Handles;
-    Handles* handles_;
+    std::unique_ptr<Handles> handles_;
     double buildSeconds_ = 0.0;
 };
 
