@@ -33,6 +33,14 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
         ->capture_default_str();
+    command.add_option("--sampler", sampler,
+                       "Pixel sample sequence: independent, stratified, or sobol (Owen-scrambled, low discrepancy)")
+        ->check(CLI::IsMember({"independent", "stratified", "sobol"}))
+        ->capture_default_str();
+    command.add_option("--target-error", targetError,
+                       "Adaptive sampling: stop a pixel once the standard error of its mean is below this "
+                       "fraction of it (e.g. 0.02); --spp is then the most a pixel may take")
+        ->check(CLI::Range(0.0, 1.0));
     command.add_option("--max-depth", maxDepth, "Most specular bounces (whitted) or scattering events (path)")
         ->check(CLI::Range(0, kMaxDepth))
         ->capture_default_str();
@@ -125,6 +133,8 @@ RenderOptions RenderSetup::renderOptions() const {
     options.samplesPerPixel = samplesPerPixel;
     options.threads = threads;
     options.seed = seed;
+    parseSamplerKind(sampler, options.sampler);  // validated by the option's IsMember check
+    options.targetError = targetError;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;
     options.accelerator = accel == "embree" ? Accelerator::Embree

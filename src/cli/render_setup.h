@@ -23,6 +23,8 @@ struct RenderSetup {
     int threads = 0;
     std::uint64_t seed = 0;
     std::string resolution;          // WxH, empty for the scene's
+    std::string sampler = "independent";
+    double targetError = 0.0;
     bool noBeauty = false;
     bool noSkip = false;
     std::string accel = "bvh";       // bvh, embree or none (brute force)

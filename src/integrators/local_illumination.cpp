@@ -108,9 +108,9 @@ void addLocalIllumination(const SurfaceHit& hit, const Vec3& normal, const Vec3&
     // intensity towards p is Le cos(theta_light) / pdf_area, with inverse-square falloff. Over
     // many samples per pixel this gives soft shadows.
     if (ctx.emitters.empty() || tracer.sampler == nullptr) return;
-    Pcg32 rng = tracer.sampler->streamFor(tracer.path.key());
-    const float uPick = rng.nextFloat();
-    const Vec2 u{rng.nextFloat(), rng.nextFloat()};
+    Sampler vertex = tracer.sampler->forVertex(tracer.path.key());
+    const float uPick = vertex.next1D();
+    const Vec2 u = vertex.next2D();
     const EmitterSample sample = ctx.emitters.sample(hit.point, uPick, u);
     const Vec3 toLight = sample.point - hit.point;
     const float distance2 = glm::dot(toLight, toLight);

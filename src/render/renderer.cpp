@@ -41,15 +41,37 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     }
 }
 
-void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
+namespace {
+
+float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// Adaptive sampling's test: the standard error of the pixel's mean luminance, estimated from its
+// samples, relative to that mean (an absolute floor keeps black pixels from sampling forever).
+bool converged(double sum, double sumOfSquares, int n, double targetError) {
+    const double mean = sum / n;
+    const double variance = std::max(0.0, (sumOfSquares - n * mean * mean) / (n - 1));
+    return std::sqrt(variance / n) <= targetError * std::max(mean, 1e-4);
+}
+
+// Adaptive sampling looks at a pixel's samples in batches of this many, from this many on.
+constexpr int kAdaptiveBatch = 4;
+constexpr int kAdaptiveMinimum = 8;
+
+}  // namespace
+
+int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
     const int spp = options_.samplesPerPixel;
-    for (int s = 0; s < spp; ++s) {
-        Sampler sampler(x, y, s, options_.seed);
+    const bool adaptive = options_.targetError > 0.0;
+    double sum = 0.0, sumOfSquares = 0.0;
+    int taken = 0;
+    while (taken < spp) {
+        const Rgb beautyBefore = layers[0];
+        Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, options_.seed);
         tracer.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are jittered within it.
-        Vec2 offset{0.5f};
         const Vec2 jitter = sampler.next2D();
-        if (spp > 1) offset = jitter;
+        const Vec2 offset = spp > 1 ? jitter : Vec2{0.5f};
+        ++taken;
         const auto state = context_.automaton.step(context_.automaton.start(), symbols_.camera);
         if (!tracer.alive(state)) {
             ++tracer.counters.cameraDead;
@@ -60,11 +82,18 @@ void Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) 
         tracer.path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None});
         integrator_->traceCameraRay(ray, state, tracer);
         tracer.path.pop();
+        if (!adaptive) continue;
+        const double value = luminance(layers[0] - beautyBefore);
+        sum += value;
+        sumOfSquares += value * value;
+        if (taken >= kAdaptiveMinimum && taken % kAdaptiveBatch == 0 && converged(sum, sumOfSquares, taken, options_.targetError))
+            break;
     }
-    if (spp > 1) {
-        const float weight = 1.0f / static_cast<float>(spp);
+    if (taken > 1) {
+        const float weight = 1.0f / static_cast<float>(taken);
         for (Rgb& layer : layers) layer *= weight;
     }
+    return taken;
 }
 
 std::vector<std::string> Renderer::layerNames() const {
@@ -112,8 +141,7 @@ RenderResult Renderer::render() const {
 
     RenderStats stats;
     for (const RayCounters& c : counters) stats.rays += c;
-    stats.samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
-                    static_cast<std::uint64_t>(options_.samplesPerPixel);
+    stats.samples = stats.rays.camera + stats.rays.cameraDead;  // adaptive sampling takes fewer
     stats.threads = threadCount;
     stats.accelerator = geometry_.acceleratorStats();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

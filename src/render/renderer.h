@@ -17,6 +17,7 @@
 #include "lights/emitters.h"
 #include "integrators/ray_counters.h"
 #include "scene/camera.h"
+#include "sampling/sampler.h"
 #include "scene/scene_analysis.h"
 #include "scene/scene.h"
 
@@ -33,6 +34,10 @@ struct RenderOptions {
     bool writeBeauty = true;
     bool skip = true;  // false: `--no-skip`, trace and evaluate everything
     NumericsOptions numerics;
+    SamplerKind sampler = SamplerKind::Independent;
+    // Adaptive sampling when > 0: a pixel stops once the standard error of its mean luminance is
+    // below this fraction of the mean; samplesPerPixel is then the most it may take.
+    double targetError = 0.0;
     Accelerator accelerator = Accelerator::Bvh;
     bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
 };
@@ -62,7 +67,8 @@ public:
     std::vector<LoggedContribution> explainPixel(int x, int y) const;
 
 private:
-    void renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const;
+    // Samples one pixel into `layers` (their mean); returns the number of samples taken.
+    int renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const;
 
     const Scene& scene_;
     const AovSet& aovs_;

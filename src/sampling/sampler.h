@@ -1,31 +1,50 @@
 #pragma once
-// The random numbers of one pixel sample, drawn in a fixed order of dimensions: deterministic per
-// (pixel, sample index, seed), so images do not depend on threads or tile order.
+// The random numbers of one pixel sample, drawn dimension by dimension: deterministic per (pixel,
+// sample index, seed), so images never depend on threads or tile order. Three kinds:
+//   independent  uniform random numbers (PCG32)
+//   stratified   each dimension (pair) split into samplesPerPixel strata, one sample in each,
+//                their order shuffled per pixel and dimension: a jittered grid when the count is
+//                a square, Latin hypercube otherwise
+//   sobol        the first two dimensions of Sobol's (0,2)-sequence per dimension pair, index
+//                shuffled and values Owen-scrambled by hashing (Burley, "Practical Hash-based
+//                Owen Scrambling", JCGT 2020): low discrepancy for any prefix of samples
 #include <cstdint>
+#include <string_view>
 
 #include "math/random.h"
 #include "math/types.h"
 
 namespace lightpath {
 
+enum class SamplerKind { Independent, Stratified, Sobol };
+
+// "independent", "stratified", "sobol"; false for another name.
+bool parseSamplerKind(std::string_view name, SamplerKind& kind);
+const char* samplerName(SamplerKind kind);
+
 class Sampler {
 public:
-    Sampler(int x, int y, int sampleIndex, std::uint64_t seed)
-        : rng_(pixelSampleRng(x, y, sampleIndex, seed)), key_(mixBits(rng_.nextUint() ^ (std::uint64_t{rng_.nextUint()} << 32))) {}
+    Sampler(SamplerKind kind, std::uint64_t seed, int sampleIndex, int samplesPerPixel);
 
-    // An independent stream for one vertex of a branching path, keyed by the path that leads to
-    // it: its numbers do not depend on which other branches were traced (or skipped) before it.
-    Pcg32 streamFor(std::uint64_t pathKey) const { return Pcg32(mixBits(key_ ^ pathKey), pathKey); }
+    static Sampler forPixel(SamplerKind kind, int x, int y, int sampleIndex, int samplesPerPixel, std::uint64_t seed);
 
-    float next1D() { return rng_.nextFloat(); }
-    Vec2 next2D() {
-        const float u = rng_.nextFloat();
-        return {u, rng_.nextFloat()};
-    }
+    float next1D();
+    Vec2 next2D();
+
+    // The sampler of one vertex of a branching path, keyed by the path that leads to it: its
+    // numbers do not depend on which other branches were traced (or skipped) before it, and
+    // samples of the pixel that reach the same vertex stay stratified among themselves.
+    Sampler forVertex(std::uint64_t pathKey) const { return Sampler(kind_, mixBits(seed_ ^ pathKey), index_, count_); }
 
 private:
+    std::uint64_t dimensionSeed() { return mixBits(seed_ + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(++dimension_)); }
+
+    SamplerKind kind_;
+    std::uint64_t seed_;
+    std::uint32_t index_;
+    std::uint32_t count_;
+    int dimension_ = 0;
     Pcg32 rng_;
-    std::uint64_t key_;
 };
 
 }  // namespace lightpath

@@ -131,7 +131,7 @@ TEST_CASE("path: a plane under a quad light matches Lambert's polygon irradiance
 // A closed sphere seen from its centre, split by the classes AOVs.
 Scene furnace(float albedo, Rgb emission) {
     Scene scene;
-    scene.camera = test::centredCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 24);
+    scene.camera = test::centredCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 33);
     scene.camera.verticalFovDegrees = 90.0f;
     PhongMaterial wall;
     wall.name = "wall";
@@ -158,7 +158,7 @@ void checkLayer(const Film& film, const std::string& name, double expected) {
 
 TEST_CASE("path: furnace, a closed emissive diffuse sphere has radiance Le / (1 - rho)") {
     const double rho = 0.5, le = 1.0;
-    const Film film = renderPath(furnace(float(rho), Rgb{float(le)}), lpe::classesSet(), 4);
+    const Film film = renderPath(furnace(float(rho), Rgb{float(le)}), lpe::classesSet(), 16);
     checkLayer(film, "beauty", le / (1.0 - rho));
     checkLayer(film, "raycast", rho * le);                  // E D L: one bounce of the emission
     checkLayer(film, "indirect", le * rho * rho / (1.0 - rho));
@@ -168,7 +168,7 @@ TEST_CASE("path: furnace, a closed emissive diffuse sphere has radiance Le / (1 
 TEST_CASE("path: furnace, a point light of intensity pi at the centre of a unit sphere with kd 0.5") {
     Scene scene = furnace(0.5f, Rgb{0.0f});
     scene.lights.push_back({"centre", {0, 0, 0}, Rgb{kPi}, {1, 0, 0}});
-    const Film film = renderPath(scene, lpe::classesSet(), 4);
+    const Film film = renderPath(scene, lpe::classesSet(), 16);
     checkLayer(film, "beauty", 1.0);
     checkLayer(film, "raycast", 0.5);   // E D L: exactly 0.5 everywhere
     checkLayer(film, "indirect", 0.5);

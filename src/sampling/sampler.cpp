@@ -1,0 +1,127 @@
+#include "sampling/sampler.h"
+
+#include <cmath>
+
+namespace lightpath {
+namespace {
+
+float toUnitFloat(std::uint32_t bits) { return static_cast<float>(bits >> 8) * 0x1p-24f; }
+
+std::uint32_t reverseBits(std::uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+// A hash in which each bit depends only on the bits below it (Laine and Karras 2011); applied to
+// reversed bits it permutes each binary digit given the digits before it: Owen's nested uniform
+// scrambling (Burley 2020, sec. 3).
+std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
+    std::uint32_t x = reverseBits(value) + seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverseBits(x);
+}
+
+// Sobol's first dimension (van der Corput) and second dimension (primitive polynomial x + 1).
+std::uint32_t sobolDimension0(std::uint32_t index) { return reverseBits(index); }
+std::uint32_t sobolDimension1(std::uint32_t index) {
+    std::uint32_t result = 0;
+    for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
+        if (index & 1u) result ^= v;
+    return result;
+}
+
+// A bijection of [0, count) chosen by `seed`: xor-shift-multiply rounds on the smallest
+// power-of-two range holding count, walking the cycle until the value falls inside.
+std::uint32_t permute(std::uint32_t i, std::uint32_t count, std::uint64_t seed) {
+    std::uint32_t mask = count - 1;
+    for (int s = 1; s < 32; s <<= 1) mask |= mask >> s;
+    const auto key = static_cast<std::uint32_t>(seed), key2 = static_cast<std::uint32_t>(seed >> 32);
+    do {
+        i ^= key & mask;
+        i = (i * 0x2c1b3c6du) & mask;  // odd multipliers are bijections modulo a power of two
+        i ^= i >> 3;
+        i ^= key2 & mask;
+        i = (i * 0x297a2d39u) & mask;
+        i ^= i >> 5;
+        i = (i * 0x3b9ac9fbu) & mask;
+        i ^= i >> 2;
+    } while (i >= count);
+    return i;
+}
+
+}  // namespace
+
+bool parseSamplerKind(std::string_view name, SamplerKind& kind) {
+    if (name == "independent") kind = SamplerKind::Independent;
+    else if (name == "stratified") kind = SamplerKind::Stratified;
+    else if (name == "sobol") kind = SamplerKind::Sobol;
+    else return false;
+    return true;
+}
+
+const char* samplerName(SamplerKind kind) {
+    switch (kind) {
+        case SamplerKind::Independent: return "independent";
+        case SamplerKind::Stratified: return "stratified";
+        case SamplerKind::Sobol: return "sobol";
+    }
+    return "";
+}
+
+Sampler::Sampler(SamplerKind kind, std::uint64_t seed, int sampleIndex, int samplesPerPixel)
+    : kind_(kind), seed_(seed), index_(static_cast<std::uint32_t>(sampleIndex)),
+      count_(static_cast<std::uint32_t>(samplesPerPixel)), rng_(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) {}
+
+Sampler Sampler::forPixel(SamplerKind kind, int x, int y, int sampleIndex, int samplesPerPixel, std::uint64_t seed) {
+    const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32) | static_cast<std::uint32_t>(x);
+    return Sampler(kind, mixBits(pixel ^ mixBits(seed)), sampleIndex, samplesPerPixel);
+}
+
+float Sampler::next1D() {
+    const std::uint64_t seed = dimensionSeed();
+    switch (kind_) {
+        case SamplerKind::Independent: break;
+        case SamplerKind::Stratified:
+            return (static_cast<float>(permute(index_, count_, seed)) + rng_.nextFloat()) / static_cast<float>(count_);
+        case SamplerKind::Sobol: {
+            const std::uint32_t shuffled = owenScramble(index_, static_cast<std::uint32_t>(seed));
+            return toUnitFloat(owenScramble(sobolDimension0(shuffled), static_cast<std::uint32_t>(seed >> 32)));
+        }
+    }
+    return rng_.nextFloat();
+}
+
+Vec2 Sampler::next2D() {
+    const std::uint64_t seed = dimensionSeed();
+    switch (kind_) {
+        case SamplerKind::Independent: break;
+        case SamplerKind::Stratified: {
+            const auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(count_))));
+            if (side * side == count_) {
+                const std::uint32_t cell = permute(index_, count_, seed);
+                const float u = rng_.nextFloat(), v = rng_.nextFloat();
+                return {(static_cast<float>(cell % side) + u) / static_cast<float>(side),
+                        (static_cast<float>(cell / side) + v) / static_cast<float>(side)};
+            }
+            const float u = rng_.nextFloat(), v = rng_.nextFloat();
+            return {(static_cast<float>(permute(index_, count_, seed)) + u) / static_cast<float>(count_),
+                    (static_cast<float>(permute(index_, count_, mixBits(seed))) + v) / static_cast<float>(count_)};
+        }
+        case SamplerKind::Sobol: {
+            const auto scrambleSeed = static_cast<std::uint32_t>(seed >> 32);
+            const std::uint32_t shuffled = owenScramble(index_, static_cast<std::uint32_t>(seed));
+            return {toUnitFloat(owenScramble(sobolDimension0(shuffled), scrambleSeed)),
+                    toUnitFloat(owenScramble(sobolDimension1(shuffled), scrambleSeed ^ 0x5bd1e995u))};
+        }
+    }
+    const float u = rng_.nextFloat();
+    return {u, rng_.nextFloat()};
+}
+
+}  // namespace lightpath

@@ -1,0 +1,120 @@
+// The samplers' defining properties, checked as mathematical facts: strata hold one sample each,
+// scrambled Sobol points form (0,m,2)-nets in base 2, and all are deterministic per pixel.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <set>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "render/renderer.h"
+#include "sampling/sampler.h"
+#include "scene_builder.h"
+
+namespace lightpath {
+namespace {
+
+std::vector<Vec2> firstPoints(SamplerKind kind, int count, int dimensionPair, std::uint64_t seed) {
+    std::vector<Vec2> points;
+    for (int i = 0; i < count; ++i) {
+        Sampler sampler = Sampler::forPixel(kind, 17, 42, i, count, seed);
+        Vec2 p{0.0f};
+        for (int d = 0; d <= dimensionPair; ++d) p = sampler.next2D();
+        points.push_back(p);
+    }
+    return points;
+}
+
+// Every elementary interval [a/2^i, (a+1)/2^i) x [b/2^j, (b+1)/2^j) with i + j = m holds exactly one point.
+bool isZeroNet(const std::vector<Vec2>& points, int m) {
+    for (int i = 0; i <= m; ++i) {
+        const int cx = 1 << i, cy = 1 << (m - i);
+        std::set<int> cells;
+        for (const Vec2& p : points) {
+            if (p.x < 0.0f || p.x >= 1.0f || p.y < 0.0f || p.y >= 1.0f) return false;
+            cells.insert(static_cast<int>(p.x * cx) * cy + static_cast<int>(p.y * cy));
+        }
+        if (cells.size() != points.size()) return false;
+    }
+    return true;
+}
+
+TEST_CASE("sobol: the first 2^m samples of every dimension pair form a (0,m,2)-net") {
+    for (int m : {2, 4, 6, 8}) {
+        for (int pair = 0; pair < 4; ++pair) {
+            CAPTURE(m);
+            CAPTURE(pair);
+            CHECK(isZeroNet(firstPoints(SamplerKind::Sobol, 1 << m, pair, 3), m));
+        }
+    }
+}
+
+TEST_CASE("stratified: one sample per stratum, grid for square counts, Latin hypercube otherwise") {
+    const auto grid = firstPoints(SamplerKind::Stratified, 16, 1, 9);
+    std::set<int> cells;
+    for (const Vec2& p : grid) cells.insert(static_cast<int>(p.x * 4) * 4 + static_cast<int>(p.y * 4));
+    CHECK(cells.size() == 16);
+    const auto rooks = firstPoints(SamplerKind::Stratified, 12, 2, 9);
+    std::set<int> columns, rows;
+    for (const Vec2& p : rooks) {
+        columns.insert(static_cast<int>(p.x * 12));
+        rows.insert(static_cast<int>(p.y * 12));
+    }
+    CHECK(columns.size() == 12);
+    CHECK(rows.size() == 12);
+}
+
+TEST_CASE("independent points are not a net, and every sampler is deterministic") {
+    CHECK_FALSE(isZeroNet(firstPoints(SamplerKind::Independent, 64, 0, 1), 6));
+    for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
+        const auto a = firstPoints(kind, 32, 1, 5), b = firstPoints(kind, 32, 1, 5), c = firstPoints(kind, 32, 1, 6);
+        CHECK(a == b);
+        CHECK(a != c);
+    }
+}
+
+TEST_CASE("low discrepancy integrates a smooth function with less error than independent points") {
+    // The integral of x y over the unit square is 1/4; mean squared error over many pixels.
+    auto meanSquaredError = [](SamplerKind kind) {
+        double total = 0.0;
+        for (std::uint64_t seed = 0; seed < 200; ++seed) {
+            double sum = 0.0;
+            for (const Vec2& p : firstPoints(kind, 64, 0, seed)) sum += double(p.x) * p.y;
+            total += (sum / 64 - 0.25) * (sum / 64 - 0.25);
+        }
+        return total / 200;
+    };
+    const double independent = meanSquaredError(SamplerKind::Independent);
+    CHECK(meanSquaredError(SamplerKind::Stratified) < independent / 4);
+    CHECK(meanSquaredError(SamplerKind::Sobol) < independent / 16);
+}
+
+TEST_CASE("adaptive sampling stops converged pixels and keeps sampling noisy ones") {
+    // The camera looks at the horizon: the top half of the image is black sky (zero variance,
+    // converged at the minimum of 8 samples), the bottom half a floor under a small area light.
+    Scene scene;
+    scene.camera = test::centredCamera({0, 1, 0}, {0, 1, -1}, {0, 1, 0}, 24);
+    PhongMaterial floor, lamp;
+    floor.name = "floor";
+    floor.kd = Rgb{0.5f};
+    lamp.name = "lamp";
+    lamp.emission = Rgb{20.0f};
+    test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
+    const std::uint32_t lampObject = test::addObject(scene, "lamp", test::addMaterial(scene, lamp));
+    scene.triangles.push_back({{-0.2f, 0.8f, -2.0f}, {0.0f, 0.8f, -2.3f}, {0.2f, 0.8f, -2.0f}, lampObject});
+    const Triangle& t = scene.triangles.back();
+    REQUIRE(glm::cross(t.b - t.a, t.c - t.a).y < 0.0f);  // the lamp shines down onto the floor
+
+    const AovSet aovs(std::vector<lpe::NamedExpression>{});
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = 256;
+    options.targetError = 0.05;
+    const std::uint64_t samples = Renderer(scene, aovs, options).render().stats.samples;
+    const std::uint64_t skyPixels = 24 * 12, floorPixels = 24 * 12;
+    CHECK(samples <= skyPixels * 8 + floorPixels * 256);  // converged pixels cost nothing more
+    CHECK(samples > skyPixels * 8 + floorPixels * 8);     // noisy ones keep sampling
+}
+
+}  // namespace
+}  // namespace lightpath
