@@ -23,10 +23,10 @@ std::string verdict(const ScoreRow& r) {
 
 void printScorecard(const std::vector<ScoreRow>& rows, const std::string& header) {
     std::printf("%s\n\n", header.c_str());
-    std::printf("%-20s %-7s %-6s %-38s %10s %8s %-6s %s\n", "row", "method", "prec", "metric", "value", "target",
+    std::printf("%-18s %-14s %-6s %-37s %10s %7s %-6s %s\n", "row", "method", "prec", "metric", "value", "target",
                 "", "detail");
     for (const ScoreRow& r : rows)
-        std::printf("%-20s %-7s %-6s %-38s %10s %8s %-6s %s\n", r.row.c_str(), r.method.c_str(),
+        std::printf("%-18s %-14s %-6s %-37s %10s %7s %-6s %s\n", r.row.c_str(), r.method.c_str(),
                     r.precision.c_str(), r.metric.c_str(), formatValue(r.value).c_str(),
                     formatValue(r.target).c_str(), verdict(r).c_str(), r.detail.c_str());
     std::printf("\nrobust rows at target: %s\n", robustRowsAtTarget(rows) ? "all" : "NOT ALL");
