@@ -29,7 +29,8 @@ struct CompileOptions {
     // the paths of `universe` that no named expression accepts (the `rest` AOV, DESIGN.md).
     std::string complementName;
     std::string universe = "E.*L";
-    // Guards against exponential subset construction; exceeding it throws LimitError.
+    // Guards against exponential subset construction (states counted before minimisation);
+    // exceeding it throws LimitError.
     std::size_t maxStates = 100000;
 };
 
@@ -53,6 +54,8 @@ public:
     bool isDead(State state, OutputMask outputs) const { return (canAccept_[state] & outputs) == 0; }
 
     LabelClass labelClass(std::string_view label) const;
+    // Camera, emitter and background events do not scatter: whatever their `scatter`, they are
+    // matched as if it were Scatter::None (so `D` never matches an emitter).
     Symbol symbol(EventType type, Scatter scatter, LabelClass label) const {
         return (label * kScatterCount + static_cast<Symbol>(scatter)) * kEventTypeCount +
                static_cast<Symbol>(type);

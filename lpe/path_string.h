@@ -18,7 +18,9 @@ Path parsePath(std::string_view text);
 
 // "ESDL": loses transmission vs reflection and labels (a T event prints its scattering letter).
 std::string toCompactString(const Path& path);
-// "E RS RD'floor' L'key'": lossless; parsePath(toTupleString(p)) == p. Labels cannot contain '.
+// "E RS RD'floor' L'key'": lossless, parsePath(toTupleString(p)) == p, for every path a renderer
+// records (two events or more). A lone unlabelled event such as "RS" reads back as the compact
+// path R S: one word without spaces or quotes is compact. Labels cannot contain '.
 std::string toTupleString(const Path& path);
 // The compact form when it loses nothing, the tuple form otherwise: for reports and examples.
 std::string toDisplayString(const Path& path);

@@ -1,0 +1,38 @@
+#pragma once
+// Thompson's construction (Thompson 1968): a syntax tree becomes a nondeterministic automaton with
+// epsilon moves, linear in the size of the tree. Several expressions share one NFA, each with its
+// own start and accepting state, so that one subset construction serves every output.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "lpe/alphabet.h"
+#include "lpe/syntax.h"
+
+namespace lpe::detail {
+
+inline constexpr std::uint32_t kNone = UINT32_MAX;
+
+// Bounds the work of every later stage: the NFA has at most a few states per expanded node.
+inline constexpr std::size_t kMaxExpandedNodes = 100000;
+
+struct NfaState {
+    std::vector<std::uint32_t> epsilon;  // moves that read nothing
+    std::uint32_t predicate = kNone;     // index into Nfa::predicates: the one symbol edge, if any
+    std::uint32_t target = kNone;        // where that edge leads
+    std::uint32_t output = kNone;        // the output this state accepts, if any
+};
+
+struct Nfa {
+    std::vector<NfaState> states;
+    std::vector<std::uint32_t> starts;   // one per output
+    std::vector<SymbolSet> predicates;   // the distinct symbol sets found on edges
+};
+
+// The size of a tree once every {n,m} is written out, saturating just above `cap`.
+std::size_t expandedSize(const syntax::Node& node, std::size_t cap);
+
+// One output per root, in order. Throws LimitError when the expanded trees are too large.
+Nfa buildNfa(const std::vector<const syntax::Node*>& roots, const Alphabet& alphabet);
+
+}  // namespace lpe::detail
