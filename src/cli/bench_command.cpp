@@ -8,19 +8,14 @@
 #include "bench/machine.h"
 #include "bench/ray_benchmark.h"
 #include "bench/skip_benchmark.h"
+#include "cli/bench_error_command.h"
 #include "cli/exit_codes.h"
+#include "cli/shipped_scenes.h"
 #include "io/text_file.h"
 #include "scene/scene_loader.h"
 
 namespace lightpath {
 namespace {
-
-// A scene shipped in scenes/: found from the working directory, else in the source tree.
-std::filesystem::path shippedScene(const std::string& name) {
-    const std::filesystem::path local = std::filesystem::path("scenes") / name;
-    if (std::filesystem::exists(local)) return local;
-    return std::filesystem::path(LIGHTPATH_SOURCE_DIR) / "scenes" / name;
-}
 
 struct SkipOptions {
     std::string scene;
@@ -174,6 +169,8 @@ void addBenchCommand(CLI::App& app) {
         "  lightpath bench rays\n"
         "  lightpath bench rays --quick --json out/rays.json");
     raysCommand->callback([rays] { runRays(*rays); });
+
+    addBenchErrorCommand(*bench);
 }
 
 }  // namespace lightpath

@@ -1,0 +1,241 @@
+#include "bench/error_benchmark.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "bench/timing.h"
+#include "film/aov_set.h"
+#include "io/image_reader.h"
+#include "io/image_writer.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace lightpath {
+namespace {
+
+using Reference = std::vector<Rgb>;  // per pixel, row by row
+
+// One configuration of the comparison: a sampler, optionally with adaptive sampling.
+struct Strategy {
+    std::string name;
+    SamplerKind sampler;
+    double targetError;  // 0: fixed spp
+};
+
+const std::vector<Strategy> kStrategies = {
+    {"independent", SamplerKind::Independent, 0.0},
+    {"stratified", SamplerKind::Stratified, 0.0},
+    {"sobol", SamplerKind::Sobol, 0.0},
+    {"adaptive", SamplerKind::Sobol, 0.2},  // target relative error at 1 spp
+};
+
+// Lambert's formula: irradiance at p (normal n) from a polygon of uniform radiance le.
+double polygonIrradiance(const glm::dvec3& p, const glm::dvec3& n, const std::vector<glm::dvec3>& polygon, double le) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const glm::dvec3 a = glm::normalize(polygon[k] - p), b = glm::normalize(polygon[(k + 1) % polygon.size()] - p);
+        sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, glm::normalize(glm::cross(a, b)));
+    }
+    return le / 2.0 * std::fabs(sum);
+}
+
+Scene areaLightPlane(int size, std::vector<glm::dvec3>& quad, double& radiance, double& albedo) {
+    Scene scene;
+    scene.camera.eye = {0.0f, 1.0f, 0.0f};
+    scene.camera.lookAt = {0.0f, 0.0f, 0.0f};
+    scene.camera.up = {0.0f, 0.0f, -1.0f};
+    scene.camera.verticalFovDegrees = 70.0f;
+    scene.camera.width = scene.camera.height = size;
+    albedo = 0.6;
+    radiance = 5.0;
+    PhongMaterial floor, lamp;
+    floor.name = "floor";
+    floor.kd = Rgb{static_cast<float>(albedo)};
+    lamp.name = "lamp";
+    lamp.emission = Rgb{static_cast<float>(radiance)};
+    scene.materials = {floor, lamp};
+    scene.objects = {{"floor", 0}, {"lamp", 1}};
+    scene.planes.push_back({{0, 0, 0}, {0, 1, 0}, 0});
+    // A 0.8 x 0.5 quad at height 1.5 (above the camera), shining down.
+    const Vec3 q0{-0.6f, 1.5f, -0.45f}, q1{0.2f, 1.5f, -0.45f}, q2{0.2f, 1.5f, 0.05f}, q3{-0.6f, 1.5f, 0.05f};
+    scene.triangles.push_back({q0, q1, q2, 1});
+    scene.triangles.push_back({q0, q2, q3, 1});
+    quad = {glm::dvec3(q0), glm::dvec3(q1), glm::dvec3(q2), glm::dvec3(q3)};
+    return scene;
+}
+
+// The exact pixel values of the area-light plane: rho/pi E averaged over each pixel's footprint
+// (an 8 x 8 grid of points per pixel, by the pinhole model written out here).
+Reference areaLightPlaneReference(const Scene& scene, const std::vector<glm::dvec3>& quad, double radiance, double albedo) {
+    const CameraDescription& c = scene.camera;
+    const double halfHeight = std::tan(glm::radians(double(c.verticalFovDegrees)) / 2.0);
+    Reference reference;
+    constexpr int kSub = 8;
+    for (int j = 0; j < c.height; ++j) {
+        for (int i = 0; i < c.width; ++i) {
+            double sum = 0.0;
+            for (int a = 0; a < kSub; ++a) {
+                for (int b = 0; b < kSub; ++b) {
+                    // Looking straight down with up = -z: film x -> world x, film y -> world z.
+                    const double u = (2.0 * (i + (a + 0.5) / kSub) / c.width - 1.0) * halfHeight;
+                    const double v = (1.0 - 2.0 * (j + (b + 0.5) / kSub) / c.height) * halfHeight;
+                    const glm::dvec3 p{u * c.eye.y, 0.0, -v * c.eye.y};
+                    sum += albedo / M_PI * polygonIrradiance(p, {0, 1, 0}, quad, radiance);
+                }
+            }
+            reference.push_back(Rgb{static_cast<float>(sum / (kSub * kSub))});
+        }
+    }
+    return reference;
+}
+
+Scene furnaceScene(int size, double rho, double le) {
+    Scene scene;
+    scene.camera.eye = Vec3{0.0f};
+    scene.camera.lookAt = {0.0f, 0.0f, -1.0f};
+    scene.camera.verticalFovDegrees = 90.0f;
+    scene.camera.width = scene.camera.height = size;
+    PhongMaterial wall;
+    wall.name = "wall";
+    wall.kd = Rgb{static_cast<float>(rho)};
+    wall.emission = Rgb{static_cast<float>(le)};
+    scene.materials = {wall};
+    scene.objects = {{"furnace", 0}};
+    scene.spheres.push_back({Vec3{0.0f}, 1.0f, 0});
+    return scene;
+}
+
+struct Measurement {
+    double seconds, rmse, relmse;
+};
+
+Measurement measure(const Scene& scene, const Reference& reference, const RenderOptions& options) {
+    const AovSet aovs(std::vector<lpe::NamedExpression>{});
+    Film film(1, 1, {});
+    const double start = processCpuSeconds();
+    film = Renderer(scene, aovs, options).render().film;
+    const double seconds = processCpuSeconds() - start;
+    double squared = 0.0, relative = 0.0;
+    std::size_t n = 0;
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            const Rgb& value = film.at(0, x, y);
+            const Rgb& truth = reference[static_cast<std::size_t>(y * film.width() + x)];
+            for (int c = 0; c < 3; ++c) {
+                const double e = double(value[c]) - double(truth[c]);
+                squared += e * e;
+                relative += e * e / (double(truth[c]) * truth[c] + 1e-2);
+                ++n;
+            }
+        }
+    }
+    return {seconds, std::sqrt(squared / n), relative / n};
+}
+
+// Least-squares slope of log(rmse) against log(seconds).
+double fitSlope(const std::vector<ErrorBenchmarkRow>& rows) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& r : rows) {
+        const double x = std::log(r.seconds), y = std::log(r.rmse);
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double n = static_cast<double>(rows.size());
+    return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+// Seconds at which a strategy's error curve reaches `error`, interpolated in log-log between the
+// two budgets around it (extrapolated along the fitted slope outside them).
+double secondsToReach(const std::vector<ErrorBenchmarkRow>& rows, double error) {
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const auto& a = rows[i - 1];
+        const auto& b = rows[i];
+        if ((a.rmse - error) * (b.rmse - error) <= 0.0 && a.rmse != b.rmse) {
+            const double t = (std::log(error) - std::log(a.rmse)) / (std::log(b.rmse) - std::log(a.rmse));
+            return std::exp(std::log(a.seconds) + t * (std::log(b.seconds) - std::log(a.seconds)));
+        }
+    }
+    const auto& last = rows.back();
+    return std::exp(std::log(last.seconds) + (std::log(error) - std::log(last.rmse)) / fitSlope(rows));
+}
+
+Reference cachedReference(const Scene& scene, const std::filesystem::path& cacheFile, int spp) {
+    if (std::filesystem::exists(cacheFile)) {
+        const Film cached = readFilm(cacheFile);
+        if (cached.width() == scene.camera.width && cached.height() == scene.camera.height) return cached.layer(0);
+    }
+    const AovSet aovs(std::vector<lpe::NamedExpression>{});
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = spp;
+    options.sampler = SamplerKind::Sobol;
+    options.seed = 0x5eed;
+    const Film film = Renderer(scene, aovs, options).render().film;
+    writeFilm(film, cacheFile, {{"lightpath:reference_spp", std::to_string(spp)}});
+    return film.layer(0);
+}
+
+}  // namespace
+
+ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& scenesDirectory,
+                                        const std::filesystem::path& cacheDirectory) {
+    struct BenchScene {
+        std::string name;
+        Scene scene;
+        Reference reference;
+    };
+    std::vector<BenchScene> scenes;
+    const int size = quick ? 32 : 64;
+    {
+        std::vector<glm::dvec3> quad;
+        double radiance = 0, albedo = 0;
+        Scene scene = areaLightPlane(size, quad, radiance, albedo);
+        Reference reference = areaLightPlaneReference(scene, quad, radiance, albedo);
+        scenes.push_back({"area-light-plane", std::move(scene), std::move(reference)});
+    }
+    scenes.push_back({"furnace", furnaceScene(size, 0.5, 1.0), Reference(std::size_t(size) * size, Rgb{2.0f})});
+    if (!quick) {
+        Scene taxonomy = loadScene(scenesDirectory / "taxonomy.toml");
+        taxonomy.camera.width = 96;
+        taxonomy.camera.height = 54;
+        Reference reference = cachedReference(taxonomy, cacheDirectory / "taxonomy-96x54-reference.exr", 4096);
+        scenes.push_back({"taxonomy", std::move(taxonomy), std::move(reference)});
+    }
+
+    const int maxLog2 = quick ? 5 : 8;
+    ErrorBenchmarkResult result;
+    for (const BenchScene& bench : scenes) {
+        std::vector<std::vector<ErrorBenchmarkRow>> curves;
+        for (const Strategy& strategy : kStrategies) {
+            std::vector<ErrorBenchmarkRow> curve;
+            for (int k = 0; k <= maxLog2; ++k) {
+                RenderOptions options;
+                options.integrator = "path";
+                options.threads = 1;
+                options.samplesPerPixel = 1 << k;
+                options.sampler = strategy.sampler;
+                options.targetError = strategy.targetError;
+                options.seed = 1;
+                // Adaptive sampling: a pixel may take up to 8x the budget, and the error it stops
+                // at shrinks as 1/sqrt(budget), so the curve keeps descending like the others.
+                if (strategy.targetError > 0.0) {
+                    options.samplesPerPixel = 8 << k;
+                    options.targetError = strategy.targetError / std::sqrt(double(1 << k));
+                }
+                const Measurement m = measure(bench.scene, bench.reference, options);
+                curve.push_back({bench.name, "path", strategy.name, options.samplesPerPixel, m.seconds, m.rmse, m.relmse});
+            }
+            result.rows.insert(result.rows.end(), curve.begin(), curve.end());
+            curves.push_back(std::move(curve));
+        }
+        // The common error: what independent sampling reaches with its largest budget.
+        const double error = curves[0].back().rmse;
+        const double independentSeconds = secondsToReach(curves[0], error);
+        for (std::size_t s = 0; s < kStrategies.size(); ++s)
+            result.summaries.push_back({bench.name, kStrategies[s].name, fitSlope(curves[s]),
+                                        secondsToReach(curves[s], error) / independentSeconds});
+    }
+    return result;
+}
+
+}  // namespace lightpath

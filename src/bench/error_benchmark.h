@@ -1,0 +1,37 @@
+#pragma once
+// `lightpath bench error`: run time against error. Renders reference scenes at increasing sample
+// budgets for each sampler (and adaptive sampling), measures CPU seconds and the error against a
+// reference that does not come from the renderer under test where one exists:
+//   area-light plane  a Lambertian floor under a quad light, seen from straight above: per pixel,
+//                     Lambert's closed-form polygon irradiance averaged over the pixel footprint
+//   furnace           a closed emissive diffuse sphere seen from inside: Le / (1 - rho) everywhere
+//   taxonomy          the lecture scene, against a high-sample render computed once and cached
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lightpath {
+
+struct ErrorBenchmarkRow {
+    std::string scene, integrator, sampler;
+    int spp = 0;              // samples per pixel (the most a pixel may take, for adaptive)
+    double seconds = 0.0;     // CPU seconds of the render, one thread
+    double rmse = 0.0;        // root mean squared error over pixels and channels
+    double relmse = 0.0;      // mean of squared error / (reference^2 + 1e-2)
+};
+
+struct ErrorBenchmarkSummary {
+    std::string scene, sampler;
+    double slope = 0.0;       // fitted d log(rmse) / d log(seconds)
+    double timeRatio = 0.0;   // seconds to reach the common error, over independent sampling's
+};
+
+struct ErrorBenchmarkResult {
+    std::vector<ErrorBenchmarkRow> rows;
+    std::vector<ErrorBenchmarkSummary> summaries;
+};
+
+// `scenes`: the folder of shipped scenes; `cache`: where the lecture scene's reference is kept.
+ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& scenes, const std::filesystem::path& cache);
+
+}  // namespace lightpath

@@ -1,0 +1,98 @@
+#include "cli/bench_error_command.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <sstream>
+
+#include "bench/error_benchmark.h"
+#include "bench/machine.h"
+#include "cli/exit_codes.h"
+#include "cli/shipped_scenes.h"
+#include "io/text_file.h"
+
+namespace lightpath {
+namespace {
+
+struct ErrorOptions {
+    bool quick = false;
+    std::string json;
+    std::string csv = "out/bench-error.csv";
+    std::string plot = "out/bench-error.png";
+    std::string cache = "out/bench-cache";
+};
+
+std::string toCsv(const ErrorBenchmarkResult& r) {
+    std::ostringstream csv;
+    csv << "scene,integrator,sampler,spp,seconds,rmse,relmse\n";
+    for (const auto& row : r.rows)
+        csv << row.scene << ',' << row.integrator << ',' << row.sampler << ',' << row.spp << ',' << row.seconds << ','
+            << row.rmse << ',' << row.relmse << '\n';
+    return csv.str();
+}
+
+std::string toJson(const ErrorBenchmarkResult& r) {
+    std::ostringstream json;
+    json << "[";
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        const auto& row = r.rows[i];
+        json << (i ? ",\n " : "") << "{\"scene\": " << jsonString(row.scene) << ", \"integrator\": " << jsonString(row.integrator)
+             << ", \"sampler\": " << jsonString(row.sampler) << ", \"spp\": " << row.spp << ", \"seconds\": " << row.seconds
+             << ", \"rmse\": " << row.rmse << ", \"relmse\": " << row.relmse << "}";
+    }
+    json << "]\n";
+    return json.str();
+}
+
+void run(const ErrorOptions& options) {
+    std::printf("bench error: path tracer, CPU seconds on 1 thread, error against closed forms or a cached reference\n"
+                "machine: %s\n\n", describeMachine().c_str());
+    const ErrorBenchmarkResult r = runErrorBenchmark(options.quick, shippedScenesDirectory(), options.cache);
+    std::printf("%-18s %-12s %6s %10s %12s %12s\n", "scene", "sampler", "spp", "seconds", "rmse", "relmse");
+    for (const auto& row : r.rows)
+        std::printf("%-18s %-12s %6d %10.4f %12.6f %12.6f\n", row.scene.c_str(), row.sampler.c_str(), row.spp, row.seconds,
+                    row.rmse, row.relmse);
+    std::printf("\n%-18s %-12s %10s %26s\n", "scene", "sampler", "slope", "time to independent's error");
+    for (const auto& s : r.summaries)
+        std::printf("%-18s %-12s %10.3f %25.2fx\n", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
+    std::printf("\ntargets: independent slope -0.5 +- 0.05; on area-light-plane sobol <= 0.5x and adaptive <= 0.33x of "
+                "independent's time\n");
+
+    writeTextFileAtomically(options.csv, toCsv(r));
+    std::printf("wrote %s\n", options.csv.c_str());
+    if (!options.json.empty()) {
+        writeTextFileAtomically(options.json, toJson(r));
+        std::printf("wrote %s\n", options.json.c_str());
+    }
+    if (!options.plot.empty()) {
+        // The plot is drawn by Debian's python3 with python3-matplotlib; without them, the CSV stands.
+        const std::filesystem::path script = shippedScenesDirectory().parent_path() / "scripts" / "plot_error.py";
+        const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + options.csv + "' '" + options.plot + "'";
+        std::fflush(stdout);
+        if (std::system(command.c_str()) == 0) std::printf("wrote %s\n", options.plot.c_str());
+        else std::fprintf(stderr, "warning: no plot (%s failed; is python3-matplotlib installed?)\n", command.c_str());
+    }
+}
+
+}  // namespace
+
+void addBenchErrorCommand(CLI::App& bench) {
+    auto options = std::make_shared<ErrorOptions>();
+    CLI::App* sub = bench.add_subcommand("error", "Run time against error for each sampler and adaptive sampling");
+    sub->add_flag("--quick", options->quick, "Small images, budgets up to 32 spp, closed-form scenes only");
+    sub->add_option("--json", options->json, "Also write rows {scene, integrator, sampler, spp, seconds, rmse, relmse}");
+    sub->add_option("--csv", options->csv, "Where the CSV goes")->capture_default_str();
+    sub->add_option("--plot", options->plot, "Where the log-log plot goes (empty: none)")->capture_default_str();
+    sub->add_option("--cache", options->cache, "Folder for the cached high-sample reference of the lecture scene")
+        ->capture_default_str();
+    sub->footer(
+        "Renders each scene at budgets 1, 2, 4, ... spp with independent, stratified and Sobol sampling and\n"
+        "with adaptive sampling, prints RMSE against time, the fitted convergence slope, and the time each\n"
+        "needs to reach the error independent sampling reaches with its largest budget.\n\n"
+        "Examples:\n"
+        "  lightpath bench error\n"
+        "  lightpath bench error --quick --json out/error.json");
+    sub->callback([options] { run(*options); });
+}
+
+}  // namespace lightpath
