@@ -155,7 +155,11 @@ float intersectTriangleMollerTrumbore(const Ray& ray, const Triangle& tri, float
 }
 
 Vec3 sphereNormal(const Sphere& sphere, const Vec3& point) {
-    return (point - sphere.center) / sphere.radius;
+    // Normalised rather than divided by the radius: a point off the sphere by the rounding of t
+    // still gets a unit normal, so centre + radius * normal puts the point back on the sphere.
+    const Vec3 v = point - sphere.center;
+    const float length = glm::length(v);
+    return length > 0.0f ? v / length : Vec3{0.0f, 1.0f, 0.0f};
 }
 
 Vec3 triangleNormal(const Triangle& tri) {
