@@ -54,12 +54,12 @@ void checkLayersSumToBeauty(const Film& film) {
     CHECK(worst <= 1.0);
 }
 
-TEST_CASE("every shipped scene: the classes AOVs sum to the beauty and rest is zero") {
+TEST_CASE("every shipped scene and integrator: the classes AOVs sum to the beauty and rest is zero") {
     const AovSet aovs(lpe::classesSet());
     const auto scenes = shippedScenes();
     REQUIRE(scenes.size() >= 5);
     for (const auto& file : scenes) {
-        for (const char* integrator : {"raycast", "whitted"}) {
+        for (const char* integrator : {"raycast", "whitted", "path"}) {
             CAPTURE(file.filename().string());
             CAPTURE(integrator);
             const Film film = renderSmall(file, aovs, integrator);
@@ -79,6 +79,15 @@ TEST_CASE("every shipped scene: a partial set plus rest sums to the beauty") {
         CAPTURE(file.filename().string());
         checkLayersSumToBeauty(renderSmall(file, aovs, "whitted"));
     }
+}
+
+TEST_CASE("the Cornell box under the path tracer: indirect light is non-zero") {
+    const AovSet aovs(lpe::classesSet());
+    const Film film = renderSmall(LIGHTPATH_SOURCE_DIR "/scenes/cornell-original.toml", aovs, "path");
+    const auto names = aovs.layerNames();
+    const std::size_t indirect = static_cast<std::size_t>(std::find(names.begin(), names.end(), "indirect") - names.begin());
+    const auto layer = film.layer(indirect);
+    CHECK(std::count_if(layer.begin(), layer.end(), [](const Rgb& v) { return v != Rgb{0.0f}; }) > film.width() * film.height() / 2);
 }
 
 TEST_CASE("the lecture room: all default AOVs but indirect are non-zero under Whitted") {
