@@ -122,7 +122,7 @@ struct SpawnCheck {
 
 void checkFrom(const SceneGeometry& geometry, const SurfaceHit& hit, Rng& rng, SpawnCheck& check) {
     const NumericsOptions& numerics = geometry.numerics();
-    const Vec3 outward = glm::dot(hit.normal, hit.point - geometry.spheres()[0].center) >= 0.0f ? hit.normal : -hit.normal;
+    const Vec3& outward = hit.normal;  // a sphere's geometric normal points out, from either side
     // Outward: reflection off the outside, or refraction out of the inside; down to grazing.
     const Ray out = spawnRay(hit, stress::randomInCone(rng, outward, 1e-3, 1.0), numerics);
     check.selfHits += geometry.intersect(out).has_value();
