@@ -21,6 +21,13 @@ struct Bin {
     std::uint32_t count = 0;
 };
 
+// A primitive as the builder moves it around: its box, its centroid (computed once) and its id.
+struct Item {
+    Bounds bounds;
+    Vec3 centroid;
+    std::uint32_t id;
+};
+
 struct Split {
     int axis = -1;
     int bin = 0;  // primitives in bins [0, bin] go left
@@ -33,7 +40,18 @@ int binOf(float centroid, float lo, float scale) {
 
 class Builder {
 public:
-    explicit Builder(std::vector<BvhPrimitive>& primitives) : primitives_(primitives) {}
+    explicit Builder(const std::vector<BvhPrimitive>& primitives) {
+        primitives_.reserve(primitives.size());
+        for (const BvhPrimitive& p : primitives) primitives_.push_back({p.bounds, p.bounds.centroid(), p.id});
+    }
+
+    // The ids in leaf order, after build().
+    std::vector<std::uint32_t> ids() const {
+        std::vector<std::uint32_t> ids;
+        ids.reserve(primitives_.size());
+        for (const Item& item : primitives_) ids.push_back(item.id);
+        return ids;
+    }
 
     std::vector<BvhNode> build() {
         nodes_.reserve(2 * primitives_.size() / kMaxLeafSize + 1);
@@ -66,7 +84,7 @@ private:
         Bounds bounds, centroids;
         for (std::size_t i = begin; i < end; ++i) {
             bounds.grow(primitives_[i].bounds);
-            centroids.grow(primitives_[i].bounds.centroid());
+            centroids.grow(primitives_[i].centroid);
         }
         node.lo = bounds.lo;
         node.hi = bounds.hi;
@@ -91,8 +109,8 @@ private:
                 const float scale = kBins / (centroids.hi[axis] - centroids.lo[axis]);
                 const auto mid = std::partition(primitives_.begin() + static_cast<std::ptrdiff_t>(begin),
                                                 primitives_.begin() + static_cast<std::ptrdiff_t>(end),
-                                                [&](const BvhPrimitive& p) {
-                                                    return binOf(p.bounds.centroid()[axis], lo, scale) <= best.bin;
+                                                [&](const Item& p) {
+                                                    return binOf(p.centroid[axis], lo, scale) <= best.bin;
                                                 });
                 const auto middle = static_cast<std::size_t>(mid - primitives_.begin());
                 if (middle > begin && middle < end) {
@@ -108,8 +126,8 @@ private:
         std::nth_element(primitives_.begin() + static_cast<std::ptrdiff_t>(begin),
                          primitives_.begin() + static_cast<std::ptrdiff_t>(middle),
                          primitives_.begin() + static_cast<std::ptrdiff_t>(end),
-                         [&](const BvhPrimitive& a, const BvhPrimitive& b) {
-                             const float ca = a.bounds.centroid()[widest], cb = b.bounds.centroid()[widest];
+                         [&](const Item& a, const Item& b) {
+                             const float ca = a.centroid[widest], cb = b.centroid[widest];
                              return ca < cb || (ca == cb && a.id < b.id);
                          });
         node.axis = static_cast<std::uint8_t>(widest);
@@ -117,34 +135,41 @@ private:
     }
 
     // The cheapest bin boundary over the three axes; cost is sum(area * count) of both sides
-    // (half areas, unnormalised).
+    // (half areas, unnormalised). One pass over the primitives bins all three axes.
     Split findSplit(std::size_t begin, std::size_t end, const Bounds& centroids) const {
-        Split best;
+        std::array<std::array<Bin, kBins>, 3> bins{};
+        Vec3 scale(0.0f);
         for (int axis = 0; axis < 3; ++axis) {
-            const float lo = centroids.lo[axis];
-            const float width = centroids.hi[axis] - lo;
-            if (!(width > 0.0f)) continue;
-            const float scale = kBins / width;
-            std::array<Bin, kBins> bins{};
-            for (std::size_t i = begin; i < end; ++i) {
-                Bin& bin = bins[static_cast<std::size_t>(binOf(primitives_[i].bounds.centroid()[axis], lo, scale))];
-                bin.bounds.grow(primitives_[i].bounds);
+            const float width = centroids.hi[axis] - centroids.lo[axis];
+            if (width > 0.0f) scale[axis] = kBins / width;
+        }
+        for (std::size_t i = begin; i < end; ++i) {
+            const Item& item = primitives_[i];
+            for (int axis = 0; axis < 3; ++axis) {
+                Bin& bin = bins[static_cast<std::size_t>(axis)][static_cast<std::size_t>(
+                    binOf(item.centroid[axis], centroids.lo[axis], scale[axis]))];
+                bin.bounds.grow(item.bounds);
                 ++bin.count;
             }
+        }
+        Split best;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (scale[axis] == 0.0f) continue;
+            const std::array<Bin, kBins>& axisBins = bins[static_cast<std::size_t>(axis)];
             // Sweep from the right to get each suffix's cost, then from the left.
             std::array<float, kBins> rightCost{};
             Bounds right;
             std::uint32_t rightCount = 0;
             for (int b = kBins - 1; b > 0; --b) {
-                right.grow(bins[static_cast<std::size_t>(b)].bounds);
-                rightCount += bins[static_cast<std::size_t>(b)].count;
+                right.grow(axisBins[static_cast<std::size_t>(b)].bounds);
+                rightCount += axisBins[static_cast<std::size_t>(b)].count;
                 rightCost[static_cast<std::size_t>(b)] = right.halfArea() * static_cast<float>(rightCount);
             }
             Bounds left;
             std::uint32_t leftCount = 0;
             for (int b = 0; b < kBins - 1; ++b) {
-                left.grow(bins[static_cast<std::size_t>(b)].bounds);
-                leftCount += bins[static_cast<std::size_t>(b)].count;
+                left.grow(axisBins[static_cast<std::size_t>(b)].bounds);
+                leftCount += axisBins[static_cast<std::size_t>(b)].count;
                 if (leftCount == 0 || leftCount == end - begin) continue;
                 const float cost = left.halfArea() * static_cast<float>(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
                 if (cost < best.cost) best = {axis, b, cost};
@@ -153,7 +178,7 @@ private:
         return best;
     }
 
-    std::vector<BvhPrimitive>& primitives_;
+    std::vector<Item> primitives_;
     std::vector<BvhNode> nodes_;
 };
 
@@ -164,9 +189,9 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives) {
     if (primitives.size() >= std::numeric_limits<std::uint32_t>::max())
         throw std::length_error("too many primitives for a BVH with 32-bit offsets");
     if (!primitives.empty()) {
-        nodes_ = Builder(primitives).build();
-        ids_.reserve(primitives.size());
-        for (const BvhPrimitive& p : primitives) ids_.push_back(p.id);
+        Builder builder(primitives);
+        nodes_ = builder.build();
+        ids_ = builder.ids();
     }
     stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     stats_.nodes = nodes_.size();
