@@ -73,13 +73,15 @@ public:
     std::span<const BvhNode> nodes() const { return nodes_; }
     std::span<const std::uint32_t> primitiveIds() const { return ids_; }
 
-    // Calls test(id) for every primitive whose leaf box the ray may enter before `tLimit`, nearer
-    // boxes first. `tLimit` is read again after each call, so the test shrinks it as it finds
-    // nearer hits and farther subtrees are skipped.
+    // Calls test(slot) for every primitive whose leaf box the ray may enter before `tLimit`,
+    // nearer boxes first; primitiveIds()[slot] is its id, and the caller may keep its data in
+    // slot order too, so a leaf's primitives are read from adjacent memory. `tLimit` is read again
+    // after each call, so the test shrinks it as it finds nearer hits and farther subtrees are
+    // skipped.
     template <typename Test>
     void closest(const Ray& ray, const float& tLimit, Test test) const;
 
-    // True as soon as test(id) is true for a candidate; false when none is.
+    // True as soon as test(slot) is true for a candidate; false when none is.
     template <typename Test>
     bool any(const Ray& ray, Test test) const;
 
@@ -173,7 +175,7 @@ void Bvh::closest(const Ray& ray, const float& tLimit, Test test) const {
                 continue;
             }
         } else {
-            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) test(ids_[i]);
+            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) test(i);
         }
         for (;;) {
             if (top == 0) return;
@@ -207,7 +209,7 @@ bool Bvh::any(const Ray& ray, Test test) const {
             }
         } else {
             for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i)
-                if (test(ids_[i])) return true;
+                if (test(i)) return true;
         }
         if (top == 0) return false;
         current = stack[--top];

@@ -64,6 +64,11 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
             primitives.push_back({triangleBounds(triangles_[i]), firstTriangle + i});
     }
     bvh_ = Bvh(std::move(primitives));
+    slotTriangles_.resize(bvh_.primitiveIds().size());
+    for (std::size_t slot = 0; slot < slotTriangles_.size(); ++slot) {
+        const std::uint32_t id = bvh_.primitiveIds()[slot];
+        if (id >= firstTriangle) slotTriangles_[slot] = triangles_[id - firstTriangle];
+    }
 #ifdef LIGHTPATH_HAS_EMBREE
     if (accelerator_ == Accelerator::Embree && !triangles_.empty())
         embree_ = std::make_shared<const EmbreeScene>(triangles_);
@@ -90,6 +95,14 @@ float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const 
                                                           : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
 }
 
+float SceneGeometry::intersectSlot(const Ray& ray, std::uint32_t slot) const {
+    const std::uint32_t id = bvh_.primitiveIds()[slot];
+    if (id < spheres_.size() || id == ray.ignoredPrimitive) return intersectPrimitive(ray, id);
+    const Triangle& t = slotTriangles_[slot];
+    return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, t, ray.tMin)
+                                                          : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
+}
+
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     const std::optional<PrimitiveHit> found = closestPrimitive(ray);
     if (!found) return std::nullopt;
@@ -103,17 +116,17 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
     // limit one ulp beyond the best t, and an equal t wins only with a smaller id.
     PrimitiveHit best{ray.tMax, kNoPrimitive};
     Ray probe = ray;
-    const auto consider = [&](std::uint32_t id) {
-        const float t = intersectPrimitive(probe, id);
+    const auto keep = [&](float t, std::uint32_t id) {
         if (t == kNoHit) return;
         if (t < best.t || (t == best.t && id < best.primitive)) {
             best = {t, id};
             probe.tMax = std::nextafter(t, std::numeric_limits<float>::infinity());
         }
     };
-    bvh_.closest(ray, best.t, consider);
+    bvh_.closest(ray, best.t,
+                 [&](std::uint32_t slot) { keep(intersectSlot(probe, slot), bvh_.primitiveIds()[slot]); });
     const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
-    for (std::uint32_t i = 0; i < planes_.size(); ++i) consider(firstPlane + i);
+    for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
     if (embree_) {
         const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
@@ -157,7 +170,7 @@ bool SceneGeometry::occluded(const Ray& ray) const {
         if (embree_->occluded(ray, ignored)) return true;
     }
 #endif
-    return bvh_.any(ray, blocks);
+    return bvh_.any(ray, [&](std::uint32_t slot) { return intersectSlot(ray, slot) != kNoHit; });
 }
 
 bool SceneGeometry::occludedBruteForce(const Ray& ray) const {

@@ -72,6 +72,9 @@ private:
     // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit.
     float intersectPrimitive(const Ray& ray, std::uint32_t id) const;
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id) const;
+    // intersectPrimitive for the primitive in BVH slot `slot`, reading a triangle from its
+    // leaf-ordered copy: the same test on the same numbers, from adjacent memory.
+    float intersectSlot(const Ray& ray, std::uint32_t slot) const;
 
     std::vector<Sphere> spheres_;
     std::vector<Plane> planes_;
@@ -80,6 +83,7 @@ private:
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // spheres and triangles (Bvh), spheres only (Embree)
+    std::vector<Triangle> slotTriangles_;  // the triangle in each BVH slot (unused for spheres)
     std::shared_ptr<const EmbreeScene> embree_;
     AcceleratorStats stats_;
 };
