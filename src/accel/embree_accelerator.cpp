@@ -57,11 +57,12 @@ struct EmbreeScene::Handles {
 };
 
 EmbreeScene::EmbreeScene(std::span<const Triangle> triangles) : handles_(std::make_unique<Handles>()) {
-    const auto started = std::chrono::steady_clock::now();
     handles_->device = rtcNewDevice(nullptr);
     if (!handles_->device) {
         throw std::runtime_error("Embree: cannot create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
     }
+    // The build, not the device (whose thread pool an application creates once).
+    const auto started = std::chrono::steady_clock::now();
     handles_->scene = rtcNewScene(handles_->device);
     rtcSetSceneFlags(handles_->scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     RTCGeometry mesh = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE);

@@ -24,6 +24,7 @@ public:
     bool intersect(const Ray& ray, float tFar, std::uint32_t ignored, float& t, std::uint32_t& index) const;
     bool occluded(const Ray& ray, std::uint32_t ignored) const;
 
+    // Copying the triangles in and building Embree's BVH, without creating the device.
     double buildSeconds() const { return buildSeconds_; }
 
 private:

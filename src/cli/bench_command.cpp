@@ -99,7 +99,7 @@ void runRays(const RaysOptions& options) {
     std::printf("bench rays: million rays per second (build: million triangles per second), wall time,\n"
                 "median of %d interleaved runs; primary %dx%d pinhole, %d random rays, shadow rays from the\n"
                 "primary hits to the first light. Triangles only, the same rays for every accelerator.\n"
-                "Our build runs on 1 thread, Embree's on %d.%s\nmachine: %s\n\n",
+                "Our build runs on 1 thread, Embree's on %d (its device creation not counted).%s\nmachine: %s\n\n",
                 r.repetitions, r.primarySide, r.primarySide, r.randomRays, r.allThreads,
                 r.embree ? "" : " This build has no Embree (LIGHTPATH_EMBREE=OFF): no comparison.",
                 describeMachine().c_str());

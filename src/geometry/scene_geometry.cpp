@@ -74,6 +74,9 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         embree_ = std::make_shared<const EmbreeScene>(triangles_);
 #endif
     stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+#ifdef LIGHTPATH_HAS_EMBREE
+    if (embree_) stats_.buildSeconds = bvh_.stats().buildSeconds + embree_->buildSeconds();
+#endif
     stats_.nodes = bvh_.stats().nodes;
     stats_.nodeBytes = bvh_.stats().nodeBytes;
 }
