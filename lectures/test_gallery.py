@@ -1,0 +1,80 @@
+#!/usr/bin/python3
+"""Open the lecture gallery (index.html) in headless Chromium and check it as a reader would see it.
+
+    /usr/bin/python3 lectures/test_gallery.py build/lectures/index.html [--expect 11]
+
+Passes when the page reports every image loaded (index.html's own script checks naturalWidth of
+each <img> on load and writes "images ok: N" into #status), N is the expected number of figures,
+and Chromium logged no console error (a missing file, a script error). Saves a screenshot,
+gallery-screenshot.png, beside the page. Exit code 0 on success, 1 with the reason otherwise.
+"""
+
+import argparse
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+
+def chromium():
+    """Debian's chromium (or chromium-browser / google-chrome where that is what exists)."""
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        if shutil.which(name):
+            return name
+    sys.exit("test_gallery: no chromium found; install Debian's chromium (scripts/setup does)")
+
+
+def run_chromium(args, profile):
+    """Run headless Chromium with a throw-away profile; return (stdout, stderr)."""
+    argv = [chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+            f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0",
+            "--virtual-time-budget=10000", *args]
+    proc = subprocess.run(argv, capture_output=True, text=True, timeout=120)
+    if proc.returncode != 0:
+        sys.exit(f"test_gallery: chromium failed (exit {proc.returncode}):\n{proc.stderr[-3000:]}")
+    return proc.stdout, proc.stderr
+
+
+def console_errors(stderr):
+    """Console messages and failed loads from Chromium's log (not its own startup noise)."""
+    bad = []
+    for line in stderr.splitlines():
+        if ("CONSOLE" in line and ("error" in line.lower() or "Uncaught" in line)) \
+                or "ERR_FILE_NOT_FOUND" in line or "Failed to load resource" in line:
+            bad.append(line.strip())
+    return bad
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("page", help="the gallery's index.html")
+    ap.add_argument("--expect", type=int, default=11, help="number of figures the page must show")
+    a = ap.parse_args()
+    page = Path(a.page).resolve()
+    if not page.is_file():
+        sys.exit(f"test_gallery: no page at {page}; build the 'figures' target first")
+    url = page.as_uri()
+    with tempfile.TemporaryDirectory() as profile:
+        dom, log = run_chromium(["--dump-dom", url], profile)
+        shot = page.parent / "gallery-screenshot.png"
+        run_chromium([f"--screenshot={shot}", "--window-size=1280,2400", url], profile)
+
+    m = re.search(r'<p id="status">([^<]*)</p>', dom)
+    status = m.group(1) if m else "(no #status element)"
+    errors = console_errors(log)
+    problems = []
+    if status != f"images ok: {a.expect}":
+        problems.append(f"page status is '{status}', expected 'images ok: {a.expect}'")
+    if errors:
+        problems.append("console errors:\n  " + "\n  ".join(errors))
+    if not shot.is_file() or shot.stat().st_size == 0:
+        problems.append(f"no screenshot written at {shot}")
+    if problems:
+        sys.exit("test_gallery: FAILED\n" + "\n".join(problems))
+    print(f"test_gallery: {status}, no console errors; screenshot {shot}")
+
+
+if __name__ == "__main__":
+    main()
