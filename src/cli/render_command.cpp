@@ -1,5 +1,9 @@
 #include "cli/render_command.h"
 
+#include <sys/resource.h>
+
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -16,6 +20,12 @@ struct RenderCommand {
     std::string output;
     bool stats = false;
 };
+
+double peakMemoryMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
+}
 
 void printStats(const RenderStats& stats) {
     const RayCounters& r = stats.rays;
@@ -34,6 +44,7 @@ void printStats(const RenderStats& stats) {
                 stats.threads == 1 ? "" : "s", static_cast<double>(stats.samples) / stats.seconds,
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);
     std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
+    std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
 }
 
 void printAcceleratorStats(const std::string& accel, const AcceleratorStats& a) {
@@ -49,7 +60,12 @@ void printAcceleratorStats(const std::string& accel, const AcceleratorStats& a) 
 void run(const RenderCommand& command) {
     const Scene scene = command.setup.loadScene();
     const AovSet aovs = command.setup.buildAovSet();
-    const RenderOptions options = command.setup.renderOptions();
+    RenderOptions options = command.setup.renderOptions();
+    // Ctrl-C stops the workers after their current tile; nothing is written.
+    static std::atomic<bool> interrupted{false};
+    static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+    std::signal(SIGINT, [](int) { interrupted.store(true); });
+    options.cancel = &interrupted;
     std::unique_ptr<Renderer> renderer;
     try {
         renderer = std::make_unique<Renderer>(scene, aovs, options);
@@ -65,6 +81,7 @@ void run(const RenderCommand& command) {
     }
 
     const RenderResult result = renderer->render();
+    if (result.cancelled) throw CLI::RuntimeError("interrupted: no image written", kExitInterrupted);
     ImageMetadata metadata{{"lightpath:scene", command.setup.scenePath},
                            {"lightpath:integrator", options.integrator},
                            {"lightpath:spp", std::to_string(options.samplesPerPixel)},

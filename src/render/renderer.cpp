@@ -122,6 +122,7 @@ RenderResult Renderer::render() const {
         Tracer tracer(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
         for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
+            if (options_.cancel != nullptr && options_.cancel->load(std::memory_order_relaxed)) break;
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, height); ++y) {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
@@ -145,7 +146,8 @@ RenderResult Renderer::render() const {
     stats.threads = threadCount;
     stats.accelerator = geometry_.acceleratorStats();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return {std::move(film), stats};
+    const bool cancelled = options_.cancel != nullptr && options_.cancel->load();
+    return {std::move(film), stats, cancelled};
 }
 
 std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {

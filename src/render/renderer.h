@@ -2,6 +2,7 @@
 // Turns a scene and a set of outputs into a film: camera rays per pixel, tiles handed out to
 // worker threads, every pixel's samples drawn from its own deterministic sequence so the image is
 // bit-identical for any number of threads.
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -38,6 +39,8 @@ struct RenderOptions {
     // Adaptive sampling when > 0: a pixel stops once the standard error of its mean luminance is
     // below this fraction of the mean; samplesPerPixel is then the most it may take.
     double targetError = 0.0;
+    // Set (e.g. by a Ctrl-C handler) to stop the workers after their current tile.
+    const std::atomic<bool>* cancel = nullptr;
     Accelerator accelerator = Accelerator::Bvh;
     bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
 };
@@ -53,6 +56,7 @@ struct RenderStats {
 struct RenderResult {
     Film film;
     RenderStats stats;
+    bool cancelled = false;  // stopped through RenderOptions::cancel: the film is incomplete
 };
 
 class Renderer {
