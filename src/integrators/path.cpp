@@ -46,73 +46,36 @@ lpe::Automaton::Symbol surfaceSymbol(const SurfaceSymbols& symbols, Lobe lobe) {
     return lobe == Lobe::Diffuse ? symbols.diffuse : symbols.glossy;
 }
 
-// Next-event estimation towards every point light (delta lights: no MIS).
-void samplePointLights(const PathVertex& v, Tracer& tracer) {
-    const RenderContext& ctx = tracer.context;
-    const SurfaceSymbols& symbols = ctx.symbols.objects[v.hit.object];
-    for (std::size_t i = 0; i < ctx.scene.lights.size(); ++i) {
-        const PointLight& light = ctx.scene.lights[i];
-        const Vec3 toLight = light.position - v.hit.point;
-        const float distance2 = glm::dot(toLight, toLight);
-        const Vec3 wi = toLight / std::sqrt(distance2);
-        const float cosTheta = glm::dot(v.normal, wi);
-        if (cosTheta <= 0.0f) {
-            ++tracer.counters.shadowBehind;
-            continue;
-        }
-        const PathEvent lightEvent{lpe::EventType::Emitter, lpe::Scatter::None, Subject::PointLight,
-                                   static_cast<std::uint32_t>(i)};
-        Rgb contribution[2];
-        bool any = false;
-        for (int l = 0; l < 2; ++l) {
-            const auto accepted = ctx.automaton.accepts(
-                ctx.automaton.step(ctx.automaton.step(v.state, surfaceSymbol(symbols, kSmoothLobes[l].lobe)), ctx.symbols.lights[i]));
-            contribution[l] = tracer.wants(accepted)
-                                  ? v.throughput * v.bsdf.evaluate(kSmoothLobes[l].lobe, v.wo, wi) * light.intensity * (cosTheta / distance2)
-                                  : Rgb{0.0f};
-            any |= !isBlack(contribution[l]);
-        }
-        if (!any) {
-            ++tracer.counters.shadowZero;
-            continue;
-        }
-        ++tracer.counters.shadow;
-        if (ctx.geometry.occluded(spawnShadowRay(v.hit, light.position, ctx.geometry.numerics()))) continue;
-        for (int l = 0; l < 2; ++l) {
-            if (isBlack(contribution[l])) continue;
-            tracer.emit(v.state, {lpe::EventType::Reflection, kSmoothLobes[l].scatter, Subject::Object, v.hit.object},
-                        surfaceSymbol(symbols, kSmoothLobes[l].lobe), lightEvent, ctx.symbols.lights[i], contribution[l]);
-        }
-    }
-}
+// One light sample seen from a vertex: the radiance arriving along wi divided by the sample's
+// density (for a point light, I / d^2), and the solid-angle density used for MIS (0 for a delta
+// light, which BSDF sampling can never hit).
+struct LightSample {
+    Vec3 position;
+    Vec3 wi;
+    Rgb incident;
+    float lightPdf;
+    PathEvent event;
+    lpe::Automaton::Symbol symbol;
+};
 
-// Next-event estimation of one point on an area light, MIS-weighted against BSDF sampling.
-void sampleAreaLight(const PathVertex& v, Tracer& tracer) {
+// Next-event estimation of one light sample through both smooth lobes, with one shadow ray.
+void addLightSample(const PathVertex& v, const LightSample& light, Tracer& tracer) {
     const RenderContext& ctx = tracer.context;
-    const float uPick = tracer.sampler->next1D();
-    const Vec2 u = tracer.sampler->next2D();
-    if (ctx.emitters.empty()) return;
-    const EmitterSample light = ctx.emitters.sample(v.hit.point, uPick, u);
-    const Vec3 toLight = light.point - v.hit.point;
-    const Vec3 wi = glm::normalize(toLight);
-    const float cosTheta = glm::dot(v.normal, wi);
-    if (cosTheta <= 0.0f || isBlack(light.radiance)) {
+    const float cosTheta = glm::dot(v.normal, light.wi);
+    if (cosTheta <= 0.0f || isBlack(light.incident)) {
         ++tracer.counters.shadowBehind;
         return;
     }
-    const float lightPdf = areaToSolidAngle(light.pdfArea, v.hit.point, light.point, light.normal);
-    if (!(lightPdf > 0.0f)) return;
     const SurfaceSymbols& symbols = ctx.symbols.objects[v.hit.object];
-    const lpe::Automaton::Symbol lightSymbol = ctx.symbols.objects[light.object].emission;
     Rgb contribution[2];
     bool any = false;
     for (int l = 0; l < 2; ++l) {
         const Lobe lobe = kSmoothLobes[l].lobe;
         const auto accepted = ctx.automaton.accepts(
-            ctx.automaton.step(ctx.automaton.step(v.state, surfaceSymbol(symbols, lobe)), lightSymbol));
+            ctx.automaton.step(ctx.automaton.step(v.state, surfaceSymbol(symbols, lobe)), light.symbol));
         if (!tracer.wants(accepted)) continue;
-        const float weight = powerHeuristic(lightPdf, v.bsdf.pdf(lobe, v.wo, wi));
-        contribution[l] = v.throughput * v.bsdf.evaluate(lobe, v.wo, wi) * light.radiance * (cosTheta * weight / lightPdf);
+        const float weight = light.lightPdf > 0.0f ? powerHeuristic(light.lightPdf, v.bsdf.pdf(lobe, v.wo, light.wi)) : 1.0f;
+        contribution[l] = v.throughput * v.bsdf.evaluate(lobe, v.wo, light.wi) * light.incident * (cosTheta * weight);
         any |= !isBlack(contribution[l]);
     }
     if (!any) {
@@ -120,13 +83,38 @@ void sampleAreaLight(const PathVertex& v, Tracer& tracer) {
         return;
     }
     ++tracer.counters.shadow;
-    if (ctx.geometry.occluded(spawnShadowRay(v.hit, light.point, ctx.geometry.numerics()))) return;
-    const PathEvent lightEvent{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Object, light.object};
+    if (ctx.geometry.occluded(spawnShadowRay(v.hit, light.position, ctx.geometry.numerics()))) return;
     for (int l = 0; l < 2; ++l) {
         if (isBlack(contribution[l])) continue;
         tracer.emit(v.state, {lpe::EventType::Reflection, kSmoothLobes[l].scatter, Subject::Object, v.hit.object},
-                    surfaceSymbol(symbols, kSmoothLobes[l].lobe), lightEvent, lightSymbol, contribution[l]);
+                    surfaceSymbol(symbols, kSmoothLobes[l].lobe), light.event, light.symbol, contribution[l]);
     }
+}
+
+// Every point light (inverse-square law), then one point on an area light chosen by power.
+void sampleLights(const PathVertex& v, Tracer& tracer) {
+    const RenderContext& ctx = tracer.context;
+    for (std::size_t i = 0; i < ctx.scene.lights.size(); ++i) {
+        const PointLight& light = ctx.scene.lights[i];
+        const Vec3 toLight = light.position - v.hit.point;
+        const float distance2 = glm::dot(toLight, toLight);
+        addLightSample(v,
+                       {light.position, toLight / std::sqrt(distance2), light.intensity / distance2, 0.0f,
+                        {lpe::EventType::Emitter, lpe::Scatter::None, Subject::PointLight, static_cast<std::uint32_t>(i)},
+                        ctx.symbols.lights[i]},
+                       tracer);
+    }
+    const float uPick = tracer.sampler->next1D();
+    const Vec2 u = tracer.sampler->next2D();
+    if (ctx.emitters.empty()) return;
+    const EmitterSample sample = ctx.emitters.sample(v.hit.point, uPick, u);
+    const float lightPdf = areaToSolidAngle(sample.pdfArea, v.hit.point, sample.point, sample.normal);
+    if (!(lightPdf > 0.0f)) return;
+    addLightSample(v,
+                   {sample.point, glm::normalize(sample.point - v.hit.point), sample.radiance / lightPdf, lightPdf,
+                    {lpe::EventType::Emitter, lpe::Scatter::None, Subject::Object, sample.object},
+                    ctx.symbols.objects[sample.object].emission},
+                   tracer);
 }
 
 }  // namespace
@@ -165,10 +153,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, lpe::Automaton::State 
         const PhongMaterial& material = ctx.scene.materials[ctx.scene.objects[hit->object].material];
         const PhongBsdf bsdf(material, normal, entering);
         const PathVertex vertex{*hit, normal, wo, bsdf, state, throughput};
-        if (bsdf.hasSmoothLobe()) {
-            samplePointLights(vertex, tracer);
-            sampleAreaLight(vertex, tracer);
-        }
+        if (bsdf.hasSmoothLobe()) sampleLights(vertex, tracer);
 
         const float uLobe = tracer.sampler->next1D();
         const Vec2 u = tracer.sampler->next2D();
