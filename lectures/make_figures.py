@@ -48,6 +48,7 @@ class Run:
         self.spp_direct = 1 if quick else 4      # raycast / Whitted (soft shadows of the area light)
         self.spp_path = 4 if quick else 32       # path tracer
         self.commands = []                       # commands of the figure being made
+        self.shared = None                       # the taxonomy renders, once made
 
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
@@ -159,15 +160,27 @@ CLASSES = [("raycast", "E(D|G)L"), ("raytrace", "ES+(D|G)L"), ("mirror", "ES+L")
 
 
 def taxonomy_renders(run, fig_dir):
-    """The taxonomy scene under the three integrators, shared by figures 1 and 2."""
-    scene = REPO / "scenes/taxonomy.toml"
-    out = {}
-    for integ in ("raycast", "whitted", "path"):
-        spp = run.spp_path if integ == "path" else run.spp_direct
-        out[integ] = render(run, fig_dir, integ, scene, "--integrator", integ,
-                            "--resolution", run.res(640, 360), "--spp", spp,
-                            "--sampler", "sobol")
-    return out
+    """The taxonomy scene under the three integrators, shared by figures 1, 2 and 11.
+
+    Rendered once, into 01-taxonomy/, with the classes AOVs plus the two of figure 11; a later
+    figure reuses the EXRs and lists the same commands in the gallery."""
+    if run.shared is None:
+        scene = REPO / "scenes/taxonomy.toml"
+        shared_dir = run.out / "01-taxonomy"
+        shared_dir.mkdir(parents=True, exist_ok=True)
+        before = len(run.commands)
+        exrs = {}
+        for integ in ("raycast", "whitted", "path"):
+            spp = run.spp_path if integ == "path" else run.spp_direct
+            exrs[integ] = render(run, shared_dir, integ, scene, "--integrator", integ,
+                                 "--resolution", run.res(640, 360), "--spp", spp,
+                                 "--sampler", "sobol", "--aovs", "classes",
+                                 "--lpe", "ambient=ES*D<L'ambient'>",
+                                 "--lpe", "bounced=ES*D(D|G|S)+L")
+        run.shared = (exrs, run.commands[before:])
+    else:
+        run.commands += run.shared[1]
+    return run.shared[0]
 
 
 def fig_taxonomy(run, fig_dir, out_png, title):
@@ -211,7 +224,7 @@ def fig_decomposition(run, fig_dir, out_png, title):
                          ("path", [n for n, _ in CLASSES])):
         worst = check_sum(exrs[integ], names)
         notes.append(f"{integ}: max relative |sum - beauty| = {worst:.2g}")
-        panels.append(Panel(exrs[integ], f"{integ}: beauty", "="))
+        panels.append(Panel(exrs[integ], f"{integ}: beauty", "= sum of this row"))
         panels += [Panel(exrs[integ], n, lpe, layer=n) for n, lpe in CLASSES if n in names]
         if integ == "whitted":
             panels.append(None)  # empty cell: Whitted has no indirect light
@@ -421,13 +434,8 @@ def fig_light_groups(run, fig_dir, out_png, title):
 
 
 def fig_ambient(run, fig_dir, out_png, title):
-    scene = REPO / "scenes/taxonomy.toml"
-    w = render(run, fig_dir, "whitted", scene, "--integrator", "whitted",
-               "--resolution", run.res(640, 360), "--spp", run.spp_direct, "--sampler", "sobol",
-               "--lpe", "ambient=ES*D<L'ambient'>", "--aovs", "classes")
-    p = render(run, fig_dir, "path", scene, "--integrator", "path",
-               "--resolution", run.res(640, 360), "--spp", run.spp_path, "--sampler", "sobol",
-               "--lpe", "bounced=ES*D(D|G|S)+L", "--aovs", "classes")
+    exrs = taxonomy_renders(run, fig_dir)
+    w, p = exrs["whitted"], exrs["path"]
     panels = [Panel(w, "Whitted: beauty", "E S* (D|G) L"),
               Panel(p, "path tracer: beauty", "E(D|G|S)*L"),
               Panel(w, "ambient term (x4)", "ES*D<L'ambient'>", layer="ambient", exposure=4),
