@@ -403,7 +403,8 @@ def fig_automaton(run, fig_dir, out_png, title):
     png = fig_dir / "automaton.png"
     text_dot = sh(run, [run.lightpath, "lpe", "dot", "E(S*)(D|G)L"], capture=True)
     dot.write_text(text_dot)
-    sh(run, ["dot", "-Tpng", "-Gdpi=200", "-Nfontname=DejaVu Sans", "-Efontname=DejaVu Sans",
+    sh(run, ["dot", "-Tpng", "-Gdpi=200", "-Gfontname=DejaVu Sans", "-Nfontname=DejaVu Sans",
+             "-Efontname=DejaVu Sans",
              "-o", png, dot])
     compose(run, out_png, title, [Panel(png, "E(S*)(D|G)L, minimised", "lightpath lpe dot | dot -Tpng")],
             cols=1, panel_w=1700, panel_h=760)
