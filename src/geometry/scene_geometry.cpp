@@ -134,7 +134,9 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
     if (embree_) {
         const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
         const std::uint32_t ignored =
-            ray.ignoredPrimitive >= firstTriangle ? ray.ignoredPrimitive - firstTriangle : kNoPrimitive;
+            ray.ignoredPrimitive != kNoPrimitive && ray.ignoredPrimitive >= firstTriangle
+                ? ray.ignoredPrimitive - firstTriangle
+                : kNoPrimitive;
         float t = 0.0f;
         std::uint32_t index = 0;
         if (embree_->intersect(ray, best.t, ignored, t, index) && t < best.t) best = {t, firstTriangle + index};
@@ -169,7 +171,9 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     if (embree_) {
         const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
         const std::uint32_t ignored =
-            ray.ignoredPrimitive >= firstTriangle ? ray.ignoredPrimitive - firstTriangle : kNoPrimitive;
+            ray.ignoredPrimitive != kNoPrimitive && ray.ignoredPrimitive >= firstTriangle
+                ? ray.ignoredPrimitive - firstTriangle
+                : kNoPrimitive;
         if (embree_->occluded(ray, ignored)) return true;
     }
 #endif
