@@ -137,7 +137,8 @@ def compose(run, out_png, title, panels, cols, panel_w, panel_h, gap=20, top=110
     if grid_w > SLIDE_W or top + grid_h > SLIDE_H:
         raise FigureError(f"{out_png}: {cols}x{rows} panels of {panel_w}x{panel_h} do not fit the slide")
     y0 = top + (SLIDE_H - top - grid_h) // 2
-    args = ["oiiotool", "--create", f"{SLIDE_W}x{SLIDE_H}", "3",
+    # --nosoftwareattrib: no command line (with its paths) in the PNG, so reruns are byte-identical
+    args = ["oiiotool", "--nosoftwareattrib", "--create", f"{SLIDE_W}x{SLIDE_H}", "3",
             "--fill:color=" + BG, f"{SLIDE_W}x{SLIDE_H}+0+0"]
     args += text(60, 75, title, 52, "1,1,1")
     for i, p in enumerate(panels):
