@@ -84,7 +84,7 @@ bool hasGlassMaterial(const Scene& scene) {
 
 }  // namespace
 
-TEST_CASE("every shipped scene loads and names its lights") {
+TEST_CASE("every shipped scene loads and names its lights, point or area") {
     int count = 0;
     for (const auto& entry : fs::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes")) {
         if (entry.path().extension() != ".toml") continue;
@@ -92,9 +92,16 @@ TEST_CASE("every shipped scene loads and names its lights") {
         Scene scene;
         REQUIRE_NOTHROW(scene = lightpath::loadScene(entry.path()));
         CHECK(scene.source == entry.path());
-        CHECK_FALSE(scene.lights.empty());
         CHECK_FALSE(scene.objects.empty());
         for (const auto& light : scene.lights) CHECK_FALSE(light.name.empty());
+        // Area lights are emissive objects; a shipped scene has some light, and names it.
+        bool hasAreaLight = false;
+        for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+            if (lightpath::isBlack(scene.materials[scene.objects[i].material].emission)) continue;
+            hasAreaLight = true;
+            CHECK_FALSE(scene.labelOf(i).rfind("area-light-", 0) == 0);
+        }
+        CHECK((!scene.lights.empty() || hasAreaLight));
         ++count;
     }
     CHECK(count >= 5);
