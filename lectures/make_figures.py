@@ -49,6 +49,7 @@ class Run:
         self.spp_path = 4 if quick else 32       # path tracer
         self.commands = []                       # commands of the figure being made
         self.shared = None                       # the taxonomy renders, once made
+        self.dirs = []                           # folders holding the figure's EXRs
 
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
@@ -82,6 +83,7 @@ def sh(run, argv, record=True, capture=False, cwd=None):
 def render(run, fig_dir, name, scene, *options):
     """Render SCENE into fig_dir/NAME.exr with fixed seed and --quiet; returns the EXR path."""
     exr = fig_dir / f"{name}.exr"
+    run.dirs.append(fig_dir.name)
     sh(run, [run.lightpath, "render", scene, "-o", exr, "--seed", "1", "--quiet", *options])
     return exr
 
@@ -181,6 +183,7 @@ def taxonomy_renders(run, fig_dir):
         run.shared = (exrs, run.commands[before:])
     else:
         run.commands += run.shared[1]
+        run.dirs.append("01-taxonomy")
     return run.shared[0]
 
 
@@ -462,8 +465,10 @@ def write_gallery(run, made):
     The page checks its own images on load (naturalWidth > 0) and writes the verdict into
     #status, which test_gallery.py reads from headless Chromium."""
     items = []
-    for fig, png, commands, notes, seconds in made:
+    for fig, png, commands, notes, seconds, dirs in made:
         cmds = "\n".join(html.escape(c) for c in commands)
+        links = ", ".join(f'<a href="{d}/"><code>{d}/</code></a>' for d in dirs)
+        where = f"EXRs it came from in {links}" if dirs else f'files in <a href="{fig["id"]}/"><code>{fig["id"]}/</code></a>'
         note = "".join(f"<li>{html.escape(n)}</li>" for n in notes)
         items.append(f"""
 <section id="{fig['id']}">
@@ -471,7 +476,7 @@ def write_gallery(run, made):
   <a href="{png}"><img src="{png}" alt="{html.escape(fig['title'])}" width="960" height="540"></a>
   <p class="caption">{html.escape(fig['caption'])}</p>
   <p class="scene">Scene: <code>{html.escape(fig['scene'] or '(none)')}</code>;
-     EXRs and scene variants in <a href="{fig['id']}/"><code>{fig['id']}/</code></a>; {seconds:.1f} s.</p>
+     {where}; made in {seconds:.1f} s.</p>
   {f'<ul class="notes">{note}</ul>' if note else ''}
   <details><summary>Commands</summary><pre>{cmds}</pre></details>
 </section>""")
@@ -540,13 +545,13 @@ def main():
         fig_dir = run.out / fig["id"]
         fig_dir.mkdir(parents=True, exist_ok=True)
         png = f"{fig['id']}.png"
-        run.commands = []
+        run.commands, run.dirs = [], []
         try:
             notes = FIGURES[fig["id"]](run, fig_dir, run.out / png, fig["title"]) or []
         except FigureError as e:
             sys.exit(f"make_figures: figure {fig['id']}: {e}")
         seconds = time.monotonic() - t0
-        made.append((fig, png, list(run.commands), notes, seconds))
+        made.append((fig, png, list(run.commands), notes, seconds, sorted(set(run.dirs))))
         print(f"figure {fig['id']:20s} {seconds:6.1f} s  {run.out / png}", flush=True)
     write_gallery(run, made)
     print(f"gallery {run.out / 'index.html'}  ({time.monotonic() - start:.1f} s in all)")
