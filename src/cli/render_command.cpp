@@ -57,14 +57,16 @@ void printAcceleratorStats(const std::string& accel, const AcceleratorStats& a) 
                 accel == "embree" ? " over the spheres; Embree holds the triangles" : "");
 }
 
+// Ctrl-C stops the workers after their current tile; nothing is written. Set from the signal
+// handler, so it must be lock-free.
+std::atomic<bool> interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
 void run(const RenderCommand& command) {
+    std::signal(SIGINT, [](int) { interrupted.store(true); });
     const Scene scene = command.setup.loadScene();
     const AovSet aovs = command.setup.buildAovSet();
     RenderOptions options = command.setup.renderOptions();
-    // Ctrl-C stops the workers after their current tile; nothing is written.
-    static std::atomic<bool> interrupted{false};
-    static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
-    std::signal(SIGINT, [](int) { interrupted.store(true); });
     options.cancel = &interrupted;
     std::unique_ptr<Renderer> renderer;
     try {
