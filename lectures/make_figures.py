@@ -118,9 +118,9 @@ class Panel:
             if self.exposure != 1.0:
                 args += ["--mulc", f"{self.exposure}"]
             args += ["--clamp:min=0:max=1", "--colorconvert", "linear", "sRGB"]
-        else:
-            args += ["--ch", "R,G,B"]
-        return args + [f"--fit:filter=lanczos3:pad=1", f"{w}x{h}"]
+            return args + ["--fit:filter=lanczos3:pad=1", f"{w}x{h}"]
+        # A plot or diagram: fitted without padding (black bars would frame a white plot).
+        return args + ["--ch", "R,G,B", "--fit:filter=lanczos3", f"{w}x{h}"]
 
 
 def text(x, y, s, size, color="0.9,0.9,0.9"):
