@@ -86,17 +86,27 @@ float intersectPlane(const Ray& ray, const Plane& plane, float tMin) {
     return (tf > tMin && tf < ray.tMax) ? tf : kNoHit;
 }
 
-float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin, Vec3* barycentrics) {
+WatertightRay::WatertightRay(const Vec3& direction) {
     // Shear and scale so the ray becomes the +z axis through the origin; then the three edge
     // functions are 2D cross products evaluated identically for a shared edge.
-    const Vec3 absDir = glm::abs(ray.direction);
-    const int kz = maxDimension(absDir);
-    int kx = (kz + 1) % 3;
-    int ky = (kx + 1) % 3;
-    if (ray.direction[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
-    const Vec3 d = permute(ray.direction, kx, ky, kz);
-    const float sx = -d.x / d.z, sy = -d.y / d.z, sz = 1.0f / d.z;
+    kz = maxDimension(glm::abs(direction));
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    if (direction[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+    const Vec3 d = permute(direction, kx, ky, kz);
+    sx = -d.x / d.z;
+    sy = -d.y / d.z;
+    sz = 1.0f / d.z;
+}
 
+float intersectTriangle(const Ray& ray, const Triangle& tri, float tMin, Vec3* barycentrics) {
+    return intersectTriangle(ray, WatertightRay(ray.direction), tri, tMin, barycentrics);
+}
+
+float intersectTriangle(const Ray& ray, const WatertightRay& sheared, const Triangle& tri, float tMin,
+                        Vec3* barycentrics) {
+    const int kx = sheared.kx, ky = sheared.ky, kz = sheared.kz;
+    const float sx = sheared.sx, sy = sheared.sy, sz = sheared.sz;
     const Vec3 a = permute(tri.a - ray.origin, kx, ky, kz);
     const Vec3 b = permute(tri.b - ray.origin, kx, ky, kz);
     const Vec3 c = permute(tri.c - ray.origin, kx, ky, kz);

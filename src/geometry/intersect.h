@@ -34,6 +34,19 @@ float intersectPlane(const Ray& ray, const Plane& plane, float tMin);
 // hit point is formed: more accurate than origin + t * direction.
 float intersectTriangle(const Ray& ray, const Triangle& triangle, float tMin, Vec3* barycentrics = nullptr);
 
+// The per-ray half of the watertight test: the axis permutation that makes the ray's largest
+// direction component z, and the shear that maps the ray onto that axis. A traversal computes it
+// once per ray instead of once per triangle (it holds the test's three divisions).
+struct WatertightRay {
+    int kx = 0, ky = 1, kz = 2;
+    float sx = 0.0f, sy = 0.0f, sz = 1.0f;
+
+    explicit WatertightRay(const Vec3& direction);
+};
+
+float intersectTriangle(const Ray& ray, const WatertightRay& sheared, const Triangle& triangle, float tMin,
+                        Vec3* barycentrics = nullptr);
+
 // Moller and Trumbore 1997 with the common |det| < 1e-6 parallel test. Kept to show its failures:
 // rays through shared edges and vertices slip through, and a small mesh becomes invisible.
 float intersectTriangleMollerTrumbore(const Ray& ray, const Triangle& triangle, float tMin);

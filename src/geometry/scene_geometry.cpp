@@ -98,11 +98,11 @@ float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const 
                                                           : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
 }
 
-float SceneGeometry::intersectSlot(const Ray& ray, std::uint32_t slot) const {
+float SceneGeometry::intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const {
     const std::uint32_t id = bvh_.primitiveIds()[slot];
     if (id < spheres_.size() || id == ray.ignoredPrimitive) return intersectPrimitive(ray, id);
     const Triangle& t = slotTriangles_[slot];
-    return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, t, ray.tMin)
+    return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, sheared, t, ray.tMin)
                                                           : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
 }
 
@@ -126,8 +126,9 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
             probe.tMax = std::nextafter(t, std::numeric_limits<float>::infinity());
         }
     };
+    const WatertightRay sheared(ray.direction);
     bvh_.closest(ray, best.t,
-                 [&](std::uint32_t slot) { keep(intersectSlot(probe, slot), bvh_.primitiveIds()[slot]); });
+                 [&](std::uint32_t slot) { keep(intersectSlot(probe, sheared, slot), bvh_.primitiveIds()[slot]); });
     const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
     for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
@@ -177,7 +178,8 @@ bool SceneGeometry::occluded(const Ray& ray) const {
         if (embree_->occluded(ray, ignored)) return true;
     }
 #endif
-    return bvh_.any(ray, [&](std::uint32_t slot) { return intersectSlot(ray, slot) != kNoHit; });
+    const WatertightRay sheared(ray.direction);
+    return bvh_.any(ray, [&](std::uint32_t slot) { return intersectSlot(ray, sheared, slot) != kNoHit; });
 }
 
 bool SceneGeometry::occludedBruteForce(const Ray& ray) const {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "geometry/intersect.h"
 #include "geometry/numerics.h"
 #include "geometry/shapes.h"
 #include "geometry/surface_hit.h"
@@ -74,7 +75,7 @@ private:
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id) const;
     // intersectPrimitive for the primitive in BVH slot `slot`, reading a triangle from its
     // leaf-ordered copy: the same test on the same numbers, from adjacent memory.
-    float intersectSlot(const Ray& ray, std::uint32_t slot) const;
+    float intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const;
 
     std::vector<Sphere> spheres_;
     std::vector<Plane> planes_;
