@@ -98,6 +98,13 @@ float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const 
                                                           : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
 }
 
+std::uint32_t SceneGeometry::ignoredTriangle(const Ray& ray) const {
+    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+    return ray.ignoredPrimitive != kNoPrimitive && ray.ignoredPrimitive >= firstTriangle
+               ? ray.ignoredPrimitive - firstTriangle
+               : kNoPrimitive;
+}
+
 float SceneGeometry::intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const {
     const std::uint32_t id = bvh_.primitiveIds()[slot];
     if (id < spheres_.size() || id == ray.ignoredPrimitive) return intersectPrimitive(ray, id);
@@ -134,10 +141,7 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
 #ifdef LIGHTPATH_HAS_EMBREE
     if (embree_) {
         const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
-        const std::uint32_t ignored =
-            ray.ignoredPrimitive != kNoPrimitive && ray.ignoredPrimitive >= firstTriangle
-                ? ray.ignoredPrimitive - firstTriangle
-                : kNoPrimitive;
+        const std::uint32_t ignored = ignoredTriangle(ray);
         float t = 0.0f;
         std::uint32_t index = 0;
         if (embree_->intersect(ray, best.t, ignored, t, index) && t < best.t) best = {t, firstTriangle + index};
@@ -170,12 +174,7 @@ bool SceneGeometry::occluded(const Ray& ray) const {
         if (blocks(firstPlane + i)) return true;
 #ifdef LIGHTPATH_HAS_EMBREE
     if (embree_) {
-        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
-        const std::uint32_t ignored =
-            ray.ignoredPrimitive != kNoPrimitive && ray.ignoredPrimitive >= firstTriangle
-                ? ray.ignoredPrimitive - firstTriangle
-                : kNoPrimitive;
-        if (embree_->occluded(ray, ignored)) return true;
+        if (embree_->occluded(ray, ignoredTriangle(ray))) return true;
     }
 #endif
     const WatertightRay sheared(ray.direction);

@@ -76,6 +76,8 @@ private:
     // intersectPrimitive for the primitive in BVH slot `slot`, reading a triangle from its
     // leaf-ordered copy: the same test on the same numbers, from adjacent memory.
     float intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const;
+    // The ray's ignored primitive as an index among the triangles (what Embree knows), or kNoPrimitive.
+    std::uint32_t ignoredTriangle(const Ray& ray) const;
 
     std::vector<Sphere> spheres_;
     std::vector<Plane> planes_;
