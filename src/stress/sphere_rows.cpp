@@ -7,47 +7,16 @@
 #include "geometry/intersect.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/spawn_ray.h"
+#include "stress/exact_reference.h"
 #include "stress/sampling.h"
 
 namespace lightpath {
 namespace {
 
 using stress::Rng;
-
-// The exact answer for the float ray and sphere, in long double: products of floats are exact
-// there, and |f x d|^2 measures the line's distance from the centre without cancelling squares.
-struct ReferenceRoots {
-    bool hit = false;
-    long double t0 = 0, t1 = 0;
-};
-
-ReferenceRoots referenceRoots(const Ray& ray, const Sphere& sphere) {
-    using L = long double;
-    const L f[3] = {L(ray.origin.x) - L(sphere.center.x), L(ray.origin.y) - L(sphere.center.y),
-                    L(ray.origin.z) - L(sphere.center.z)};
-    const L d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
-    const L a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    const L b = f[0] * d[0] + f[1] * d[1] + f[2] * d[2];
-    const L cx = f[1] * d[2] - f[2] * d[1], cy = f[2] * d[0] - f[0] * d[2], cz = f[0] * d[1] - f[1] * d[0];
-    const L r = sphere.radius;
-    const L discriminant = a * r * r - (cx * cx + cy * cy + cz * cz);
-    ReferenceRoots roots;
-    if (discriminant < 0) return roots;
-    const L c = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - r * r;
-    const L q = -(b + std::copysign(std::sqrt(discriminant), b));
-    roots.hit = true;
-    roots.t0 = q / a;
-    roots.t1 = q != 0 ? c / q : roots.t0;
-    if (roots.t0 > roots.t1) std::swap(roots.t0, roots.t1);
-    return roots;
-}
-
-// |t - reference| in units of the float spacing at the reference.
-double ulpError(float t, long double reference) {
-    const float r = static_cast<float>(reference);
-    const float ulp = std::nextafter(std::fabs(r), std::numeric_limits<float>::infinity()) - std::fabs(r);
-    return static_cast<double>(std::fabs(static_cast<long double>(t) - reference) / ulp);
-}
+using stress::ExactRoots;
+using stress::exactSphereRoots;
+using stress::ulpsBetween;
 
 struct MethodTally {
     double wrong = 0, rays = 0, worstUlps = 0;
@@ -74,7 +43,7 @@ void silhouetteAndT(const StressConfig& config, std::vector<ScoreRow>& rows) {
             Ray ray;
             ray.origin = static_cast<float>(distance) * axis;
             ray.direction = glm::normalize(target - ray.origin);
-            const ReferenceRoots reference = referenceRoots(ray, sphere);
+            const ExactRoots reference = exactSphereRoots(ray, sphere);
             const bool referenceHit = reference.hit && reference.t1 > 0;
 
             const bool robustHit = intersectSphere(ray, sphere, 0.0f) != kNoHit;
@@ -83,9 +52,9 @@ void silhouetteAndT(const StressConfig& config, std::vector<ScoreRow>& rows) {
             naiveWrong += naiveHit != referenceHit;
             float t0 = 0, t1 = 0;
             if (referenceHit && robustHit && sphereRoots(ray, sphere, t0, t1))
-                robustUlps = std::max({robustUlps, ulpError(t0, reference.t0), ulpError(t1, reference.t1)});
+                robustUlps = std::max({robustUlps, ulpsBetween(t0, reference.t0), ulpsBetween(t1, reference.t1)});
             if (referenceHit && naiveHit && sphereRootsNaive(ray, sphere, t0, t1))
-                naiveUlps = std::max({naiveUlps, ulpError(t0, reference.t0), ulpError(t1, reference.t1)});
+                naiveUlps = std::max({naiveUlps, ulpsBetween(t0, reference.t0), ulpsBetween(t1, reference.t1)});
         }
         const std::string label = stress::powerLabel(distance) + ":";
         robust.wrong += robustWrong;
