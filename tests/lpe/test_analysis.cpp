@@ -10,6 +10,9 @@
 
 #include "lpe/analysis.h"
 #include "lpe/path_string.h"
+#include "test_paths.h"
+
+using lpe_test::allStrings;
 
 namespace {
 
@@ -30,18 +33,6 @@ bool regexAccepts(const std::string& expression, const lpe::Path& path) {
     return std::regex_match(lpe::toCompactString(path), reference(expression));
 }
 
-// Every compact string over `alphabet` of length 0..maxLength.
-std::vector<std::string> allStrings(const std::string& alphabet, std::size_t maxLength) {
-    std::vector<std::string> result{""};
-    for (std::size_t begin = 0, length = 1; length <= maxLength; ++length) {
-        const std::size_t end = result.size();
-        for (std::size_t i = begin; i < end; ++i) {
-            for (const char c : alphabet) result.push_back(result[i] + c);
-        }
-        begin = end;
-    }
-    return result;
-}
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 
 using lpe::EventType;
 using lpe::Scatter;
+using lpe_test::allStrings;
 using lpe_test::compactPath;
 using lpe_test::event;
 
@@ -197,23 +198,6 @@ TEST_CASE("dead states: a branch that can no longer contribute stops") {
     CHECK_FALSE(two.isDead(ed, 1));
     CHECK(two.isDead(ed, 2));
 }
-
-namespace {
-
-// Every compact string over `alphabet` of length 0..maxLength.
-std::vector<std::string> allStrings(const std::string& alphabet, std::size_t maxLength) {
-    std::vector<std::string> result{""};
-    for (std::size_t begin = 0, length = 1; length <= maxLength; ++length) {
-        const std::size_t end = result.size();
-        for (std::size_t i = begin; i < end; ++i) {
-            for (const char c : alphabet) result.push_back(result[i] + c);
-        }
-        begin = end;
-    }
-    return result;
-}
-
-}  // namespace
 
 TEST_CASE("the complement output accepts exactly the universe paths no named output accepts") {
     lpe::CompileOptions options;

@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "lpe/event.h"
 
@@ -41,6 +42,19 @@ inline lpe::Path compactPath(std::string_view letters) {
     lpe::Path path;
     for (const char c : letters) path.push_back(compactEvent(c));
     return path;
+}
+
+inline // Every compact string over `alphabet` of length 0..maxLength.
+std::vector<std::string> allStrings(const std::string& alphabet, std::size_t maxLength) {
+    std::vector<std::string> result{""};
+    for (std::size_t begin = 0, length = 1; length <= maxLength; ++length) {
+        const std::size_t end = result.size();
+        for (std::size_t i = begin; i < end; ++i) {
+            for (const char c : alphabet) result.push_back(result[i] + c);
+        }
+        begin = end;
+    }
+    return result;
 }
 
 }  // namespace lpe_test
