@@ -55,6 +55,12 @@ std::uint32_t permute(std::uint32_t i, std::uint32_t count, std::uint64_t seed) 
     return i;
 }
 
+// The side of a square grid of `count` cells, or 0 when count is not a square.
+std::uint32_t squareSide(std::uint32_t count) {
+    const auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(count))));
+    return side * side == count ? side : 0;
+}
+
 }  // namespace
 
 bool parseSamplerKind(std::string_view name, SamplerKind& kind) {
@@ -76,7 +82,7 @@ const char* samplerName(SamplerKind kind) {
 
 Sampler::Sampler(SamplerKind kind, std::uint64_t seed, int sampleIndex, int samplesPerPixel)
     : kind_(kind), seed_(seed), index_(static_cast<std::uint32_t>(sampleIndex)),
-      count_(static_cast<std::uint32_t>(samplesPerPixel)), rng_(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) {}
+      count_(static_cast<std::uint32_t>(samplesPerPixel)), gridSide_(squareSide(count_)), rng_(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) {}
 
 Sampler Sampler::forPixel(SamplerKind kind, int x, int y, int sampleIndex, int samplesPerPixel, std::uint64_t seed) {
     const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32) | static_cast<std::uint32_t>(x);
@@ -102,8 +108,7 @@ Vec2 Sampler::next2D() {
     switch (kind_) {
         case SamplerKind::Independent: break;
         case SamplerKind::Stratified: {
-            const auto side = static_cast<std::uint32_t>(std::lround(std::sqrt(static_cast<double>(count_))));
-            if (side * side == count_) {
+            if (const std::uint32_t side = gridSide_; side != 0) {
                 const std::uint32_t cell = permute(index_, count_, seed);
                 const float u = rng_.nextFloat(), v = rng_.nextFloat();
                 return {(static_cast<float>(cell % side) + u) / static_cast<float>(side),

@@ -43,6 +43,7 @@ private:
     std::uint64_t seed_;
     std::uint32_t index_;
     std::uint32_t count_;
+    std::uint32_t gridSide_;  // stratified: sqrt(count_) when count_ is a square, else 0
     int dimension_ = 0;
     Pcg32 rng_;
 };
