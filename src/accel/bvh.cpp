@@ -54,7 +54,10 @@ public:
     }
 
     std::vector<BvhNode> build() {
-        nodes_.reserve(2 * primitives_.size() / kMaxLeafSize + 1);
+        // A binary tree over N primitives has at most 2N - 1 nodes. Reserving them all avoids
+        // reallocating (old and new buffers at once at the memory peak); pages never written are
+        // never resident, so the unused capacity costs address space only.
+        nodes_.reserve(2 * primitives_.size() - 1);
         // Depth-first with an explicit stack: a node's first child is always the next node.
         struct Task {
             std::size_t begin, end;
@@ -190,6 +193,7 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives) {
         throw std::length_error("too many primitives for a BVH with 32-bit offsets");
     if (!primitives.empty()) {
         Builder builder(primitives);
+        primitives = {};  // the builder works on its own copy: free this one before the build's peak
         nodes_ = builder.build();
         ids_ = builder.ids();
     }

@@ -57,6 +57,7 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
     const auto started = std::chrono::steady_clock::now();
     std::vector<BvhPrimitive> primitives;
+    primitives.reserve(spheres_.size() + triangles_.size());
     for (std::uint32_t i = 0; i < spheres_.size(); ++i) primitives.push_back({sphereBounds(spheres_[i]), i});
     const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
     if (accelerator_ == Accelerator::Bvh) {
