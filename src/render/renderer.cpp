@@ -96,6 +96,10 @@ int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) c
     return taken;
 }
 
+bool Renderer::cancelled() const {
+    return options_.cancel != nullptr && options_.cancel->load(std::memory_order_relaxed);
+}
+
 std::vector<std::string> Renderer::layerNames() const {
     const auto all = aovs_.layerNames();
     std::vector<std::string> names;
@@ -121,11 +125,13 @@ RenderResult Renderer::render() const {
         ContributionSink sink(layers);
         Tracer tracer(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
-        for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
-            if (options_.cancel != nullptr && options_.cancel->load(std::memory_order_relaxed)) break;
+        for (int tile = nextTile++; tile < tileCount && !cancelled(); tile = nextTile++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, height); ++y) {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+                    // Checked per pixel, not per tile: a tile at thousands of samples per pixel
+                    // takes seconds, and Ctrl-C must stop the render promptly.
+                    if (cancelled()) return;
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
                     renderPixel(x, y, layers, tracer);
                     const std::span<Rgb> pixel = film.pixel(x, y);
@@ -146,8 +152,7 @@ RenderResult Renderer::render() const {
     stats.threads = threadCount;
     stats.accelerator = geometry_.acceleratorStats();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    const bool cancelled = options_.cancel != nullptr && options_.cancel->load();
-    return {std::move(film), stats, cancelled};
+    return {std::move(film), stats, cancelled()};
 }
 
 std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {

@@ -73,6 +73,7 @@ public:
 private:
     // Samples one pixel into `layers` (their mean); returns the number of samples taken.
     int renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const;
+    bool cancelled() const;  // RenderOptions::cancel is set
 
     const Scene& scene_;
     const AovSet& aovs_;
