@@ -60,7 +60,7 @@ void run(const ExplainCommand& command) {
     if (std::sscanf(command.pixel.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',')
         throw CLI::RuntimeError("--pixel: expected X,Y such as 320,240, got \"" + command.pixel + "\"", kExitBadInput);
     const Scene scene = command.setup.loadScene();
-    const AovSet aovs = command.setup.buildAovSet();
+    const AovSet aovs = command.setup.buildAovSet(scene);
     const RenderOptions options = command.setup.renderOptions();
     std::vector<LoggedContribution> log;
     try {

@@ -65,7 +65,7 @@ static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler
 void run(const RenderCommand& command) {
     std::signal(SIGINT, [](int) { interrupted.store(true); });
     const Scene scene = command.setup.loadScene();
-    const AovSet aovs = command.setup.buildAovSet();
+    const AovSet aovs = command.setup.buildAovSet(scene);
     RenderOptions options = command.setup.renderOptions();
     options.cancel = &interrupted;
     std::unique_ptr<Renderer> renderer;

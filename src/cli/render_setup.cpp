@@ -1,12 +1,16 @@
 #include "cli/render_setup.h"
 
+#include <algorithm>
 #include <iostream>
+#include <optional>
 
 #include "cli/exit_codes.h"
 #include "lpe/analysis.h"
 #include "lpe/error.h"
 #include "lpe/path_string.h"
+#include "integrators/event_symbols.h"
 #include "scene/scene_loader.h"
+#include "scene/spelling.h"
 
 namespace lightpath {
 namespace {
@@ -83,6 +87,7 @@ Scene RenderSetup::loadScene() const {
     } catch (const SceneError& e) {
         badInput(e.what());
     }
+    for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << "\n";
     if (!resolution.empty()) {
         int width = 0, height = 0;
         char x = 0, extra = 0;
@@ -105,18 +110,29 @@ std::vector<lpe::NamedExpression> RenderSetup::expressions() const {
     return set;
 }
 
-AovSet RenderSetup::buildAovSet() const {
+namespace {
+
+// A label that names no light, object or material of the scene selects nothing: almost always a
+// typo ('kee' for 'key'), which would silently leave an AOV black.
+void refuseUnknownLabels(const lpe::Automaton& automaton, const std::vector<lpe::NamedExpression>& set,
+                         const Scene& scene, const std::string& scenePath) {
+    const std::vector<std::string> known = sceneLabels(scene);
+    for (const std::string& label : automaton.labels()) {
+        if (std::binary_search(known.begin(), known.end(), label)) continue;
+        std::string option = "--lpe";
+        for (const auto& e : set)
+            if (e.expression.find("'" + label + "'") != std::string::npos) option += " " + e.name;
+        badInput(option + ": " + scenePath + ": " + unknownNameMessage("label", label, known, ListKnown::always));
+    }
+}
+
+}  // namespace
+
+AovSet RenderSetup::buildAovSet(const Scene& scene) const {
     const auto set = expressions();
+    std::optional<AovSet> aovs;
     try {
-        AovSet aovs(set);
-        if (set.size() > 1) {
-            // Overlapping AOVs count the same light twice; say so with a path both accept.
-            for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps)
-                std::cerr << "warning: AOVs " << set[o.first].name << " and " << set[o.second].name
-                          << " overlap: both accept " << lpe::toCompactString(o.example) << " ("
-                          << lpe::toTupleString(o.example) << "); their sum counts such light twice\n";
-        }
-        return aovs;
+        aovs.emplace(set);
     } catch (const lpe::SyntaxError& e) {
         for (const auto& expression : set)
             if (expression.expression == e.text()) badInput("--lpe " + expression.name + ": " + e.what());
@@ -124,6 +140,15 @@ AovSet RenderSetup::buildAovSet() const {
     } catch (const std::exception& e) {
         badInput(std::string("--lpe: ") + e.what());
     }
+    refuseUnknownLabels(aovs->automaton(), set, scene, scenePath);
+    if (set.size() > 1) {
+        // Overlapping AOVs count the same light twice; say so with a path both accept.
+        for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps)
+            std::cerr << "warning: AOVs " << set[o.first].name << " and " << set[o.second].name
+                      << " overlap: both accept " << lpe::toCompactString(o.example) << " ("
+                      << lpe::toTupleString(o.example) << "); their sum counts such light twice\n";
+    }
+    return std::move(*aovs);
 }
 
 RenderOptions RenderSetup::renderOptions() const {

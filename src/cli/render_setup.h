@@ -37,7 +37,8 @@ struct RenderSetup {
 
     Scene loadScene() const;                           // with --resolution applied
     std::vector<lpe::NamedExpression> expressions() const;
-    AovSet buildAovSet() const;                        // warns on stderr when AOVs overlap
+    // Warns on stderr when AOVs overlap; refuses a label that names nothing in `scene`.
+    AovSet buildAovSet(const Scene& scene) const;
     RenderOptions renderOptions() const;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // The automaton symbols of every event a scene can produce, looked up once per render so the
 // tracer advances its automaton state by table lookups only (DESIGN.md: no strings in the hot loop).
+#include <string>
 #include <vector>
 
 #include "lpe/automaton.h"
@@ -28,5 +29,9 @@ struct EventSymbols {
 
 // The label of the ambient term's L event (DESIGN.md: `<L'ambient'>`).
 inline constexpr const char* kAmbientLabel = "ambient";
+
+// Every label an event of this scene can carry: "ambient", the point lights' names, and each
+// object's label (its name, else its material's; area lights are objects). Sorted, no repeats.
+std::vector<std::string> sceneLabels(const Scene& scene);
 
 }  // namespace lightpath

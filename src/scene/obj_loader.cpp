@@ -3,6 +3,8 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -40,7 +42,7 @@ PhongMaterial phongFromMtl(const std::string& name, const float ambient[3], cons
     m.kd = rgb(diffuse);
     m.ks = rgb(specular);
     m.n = std::max(shininess, 0.0f);
-    m.emission = glm::max(rgb(emission), Rgb(0.0f));
+    m.emission = rgb(emission);
     // MTL illumination models (Wavefront's spec): 3 "reflection on, ray trace", 5 "Fresnel on,
     // ray trace" reflect in the mirror direction weighted by Ks; 4, 6, 7 and 9 also transmit.
     const bool mirror = illum == 3 || illum == 4 || illum == 5 || illum == 6 || illum == 7 || illum == 9;
@@ -54,30 +56,63 @@ PhongMaterial phongFromMtl(const std::string& name, const float ambient[3], cons
     return m;
 }
 
-ObjMesh loadObj(const std::filesystem::path& file) {
-    {
-        std::ifstream probe(file);
-        if (!probe || std::filesystem::is_directory(file))
-            throw SceneError(file.string() + ": cannot open mesh file");
+namespace {
+
+// "-1", or "[-1, 0, 0]" for a colour: MTL numbers as an error shows them.
+std::string listed(const float* values, int count) {
+    std::string text;
+    for (int i = 0; i < count; ++i) {
+        char buffer[32];
+        const auto end = std::to_chars(buffer, buffer + sizeof buffer, values[i]).ptr;
+        text += (i > 0 ? ", " : "") + std::string(buffer, end);
     }
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = file.parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(file.string(), config)) {
-        std::string reason = reader.Error();
-        while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();
-        throw SceneError(file.string() + ": cannot read mesh file: " + reason);
-    }
-    refuseMissingMaterialLibrary(file, reader.Warning());
+    return count == 1 ? text : "[" + text + "]";
+}
+
+// tinyobjloader passes negative numbers on and reads 1e39 as infinity: an MTL material is held to
+// the rules of a scene file's (scenes/README.md), its colours from 0 to kMaxMagnitude and its Ns
+// and Ni within +-kMaxMagnitude, so that no negative or overflowing weight reaches the renderer.
+void refuseBadMaterial(const tinyobj::material_t& m, const std::filesystem::path& file) {
+    const auto refuse = [&](const char* statement, const char* expected, const float* values, int count) {
+        throw SceneError(file.string() + ": material \"" + m.name + "\": " + statement + ": expected " + expected +
+                         ", got " + listed(values, count));
+    };
+    const auto within = [](float value, double low) { return value >= low && value <= kMaxMagnitude; };
+    const std::pair<const char*, const float*> colours[] = {
+        {"Ka", m.ambient}, {"Kd", m.diffuse}, {"Ks", m.specular}, {"Tf", m.transmittance}, {"Ke", m.emission}};
+    for (const auto& [statement, values] : colours)
+        for (int c = 0; c < 3; ++c)
+            if (!within(values[c], 0.0)) refuse(statement, "3 numbers from 0 to 1e6", values, 3);
+    if (!within(m.shininess, -kMaxMagnitude)) refuse("Ns", "a number from -1e6 to 1e6", &m.shininess, 1);
+    if (!within(m.ior, -kMaxMagnitude)) refuse("Ni", "a number from -1e6 to 1e6", &m.ior, 1);
+}
+
+// The triangles and materials a successful parse produced. tinyobjloader passes on vertex
+// indices beyond the file's vertices and numbers that overflow to infinity; both are refused here,
+// naming `file`, so that no triangle is built from memory outside the file or from non-finite
+// corners.
+ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& file) {
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    for (std::size_t k = 0; k < attrib.vertices.size(); ++k)
+        if (!std::isfinite(attrib.vertices[k]))
+            throw SceneError(file.string() + ": vertex " + std::to_string(k / 3 + 1) +
+                             " has a coordinate that is not a finite single-precision number");
+    for (std::size_t k = 0; k < attrib.normals.size(); ++k)
+        if (!std::isfinite(attrib.normals[k]))
+            throw SceneError(file.string() + ": normal " + std::to_string(k / 3 + 1) +
+                             " has a component that is not a finite single-precision number");
+    const auto refuseIndex = [&](std::size_t face, const char* what, int index, std::size_t count) {
+        throw SceneError(file.string() + ": face " + std::to_string(face + 1) + " refers to " + what + " " +
+                         std::to_string(index + 1) + ", but the file has " + std::to_string(count));
+    };
 
     ObjMesh mesh;
-    for (const tinyobj::material_t& m : reader.GetMaterials())
+    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+        refuseBadMaterial(m, file);
         mesh.materials.push_back(phongFromMtl(m.name, m.ambient, m.diffuse, m.specular, m.transmittance, m.emission,
                                               m.shininess, m.ior, m.dissolve, m.illum));
+    }
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const auto position = [&](const tinyobj::index_t& i) {
         const auto k = static_cast<std::size_t>(3 * i.vertex_index);
         return Vec3(attrib.vertices[k], attrib.vertices[k + 1], attrib.vertices[k + 2]);
@@ -85,27 +120,80 @@ ObjMesh loadObj(const std::filesystem::path& file) {
     const auto normal = [&](const tinyobj::index_t& i) {
         if (i.normal_index < 0) return Vec3(0.0f);
         const auto k = static_cast<std::size_t>(3 * i.normal_index);
-        const Vec3 n(attrib.normals[k], attrib.normals[k + 1], attrib.normals[k + 2]);
-        const float length = glm::length(n);
-        return length > 0.0f ? n / length : Vec3(0.0f);
+        // In double: the squared length of a float vector can overflow or underflow in float.
+        const glm::dvec3 n(attrib.normals[k], attrib.normals[k + 1], attrib.normals[k + 2]);
+        const double length = glm::length(n);
+        return length > 0.0 ? Vec3(n / length) : Vec3(0.0f);
     };
     const bool hasNormals = !attrib.normals.empty();
+    const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
+    std::size_t face = 0;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         const std::vector<tinyobj::index_t>& indices = shape.mesh.indices;
-        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            const tinyobj::index_t* corner = &indices[3 * f];
+        // Triangulation leaves faces of 3 corners; anything else (a point or a line) has no area.
+        std::size_t offset = 0;
+        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++face) {
+            const std::size_t cornerCount = shape.mesh.num_face_vertices[f];
+            const tinyobj::index_t* corner = indices.data() + offset;
+            offset += cornerCount;
+            if (cornerCount != 3 || offset > indices.size()) {
+                ++mesh.degenerateDropped;
+                continue;
+            }
+            for (int c = 0; c < 3; ++c) {
+                const tinyobj::index_t& i = corner[c];
+                if (i.vertex_index < 0 || static_cast<std::size_t>(i.vertex_index) >= vertexCount)
+                    refuseIndex(face, "vertex", i.vertex_index, vertexCount);
+                if (i.normal_index >= 0 && static_cast<std::size_t>(i.normal_index) >= normalCount)
+                    refuseIndex(face, "normal", i.normal_index, normalCount);
+            }
             Triangle triangle{position(corner[0]), position(corner[1]), position(corner[2]), kNoMeshMaterial};
             if (glm::cross(triangle.b - triangle.a, triangle.c - triangle.a) == Vec3(0.0f)) {
                 ++mesh.degenerateDropped;
                 continue;
             }
-            const int material = shape.mesh.material_ids[f];
-            if (material >= 0) triangle.object = static_cast<std::uint32_t>(material);
+            const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+            if (material >= 0 && static_cast<std::size_t>(material) < mesh.materials.size()) triangle.object = static_cast<std::uint32_t>(material);
             mesh.triangles.push_back(triangle);
             if (hasNormals) mesh.normals.push_back({normal(corner[0]), normal(corner[1]), normal(corner[2])});
         }
     }
     return mesh;
+}
+
+tinyobj::ObjReaderConfig readerConfig() {
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    return config;
+}
+
+[[noreturn]] void failToRead(const std::filesystem::path& file, const tinyobj::ObjReader& reader) {
+    std::string reason = reader.Error();
+    while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();
+    throw SceneError(file.string() + ": cannot read mesh file: " + reason);
+}
+
+}  // namespace
+
+ObjMesh loadObj(const std::filesystem::path& file) {
+    {
+        std::ifstream probe(file);
+        if (!probe || std::filesystem::is_directory(file))
+            throw SceneError(file.string() + ": cannot open mesh file");
+    }
+    tinyobj::ObjReaderConfig config = readerConfig();
+    config.mtl_search_path = file.parent_path().string();
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(file.string(), config)) failToRead(file, reader);
+    refuseMissingMaterialLibrary(file, reader.Warning());
+    return meshFrom(reader, file);
+}
+
+ObjMesh loadObjFromText(const std::string& objText, const std::string& mtlText, const std::filesystem::path& file) {
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromString(objText, mtlText, readerConfig())) failToRead(file, reader);
+    return meshFrom(reader, file);
 }
 
 }  // namespace lightpath

@@ -24,6 +24,9 @@ struct ObjMesh {
 
 // Throws SceneError naming the OBJ or MTL file that is missing or broken.
 ObjMesh loadObj(const std::filesystem::path& file);
+// The same from memory (for fuzzing and tests): `mtlText` answers every mtllib line; `file` only
+// names the mesh in errors.
+ObjMesh loadObjFromText(const std::string& objText, const std::string& mtlText, const std::filesystem::path& file);
 
 // MTL to Phong: Ka Kd Ks Ns as they are; illum 3/5 makes Ks the mirror weight kr; illum 4/6/7/9
 // makes Tf (else 1 - d) the transmission weight kt with Ni the index of refraction; Ke emission.

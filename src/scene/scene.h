@@ -36,6 +36,10 @@ struct Scene {
     // Empty when no triangle has vertex normals, else one entry per triangle (meshes' `vn`).
     std::vector<TriangleNormals> triangleNormals;
 
+    // Legal but probably unintended, located like errors ("FILE:LINE:COL: KEY: ..."), e.g. a
+    // triangle without area. The command line prints them.
+    std::vector<std::string> warnings;
+
     const std::string& labelOf(std::uint32_t object) const {
         const SceneObject& o = objects[object];
         return o.name.empty() ? materials[o.material].name : o.name;

@@ -124,6 +124,9 @@ std::string readLightName(const TomlTable& table) {
     return light;
 }
 
+// The smallest non-zero attenuation coefficient: 1 / c stays within kMaxMagnitude.
+constexpr float kMinAttenuation = 1e-6f;
+
 PointLight readPointLight(const TomlTable& table) {
     table.allowOnly({"name", "type", "position", "intensity", "attenuation"});
     PointLight light;
@@ -135,6 +138,13 @@ PointLight readPointLight(const TomlTable& table) {
         if (light.attenuation == Vec3(0.0f)) {
             attenuation->fail("expected c0, c1, c2 not all zero (1 / (c0 + c1 d + c2 d^2) would "
                               "divide by zero), got " + formatVec3(light.attenuation));
+        }
+        // A coefficient of 1e-30 would make the light 1e30 times brighter: overflow, not light.
+        for (int i = 0; i < 3; ++i) {
+            if (light.attenuation[i] > 0.0f && light.attenuation[i] < kMinAttenuation) {
+                attenuation->fail("expected c0, c1, c2 each 0 or at least 1e-6 (1 / (c0 + c1 d + c2 d^2) "
+                                  "would overflow), got " + formatVec3(light.attenuation));
+            }
         }
     }
     return light;
@@ -226,7 +236,8 @@ Plane readPlane(const TomlTable& table, Scene& scene) {
     table.allowOnly({"name", "point", "normal", "material"});
     Plane plane;
     plane.point = table.required("point").vec3();
-    plane.normal = glm::normalize(readNonZeroVector(table.required("normal")));
+    // In double: the squared length of a tiny float vector (1e-30) underflows to 0 in float.
+    plane.normal = Vec3(glm::normalize(glm::dvec3(readNonZeroVector(table.required("normal")))));
     plane.object = addObject(table, scene);
     return plane;
 }
@@ -239,9 +250,10 @@ Triangle readTriangle(const TomlTable& table, Scene& scene) {
     triangle.a = abc[0].vec3();
     triangle.b = abc[1].vec3();
     triangle.c = abc[2].vec3();
-    // A triangle without area has no normal: the shading would produce NaN.
+    // Legal but invisible: a triangle without area is never hit (its determinant is zero), so it
+    // is kept and only worth a warning.
     if (areParallel(triangle.b - triangle.a, triangle.c - triangle.a)) {
-        vertices.fail("expected the corners of a triangle, got 3 points on one line");
+        scene.warnings.push_back(vertices.located("the 3 points lie on one line: the triangle has no area and is never seen"));
     }
     triangle.object = addObject(table, scene);
     return triangle;
@@ -331,11 +343,23 @@ void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Sc
         return objectOf[slot];
     };
 
+    if (mesh.degenerateDropped > 0) {
+        scene.warnings.push_back(fileValue.located(std::to_string(mesh.degenerateDropped) +
+                                                   " faces without area were left out"));
+    }
     const bool smooth = !mesh.normals.empty();
     if (smooth && scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         const Triangle& t = mesh.triangles[i];
-        scene.triangles.push_back({placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)});
+        const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)};
+        // The limit of the file's own numbers holds for the mesh's vertices where they end up.
+        for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
+            if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude))))) {
+                fileValue.fail(file.string() + ": triangle " + std::to_string(i + 1) + " has a corner at " +
+                               formatVec3(corner) + " once placed; expected coordinates from -1e6 to 1e6");
+            }
+        }
+        scene.triangles.push_back(placed);
         if (smooth) {
             const TriangleNormals& n = mesh.normals[i];
             scene.triangleNormals.push_back({placement.normal(n.a), placement.normal(n.b), placement.normal(n.c)});
@@ -362,8 +386,7 @@ std::string readFile(const std::filesystem::path& path) {
     return text.str();
 }
 
-toml::table parseFile(const std::filesystem::path& path) {
-    const std::string text = readFile(path);
+toml::table parseText(std::string_view text, const std::filesystem::path& path) {
     try {
         return toml::parse(text, path.string());
     } catch (const toml::parse_error& error) {
@@ -385,7 +408,11 @@ void forEachSection(const TomlTable& root, std::string_view key, Read read) {
 }  // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
-    const toml::table document = parseFile(path);
+    return loadSceneFromText(readFile(path), path);
+}
+
+Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path) {
+    const toml::table document = parseText(text, path);
     const TomlTable root(document, "");
     root.allowOnly({"camera", "world", "materials", "lights", "spheres", "planes", "triangles", "meshes"});
 

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "scene/scene.h"
 
@@ -14,7 +15,16 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Every number of a scene, in its TOML file or its meshes' OBJ/MTL, lies within +-kMaxMagnitude
+// (scenes/README.md, "Conventions"): the renderer computes in single precision, where the product
+// of a few numbers near its largest, 3.4e38 (a radiance times reflectances times an attenuation,
+// or a distance squared), would overflow to infinity.
+inline constexpr double kMaxMagnitude = 1e6;
+
 // Reads a TOML scene (format: scenes/README.md). Throws SceneError; never returns a partial scene.
 Scene loadScene(const std::filesystem::path& path);
+// The same from memory (for fuzzing and tests): `path` names the file in errors, and mesh files
+// are looked up next to it.
+Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path);
 
 }  // namespace lightpath

@@ -10,12 +10,16 @@
 
 namespace lightpath {
 
+std::string locatedMessage(const toml::source_region& where, std::string_view keyPath,
+                           std::string_view message) {
+    const std::string file = where.path ? *where.path : std::string("<scene>");
+    return file + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column) + ": " +
+           std::string(keyPath) + ": " + std::string(message);
+}
+
 void failAt(const toml::source_region& where, std::string_view keyPath,
             std::string_view message) {
-    const std::string file = where.path ? *where.path : std::string("<scene>");
-    throw SceneError(file + ":" + std::to_string(where.begin.line) + ":" +
-                     std::to_string(where.begin.column) + ": " + std::string(keyPath) + ": " +
-                     std::string(message));
+    throw SceneError(locatedMessage(where, keyPath, message));
 }
 
 std::string formatNumber(double value) {
@@ -27,14 +31,27 @@ std::string formatNumber(double value) {
     return std::string(buffer, result.ptr);
 }
 
+namespace {
+
+// The shortest text that reads back as the same float: 1e-30f prints as "1e-30", not as the
+// double it widens to (1.0000000031710769e-30).
+std::string formatFloat(float value) {
+    if (!std::isfinite(value)) return formatNumber(value);
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+}  // namespace
+
 std::string formatVec3(const Vec3& v) {
     // Appended piece by piece: `"[" + std::string` trips a false -Wrestrict in g++ 12.
     std::string text = "[";
-    text += formatNumber(v.x);
+    text += formatFloat(v.x);
     text += ", ";
-    text += formatNumber(v.y);
+    text += formatFloat(v.y);
     text += ", ";
-    text += formatNumber(v.z);
+    text += formatFloat(v.z);
     text += "]";
     return text;
 }
@@ -84,6 +101,10 @@ std::vector<std::pair<const toml::key*, const toml::node*>> inFileOrder(const to
 TomlValue::TomlValue(const toml::node& node, std::string keyPath)
     : node_(&node), keyPath_(std::move(keyPath)) {}
 
+std::string TomlValue::located(std::string_view message) const {
+    return locatedMessage(node_->source(), keyPath_, message);
+}
+
 void TomlValue::fail(std::string_view message) const {
     failAt(node_->source(), keyPath_, message);
 }
@@ -97,11 +118,15 @@ float TomlValue::number(const NumberRule& rule) const {
     if (!value) expected(rule.expected);
     // NaN and infinity are valid TOML (nan, inf) but never a meaningful scene quantity.
     if (!std::isfinite(*value)) expected("a finite number");
-    if (std::abs(*value) > std::numeric_limits<float>::max()) {
-        expected("a number within single-precision range");
-    }
+    if (std::abs(*value) > kMaxMagnitude) expected("a number from -1e6 to 1e6");
     if (!rule.admits(*value)) expected(rule.expected);
-    return static_cast<float>(*value);
+    // The rule holds for the number as stored: in single precision 179.999999 is 180, 1e-50 is 0.
+    const float stored = static_cast<float>(*value);
+    if (!rule.admits(stored)) {
+        fail("expected " + std::string(rule.expected) + ", got " + describe(*node_) + ", which is " +
+             formatNumber(stored) + " in single precision");
+    }
+    return stored;
 }
 
 int TomlValue::integer(int low, int high) const {

@@ -17,7 +17,9 @@
 
 namespace lightpath {
 
-// Throws SceneError "FILE:LINE:COLUMN: KEY_PATH: MESSAGE" for the start of `where`.
+// "FILE:LINE:COLUMN: KEY_PATH: MESSAGE" for the start of `where`; failAt throws it as a SceneError.
+std::string locatedMessage(const toml::source_region& where, std::string_view keyPath,
+                           std::string_view message);
 [[noreturn]] void failAt(const toml::source_region& where, std::string_view keyPath,
                          std::string_view message);
 
@@ -28,7 +30,8 @@ std::string formatVec3(const Vec3& v);
 // How an error message names what it found: "-1", "a string", "an array of 2 elements", ...
 std::string describe(const toml::node& node);
 
-// What a number must satisfy, and how an error message says so. Finiteness is always required.
+// What a number must satisfy, and how an error message says so. Finiteness and |x| <=
+// kMaxMagnitude (scene_loader.h) are always required.
 struct NumberRule {
     double low = -std::numeric_limits<double>::infinity();
     double high = std::numeric_limits<double>::infinity();
@@ -73,6 +76,8 @@ public:
     // An array of tables ([[name]] sections).
     std::vector<TomlTable> tables() const;
 
+    // "FILE:LINE:COLUMN: KEY_PATH: MESSAGE" at this value: for warnings, and thrown by fail().
+    std::string located(std::string_view message) const;
     [[noreturn]] void fail(std::string_view message) const;
     [[noreturn]] void expected(std::string_view what) const;  // "expected WHAT, got ..."
 

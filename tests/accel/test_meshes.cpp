@@ -3,12 +3,14 @@
 // clear error naming it.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
 
+#include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 
 namespace lightpath {
@@ -126,6 +128,55 @@ TEST_CASE("a missing OBJ or MTL file is an error that names it") {
     std::ofstream(directory / "no-material.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     CHECK_THROWS_WITH_AS(loadScene(writeScene("no-material.toml", meshScene(directory / "no-material.obj"))),
                          doctest::Contains("give the mesh a `material`"), SceneError);
+}
+
+// Found by tests/fuzz: tinyobjloader passes negative numbers on and reads 1e39 as infinity; such
+// a material would put negative or infinite light into the image.
+TEST_CASE("MTL values outside the scene file's limits are refused, naming the material") {
+    const std::string triangle = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+    const auto errorOf = [&](const std::string& mtl) -> std::string {
+        try {
+            loadObjFromText(triangle, "newmtl red\n" + mtl, "mesh.obj");
+        } catch (const SceneError& e) {
+            return e.what();
+        }
+        return "(loaded)";
+    };
+    CHECK(errorOf("Kd -1 0 0\n") == "mesh.obj: material \"red\": Kd: expected 3 numbers from 0 to 1e6, got [-1, 0, 0]");
+    CHECK(errorOf("Ke 0 1e39 0\n") == "mesh.obj: material \"red\": Ke: expected 3 numbers from 0 to 1e6, got [0, inf, 0]");
+    CHECK(errorOf("Ns 1e39\n") == "mesh.obj: material \"red\": Ns: expected a number from -1e6 to 1e6, got inf");
+    // What the loader always tolerated still loads: a negative Ns is 0, an Ni of 0 is ignored.
+    const ObjMesh mesh = loadObjFromText(triangle, "newmtl red\nKd 1e6 0 0\nNs -5\nNi 0\nillum 7\n", "mesh.obj");
+    REQUIRE(mesh.materials.size() == 1);
+    CHECK(mesh.materials[0].kd == Rgb(1e6f, 0.0f, 0.0f));
+    CHECK(mesh.materials[0].n == 0.0f);
+    CHECK(mesh.materials[0].ior == 1.5f);
+}
+
+// Found by tests/fuzz: a normal with an infinite component became NaN, one of 3e38 per component
+// lost its length to overflow in float.
+TEST_CASE("vertex normals are finite and normalised whatever their length") {
+    const std::string corners = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    CHECK_THROWS_WITH_AS(loadObjFromText(corners + "vn 0 0 1e39\nf 1//1 2//1 3//1\n", "", "mesh.obj"),
+                         "mesh.obj: normal 1 has a component that is not a finite single-precision number", SceneError);
+    const ObjMesh mesh = loadObjFromText(corners + "vn 3e38 3e38 0\nvn 0 1e-40 0\nf 1//1 2//2 3//1\n", "", "mesh.obj");
+    REQUIRE(mesh.normals.size() == 1);
+    const float half = std::sqrt(0.5f);
+    CHECK(mesh.normals[0].a.x == doctest::Approx(half));
+    CHECK(mesh.normals[0].a.y == doctest::Approx(half));
+    CHECK(mesh.normals[0].b == Vec3(0.0f, 1.0f, 0.0f));
+}
+
+TEST_CASE("a mesh placed beyond the scene limit of 1e6 is refused") {
+    const auto directory = std::filesystem::temp_directory_path() / "lightpath-accel-tests";
+    std::filesystem::create_directories(directory);
+    std::ofstream(directory / "far.obj") << "v 0 0 0\nv 1 0 0\nv 0 1e5 0\nf 1 2 3\n";
+    const std::string mesh = meshScene(directory / "far.obj", "material = \"grey\"\n");
+    CHECK_NOTHROW(loadScene(writeScene("near.toml", "[materials.grey]\n" + mesh + "scale = 10\n")));
+    CHECK_THROWS_WITH_AS(loadScene(writeScene("far.toml", "[materials.grey]\n" + mesh + "scale = 100\n")),
+                         doctest::Contains("triangle 1 has a corner at [0, 1e+07, 0] once placed; expected "
+                                           "coordinates from -1e6 to 1e6"),
+                         SceneError);
 }
 
 }  // namespace

@@ -373,8 +373,26 @@ TEST_CASE_FIXTURE(SceneFiles, "nan and inf are refused by name") {
     CHECK(errorOf("[materials.red]\nka = [0, -inf, 0]\n") ==
           "scene.toml:2:10: materials.red.ka[1]: expected a finite number, got -inf");
     CHECK(errorOf("[camera]\neye = [0, 0, 1e300]\n") ==
-          "scene.toml:2:14: camera.eye[2]: expected a number within single-precision range, "
-          "got 1e+300");
+          "scene.toml:2:14: camera.eye[2]: expected a number from -1e6 to 1e6, got 1e+300");
+}
+
+// Found by tests/fuzz: 3e38 radiance and 1e30 coordinates are finite floats, but their products
+// overflow to infinity in the renderer (an infinite pixel, dropped contributions).
+TEST_CASE_FIXTURE(SceneFiles, "numbers beyond 1e6 in magnitude are refused") {
+    CHECK(errorOf("[materials.hot]\nemission = 3e38\n") ==
+          "scene.toml:2:12: materials.hot.emission: expected a number from -1e6 to 1e6, got 3e+38");
+    CHECK(errorOf("[[spheres]]\ncenter = [0, -1e30, 0]\n") ==
+          "scene.toml:2:14: spheres[0].center[1]: expected a number from -1e6 to 1e6, got -1e+30");
+    const Scene scene = load("[world]\nbackground = 1e6\n[camera]\neye = [-1e6, 0, 1e6]\n");
+    CHECK(scene.background == Rgb(1e6f));
+    CHECK(scene.camera.eye == Vec3(-1e6f, 0.0f, 1e6f));
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a tiny plane normal is normalised, not lost to underflow") {
+    const Scene scene = load("[materials.grey]\n[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1e-30, 0]\n"
+                             "material = \"grey\"\n");
+    REQUIRE(scene.planes.size() == 1);
+    CHECK(scene.planes[0].normal == Vec3(0.0f, 1.0f, 0.0f));
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "a zero plane normal is refused") {
@@ -412,6 +430,17 @@ TEST_CASE_FIXTURE(SceneFiles, "the field of view must lie strictly between 0 and
               "0 < fov < 180, got " + fov);
     }
     CHECK(load("[camera]\nfov = 179.5\n").camera.verticalFovDegrees == 179.5f);
+}
+
+// Found by tests/fuzz: the ranges held for the double the file wrote, not for the float the scene
+// keeps, so fov = 179.999999 became 180 and a radius of 1e-50 became 0.
+TEST_CASE_FIXTURE(SceneFiles, "ranges hold for numbers as stored in single precision") {
+    CHECK(errorOf("[camera]\nfov = 179.999999\n") ==
+          "scene.toml:2:7: camera.fov: expected a vertical field of view in degrees, 0 < fov < 180, "
+          "got 179.999999, which is 180 in single precision");
+    CHECK(errorOf("[[spheres]]\ncenter = [0, 0, 0]\nradius = 1e-50\n") ==
+          "scene.toml:3:10: spheres[0].radius: expected a positive number, got 1e-50, which is 0 in "
+          "single precision");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "the resolution must be two integers from 1 to 16384") {
@@ -464,6 +493,9 @@ TEST_CASE_FIXTURE(SceneFiles, "attenuation coefficients must not all be zero") {
           "(1 / (c0 + c1 d + c2 d^2) would divide by zero), got [0, 0, 0]");
     CHECK(errorOf("[[lights]]\nposition = [0, 1, 0]\nattenuation = [1, -0.5, 0]\n") ==
           "scene.toml:3:19: lights[0].attenuation[1]: expected a number >= 0, got -0.5");
+    CHECK(errorOf("[[lights]]\nposition = [0, 1, 0]\nattenuation = [1e-30, 0, 0]\n") ==
+          "scene.toml:3:15: lights[0].attenuation: expected c0, c1, c2 each 0 or at least 1e-6 "
+          "(1 / (c0 + c1 d + c2 d^2) would overflow), got [1e-30, 0, 0]");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "material parameters are range-checked") {
@@ -500,10 +532,14 @@ TEST_CASE_FIXTURE(SceneFiles, "names must be usable as light path labels") {
           "'_', '-' or '.', got \"it's red\"");
 }
 
-TEST_CASE_FIXTURE(SceneFiles, "a triangle without area is refused") {
-    CHECK(errorOf("[[triangles]]\nvertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\n") ==
-          "scene.toml:2:12: triangles[0].vertices: expected the corners of a triangle, got 3 "
-          "points on one line");
+TEST_CASE_FIXTURE(SceneFiles, "a triangle without area is kept, with a located warning") {
+    const Scene scene = load("[materials.grey]\n[[triangles]]\n"
+                             "vertices = [[0, 0, 0], [1, 1, 1], [2, 2, 2]]\nmaterial = \"grey\"\n");
+    CHECK(scene.triangles.size() == 1);
+    REQUIRE(scene.warnings.size() == 1);
+    CHECK(scene.warnings[0].ends_with(
+        "scene.toml:3:12: triangles[0].vertices: the 3 points lie on one line: the triangle has no area "
+        "and is never seen"));
     CHECK(errorOf("[[triangles]]\nvertices = [[0, 0, 0], [1, 1]]\n") ==
           "scene.toml:2:12: triangles[0].vertices: expected an array of 3 points "
           "[[x,y,z], [x,y,z], [x,y,z]], got an array of 2 elements");
