@@ -54,7 +54,9 @@ void shadeFromLight(const SurfaceHit& hit, const Vec3& normal, const Vec3& towar
     const Vec3 l = glm::normalize(toLight);
     const Rgb intensity = litSide ? light.intensity : Rgb{0.0f};
     Rgb diffuse{0.0f}, highlight{0.0f};
-    if (diffuseWanted && (terms.diffuse || !skip)) diffuse = material.kd * intensity * glm::dot(normal, l);
+    // N.L clamped: for a light at a grazing angle, N.(b - p) > 0 may round to a negative N.L once
+    // b - p is normalised, and the lecture's kd (N.L) is never negative light.
+    if (diffuseWanted && (terms.diffuse || !skip)) diffuse = material.kd * intensity * glm::max(0.0f, glm::dot(normal, l));
     if (highlightWanted && (terms.highlight || !skip)) {
         ++counters.highlightEvaluated;
         highlight = material.ks * intensity * highlightFactor(normal, l, towardViewer, material.n);

@@ -13,8 +13,10 @@ namespace {
 constexpr int kRouletteDepth = 3;
 
 float powerHeuristic(float pdf, float otherPdf) {
-    const float a = pdf * pdf, b = otherPdf * otherPdf;
-    return a + b > 0.0f ? a / (a + b) : 0.0f;
+    // Squared in double: a pdf above 1.8e19 (a small light seen edge-on) squares to infinity in
+    // float, and inf / inf is NaN.
+    const double a = double(pdf) * pdf, b = double(otherPdf) * otherPdf;
+    return a + b > 0.0 ? static_cast<float>(a / (a + b)) : 0.0f;
 }
 
 lpe::Scatter scatterOf(Lobe lobe) {

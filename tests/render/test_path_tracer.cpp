@@ -195,5 +195,23 @@ TEST_CASE("path: the classes AOVs sum to the beauty and indirect is non-zero in 
     CHECK(indirect > 0.0);
 }
 
+// Found by tests/fuzz: a sphere light of radius 1e-6 seen from 1000 away has a solid-angle density
+// above 1e19 near its silhouette; the MIS weight squared it to infinity in float and returned NaN.
+TEST_CASE("path: a tiny, distant light's MIS weights stay finite") {
+    Scene scene;
+    scene.camera = test::centredCamera({0, 1, 5}, {0, 0, 0}, {0, 1, 0}, 33);
+    PhongMaterial floor;
+    floor.kd = Rgb{0.5f};
+    floor.ks = Rgb{0.5f};
+    test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
+    PhongMaterial light;
+    light.emission = Rgb{1.0f};
+    test::addSphere(scene, "light", test::addMaterial(scene, light), {1000, 1, 0}, 1e-6f);
+    const AovSet aovs(lpe::classesSet());
+    RenderOptions options;
+    options.integrator = "path";
+    CHECK(Renderer(scene, aovs, options).render().stats.rays.nonFinite == 0);
+}
+
 }  // namespace
 }  // namespace lightpath
