@@ -1,0 +1,159 @@
+// libFuzzer target for the scene loader: any text either loads or is refused with a SceneError
+// (scenes/README.md, "Errors"). A scene that loads must be usable as it is: consistent indices,
+// valid labels, and a render (tiny, with every integrator) whose layers are finite, non-negative,
+// drop no non-finite contribution and sum to the beauty (DESIGN.md's promise; the tolerance of
+// tests/render/test_aov_sums.cpp), with `rest` zero for the `classes` partition.
+//
+// Hermetic: the scene "lives" in a directory that does not exist, so no mesh file ever loads.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "film/aov_set.h"
+#include "fuzz_support.h"
+#include "lpe/analysis.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace {
+
+using namespace lightpath;
+using fuzz::broken;
+
+const std::filesystem::path kScenePath = "/nonexistent-fuzz/scene.toml";
+
+// Bounds on one execution: the text, and the render (every pixel runs every integrator).
+constexpr std::size_t kMaxInput = 8192;
+constexpr int kWidth = 4, kHeight = 3;
+constexpr int kMaxDepth = 3;
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteNonNegative(const Rgb& c) { return finite(c) && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f; }
+
+// The loader's limit (scenes/README.md): |x| <= kMaxMagnitude for every number of the file; points
+// it derives (a quad's far corner) may add up to three of them.
+bool within(const Vec3& v, double limit = kMaxMagnitude) {
+    return glm::all(glm::lessThanEqual(glm::abs(v), Vec3(static_cast<float>(limit))));
+}
+bool colour(const Rgb& c) { return within(c) && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f; }
+
+bool isName(const std::string& name) {
+    const auto nameChar = [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    };
+    return !name.empty() && std::all_of(name.begin(), name.end(), nameChar);
+}
+
+void checkScene(const Scene& scene) {
+    const CameraDescription& c = scene.camera;
+    if (!within(c.eye) || !within(c.lookAt) || !within(c.up) || c.eye == c.lookAt)
+        broken("camera accepted with a bad eye, look_at or up");
+    if (!(c.verticalFovDegrees > 0.0f && c.verticalFovDegrees < 180.0f)) broken("camera fov accepted outside (0, 180)");
+    if (c.width < 1 || c.width > 16384 || c.height < 1 || c.height > 16384) broken("resolution accepted outside 1..16384");
+    if (!colour(scene.background) || !colour(scene.ambient)) broken("world colour accepted outside 0..1e6");
+
+    for (const PhongMaterial& m : scene.materials) {
+        if (!isName(m.name)) broken("material name \"" + m.name + "\" is not a label");
+        for (const Rgb& c : {m.ka, m.kd, m.ks, m.kr, m.kt, m.emission})
+            if (!colour(c)) broken("material " + m.name + " accepted with a colour outside 0..1e6");
+        if (!(m.n >= 0.0f && m.n <= kMaxMagnitude)) broken("material " + m.name + " accepted with a bad exponent n");
+        if (!(m.ior > 0.0f && m.ior <= kMaxMagnitude)) broken("material " + m.name + " accepted with a bad ior");
+    }
+    for (const PointLight& light : scene.lights) {
+        if (!light.name.empty() && (!isName(light.name) || light.name == "ambient")) broken("light name \"" + light.name + "\" accepted");
+        if (!within(light.position) || !colour(light.intensity)) broken("light accepted with a bad position or intensity");
+        if (!colour(light.attenuation) || light.attenuation == Vec3(0.0f)) broken("light accepted with bad attenuation");
+        for (int i = 0; i < 3; ++i)
+            if (light.attenuation[i] > 0.0f && light.attenuation[i] < 1e-6f) broken("light accepted with a tiny attenuation coefficient");
+    }
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const SceneObject& object = scene.objects[o];
+        if (object.material >= scene.materials.size()) broken("object " + std::to_string(o) + " has no material");
+        if (!isName(scene.labelOf(static_cast<std::uint32_t>(o)))) broken("object " + std::to_string(o) + " has no label");
+    }
+    const auto checkObject = [&](std::uint32_t object, const char* shape) {
+        if (object >= scene.objects.size()) broken(std::string(shape) + " refers to a missing object");
+    };
+    for (const Sphere& s : scene.spheres) {
+        checkObject(s.object, "sphere");
+        if (!within(s.center) || !(s.radius > 0.0f && s.radius <= kMaxMagnitude)) broken("sphere accepted with a bad centre or radius");
+    }
+    for (const Plane& p : scene.planes) {
+        checkObject(p.object, "plane");
+        if (!within(p.point) || !finite(p.normal) || std::abs(glm::length(p.normal) - 1.0f) > 1e-5f) broken("plane accepted with a bad point or normal");
+    }
+    for (const Triangle& t : scene.triangles) {
+        checkObject(t.object, "triangle");
+        if (!within(t.a, 3 * kMaxMagnitude) || !within(t.b, 3 * kMaxMagnitude) || !within(t.c, 3 * kMaxMagnitude))
+            broken("triangle accepted with a corner beyond the limit");
+    }
+    if (!scene.triangleNormals.empty() && scene.triangleNormals.size() != scene.triangles.size())
+        broken("triangle normals do not match the triangles");
+    for (const std::string& warning : scene.warnings)
+        if (!warning.starts_with(kScenePath.string() + ":")) broken("warning not located: " + warning);
+}
+
+// Per pixel and channel: every layer finite and >= 0, AOVs and `rest` summing to the beauty.
+void checkFilm(const Film& film, const std::string& what, bool restIsZero) {
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            Rgb sum{0.0f};
+            for (std::size_t l = 0; l < film.layerCount(); ++l) {
+                const Rgb& v = film.at(l, x, y);
+                if (!finiteNonNegative(v))
+                    broken(what + ": layer " + film.layerNames()[l] + " at " + std::to_string(x) + "," + std::to_string(y) +
+                           " is " + std::to_string(v.r) + " " + std::to_string(v.g) + " " + std::to_string(v.b));
+                if (l > 0) sum += v;
+            }
+            const Rgb beauty = film.at(0, x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double error = std::fabs(double(sum[c]) - double(beauty[c]));
+                if (error > 1e-5 * std::fabs(double(beauty[c])) + 1e-7)
+                    broken(what + ": layers sum to " + std::to_string(sum[c]) + ", the beauty is " + std::to_string(beauty[c]) +
+                           " at " + std::to_string(x) + "," + std::to_string(y));
+            }
+            if (restIsZero && film.at(film.layerCount() - 1, x, y) != Rgb(0.0f))
+                broken(what + ": rest is not zero at " + std::to_string(x) + "," + std::to_string(y));
+        }
+    }
+}
+
+void render(const Scene& scene, const AovSet& aovs, const std::string& integrator, bool restIsZero) {
+    RenderOptions options;
+    options.integrator = integrator;
+    options.maxDepth = kMaxDepth;
+    options.samplesPerPixel = 1;
+    options.threads = 1;
+    const RenderResult result = Renderer(scene, aovs, options).render();
+    const std::string what = integrator + " with " + aovs.layerNames()[1];
+    if (result.stats.rays.nonFinite != 0)
+        broken(what + ": " + std::to_string(result.stats.rays.nonFinite) + " non-finite contributions dropped");
+    checkFilm(result.film, what, restIsZero);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size > kMaxInput) return 0;
+    Scene scene;
+    try {
+        scene = loadSceneFromText(fuzz::asText(data, size), kScenePath);
+    } catch (const SceneError&) {
+        return 0;
+    }
+    checkScene(scene);
+
+    scene.camera.width = kWidth;
+    scene.camera.height = kHeight;
+    static const AovSet classes(lpe::classesSet());
+    for (const char* integrator : {"raycast", "whitted", "path"}) render(scene, classes, integrator, true);
+    // Labels reach the automaton: the light touching the last object, and rest, sum to the beauty.
+    if (!scene.objects.empty()) {
+        const std::string label = scene.labelOf(static_cast<std::uint32_t>(scene.objects.size() - 1));
+        render(scene, AovSet({{"touched", "E.*'" + label + "'.*"}}), "whitted", false);
+    }
+    return 0;
+}
