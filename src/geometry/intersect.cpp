@@ -58,20 +58,25 @@ bool sphereRootsNaive(const Ray& ray, const Sphere& sphere, float& t0, float& t1
     return true;
 }
 
-float intersectSphere(const Ray& ray, const Sphere& sphere, float tMin) {
-    float t0 = 0.0f, t1 = 0.0f;
-    if (!sphereRoots(ray, sphere, t0, t1)) return kNoHit;
+namespace {
+
+// The nearer of the roots t0 <= t1 inside (tMin, ray.tMax): the first hit along the ray.
+float nearestRootInRange(float t0, float t1, const Ray& ray, float tMin) {
     if (t0 > tMin && t0 < ray.tMax) return t0;
     if (t1 > tMin && t1 < ray.tMax) return t1;
     return kNoHit;
 }
 
+}  // namespace
+
+float intersectSphere(const Ray& ray, const Sphere& sphere, float tMin) {
+    float t0 = 0.0f, t1 = 0.0f;
+    return sphereRoots(ray, sphere, t0, t1) ? nearestRootInRange(t0, t1, ray, tMin) : kNoHit;
+}
+
 float intersectSphereNaive(const Ray& ray, const Sphere& sphere, float tMin) {
     float t0 = 0.0f, t1 = 0.0f;
-    if (!sphereRootsNaive(ray, sphere, t0, t1)) return kNoHit;
-    if (t0 > tMin && t0 < ray.tMax) return t0;
-    if (t1 > tMin && t1 < ray.tMax) return t1;
-    return kNoHit;
+    return sphereRootsNaive(ray, sphere, t0, t1) ? nearestRootInRange(t0, t1, ray, tMin) : kNoHit;
 }
 
 float intersectPlane(const Ray& ray, const Plane& plane, float tMin) {

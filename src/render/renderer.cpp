@@ -125,7 +125,7 @@ RenderResult Renderer::render() const {
         ContributionSink sink(layers);
         Tracer tracer(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
-        for (int tile = nextTile++; tile < tileCount && !cancelled(); tile = nextTile++) {
+        for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, height); ++y) {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {

@@ -73,7 +73,7 @@ std::string listed(const float* values, int count) {
 // the rules of a scene file's (scenes/README.md), its colours from 0 to kMaxMagnitude and its Ns
 // and Ni within +-kMaxMagnitude, so that no negative or overflowing weight reaches the renderer.
 void refuseBadMaterial(const tinyobj::material_t& m, const std::filesystem::path& file) {
-    const auto refuse = [&](const char* statement, const char* expected, const float* values, int count) {
+    const auto refuse = [&](const char* statement, const std::string& expected, const float* values, int count) {
         throw SceneError(file.string() + ": material \"" + m.name + "\": " + statement + ": expected " + expected +
                          ", got " + listed(values, count));
     };
@@ -82,9 +82,9 @@ void refuseBadMaterial(const tinyobj::material_t& m, const std::filesystem::path
         {"Ka", m.ambient}, {"Kd", m.diffuse}, {"Ks", m.specular}, {"Tf", m.transmittance}, {"Ke", m.emission}};
     for (const auto& [statement, values] : colours)
         for (int c = 0; c < 3; ++c)
-            if (!within(values[c], 0.0)) refuse(statement, "3 numbers from 0 to 1e6", values, 3);
-    if (!within(m.shininess, -kMaxMagnitude)) refuse("Ns", "a number from -1e6 to 1e6", &m.shininess, 1);
-    if (!within(m.ior, -kMaxMagnitude)) refuse("Ni", "a number from -1e6 to 1e6", &m.ior, 1);
+            if (!within(values[c], 0.0)) refuse(statement, "3 numbers from 0 to " + std::string(kMaxMagnitudeText), values, 3);
+    if (!within(m.shininess, -kMaxMagnitude)) refuse("Ns", "a number " + std::string(kMagnitudeRange), &m.shininess, 1);
+    if (!within(m.ior, -kMaxMagnitude)) refuse("Ni", "a number " + std::string(kMagnitudeRange), &m.ior, 1);
 }
 
 // The triangles and materials a successful parse produced. tinyobjloader passes on vertex
@@ -93,14 +93,14 @@ void refuseBadMaterial(const tinyobj::material_t& m, const std::filesystem::path
 // corners.
 ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& file) {
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    for (std::size_t k = 0; k < attrib.vertices.size(); ++k)
-        if (!std::isfinite(attrib.vertices[k]))
-            throw SceneError(file.string() + ": vertex " + std::to_string(k / 3 + 1) +
-                             " has a coordinate that is not a finite single-precision number");
-    for (std::size_t k = 0; k < attrib.normals.size(); ++k)
-        if (!std::isfinite(attrib.normals[k]))
-            throw SceneError(file.string() + ": normal " + std::to_string(k / 3 + 1) +
-                             " has a component that is not a finite single-precision number");
+    const auto refuseNonFinite = [&](const std::vector<tinyobj::real_t>& xyz, const char* what, const char* part) {
+        for (std::size_t k = 0; k < xyz.size(); ++k)
+            if (!std::isfinite(xyz[k]))
+                throw SceneError(file.string() + ": " + what + " " + std::to_string(k / 3 + 1) + " has a " + part +
+                                 " that is not a finite single-precision number");
+    };
+    refuseNonFinite(attrib.vertices, "vertex", "coordinate");
+    refuseNonFinite(attrib.normals, "normal", "component");
     const auto refuseIndex = [&](std::size_t face, const char* what, int index, std::size_t count) {
         throw SceneError(file.string() + ": face " + std::to_string(face + 1) + " refers to " + what + " " +
                          std::to_string(index + 1) + ", but the file has " + std::to_string(count));

@@ -356,7 +356,7 @@ void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Sc
         for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
             if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude))))) {
                 fileValue.fail(file.string() + ": triangle " + std::to_string(i + 1) + " has a corner at " +
-                               formatVec3(corner) + " once placed; expected coordinates from -1e6 to 1e6");
+                               formatVec3(corner) + " once placed; expected coordinates " + std::string(kMagnitudeRange));
             }
         }
         scene.triangles.push_back(placed);

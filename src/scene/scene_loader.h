@@ -20,6 +20,9 @@ public:
 // of a few numbers near its largest, 3.4e38 (a radiance times reflectances times an attenuation,
 // or a distance squared), would overflow to infinity.
 inline constexpr double kMaxMagnitude = 1e6;
+// How error messages state the limit.
+inline constexpr std::string_view kMaxMagnitudeText = "1e6";
+inline constexpr std::string_view kMagnitudeRange = "from -1e6 to 1e6";
 
 // Reads a TOML scene (format: scenes/README.md). Throws SceneError; never returns a partial scene.
 Scene loadScene(const std::filesystem::path& path);

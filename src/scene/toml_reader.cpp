@@ -118,7 +118,7 @@ float TomlValue::number(const NumberRule& rule) const {
     if (!value) expected(rule.expected);
     // NaN and infinity are valid TOML (nan, inf) but never a meaningful scene quantity.
     if (!std::isfinite(*value)) expected("a finite number");
-    if (std::abs(*value) > kMaxMagnitude) expected("a number from -1e6 to 1e6");
+    if (std::abs(*value) > kMaxMagnitude) expected("a number " + std::string(kMagnitudeRange));
     if (!rule.admits(*value)) expected(rule.expected);
     // The rule holds for the number as stored: in single precision 179.999999 is 180, 1e-50 is 0.
     const float stored = static_cast<float>(*value);
