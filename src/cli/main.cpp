@@ -10,6 +10,7 @@
 #include "cli/explain_command.h"
 #include "cli/lpe_command.h"
 #include "cli/render_command.h"
+#include "cli/serve_command.h"
 #include "cli/stress_command.h"
 
 int main(int argc, char** argv) {
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
         "  lightpath lpe match 'E(D|G)L' EDL ESDL                        does a path match?\n"
         "  lightpath lpe check --set classes                             is the AOV set a partition?\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n"
+        "  lightpath serve scenes/lecture-room.toml                      explore it in the browser\n"
         "  lightpath bench skip                                          what skipping saves\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
     lightpath::addRenderCommand(app);
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
     lightpath::addLpeCommand(app);
     lightpath::addBenchCommand(app);
     lightpath::addStressCommand(app);
+    lightpath::addServeCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

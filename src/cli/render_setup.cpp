@@ -22,12 +22,17 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 
 }  // namespace
 
+const std::vector<std::string>& integratorNames() {
+    static const std::vector<std::string> names{"raycast", "whitted", "path"};
+    return names;
+}
+
 void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("scene", scenePath, "Scene file (TOML, see scenes/README.md)")->required();
     command.add_option("--integrator", integrator,
                        "raycast: first hit only; whitted: adds mirror and refraction rays; "
                        "path: path tracing with global illumination (physically based reading)")
-        ->check(CLI::IsMember({"raycast", "whitted", "path"}))
+        ->check(CLI::IsMember(integratorNames()))
         ->capture_default_str();
     command.add_option("--lpe", lpes,
                        "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "
@@ -128,7 +133,7 @@ void refuseUnknownLabels(const lpe::Automaton& automaton, const std::vector<lpe:
 
 }  // namespace
 
-AovSet RenderSetup::buildAovSet(const Scene& scene) const {
+AovSet RenderSetup::buildAovSet(const Scene& scene, std::vector<std::string>* warnings) const {
     const auto set = expressions();
     std::optional<AovSet> aovs;
     try {
@@ -143,10 +148,13 @@ AovSet RenderSetup::buildAovSet(const Scene& scene) const {
     refuseUnknownLabels(aovs->automaton(), set, scene, scenePath);
     if (set.size() > 1) {
         // Overlapping AOVs count the same light twice; say so with a path both accept.
-        for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps)
-            std::cerr << "warning: AOVs " << set[o.first].name << " and " << set[o.second].name
-                      << " overlap: both accept " << lpe::toCompactString(o.example) << " ("
-                      << lpe::toTupleString(o.example) << "); their sum counts such light twice\n";
+        for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps) {
+            const std::string warning = "AOVs " + set[o.first].name + " and " + set[o.second].name +
+                                        " overlap: both accept " + lpe::toCompactString(o.example) + " (" +
+                                        lpe::toTupleString(o.example) + "); their sum counts such light twice";
+            if (warnings != nullptr) warnings->push_back(warning);
+            else std::cerr << "warning: " << warning << "\n";
+        }
     }
     return std::move(*aovs);
 }

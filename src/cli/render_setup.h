@@ -13,6 +13,9 @@
 
 namespace lightpath {
 
+// The integrators --integrator accepts, in the order help texts list them.
+const std::vector<std::string>& integratorNames();
+
 struct RenderSetup {
     std::string scenePath;
     std::string integrator = "whitted";
@@ -37,8 +40,9 @@ struct RenderSetup {
 
     Scene loadScene() const;                           // with --resolution applied
     std::vector<lpe::NamedExpression> expressions() const;
-    // Warns on stderr when AOVs overlap; refuses a label that names nothing in `scene`.
-    AovSet buildAovSet(const Scene& scene) const;
+    // Warns when AOVs overlap (on stderr, or into `warnings` when given); refuses a label that
+    // names nothing in `scene`.
+    AovSet buildAovSet(const Scene& scene, std::vector<std::string>* warnings = nullptr) const;
     RenderOptions renderOptions() const;
 };
 

@@ -1,5 +1,6 @@
 #include "io/image_writer.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
@@ -36,7 +37,20 @@ void writeImageFile(const fs::path& target, const fs::path& temporary, const OII
     }
 }
 
-void writeExr(const Film& film, const fs::path& target, const fs::path& temporary, const ImageMetadata& metadata) {
+// One image in memory, through OIIO's I/O proxy (no file is touched); `name` picks the format.
+std::vector<unsigned char> encodeImage(const std::string& name, const OIIO::ImageSpec& spec, OIIO::TypeDesc format,
+                                       const void* data) {
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput proxy(bytes);
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) throw ImageWriteError(name + ": cannot create an image writer (" + OIIO::geterror() + ")");
+    out->set_ioproxy(&proxy);
+    if (!out->open(name, spec) || !out->write_image(format, data) || !out->close())
+        throw ImageWriteError(name + ": cannot encode image (" + out->geterror() + ")");
+    return bytes;
+}
+
+OIIO::ImageSpec exrSpec(const Film& film, const ImageMetadata& metadata) {
     const std::size_t channels = 3 * film.layerCount();
     OIIO::ImageSpec spec(film.width(), film.height(), static_cast<int>(channels), OIIO::TypeDesc::FLOAT);
     spec.channelnames.clear();
@@ -47,24 +61,43 @@ void writeExr(const Film& film, const fs::path& target, const fs::path& temporar
     }
     spec.attribute("compression", "zip");
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
+    return spec;
+}
 
-    // Rgb is three packed floats, so the film is already the EXR's interleaved channel order.
-    static_assert(sizeof(Rgb) == 3 * sizeof(float));
-    writeImageFile(target, temporary, spec, OIIO::TypeDesc::FLOAT, film.interleaved().data());
+// Rgb is three packed floats, so the film is already the EXR's interleaved channel order.
+static_assert(sizeof(Rgb) == 3 * sizeof(float));
+
+void writeExr(const Film& film, const fs::path& target, const fs::path& temporary, const ImageMetadata& metadata) {
+    writeImageFile(target, temporary, exrSpec(film, metadata), OIIO::TypeDesc::FLOAT, film.interleaved().data());
+}
+
+std::vector<unsigned char> srgbPixels(const Film& film, std::size_t layer, float scale) {
+    const auto pixels = film.layer(layer);
+    std::vector<unsigned char> encoded(pixels.size() * 3);
+    for (std::size_t p = 0; p < pixels.size(); ++p)
+        for (int c = 0; c < 3; ++c) encoded[p * 3 + static_cast<std::size_t>(c)] = toSrgb8(pixels[p][c] * scale);
+    return encoded;
 }
 
 void writePng(const Film& film, std::size_t layer, const fs::path& target, const fs::path& temporary,
               const ImageMetadata& metadata) {
     OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::UINT8);
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
-    const auto pixels = film.layer(layer);
-    std::vector<unsigned char> encoded(pixels.size() * 3);
-    for (std::size_t p = 0; p < pixels.size(); ++p)
-        for (int c = 0; c < 3; ++c) encoded[p * 3 + static_cast<std::size_t>(c)] = toSrgb8(pixels[p][c]);
-    writeImageFile(target, temporary, spec, OIIO::TypeDesc::UINT8, encoded.data());
+    writeImageFile(target, temporary, spec, OIIO::TypeDesc::UINT8, srgbPixels(film, layer, 1.0f).data());
 }
 
 }  // namespace
+
+std::vector<unsigned char> encodeExr(const Film& film, const ImageMetadata& metadata) {
+    return encodeImage("film.exr", exrSpec(film, metadata), OIIO::TypeDesc::FLOAT, film.interleaved().data());
+}
+
+std::vector<unsigned char> encodePng(const Film& film, std::size_t layer, float scale) {
+    OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::UINT8);
+    // Served once per pass and layer: fast compression matters more than size on a loopback link.
+    spec.attribute("png:compressionLevel", 1);
+    return encodeImage("layer.png", spec, OIIO::TypeDesc::UINT8, srgbPixels(film, layer, scale).data());
+}
 
 unsigned char toSrgb8(float linear) {
     const float v = std::isfinite(linear) ? std::clamp(linear, 0.0f, 1.0f) : 0.0f;

@@ -31,6 +31,12 @@ std::vector<std::filesystem::path> outputFiles(const Film& film, const std::file
 std::vector<std::filesystem::path> writeFilm(const Film& film, const std::filesystem::path& path,
                                              const ImageMetadata& metadata);
 
+// The same files in memory, for serving them (`lightpath serve`): the multi-layer EXR of writeFilm,
+// and one layer as an 8-bit sRGB PNG, each value first multiplied by `scale` (an exposure).
+// Throws ImageWriteError.
+std::vector<unsigned char> encodeExr(const Film& film, const ImageMetadata& metadata);
+std::vector<unsigned char> encodePng(const Film& film, std::size_t layer, float scale = 1.0f);
+
 // The sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], in 0..255.
 unsigned char toSrgb8(float linear);
 

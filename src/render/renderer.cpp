@@ -59,14 +59,14 @@ constexpr int kAdaptiveMinimum = 8;
 
 }  // namespace
 
-int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
+int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layers, Tracer& tracer) const {
     const int spp = options_.samplesPerPixel;
     const bool adaptive = options_.targetError > 0.0;
     double sum = 0.0, sumOfSquares = 0.0;
     int taken = 0;
     while (taken < spp) {
         const Rgb beautyBefore = layers[0];
-        Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, options_.seed);
+        Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, seed);
         tracer.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are jittered within it.
         const Vec2 jitter = sampler.next2D();
@@ -107,7 +107,9 @@ std::vector<std::string> Renderer::layerNames() const {
     return names;
 }
 
-RenderResult Renderer::render() const {
+RenderResult Renderer::render() const { return render(options_.seed); }
+
+RenderResult Renderer::render(std::uint64_t seed) const {
     const auto started = std::chrono::steady_clock::now();
     const int width = camera_.width(), height = camera_.height();
     Film film(width, height, layerNames());
@@ -133,7 +135,7 @@ RenderResult Renderer::render() const {
                     // takes seconds, and Ctrl-C must stop the render promptly.
                     if (cancelled()) return;
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
-                    renderPixel(x, y, layers, tracer);
+                    renderPixel(x, y, seed, layers, tracer);
                     const std::span<Rgb> pixel = film.pixel(x, y);
                     for (std::size_t l = 0; l < writtenLayers_.size(); ++l) pixel[l] = layers[writtenLayers_[l]];
                 }
@@ -165,7 +167,7 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {
     ContributionSink sink(layers, &log);
     RayCounters counters;
     Tracer tracer(context_, sink, counters);
-    renderPixel(x, y, layers, tracer);
+    renderPixel(x, y, options_.seed, layers, tracer);
     // Logged values are per sample; scale them like the pixel so they sum to it.
     const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
     for (LoggedContribution& c : log) c.value *= weight;

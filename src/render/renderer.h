@@ -65,6 +65,11 @@ public:
     Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options);
 
     RenderResult render() const;
+    // The same render with the per-pixel sample sequences seeded by `seed` instead of
+    // RenderOptions::seed: renders with different seeds are independent estimates, so a caller
+    // can refine an image pass by pass, averaging them, without rebuilding the acceleration
+    // structure (`lightpath serve`).
+    RenderResult render(std::uint64_t seed) const;
     // The layers render() produces, in order.
     std::vector<std::string> layerNames() const;
     // Every contribution to pixel (x, y), in the order the integrator produced them.
@@ -72,7 +77,7 @@ public:
 
 private:
     // Samples one pixel into `layers` (their mean); returns the number of samples taken.
-    int renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const;
+    int renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layers, Tracer& tracer) const;
     bool cancelled() const;  // RenderOptions::cancel is set
 
     const Scene& scene_;

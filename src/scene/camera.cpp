@@ -23,4 +23,18 @@ Ray PinholeCamera::generateRay(float x, float y) const {
     return ray;
 }
 
+float PinholeCamera::depth(const Vec3& point) const { return glm::dot(point - eye_, forward_); }
+
+std::optional<Vec2> PinholeCamera::project(const Vec3& point) const {
+    // generateRay's mapping run backwards: the point's offset from the eye in the camera frame,
+    // divided by its depth, lands on the image plane at distance 1 (perspective division).
+    const Vec3 offset = point - eye_;
+    const float z = glm::dot(offset, forward_);
+    if (!(z > 0.0f)) return std::nullopt;
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    const float u = glm::dot(offset, right_) / z, v = glm::dot(offset, up_) / z;
+    return Vec2{(u / (aspect * halfHeight_) + 1.0f) * 0.5f * static_cast<float>(width_),
+                (1.0f - v / halfHeight_) * 0.5f * static_cast<float>(height_)};
+}
+
 }  // namespace lightpath

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "math/ray.h"
 #include "math/types.h"
 
@@ -22,6 +24,13 @@ public:
     // Ray through the film position (x, y) in pixels, (0,0) the top-left corner of the image;
     // the centre of pixel (i, j) is (i + 0.5, j + 0.5).
     Ray generateRay(float x, float y) const;
+
+    // The inverse of generateRay: the film position (x, y) in pixels where `point` appears, or
+    // nothing when it lies on or behind the plane of the eye (depth <= 0). Positions outside
+    // [0, width] x [0, height] are points outside the picture.
+    std::optional<Vec2> project(const Vec3& point) const;
+    // Distance of `point` in front of the eye along the viewing direction (negative: behind).
+    float depth(const Vec3& point) const;
 
     int width() const { return width_; }
     int height() const { return height_; }

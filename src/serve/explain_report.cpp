@@ -1,0 +1,162 @@
+#include "serve/explain_report.h"
+
+#include <optional>
+
+#include "integrators/event_symbols.h"
+#include "lpe/path_string.h"
+#include "scene/camera.h"
+#include "serve/request_error.h"
+
+namespace lightpath::serve {
+namespace {
+
+using nlohmann::json;
+
+// What an event touched, by the name a student reads in the scene file.
+std::string subjectName(const Scene& scene, const PathEvent& event) {
+    switch (event.subject) {
+        case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
+        case Subject::Ambient: return kAmbientLabel;
+        case Subject::PointLight: {
+            const std::string& name = scene.lights[event.index].name;
+            return name.empty() ? "light #" + std::to_string(event.index) : name;
+        }
+        case Subject::Object: {
+            const std::string& name = scene.objects[event.index].name;
+            return name.empty() ? "object #" + std::to_string(event.index) + " (" + scene.labelOf(event.index) + ")" : name;
+        }
+    }
+    return {};
+}
+
+// The recorded event as the LPE engine's event, labelled as the automaton saw it.
+lpe::Event toLpeEvent(const Scene& scene, const PathEvent& e) {
+    lpe::Event event{e.type, e.scatter, {}};
+    if (e.subject == Subject::Ambient) event.label = kAmbientLabel;
+    else if (e.subject == Subject::PointLight) event.label = scene.lights[e.index].name;
+    else if (e.subject == Subject::Object) event.label = scene.labelOf(e.index);
+    return event;
+}
+
+// World position of a path vertex, where the renderer records one (PathEvent::position).
+template <class Event>
+std::optional<Vec3> positionOf(const Event& event) {
+    if constexpr (requires { event.position; }) {
+        return Vec3(event.position);
+    } else {
+        return std::nullopt;
+    }
+}
+
+json point(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
+
+// The part of segment a-b in front of the eye, projected: [x0, y0, x1, y1] in pixels, or null
+// when all of it is behind. Clipped in 3D first, since projecting a point behind the eye flips it.
+json projectedSegment(const PinholeCamera& camera, Vec3 a, Vec3 b) {
+    constexpr float kNear = 1e-4f;
+    const float da = camera.depth(a), db = camera.depth(b);
+    if (da < kNear && db < kNear) return nullptr;
+    if (da < kNear) a = a + (b - a) * ((kNear - da) / (db - da));
+    if (db < kNear) b = b + (a - b) * ((kNear - db) / (da - db));
+    const auto pa = camera.project(a), pb = camera.project(b);
+    if (!pa || !pb) return nullptr;
+    return json::array({pa->x, pa->y, pb->x, pb->y});
+}
+
+}  // namespace
+
+std::string exactExpression(const lpe::Path& path) {
+    std::string text;
+    for (const lpe::Event& e : path) {
+        std::string event;
+        const bool scatters = e.type == lpe::EventType::Reflection || e.type == lpe::EventType::Transmission;
+        if (e.type == lpe::EventType::Camera) event = "E";
+        else if (e.type == lpe::EventType::Background) event = "B";
+        else if (scatters) event = std::string("<") + lpe::letter(e.type) + lpe::letter(e.scatter);
+        else event = "<L";  // an emitter, not the background
+        if (!e.label.empty()) {
+            if (event.front() != '<') event = "<" + event + ".";
+            event += "'" + e.label + "'";
+        }
+        if (event.front() == '<') event += ">";
+        text += (text.empty() ? "" : " ") + event;
+    }
+    return text;
+}
+
+json explainPixel(const Job& job, int x, int y) {
+    const int width = job.settings.width, height = job.settings.height;
+    if (x < 0 || y < 0 || x >= width || y >= height)
+        throw RequestError(400, "x,y", "pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                                           std::to_string(width) + "x" + std::to_string(height) + " image");
+    const std::vector<LoggedContribution> log = job.centreRenderer().explainPixel(x, y);
+    const lpe::Automaton& automaton = job.aovs.automaton();
+    const PinholeCamera camera(job.scene.camera);
+    const std::vector<std::string> layers = job.aovs.layerNames();
+    std::vector<Rgb> sums(layers.size(), Rgb{0.0f});
+
+    json contributions = json::array();
+    for (const LoggedContribution& c : log) {
+        lpe::Path path;
+        json vertices = json::array(), segments = json::array(), states = json::array();
+        lpe::Automaton::State state = automaton.start();
+        states.push_back(state);
+        std::optional<Vec3> previous;
+        for (std::size_t i = 0; i < c.path.size(); ++i) {
+            const PathEvent& e = c.path[i];
+            path.push_back(toLpeEvent(job.scene, e));
+            state = automaton.step(state, automaton.symbol(path.back()));
+            states.push_back(state);
+            const std::optional<Vec3> position = positionOf(e);
+            json vertex = {{"event", std::string(1, lpe::letter(e.type)) + (e.type == lpe::EventType::Reflection ||
+                                                                                     e.type == lpe::EventType::Transmission
+                                                                                 ? std::string(1, lpe::letter(e.scatter))
+                                                                                 : std::string())},
+                           {"label", path.back().label},
+                           {"touched", subjectName(job.scene, e)},
+                           {"position", position ? point(*position) : json(nullptr)}};
+            if (position) {
+                if (const auto p = camera.project(*position)) vertex["pixel"] = json::array({p->x, p->y});
+            }
+            vertices.push_back(std::move(vertex));
+            segments.push_back(position && previous ? projectedSegment(camera, *previous, *position) : json(nullptr));
+            previous = position;
+        }
+        segments.erase(segments.begin());  // segment i joins vertex i and i + 1
+
+        json aovs = json::array();
+        sums[0] += c.value;
+        if (c.accepted == 0) {
+            aovs.push_back("rest");
+            sums.back() += c.value;
+        }
+        for (std::size_t o = 0; o < job.aovs.expressions().size(); ++o) {
+            if (((c.accepted >> o) & 1u) == 0) continue;
+            aovs.push_back(job.aovs.expressions()[o].name);
+            sums[1 + o] += c.value;
+        }
+        contributions.push_back({{"compact", lpe::toCompactString(path)},
+                                 {"tuple", lpe::toTupleString(path)},
+                                 {"lpe", exactExpression(path)},
+                                 {"rgb", json::array({c.value.r, c.value.g, c.value.b})},
+                                 {"aovs", aovs},
+                                 {"states", states},
+                                 {"vertices", vertices},
+                                 {"segments", segments}});
+    }
+    json layerSums = json::array();
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        const bool aov = l > 0 && l + 1 < layers.size();
+        layerSums.push_back({{"layer", layers[l]},
+                             {"rgb", json::array({sums[l].r, sums[l].g, sums[l].b})},
+                             {"expression", aov ? job.aovs.expressions()[l - 1].expression : ""}});
+    }
+    return {{"pixel", json::array({x, y})},
+            {"generation", job.generation},
+            {"integrator", job.settings.integrator},
+            {"samples", 1},
+            {"contributions", contributions},
+            {"sums", layerSums}};
+}
+
+}  // namespace lightpath::serve

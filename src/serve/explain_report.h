@@ -1,0 +1,17 @@
+#pragma once
+// The JSON of GET /api/explain: every contribution to one pixel, as `lightpath explain` lists
+// them, with what the page draws: each path's vertices in world space and projected onto the
+// image, and the automaton states the path went through.
+#include <nlohmann/json.hpp>
+
+#include "serve/session.h"
+
+namespace lightpath::serve {
+
+// Throws RequestError (400) for a pixel outside the job's image.
+nlohmann::json explainPixel(const Job& job, int x, int y);
+
+// The pasteable LPE that accepts exactly this path: "E <RD'floor'> <L'key'>".
+std::string exactExpression(const lpe::Path& path);
+
+}  // namespace lightpath::serve

@@ -1,0 +1,109 @@
+#include "serve/scene_report.h"
+
+#include <algorithm>
+#include <cctype>
+#include <limits>
+
+#include "cli/render_setup.h"
+#include "integrators/event_symbols.h"
+#include "lpe/analysis.h"
+#include "serve/session.h"
+#include "serve/settings.h"
+
+namespace lightpath::serve {
+namespace {
+
+using nlohmann::json;
+
+json point(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
+bool isBlackRgb(const Rgb& c) { return c.r <= 0.0f && c.g <= 0.0f && c.b <= 0.0f; }
+
+// An AOV name for a label: AOV names are identifiers, labels may be any text.
+std::string identifierFor(const std::string& label, const std::vector<lpe::NamedExpression>& taken) {
+    std::string name;
+    for (const char c : label) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) name = "l_" + name;
+    const auto used = [&](const std::string& n) {
+        return n == "beauty" || n == "rest" ||
+               std::any_of(taken.begin(), taken.end(), [&](const auto& e) { return e.name == n; });
+    };
+    std::string unique = name;
+    for (int i = 2; used(unique); ++i) unique = name + "_" + std::to_string(i);
+    return unique;
+}
+
+std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
+    std::vector<lpe::NamedExpression> set;
+    const auto add = [&](const std::string& label) {
+        if (label.find('\'') != std::string::npos) return;  // cannot be quoted in an LPE
+        set.push_back({identifierFor(label, set), "E.*<L'" + label + "'>"});
+    };
+    if (!isBlackRgb(scene.ambient)) add(kAmbientLabel);
+    for (const PointLight& light : scene.lights)
+        if (!light.name.empty()) add(light.name);
+    std::vector<std::string> emissive;
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
+        if (!isBlackRgb(scene.materials[scene.objects[i].material].emission)) emissive.push_back(scene.labelOf(i));
+    std::sort(emissive.begin(), emissive.end());
+    emissive.erase(std::unique(emissive.begin(), emissive.end()), emissive.end());
+    for (const std::string& label : emissive) add(label);
+    if (!isBlackRgb(scene.background)) set.push_back({identifierFor("background", set), "E.*B"});
+    return set;
+}
+
+// Light by the number of scattering events between the eye and the emitter: a partition of E.*L.
+std::vector<lpe::NamedExpression> bounceSet() {
+    return {{"emission", "EL"}, {"bounce1", "E.L"}, {"bounce2", "E..L"}, {"bounce3", "E...L"}, {"bounce4plus", "E.{4,}L"}};
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::vector<lpe::NamedExpression>>> presets(const Scene& scene) {
+    return {{"classes", lpe::classesSet()},
+            {"lights", lightGroups(scene)},
+            {"bounces", bounceSet()},
+            {"taxonomy", lpe::taxonomySet()}};
+}
+
+json describeScene(const Scene& scene, const std::string& scenePath) {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    std::vector<Vec3> low(scene.objects.size(), Vec3{kInf}), high(scene.objects.size(), Vec3{-kInf});
+    const auto grow = [&](std::uint32_t object, const Vec3& a, const Vec3& b) {
+        low[object] = glm::min(low[object], a);
+        high[object] = glm::max(high[object], b);
+    };
+    for (const Sphere& s : scene.spheres) grow(s.object, s.center - Vec3{s.radius}, s.center + Vec3{s.radius});
+    for (const Triangle& t : scene.triangles) {
+        grow(t.object, glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c)));
+    }
+    json objects = json::array();
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        json object = {{"name", scene.objects[i].name}, {"label", scene.labelOf(i)},
+                       {"emissive", !isBlackRgb(scene.materials[scene.objects[i].material].emission)}};
+        if (low[i].x <= high[i].x) object["bounds"] = {point(low[i]), point(high[i])};
+        objects.push_back(object);
+    }
+    for (const Plane& p : scene.planes)
+        objects[p.object]["plane"] = {{"point", point(p.point)}, {"normal", point(p.normal)}};
+    json lights = json::array();
+    for (const PointLight& light : scene.lights) lights.push_back({{"name", light.name}, {"position", point(light.position)}});
+    json sets = json::array();
+    for (const auto& [name, set] : presets(scene)) {
+        json list = json::array();
+        for (const auto& e : set) list.push_back({{"name", e.name}, {"expression", e.expression}});
+        sets.push_back({{"name", name}, {"lpes", list}});
+    }
+    return {{"scene", scenePath},
+            {"camera",
+             {{"eye", point(scene.camera.eye)},
+              {"lookAt", point(scene.camera.lookAt)},
+              {"width", scene.camera.width},
+              {"height", scene.camera.height}}},
+            {"objects", objects},
+            {"lights", lights},
+            {"integrators", integratorNames()},
+            {"presets", sets},
+            {"limits", {{"side", kMaxSide}, {"spp", kMaxSamples}, {"lpes", kMaxExpressions}, {"samplesPerPass", kSamplesPerPass}}}};
+}
+
+}  // namespace lightpath::serve

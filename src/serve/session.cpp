@@ -1,0 +1,258 @@
+#include "serve/session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "cli/render_setup.h"
+#include "lpe/error.h"
+#include "serve/request_error.h"
+
+namespace lightpath::serve {
+namespace {
+
+// The expression of `set` whose text a syntax error quotes.
+std::size_t expressionOf(const std::vector<lpe::NamedExpression>& set, const std::string& text) {
+    for (std::size_t i = 0; i < set.size(); ++i)
+        if (set[i].expression == text) return i;
+    return set.size();
+}
+
+// An expression that accepts no path from the eye to a light selects nothing, whatever the scene:
+// the page warns about it (e.g. "ED", which never reaches a light).
+bool neverMatches(const std::string& expression) {
+    const lpe::Automaton both = lpe::Automaton::compile({{"x", expression}, {"universe", "E.*L"}});
+    return !both.findShortestPath([](lpe::OutputMask accepts) { return accepts == 3u; });
+}
+
+double maxSumError(const Film& film) {
+    double worst = 0.0;
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            const Rgb* pixel = &film.at(0, x, y);
+            Rgb sum{0.0f};
+            for (std::size_t l = 1; l < film.layerCount(); ++l) sum += pixel[l];
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(static_cast<double>(pixel[0][c]) - sum[c]));
+        }
+    }
+    return worst;
+}
+
+}  // namespace
+
+Job::Job(std::uint64_t generation, Settings settings, Scene scene, AovSet aovs, RenderOptions options,
+         std::vector<std::string> warnings)
+    : generation(generation),
+      settings(std::move(settings)),
+      scene(std::move(scene)),
+      aovs(std::move(aovs)),
+      warnings(std::move(warnings)),
+      options_(options) {
+    options_.cancel = &cancelled_;
+}
+
+const Renderer& Job::centreRenderer() const {
+    std::call_once(centreOnce_, [this] {
+        RenderOptions options = options_;
+        options.samplesPerPixel = 1;
+        centre_ = std::make_unique<Renderer>(scene, aovs, options);
+    });
+    return *centre_;
+}
+
+int Job::samplesPerPass() const { return std::min(kSamplesPerPass, settings.samplesPerPixel); }
+
+const Renderer& Job::passRenderer() const {
+    std::call_once(passOnce_, [this] {
+        RenderOptions options = options_;
+        options.samplesPerPixel = samplesPerPass();
+        pass_ = std::make_unique<Renderer>(scene, aovs, options);
+    });
+    return *pass_;
+}
+
+Session::Session(Scene scene, std::string scenePath) : scene_(std::move(scene)), scenePath_(std::move(scenePath)) {
+    job_ = prepare(defaultSettings(scene_), 1);
+    progress_.job = job_;
+    worker_ = std::thread([this] { work(); });
+}
+
+Session::~Session() { stop(); }
+
+void Session::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+        if (job_) job_->cancel();
+    }
+    changed_.notify_all();
+    if (worker_.joinable() && worker_.get_id() != std::this_thread::get_id()) worker_.join();
+}
+
+std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t generation) const {
+    // Compiled here first for the syntax error's column and the expression it belongs to.
+    try {
+        AovSet check(settings.lpes);
+    } catch (const lpe::SyntaxError& e) {
+        const std::size_t i = expressionOf(settings.lpes, e.text());
+        const std::string name = i < settings.lpes.size() ? settings.lpes[i].name : "?";
+        RequestError error(400, "lpes[" + std::to_string(i) + "].expression", name + ": " + e.what());
+        error.column = e.position();
+        error.expression = e.text();
+        throw error;
+    } catch (const std::exception& e) {
+        throw RequestError(400, "lpes", e.what());
+    }
+
+    RenderSetup setup;  // the command line's own checks and warnings
+    setup.scenePath = scenePath_;
+    setup.integrator = settings.integrator;
+    setup.aovs = "none";
+    for (const auto& e : settings.lpes) setup.lpes.push_back(e.name + "=" + e.expression);
+    setup.maxDepth = settings.maxDepth;
+    setup.quiet = true;
+    std::vector<std::string> warnings;
+    std::optional<AovSet> aovs;
+    try {
+        aovs.emplace(setup.buildAovSet(scene_, &warnings));
+    } catch (const std::exception& e) {
+        std::string field = "lpes";
+        const std::string message = e.what();
+        for (std::size_t i = 0; i < settings.lpes.size(); ++i)
+            if (message.rfind("--lpe " + settings.lpes[i].name + ":", 0) == 0 ||
+                message.rfind("--lpe " + settings.lpes[i].name + " ", 0) == 0)
+                field = "lpes[" + std::to_string(i) + "].expression";
+        throw RequestError(400, field, message);
+    }
+    for (const auto& e : settings.lpes)
+        if (neverMatches(e.expression))
+            warnings.push_back(e.name + ": " + e.expression + " never matches: it accepts no path from the eye (E) to a light (L)");
+
+    Scene scene = scene_;
+    scene.camera.width = settings.width;
+    scene.camera.height = settings.height;
+    RenderOptions options = setup.renderOptions();
+    options.progress = false;
+    return std::make_shared<Job>(generation, settings, std::move(scene), std::move(*aovs), options, std::move(warnings));
+}
+
+std::shared_ptr<const Job> Session::update(const Settings& settings) {
+    std::uint64_t generation = 0;
+    {
+        std::lock_guard lock(mutex_);
+        if (stopping_) throw RequestError(503, "", "the server is stopping");
+        if (job_->settings == settings) return job_;
+        generation = job_->generation + 1;
+    }
+    std::shared_ptr<Job> next = prepare(settings, generation);  // outside the lock: compiling takes time
+    {
+        std::lock_guard lock(mutex_);
+        if (stopping_) throw RequestError(503, "", "the server is stopping");
+        // Two updates racing: the later generation wins, whichever finished preparing first.
+        if (job_->generation >= next->generation) return job_;
+        job_->cancel();
+        job_ = next;
+    }
+    changed_.notify_all();
+    return next;
+}
+
+std::shared_ptr<const Job> Session::job() const {
+    std::lock_guard lock(mutex_);
+    return job_;
+}
+
+Progress Session::progress() const {
+    std::lock_guard lock(mutex_);
+    return progress_;
+}
+
+Progress Session::progressOf(std::uint64_t generation) const {
+    std::lock_guard lock(mutex_);
+    if (progress_.job->generation != generation && previous_.job && previous_.job->generation == generation) return previous_;
+    return progress_;
+}
+
+Progress Session::waitForProgress(std::uint64_t generation, int pass, double timeoutSeconds) const {
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds), [&] {
+        if (stopping_) return true;
+        const std::uint64_t current = progress_.job->generation;
+        return current > generation || (current == generation && (progress_.passes > pass || progress_.done));
+    });
+    return progress_;
+}
+
+void Session::publish(const Progress& progress) {
+    {
+        std::lock_guard lock(mutex_);
+        if (progress.job != job_) return;  // superseded while rendering
+        progress_ = progress;
+    }
+    changed_.notify_all();
+}
+
+void Session::work() {
+    std::shared_ptr<Job> rendered;
+    while (true) {
+        std::shared_ptr<Job> job;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [&] { return stopping_ || job_ != rendered; });
+            if (stopping_) return;
+            job = job_;
+            if (progress_.image) previous_ = progress_;
+            progress_ = Progress{};
+            progress_.job = job;
+        }
+        changed_.notify_all();
+        rendered = job;
+        renderJob(job);
+    }
+}
+
+void Session::renderJob(const std::shared_ptr<Job>& job) {
+    Progress progress;
+    progress.job = job;
+    RenderResult first = job->centreRenderer().render(0);
+    if (first.cancelled) return;
+    progress.image = std::make_shared<Film>(first.film);
+    progress.passes = 1;
+    progress.samples = 1;
+    progress.seconds = first.stats.seconds;
+    progress.done = job->settings.samplesPerPixel == 1;
+    progress.sumError = maxSumError(first.film);
+    publish(progress);
+
+    // The mean of the jittered passes: each is an independent estimate (its own seed).
+    const int perPass = job->samplesPerPass();
+    const int passes = (job->settings.samplesPerPixel + perPass - 1) / perPass;
+    std::optional<Film> sum;
+    for (int pass = 1; pass <= passes && !progress.done; ++pass) {
+        RenderResult result = job->passRenderer().render(static_cast<std::uint64_t>(pass));
+        if (result.cancelled) return;
+        if (!sum) {
+            sum.emplace(std::move(result.film));
+        } else {
+            for (int y = 0; y < sum->height(); ++y)
+                for (int x = 0; x < sum->width(); ++x) {
+                    const std::span<Rgb> to = sum->pixel(x, y), from = result.film.pixel(x, y);
+                    for (std::size_t l = 0; l < to.size(); ++l) to[l] += from[l];
+                }
+        }
+        auto mean = std::make_shared<Film>(*sum);
+        const float weight = 1.0f / static_cast<float>(pass);
+        for (int y = 0; y < mean->height(); ++y)
+            for (int x = 0; x < mean->width(); ++x)
+                for (Rgb& value : mean->pixel(x, y)) value *= weight;
+        progress.image = std::move(mean);
+        progress.passes = pass + 1;
+        progress.samples = pass * perPass;
+        progress.seconds += result.stats.seconds;
+        progress.done = pass == passes;
+        progress.sumError = maxSumError(*progress.image);
+        publish(progress);
+    }
+}
+
+}  // namespace lightpath::serve

@@ -1,0 +1,112 @@
+#pragma once
+// One scene explored from the page: the current settings, the render of them refined pass by
+// pass on a worker thread, and the pixel explanations. A change of settings cancels the render in
+// flight (RenderOptions::cancel, checked per pixel) and starts the new one; one render runs at a
+// time. Every method may be called from any HTTP thread.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "film/film.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "serve/settings.h"
+
+namespace lightpath::serve {
+
+// Pass 0 is one sample through each pixel centre (the lecture's image, and a first image fast);
+// every later pass takes this many jittered samples with its own seed, and their mean replaces it.
+inline constexpr int kSamplesPerPass = 4;
+
+// Everything one set of settings renders with. Renderers hold references into it, so it lives as
+// long as the last request using it (shared_ptr).
+class Job {
+public:
+    Job(std::uint64_t generation, Settings settings, Scene scene, AovSet aovs, RenderOptions options,
+        std::vector<std::string> warnings);
+
+    const std::uint64_t generation;
+    const Settings settings;
+    const Scene scene;  // the loaded scene at this job's resolution
+    const AovSet aovs;
+    const std::vector<std::string> warnings;  // overlaps and never-matching expressions
+
+    // One sample through the pixel centre: pass 0, and `explain` (as `lightpath explain` does).
+    const Renderer& centreRenderer() const;
+    // kSamplesPerPass jittered samples (or the target, if fewer): passes 1, 2, ...
+    const Renderer& passRenderer() const;
+    int samplesPerPass() const;
+
+    void cancel() { cancelled_.store(true); }
+    bool cancelled() const { return cancelled_.load(); }
+
+private:
+    RenderOptions options_;
+    std::atomic<bool> cancelled_{false};
+    mutable std::once_flag centreOnce_, passOnce_;
+    mutable std::unique_ptr<Renderer> centre_, pass_;
+};
+
+// What the page shows: the mean of the passes so far.
+struct Progress {
+    std::shared_ptr<const Job> job;
+    std::shared_ptr<const Film> image;  // null until pass 0 is done
+    int passes = 0;                      // passes in `image`
+    int samples = 0;                     // samples per pixel in `image`
+    bool done = false;                   // the target is reached: nothing more will change
+    double seconds = 0.0;                // rendering time of the passes so far
+    double sumError = 0.0;               // max over pixels and channels of |beauty - sum of AOVs - rest|
+};
+
+class Session {
+public:
+    // `scene` is the scene the command line named, loaded once; nothing else is ever read.
+    Session(Scene scene, std::string scenePath);
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    const Scene& scene() const { return scene_; }
+    const std::string& scenePath() const { return scenePath_; }
+
+    // Checks `settings` (throws RequestError naming the field) and, when they differ from the
+    // current ones, cancels the render in flight and starts theirs. Returns the job now current.
+    std::shared_ptr<const Job> update(const Settings& settings);
+    std::shared_ptr<const Job> job() const;
+    Progress progress() const;
+    // The progress of `generation` while it is held: the current one, or the one before it until
+    // the current one has an image (so a page asking for the image it was just told about gets
+    // it, even if the settings changed meanwhile). Otherwise the current progress.
+    Progress progressOf(std::uint64_t generation) const;
+    // Waits until a pass of a job at least `generation` newer than `pass` is published, or the
+    // timeout passes (the caller's bound on a request's time); returns the progress then.
+    Progress waitForProgress(std::uint64_t generation, int pass, double timeoutSeconds) const;
+
+    // Stops the worker (cancelling its render); later updates are refused.
+    void stop();
+
+private:
+    std::shared_ptr<Job> prepare(const Settings& settings, std::uint64_t generation) const;
+    void work();
+    void renderJob(const std::shared_ptr<Job>& job);
+    void publish(const Progress& progress);
+
+    const Scene scene_;
+    const std::string scenePath_;
+
+    mutable std::mutex mutex_;
+    mutable std::condition_variable changed_;
+    std::shared_ptr<Job> job_;
+    Progress progress_;
+    Progress previous_;  // the last progress with an image, of an older generation
+    bool stopping_ = false;
+    std::thread worker_;
+};
+
+}  // namespace lightpath::serve

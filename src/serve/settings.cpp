@@ -1,0 +1,121 @@
+#include "serve/settings.h"
+
+#include <algorithm>
+
+#include "cli/render_setup.h"
+#include "lpe/analysis.h"
+#include "integrators/path_record.h"
+#include "serve/request_error.h"
+
+namespace lightpath::serve {
+namespace {
+
+using nlohmann::json;
+
+const std::vector<std::string> kFields{"integrator", "spp", "width", "height", "maxDepth", "lpes"};
+
+[[noreturn]] void bad(const std::string& field, const std::string& message) {
+    throw RequestError(400, field, field + ": " + message);
+}
+
+std::string describe(const json& value) {
+    const std::string text = value.dump();
+    return text.size() > 40 ? text.substr(0, 40) + "..." : text;
+}
+
+int integerIn(const json& value, const std::string& field, int low, int high) {
+    const std::string expected = "expected an integer " + std::to_string(low) + ".." + std::to_string(high);
+    if (!value.is_number_integer()) bad(field, expected + ", got " + describe(value));
+    const bool inRange = value.is_number_unsigned() ? value.get<std::uint64_t>() <= static_cast<std::uint64_t>(high) &&
+                                                          value.get<std::uint64_t>() >= static_cast<std::uint64_t>(std::max(low, 0))
+                                                    : value.get<std::int64_t>() >= low && value.get<std::int64_t>() <= high;
+    if (!inRange) bad(field, expected + ", got " + describe(value));
+    return static_cast<int>(value.get<std::int64_t>());
+}
+
+std::string stringOf(const json& value, const std::string& field, std::size_t maxLength) {
+    if (!value.is_string()) bad(field, "expected a string, got " + describe(value));
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text.size() > maxLength)
+        bad(field, "expected at most " + std::to_string(maxLength) + " characters, got " + std::to_string(text.size()));
+    return text;
+}
+
+std::vector<lpe::NamedExpression> expressionsOf(const json& value) {
+    if (!value.is_array()) bad("lpes", "expected an array of {\"name\", \"expression\"} objects, got " + describe(value));
+    if (value.size() > kMaxExpressions)
+        bad("lpes", "expected at most " + std::to_string(kMaxExpressions) + " expressions, got " + std::to_string(value.size()));
+    std::vector<lpe::NamedExpression> list;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string at = "lpes[" + std::to_string(i) + "]";
+        const json& item = value[i];
+        if (!item.is_object()) bad(at, "expected an object {\"name\", \"expression\"}, got " + describe(item));
+        for (const auto& [key, unused] : item.items())
+            if (key != "name" && key != "expression") bad(at + "." + key, "unknown field; expected name or expression");
+        if (!item.contains("name") || !item.contains("expression")) bad(at, "expected both \"name\" and \"expression\"");
+        list.push_back({stringOf(item["name"], at + ".name", 64), stringOf(item["expression"], at + ".expression", kMaxExpressionLength)});
+    }
+    return list;
+}
+
+}  // namespace
+
+bool Settings::operator==(const Settings& other) const {
+    const auto same = [](const lpe::NamedExpression& a, const lpe::NamedExpression& b) {
+        return a.name == b.name && a.expression == b.expression;
+    };
+    return integrator == other.integrator && samplesPerPixel == other.samplesPerPixel && width == other.width &&
+           height == other.height && maxDepth == other.maxDepth &&
+           std::equal(lpes.begin(), lpes.end(), other.lpes.begin(), other.lpes.end(), same);
+}
+
+Settings defaultSettings(const Scene& scene) {
+    Settings settings;
+    settings.width = scene.camera.width;
+    settings.height = scene.camera.height;
+    settings.lpes = lpe::classesSet();
+    return settings;
+}
+
+Settings applySettings(const Settings& current, const std::string& body) {
+    const json request = json::parse(body, nullptr, false);
+    if (request.is_discarded()) throw RequestError(400, "", "malformed JSON: expected an object such as {\"spp\": 16}");
+    if (!request.is_object()) throw RequestError(400, "", "expected a JSON object, got " + describe(request));
+    Settings settings = current;
+    for (const auto& [key, value] : request.items()) {
+        if (std::find(kFields.begin(), kFields.end(), key) == kFields.end()) {
+            std::string known;
+            for (const std::string& f : kFields) known += (known.empty() ? "" : ", ") + f;
+            bad(key, "unknown field; expected one of " + known);
+        }
+        if (key == "integrator") {
+            settings.integrator = stringOf(value, key, 64);
+            const auto& names = integratorNames();
+            if (std::find(names.begin(), names.end(), settings.integrator) == names.end()) {
+                std::string known;
+                for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+                bad(key, "unknown integrator \"" + settings.integrator + "\"; expected one of " + known);
+            }
+        } else if (key == "spp") {
+            settings.samplesPerPixel = integerIn(value, key, 1, kMaxSamples);
+        } else if (key == "width") {
+            settings.width = integerIn(value, key, 1, kMaxSide);
+        } else if (key == "height") {
+            settings.height = integerIn(value, key, 1, kMaxSide);
+        } else if (key == "maxDepth") {
+            settings.maxDepth = integerIn(value, key, 0, kMaxDepth);
+        } else {
+            settings.lpes = expressionsOf(value);
+        }
+    }
+    return settings;
+}
+
+nlohmann::json toJson(const Settings& settings) {
+    json lpes = json::array();
+    for (const auto& e : settings.lpes) lpes.push_back({{"name", e.name}, {"expression", e.expression}});
+    return {{"integrator", settings.integrator}, {"spp", settings.samplesPerPixel}, {"width", settings.width},
+            {"height", settings.height},         {"maxDepth", settings.maxDepth},   {"lpes", lpes}};
+}
+
+}  // namespace lightpath::serve

@@ -1,0 +1,41 @@
+#pragma once
+// What the page can change: the integrator, the progressive render's sample target, the
+// resolution, the depth and the list of LPEs. Parsed from the JSON of PUT /api/settings
+// (docs/serve.md) and checked against the limits below before anything is rendered.
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "lpe/automaton.h"
+#include "scene/scene.h"
+
+namespace lightpath::serve {
+
+// Bounds on one session's work: a render is at most kMaxSide^2 pixels at kMaxSamples samples.
+inline constexpr int kMaxSide = 4096;
+inline constexpr int kMaxSamples = 4096;
+inline constexpr std::size_t kMaxExpressions = 16;
+inline constexpr std::size_t kMaxExpressionLength = 400;
+
+struct Settings {
+    std::string integrator = "whitted";
+    int samplesPerPixel = 16;  // the progressive render stops here
+    int width = 0, height = 0;
+    int maxDepth = 5;
+    std::vector<lpe::NamedExpression> lpes;
+
+    bool operator==(const Settings& other) const;
+};
+
+// The scene's resolution and the `classes` set.
+Settings defaultSettings(const Scene& scene);
+
+// `current` with the fields of `body` (a JSON object; absent fields keep their value) applied.
+// Throws RequestError (400) for malformed JSON, an unknown field, a wrong type or a value out of
+// range, naming the field and what was expected.
+Settings applySettings(const Settings& current, const std::string& body);
+
+nlohmann::json toJson(const Settings& settings);
+
+}  // namespace lightpath::serve

@@ -1,0 +1,395 @@
+// The HTTP API of `lightpath serve` (docs/serve.md): requests in, JSON and images out, every
+// class of refused request, a cancelled render and concurrent requests.
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <atomic>
+#include <cstring>
+#include <regex>
+#include <vector>
+
+#include "lpe/analysis.h"
+#include "lpe/automaton.h"
+#include "lpe/path_string.h"
+#include "render/renderer.h"
+#include "scene/camera.h"
+#include "serve_fixture.h"
+
+using namespace lightpath;
+using namespace lightpath::serve;
+using namespace lightpath::serve::test;
+
+namespace {
+
+// A float image decoded from bytes: channel names and interleaved values.
+struct Decoded {
+    int width = 0, height = 0;
+    std::vector<std::string> channels;
+    std::vector<float> values;
+    float at(int x, int y, const std::string& channel) const {
+        const auto c = std::find(channels.begin(), channels.end(), channel);
+        REQUIRE(c != channels.end());
+        return values[(static_cast<std::size_t>(y) * width + x) * channels.size() + (c - channels.begin())];
+    }
+};
+
+Decoded decode(const std::string& bytes, const char* name) {
+    OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::open(name, nullptr, &reader);
+    REQUIRE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    Decoded d{spec.width, spec.height, spec.channelnames, {}};
+    d.values.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+    REQUIRE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, d.values.data()));
+    return d;
+}
+
+json settingsFor(int width, int height, int spp, const std::string& integrator = "whitted") {
+    return {{"width", width}, {"height", height}, {"spp", spp}, {"integrator", integrator}};
+}
+
+// Compares the served EXR's layers with a film rendered by the renderer itself.
+void checkSameAsFilm(const Decoded& exr, const Film& film) {
+    REQUIRE(exr.width == film.width());
+    REQUIRE(exr.height == film.height());
+    for (std::size_t l = 0; l < film.layerCount(); ++l) {
+        const std::string prefix = l == 0 ? "" : film.layerNames()[l] + ".";
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const float served = exr.at(x, y, prefix + "RGB"[c]);
+                    const float expected = film.at(l, x, y)[c];
+                    if (std::abs(served - expected) > 1e-6f * std::max(1.0f, std::abs(expected)))
+                        FAIL("layer " << film.layerNames()[l] << " pixel " << x << "," << y << ": served " << served
+                                      << ", rendered " << expected);
+                }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("serve: the page's files and the scene description") {
+    ServerFixture fixture("mirror-sphere.toml");
+    auto c = fixture.client();
+    const auto page = c->Get("/");
+    REQUIRE(page);
+    CHECK(page->status == 200);
+    CHECK(page->get_header_value("Content-Type").find("text/html") == 0);
+    CHECK(page->body.find("<script src=\"/app.js\"></script>") != std::string::npos);
+    for (const char* asset : {"/app.js", "/style.css"}) {
+        const auto r = c->Get(asset);
+        REQUIRE(r);
+        CHECK(r->status == 200);
+        CHECK(r->body.size() > 1000);
+    }
+    const auto scene = c->Get("/api/scene");
+    REQUIRE(scene);
+    REQUIRE(scene->status == 200);
+    const json s = json::parse(scene->body);
+    CHECK(s["integrators"] == json::array({"raycast", "whitted", "path"}));
+    CHECK(s["camera"]["width"] == 640);
+    CHECK(s["lights"][0]["name"] == "lamp");
+    // The mirror ball: centre (0, 1.1, 0), radius 1.1 in the scene file.
+    bool found = false;
+    for (const json& o : s["objects"])
+        if (o["name"] == "mirror-ball") {
+            found = true;
+            CHECK(o["bounds"][0] == json::array({-1.1f, 0.0f, -1.1f}));
+            CHECK(o["bounds"][1] == json::array({1.1f, 2.2f, 1.1f}));
+        }
+    CHECK(found);
+    std::vector<std::string> presets;
+    for (const json& p : s["presets"]) presets.push_back(p["name"]);
+    CHECK(presets == std::vector<std::string>{"classes", "lights", "bounces", "taxonomy"});
+    // The light groups: the ambient term, the lamp and the background, each its own AOV.
+    CHECK(s["presets"][1]["lpes"] == json::parse(R"([{"name":"ambient","expression":"E.*<L'ambient'>"},
+        {"name":"lamp","expression":"E.*<L'lamp'>"},{"name":"background","expression":"E.*B"}])"));
+}
+
+TEST_CASE("serve: the bounce preset is a partition, so its AOVs sum to the beauty") {
+    const Scene scene = loadScene(scenePath("mirror-sphere.toml"));
+    for (const auto& [name, set] : presets(scene)) {
+        if (name != "bounces" && name != "classes") continue;
+        CAPTURE(name);
+        CHECK(lpe::analyse(set, name == "classes" ? "E(D|G|S)*L" : "E.*L").partition());
+    }
+}
+
+TEST_CASE("serve: a render at 1 spp is the renderer's own image, its layers summing to the beauty") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto put = fixture.put(settingsFor(48, 36, 1));
+    REQUIRE(put);
+    REQUIRE(put->status == 200);
+    const auto generation = json::parse(put->body)["generation"].get<std::uint64_t>();
+    const json done = fixture.waitUntilDone(generation);
+    CHECK(done["passes"] == 1);
+    CHECK(done["samples"] == 1);
+    CHECK(done["sumError"].get<double>() < 1e-5);
+    CHECK(done["layers"] == json::array({"beauty", "raycast", "raytrace", "mirror", "emission", "indirect", "rest"}));
+
+    auto c = fixture.client();
+    const auto exr = c->Get("/api/render.exr");
+    REQUIRE(exr);
+    REQUIRE(exr->status == 200);
+    const Decoded image = decode(exr->body, "render.exr");
+    // The sum of the layers is the beauty, pixel by pixel (DESIGN.md's promise).
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (const char* channel : {"R", "G", "B"}) {
+                float sum = 0.0f;
+                for (const char* layer : {"raycast.", "raytrace.", "mirror.", "emission.", "indirect.", "rest."})
+                    sum += image.at(x, y, std::string(layer) + channel);
+                CHECK(sum == doctest::Approx(image.at(x, y, channel)).epsilon(1e-5));
+            }
+    // The same settings given to the renderer directly.
+    Scene scene = loadScene(scenePath("mirror-sphere.toml"));
+    scene.camera.width = 48;
+    scene.camera.height = 36;
+    const AovSet aovs(lpe::classesSet());
+    const RenderResult direct = Renderer(scene, aovs, RenderOptions{}).render();
+    checkSameAsFilm(image, direct.film);
+
+    // A PNG of a layer: the PNG signature and the size in its IHDR chunk (PNG spec, 11.2.2).
+    const auto png = c->Get("/api/image/mirror.png?exposure=1");
+    REQUIRE(png);
+    REQUIRE(png->status == 200);
+    CHECK(png->get_header_value("Content-Type") == "image/png");
+    REQUIRE(png->body.size() > 24);
+    CHECK(png->body.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+    const auto be32 = [&](std::size_t at) {
+        const auto* b = reinterpret_cast<const unsigned char*>(png->body.data() + at);
+        return (b[0] << 24) | (b[1] << 16) | (b[2] << 8) | b[3];
+    };
+    CHECK(be32(16) == 48);
+    CHECK(be32(20) == 36);
+}
+
+TEST_CASE("serve: passes refine: the image is the mean of independent jittered passes") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto put = fixture.put(settingsFor(40, 30, 8, "path"));
+    REQUIRE(put);
+    REQUIRE(put->status == 200);
+    const json done = fixture.waitUntilDone(json::parse(put->body)["generation"].get<std::uint64_t>());
+    // Pass 0 (one centre sample), then two passes of 4 jittered samples.
+    CHECK(done["passes"] == 3);
+    CHECK(done["samples"] == 8);
+    const auto exr = fixture.client()->Get("/api/render.exr");
+    REQUIRE(exr);
+    const Decoded image = decode(exr->body, "render.exr");
+
+    Scene scene = loadScene(scenePath("mirror-sphere.toml"));
+    scene.camera.width = 40;
+    scene.camera.height = 30;
+    const AovSet aovs(lpe::classesSet());
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = 4;
+    const Renderer renderer(scene, aovs, options);
+    const RenderResult first = renderer.render(1), second = renderer.render(2);
+    Film mean = first.film;
+    for (int y = 0; y < mean.height(); ++y)
+        for (int x = 0; x < mean.width(); ++x)
+            for (std::size_t l = 0; l < mean.layerCount(); ++l) mean.pixel(x, y)[l] = (first.film.at(l, x, y) + second.film.at(l, x, y)) * 0.5f;
+    checkSameAsFilm(image, mean);
+    // Independent passes differ (a path tracer's noise), so averaging them refines the image.
+    int differing = 0;
+    for (int y = 0; y < mean.height(); ++y)
+        for (int x = 0; x < mean.width(); ++x) differing += first.film.at(0, x, y) != second.film.at(0, x, y);
+    CHECK(differing > mean.width() * mean.height() / 4);
+}
+
+TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton states") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto put = fixture.put(settingsFor(64, 48, 1));
+    REQUIRE(put);
+    REQUIRE(put->status == 200);
+    // The pixel where the mirror ball's centre appears.
+    Scene scene = loadScene(scenePath("mirror-sphere.toml"));
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    const auto centre = PinholeCamera(scene.camera).project({0.0f, 1.1f, 0.0f});
+    REQUIRE(centre);
+    const int x = static_cast<int>(centre->x), y = static_cast<int>(centre->y);
+    const auto r = fixture.client()->Get(("/api/explain?x=" + std::to_string(x) + "&y=" + std::to_string(y)).c_str());
+    REQUIRE(r);
+    REQUIRE(r->status == 200);
+    const json e = json::parse(r->body);
+    REQUIRE(e["contributions"].size() > 1);
+
+    const lpe::Automaton classes = lpe::Automaton::compile(lpe::classesSet());
+    const std::regex mirrorEvent("RS'mirror-ball'");
+    bool sawMirror = false;
+    Rgb beauty{0.0f};
+    for (const json& c : e["contributions"]) {
+        const std::string tuple = c["tuple"];
+        const lpe::Path path = lpe::parsePath(tuple);
+        sawMirror = sawMirror || std::regex_search(tuple, mirrorEvent);
+        CHECK(c["compact"] == lpe::toCompactString(path));
+        // The AOVs named are the ones whose expressions accept the path (compiled here anew).
+        std::vector<std::string> accepting;
+        for (std::size_t o = 0; o < lpe::classesSet().size(); ++o)
+            if (classes.matches(path, o)) accepting.push_back(lpe::classesSet()[o].name);
+        if (accepting.empty()) accepting.push_back("rest");
+        CHECK(c["aovs"] == json(accepting));
+        // The pasteable LPE accepts this path and not the same path ending at another light.
+        const lpe::Automaton exact = lpe::Automaton::compile({{"exact", c["lpe"].get<std::string>()}});
+        CHECK(exact.matches(path, 0));
+        lpe::Path other = path;
+        other.back().label = "elsewhere";
+        CHECK_FALSE(exact.matches(other, 0));
+        // One state before the path and one after each event.
+        CHECK(c["states"].size() == path.size() + 1);
+        CHECK(c["vertices"].size() == path.size());
+        CHECK(c["segments"].size() == path.size() - 1);
+        CHECK(c["vertices"][0]["event"] == "E");
+        beauty += Rgb{c["rgb"][0].get<float>(), c["rgb"][1].get<float>(), c["rgb"][2].get<float>()};
+    }
+    CHECK(sawMirror);
+    CHECK(e["sums"][0]["layer"] == "beauty");
+    CHECK(e["sums"][0]["rgb"][1].get<float>() == doctest::Approx(beauty.g));
+
+    // The automaton, drawn by Graphviz, with one node per live state titled by its number.
+    const auto svg = fixture.client()->Get("/api/automaton.svg");
+    REQUIRE(svg);
+    REQUIRE(svg->status == 200);
+    CHECK(svg->get_header_value("Content-Type") == "image/svg+xml");
+    CHECK(std::regex_search(svg->body, std::regex("<g id=\"node\\d+\" class=\"node\">\\s*<title>0</title>")));
+}
+
+TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and nothing is lost") {
+    ServerFixture fixture("lecture-room.toml");
+    const auto put = fixture.put(settingsFor(32, 24, 1));
+    REQUIRE(put);
+    REQUIRE(put->status == 200);
+    const json before = json::parse(fixture.client()->Get("/api/settings")->body)["settings"];
+
+    struct Case {
+        std::string body;
+        int status;
+        std::string field;
+        std::string message;  // a regex the error must contain
+    };
+    const std::vector<Case> cases{
+        {"{\"spp\": 4", 400, "", "malformed JSON"},
+        {"[1, 2]", 400, "", "expected a JSON object"},
+        {"{\"colour\": 1}", 400, "colour", "unknown field; expected one of integrator, spp"},
+        {"{\"width\": 0}", 400, "width", "width: expected an integer 1\\.\\.4096, got 0"},
+        {"{\"width\": 1000000000}", 400, "width", "expected an integer 1\\.\\.4096, got 1000000000"},
+        {"{\"height\": 1e9}", 400, "height", "expected an integer 1\\.\\.4096"},
+        {"{\"spp\": \"many\"}", 400, "spp", "spp: expected an integer 1\\.\\.4096, got \"many\""},
+        {"{\"spp\": -3}", 400, "spp", "got -3"},
+        {"{\"maxDepth\": 65}", 400, "maxDepth", "0\\.\\.64"},
+        {"{\"integrator\": \"magic\"}", 400, "integrator", "unknown integrator \"magic\"; expected one of raycast, whitted, path"},
+        {"{\"lpes\": {}}", 400, "lpes", "expected an array"},
+        {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"EL\", \"extra\": 1}]}", 400, "lpes[0].extra", "unknown field"},
+        {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"E(D|G L\"}]}", 400, "lpes[0].expression",
+         "a: LPE syntax error at column 8: expected '\\)'"},
+        {"{\"lpes\": [{\"name\": \"ok\", \"expression\": \"EL\"}, {\"name\": \"key\", \"expression\": \"E.*<L'kee'>\"}]}", 400,
+         "lpes[1].expression", "unknown label \"kee\". did you mean \"key\""},
+        {"{\"lpes\": [{\"name\": \"rest\", \"expression\": \"EL\"}]}", 400, "lpes", "reserved"},
+        {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"E{2000000}L\"}]}", 400, "lpes", ""},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.body);
+        const auto r = fixture.client()->Put("/api/settings", c.body, "application/json");
+        REQUIRE(r);
+        CHECK(r->status == c.status);
+        const json error = json::parse(r->body);
+        CHECK(error["error"].is_string());
+        CHECK(error.value("field", std::string()) == c.field);
+        CHECK(std::regex_search(error["error"].get<std::string>(), std::regex(c.message)));
+    }
+    // The syntax error's column: the end of "E(D|G L", where ')' was expected (0-based offset 7).
+    const auto syntax = fixture.put({{"lpes", {{{"name", "a"}, {"expression", "E(D|G L"}}}}});
+    REQUIRE(syntax);
+    const json error = json::parse(syntax->body);
+    CHECK(error["column"] == 7);
+    CHECK(error["expression"] == "E(D|G L");
+
+    auto c = fixture.client();
+    // A body over the limit.
+    const auto huge = c->Put("/api/settings", std::string(200 * 1024, ' '), "application/json");
+    REQUIRE(huge);
+    CHECK(huge->status == 413);
+    // Paths are never file paths.
+    for (const char* path : {"/../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/etc/passwd", "/api/../../etc/passwd",
+                             "/index.html", "/api/image/../../etc/passwd.png"}) {
+        CAPTURE(path);
+        const auto r = c->Get(path);
+        REQUIRE(r);
+        CHECK(r->status == 404);
+        CHECK(r->body.find("root:") == std::string::npos);
+    }
+    const std::vector<std::pair<std::string, int>> gets{
+        {"/api/image/nosuchlayer.png", 404},     {"/api/image/beauty.png?exposure=bright", 400},
+        {"/api/image/beauty.png?exposure=1e9", 400}, {"/api/image/beauty.png?size=2", 400},
+        {"/api/explain?x=32&y=0", 400},           {"/api/explain?x=-1&y=0", 400},
+        {"/api/explain?x=1", 400},                {"/api/explain?x=1.5&y=2", 400},
+        {"/api/progress?wait=100", 400},          {"/api/scene?verbose=1", 400},
+    };
+    for (const auto& [path, status] : gets) {
+        CAPTURE(path);
+        const auto r = c->Get(path.c_str());
+        REQUIRE(r);
+        CHECK(r->status == status);
+        CHECK(json::parse(r->body)["error"].is_string());
+    }
+    // Still serving, with the settings it held.
+    const auto after = c->Get("/api/settings");
+    REQUIRE(after);
+    CHECK(after->status == 200);
+    CHECK(json::parse(after->body)["settings"] == before);
+}
+
+TEST_CASE("serve: a change of settings cancels the render in flight") {
+    ServerFixture fixture("lecture-room.toml");
+    // Hours of work at this size and sample count: it can only finish by being cancelled.
+    const auto heavy = fixture.session.update(applySettings(fixture.session.job()->settings,
+                                                            settingsFor(1024, 768, 4096, "path").dump()));
+    const Progress started = fixture.session.waitForProgress(heavy->generation, 0, 60.0);
+    CHECK(started.job->generation == heavy->generation);
+    const auto light = fixture.session.update(applySettings(heavy->settings, settingsFor(16, 12, 1).dump()));
+    CHECK(heavy->cancelled());
+    CHECK_FALSE(light->cancelled());
+    const json done = fixture.waitUntilDone(light->generation, 60.0);
+    CHECK(done["settings"]["width"] == 16);
+    CHECK(fixture.session.progress().job == light);
+}
+
+TEST_CASE("serve: concurrent requests") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto put = fixture.put(settingsFor(32, 24, 4));
+    REQUIRE(put);
+    fixture.waitUntilDone(json::parse(put->body)["generation"].get<std::uint64_t>());
+    std::atomic<int> unexpected{0}, answered{0};
+    std::vector<std::thread> clients;
+    for (int t = 0; t < 6; ++t) {
+        clients.emplace_back([&, t] {
+            auto c = fixture.client();
+            for (int i = 0; i < 15; ++i) {
+                httplib::Result r;
+                int expected = 200;
+                switch ((t + i) % 5) {
+                    case 0: r = c->Get("/api/explain?x=16&y=12"); break;
+                    case 1: r = c->Get("/api/image/beauty.png"); break;
+                    case 2: r = c->Get("/api/progress"); break;
+                    case 3:
+                        r = c->Put("/api/settings", settingsFor(32, 24, 1 + (t + i) % 3).dump(), "application/json");
+                        break;
+                    default:
+                        r = c->Put("/api/settings", "{\"width\": 0}", "application/json");
+                        expected = 400;
+                }
+                // Images may be briefly missing while a new render has no pass yet.
+                if (!r || (r->status != expected && !(r->status == 503 && (t + i) % 5 == 1))) ++unexpected;
+                ++answered;
+            }
+        });
+    }
+    for (auto& thread : clients) thread.join();
+    CHECK(unexpected == 0);
+    CHECK(answered == 90);
+    const auto last = fixture.client()->Get("/api/settings");
+    REQUIRE(last);
+    CHECK(last->status == 200);
+}
