@@ -38,14 +38,10 @@ lpe::Event toLpeEvent(const Scene& scene, const PathEvent& e) {
     return event;
 }
 
-// World position of a path vertex, where the renderer records one (PathEvent::position).
-template <class Event>
-std::optional<Vec3> positionOf(const Event& event) {
-    if constexpr (requires { event.position; }) {
-        return Vec3(event.position);
-    } else {
-        return std::nullopt;
-    }
+// World position of a path vertex (PathEvent::position). The ambient term comes from nowhere.
+std::optional<Vec3> positionOf(const PathEvent& event) {
+    if (event.subject == Subject::Ambient) return std::nullopt;
+    return event.position;
 }
 
 json point(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
