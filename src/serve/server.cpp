@@ -169,10 +169,10 @@ void Server::routes() {
         const Progress p = req.has_param("generation")
                                ? session_.progressOf(static_cast<std::uint64_t>(numberParameter(req, "generation", 0.0, 0.0, 1e15)))
                                : session_.progress();
-        if (!p.image) throw RequestError(503, "", "no image yet: the first pass is still rendering");
-        const auto& names = p.image->layerNames();
+        const std::vector<std::string> names = p.job->aovs.layerNames();
         const auto layer = std::find(names.begin(), names.end(), req.matches[1].str());
         if (layer == names.end()) throw RequestError(404, "layer", "no layer \"" + req.matches[1].str() + "\" in this render");
+        if (!p.image) throw RequestError(503, "", "no image yet: the first pass is still rendering");
         const auto png = encodePng(*p.image, static_cast<std::size_t>(layer - names.begin()),
                                    static_cast<float>(std::exp2(exposure)));
         res.set_header("Cache-Control", "no-store");

@@ -142,14 +142,14 @@ std::shared_ptr<const Job> Session::update(const Settings& settings) {
         std::lock_guard lock(mutex_);
         if (stopping_) throw RequestError(503, "", "the server is stopping");
         if (job_->settings == settings) return job_;
-        generation = job_->generation + 1;
+        generation = ++lastGeneration_;
     }
     std::shared_ptr<Job> next = prepare(settings, generation);  // outside the lock: compiling takes time
     {
         std::lock_guard lock(mutex_);
         if (stopping_) throw RequestError(503, "", "the server is stopping");
-        // Two updates racing: the later generation wins, whichever finished preparing first.
-        if (job_->generation >= next->generation) return job_;
+        // Two updates racing: the one that asked later wins, whichever finished preparing first.
+        if (job_->generation > next->generation) return job_;
         job_->cancel();
         job_ = next;
     }

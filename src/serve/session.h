@@ -103,6 +103,7 @@ private:
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;
     std::shared_ptr<Job> job_;
+    std::uint64_t lastGeneration_ = 1;  // handed out in the order updates arrive
     Progress progress_;
     Progress previous_;  // the last progress with an image, of an older generation
     bool stopping_ = false;
