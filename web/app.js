@@ -199,7 +199,10 @@ function showProgress(p) {
     ? `rendering ${s.width}×${s.height} with ${s.integrator}…`
     : `${s.integrator}, ${s.width}×${s.height}: pass ${p.passes}, ${p.samples} spp of ${s.spp}` +
       `${p.done ? " (done)" : "…"} in ${p.seconds.toFixed(2)} s`;
-  if (p.passes > 0) {
+  if (p.passes === 0) {
+    $("sum-check").className = "";
+    $("sum-check").textContent = "";
+  } else {
     const ok = p.sumError <= 1e-4;
     $("sum-check").className = ok ? "ok" : "off";
     $("sum-check").textContent = ok
@@ -281,6 +284,7 @@ function drawExplanation() {
     return row;
   });
   $("explain-table").tBodies[0].replaceChildren(...rows);
+  $("explain-table").dataset.generation = state.explained.generation;
   $("sums-table").tBodies[0].replaceChildren(...state.explained.sums.map((s) => {
     const rgb = element("td", { class: "mono" });
     rgb.append(swatch(s.rgb), formatRgb(s.rgb));

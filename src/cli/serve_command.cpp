@@ -5,6 +5,7 @@
 
 #include <array>
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -36,6 +37,9 @@ void onStopSignal(int) {
     [[maybe_unused]] const ssize_t ignored = ::write(stopPipe[1], &byte, 1);
 }
 
+// Ctrl-C must stop the server within a second (docs/serve.md).
+constexpr double kStopWaitSeconds = 0.25;
+
 bool isLoopback(const std::string& host) { return host == "127.0.0.1" || host == "localhost" || host == "::1"; }
 
 void openBrowser(const std::string& url) {
@@ -63,11 +67,14 @@ void run(const ServeCommand& command) {
     if (::pipe(stopPipe) != 0) throw std::runtime_error("pipe failed");
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
+    bool workerStopped = true;
     std::jthread stopper([&] {
         char byte = 0;
         while (::read(stopPipe[0], &byte, 1) < 0 && errno == EINTR) {
         }
-        session.stop();  // cancels the render in flight
+        // Cancels the render in flight, which stops at its next pixel; a renderer still building
+        // its BVH cannot be interrupted, and is not waited for.
+        workerStopped = session.stopWithin(kStopWaitSeconds);
         server.stop();
     });
 
@@ -81,6 +88,8 @@ void run(const ServeCommand& command) {
     stopper.join();
     std::printf("lightpath serve: stopped\n");
     std::fflush(stdout);
+    // Nothing is left to save: end the process rather than wait for a renderer under construction.
+    if (!workerStopped) std::quick_exit(kExitOk);
 }
 
 }  // namespace

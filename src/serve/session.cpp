@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "cli/render_setup.h"
 #include "lpe/error.h"
@@ -79,14 +80,19 @@ Session::Session(Scene scene, std::string scenePath) : scene_(std::move(scene)),
 
 Session::~Session() { stop(); }
 
-void Session::stop() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
-        if (job_) job_->cancel();
-    }
+void Session::stop() { stopWithin(std::numeric_limits<double>::infinity()); }
+
+bool Session::stopWithin(double seconds) {
+    std::unique_lock lock(mutex_);
+    stopping_ = true;
+    if (job_) job_->cancel();
     changed_.notify_all();
-    if (worker_.joinable() && worker_.get_id() != std::this_thread::get_id()) worker_.join();
+    const auto finished = [this] { return workerDone_; };
+    if (std::isinf(seconds)) changed_.wait(lock, finished);
+    else if (!changed_.wait_for(lock, std::chrono::duration<double>(seconds), finished)) return false;
+    lock.unlock();
+    if (worker_.joinable()) worker_.join();
+    return true;
 }
 
 std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t generation) const {
@@ -193,6 +199,16 @@ void Session::publish(const Progress& progress) {
 }
 
 void Session::work() {
+    struct Done {  // however the loop ends
+        Session& session;
+        ~Done() {
+            {
+                std::lock_guard lock(session.mutex_);
+                session.workerDone_ = true;
+            }
+            session.changed_.notify_all();
+        }
+    } done{*this};
     std::shared_ptr<Job> rendered;
     while (true) {
         std::shared_ptr<Job> job;

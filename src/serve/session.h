@@ -90,6 +90,10 @@ public:
 
     // Stops the worker (cancelling its render); later updates are refused.
     void stop();
+    // The same, but waits at most `seconds` for the worker: building a renderer's acceleration
+    // structure cannot be cancelled. Returns false if the worker is still busy (then only process
+    // exit ends it; the destructor would wait).
+    bool stopWithin(double seconds);
 
 private:
     std::shared_ptr<Job> prepare(const Settings& settings, std::uint64_t generation) const;
@@ -107,6 +111,7 @@ private:
     Progress progress_;
     Progress previous_;  // the last progress with an image, of an older generation
     bool stopping_ = false;
+    bool workerDone_ = false;
     std::thread worker_;
 };
 

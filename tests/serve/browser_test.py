@@ -111,16 +111,20 @@ class Chromium:
         print(f"  ok: {what}")
         return value
 
-    def type_into(self, selector, text):
-        self.evaluate(f"(() => {{ const e = document.querySelector({json.dumps(selector)}); e.focus(); e.select(); return true; }})()")
+    def type_into(self, element, text):
+        """Selects the text of the input `element` (a JS expression) and types `text` over it."""
+        self.evaluate(f"(() => {{ const e = {element}; e.focus(); e.select(); return true; }})()")
         self.call("Input.insertText", text=text)
 
     def click(self, x, y):
         for kind in ("mousePressed", "mouseReleased"):
             self.call("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left", clickCount=1)
 
-    def screenshot(self, path):
-        data = self.call("Page.captureScreenshot", format="png")["data"]
+    def screenshot(self, path, scale=1.0):
+        """The whole page, its CSS pixels scaled by `scale`."""
+        size = self.call("Page.getLayoutMetrics")["cssContentSize"]
+        clip = {"x": 0, "y": 0, "width": size["width"], "height": size["height"], "scale": scale}
+        data = self.call("Page.captureScreenshot", format="png", captureBeyondViewport=True, clip=clip)["data"]
         with open(path, "wb") as f:
             f.write(base64.b64decode(data))
         print(f"  wrote {path}")
@@ -184,12 +188,12 @@ def main():
 
         print("type an LPE and see its tile change")
         before = browser.evaluate(tile_hash("raycast"))
-        browser.type_into(f"{tile('raycast')} .expression", "E.*<L'key'>")
+        browser.type_into(f"{tile('raycast')}.querySelector('.expression')", "E.*<L'key'>")
         browser.wait_for(f"(() => {{ const h = {tile_hash('raycast')}; return h !== null && h !== {before}; }})()",
                          "the raycast tile shows the key light's contribution")
 
         print("type a broken LPE and see the caret message")
-        browser.type_into(f"{tile('raytrace')} .expression", "E(D|G L")
+        browser.type_into(f"{tile('raytrace')}.querySelector('.expression')", "E(D|G L")
         message = browser.wait_for(f"(() => {{ const p = {tile('raytrace')}.querySelector('pre.error'); "
                                    "return !p.hidden && p.textContent.includes('^') && p.textContent; })()",
                                    "the syntax error under the raytrace tile")
@@ -197,7 +201,7 @@ def main():
         quoted = next(i for i, line in enumerate(lines) if line.strip() == "E(D|G L")
         caret = lines[quoted + 1].index("^") - lines[quoted].index("E(D|G L")
         assert "column 8" in message and caret == 7, f"the caret is under column {caret + 1}: {message!r}"
-        browser.type_into(f"{tile('raytrace')} .expression", "ES+(D|G)L")
+        browser.type_into(f"{tile('raytrace')}.querySelector('.expression')", "ES+(D|G)L")
         browser.wait_for(f"{tile('raytrace')}.querySelector('pre.error').hidden", "the error is gone once fixed")
 
         print("click a mirror pixel and see a path through a mirror reflection")
@@ -216,8 +220,6 @@ def main():
         browser.evaluate("document.querySelector('#explain-table tbody tr').click(), true")
         browser.wait_for("document.getElementById('copied').textContent.startsWith('copied: E ')", "a path's LPE copied")
         browser.screenshot(os.path.join(args.out, "serve-explain.png"))
-        if args.screenshot:
-            browser.screenshot(args.screenshot)
 
         print("switch to the path tracer")
         browser.evaluate("(() => { const s = document.getElementById('integrator'); s.value = 'path'; "
@@ -225,6 +227,21 @@ def main():
         browser.wait_for("/^path, 640×480: pass [1-9]/.test(document.getElementById('status').textContent)",
                          "a pass of the path tracer")
         browser.screenshot(os.path.join(args.out, "serve-path.png"))
+
+        if args.screenshot:
+            print("the README's screenshot: the classes set, a mirror pixel's paths, one selected")
+            browser.evaluate("document.querySelector('button[data-preset=classes]').click(), true")
+            browser.wait_for("/\\(done\\)/.test(document.getElementById('status').textContent) && "
+                             "document.getElementById('sum-check').className === 'ok'", "the classes set rendered")
+            # The page's own click handler (a click there now lands on the drawn path and selects it).
+            browser.evaluate(f"explain({x}, {y}).then(() => true)")
+            browser.wait_for("document.querySelectorAll('#explain-table tbody tr').length > 0 && "
+                             "document.getElementById('explain-table').dataset.generation === String(state.generation)",
+                             "the pixel explained again")
+            browser.evaluate("[...document.querySelectorAll('#explain-table tbody tr')].find(r => "
+                             "r.querySelector('td[title]').title.includes(\"RS'mirror-ball'\")).click(), true")
+            browser.wait_for("document.querySelector('#automaton g.node.on-path')", "the selected path's states")
+            browser.screenshot(args.screenshot, scale=0.7)  # small enough for the repository
 
         browser.call("Runtime.evaluate", expression="1")  # collect events still queued
         if browser.errors:

@@ -16,7 +16,7 @@ args = parser.parse_args()
 
 server = ServeProcess(args.lightpath, args.scene)
 try:
-    status, page = server.request("GET", "/")
+    status, _, page = server.request("GET", "/")
     assert status == 200 and b"<script" in page, status
     # A render of hours, and a client waiting in a long poll for its next pass.
     status, answer = server.json("PUT", "/api/settings", '{"integrator": "path", "spp": 4096, "width": 1024, "height": 768}')
