@@ -108,6 +108,13 @@ Settings applySettings(const Settings& current, const std::string& body) {
             settings.lpes = expressionsOf(value);
         }
     }
+    const std::int64_t pixelLayers =
+        std::int64_t{settings.width} * settings.height * static_cast<std::int64_t>(settings.lpes.size() + 2);
+    if (pixelLayers > kMaxPixelLayers)
+        throw RequestError(400, "width,height",
+                           "width,height: " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                               " pixels times " + std::to_string(settings.lpes.size() + 2) + " layers is " +
+                               std::to_string(pixelLayers) + "; expected at most " + std::to_string(kMaxPixelLayers));
     return settings;
 }
 

@@ -4,6 +4,7 @@
 // (docs/serve.md) and checked against the limits below before anything is rendered.
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,11 @@
 
 namespace lightpath::serve {
 
-// Bounds on one session's work: a render is at most kMaxSide^2 pixels at kMaxSamples samples.
+// Bounds on one session's work: each side at most kMaxSide pixels, at most kMaxPixelLayers
+// pixels times layers (beauty, AOVs, rest: 200 MB of RGB floats per image the session holds), at
+// most kMaxSamples samples per pixel.
 inline constexpr int kMaxSide = 4096;
+inline constexpr std::int64_t kMaxPixelLayers = std::int64_t{2048} * 2048 * 4;
 inline constexpr int kMaxSamples = 4096;
 inline constexpr std::size_t kMaxExpressions = 16;
 inline constexpr std::size_t kMaxExpressionLength = 400;
