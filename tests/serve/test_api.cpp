@@ -343,6 +343,19 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
     CHECK(json::parse(after->body)["settings"] == before);
 }
 
+TEST_CASE("serve: warnings for an expression that never matches and for overlapping ones") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto r = fixture.put({{"lpes", json::parse(R"([{"name": "never", "expression": "ED"},
+        {"name": "all", "expression": "E.*L"}, {"name": "direct", "expression": "E(D|G)L"}])")}});
+    REQUIRE(r);
+    REQUIRE(r->status == 200);
+    const json warnings = json::parse(r->body)["warnings"];
+    CAPTURE(warnings.dump());
+    // "ED" ends at a surface, never at a light; "E.*L" and "E(D|G)L" share EDL.
+    CHECK(warnings == json::array({"AOVs all and direct overlap: both accept EDL (E RD L); their sum counts such light twice",
+                                   "never: ED never matches: it accepts no path from the eye (E) to a light (L)"}));
+}
+
 TEST_CASE("serve: a change of settings cancels the render in flight") {
     ServerFixture fixture("lecture-room.toml");
     // Hours of work at this size and sample count: it can only finish by being cancelled.
