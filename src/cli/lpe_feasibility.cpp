@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "integrators/event_symbols.h"
+#include "integrators/path_record.h"
 #include "lpe/automaton.h"
 #include "lpe/path_string.h"
 #include "lpe/reading.h"
@@ -13,7 +14,7 @@ namespace {
 using lpe::EventType;
 
 const std::vector<EventType> kLightEvents = {EventType::Emitter};
-const std::vector<EventType> kObjectEvents = {EventType::Reflection, EventType::Transmission, EventType::ObjectEmission};
+const std::vector<EventType> kObjectEvents = {EventType::Reflection, EventType::Transmission, kObjectEmission};
 
 // The same as kRenderedPaths with volume events let in: to tell "needs V" from other reasons.
 constexpr const char* kPathsWithVolumes = "E<[RTV][DGSs]>*[LOB]";
@@ -71,7 +72,9 @@ std::optional<std::string> misplacedLabel(const std::string& expression, const s
         std::vector<std::string> all = languages;
         all.push_back(expression);
         if (!possible(all, freed)) continue;
-        const bool isLight = placed->second == kLightEvents;
+        const bool isLight =
+            std::find(placed->second.begin(), placed->second.end(), EventType::Emitter) != placed->second.end() &&
+            std::find(placed->second.begin(), placed->second.end(), EventType::Reflection) == placed->second.end();
         freed[label] = isLight ? kObjectEvents : kLightEvents;
         const std::string is = isLight ? "a light" : "an object";
         const std::string wanted = possible(all, freed) ? (isLight ? ", not an object" : ", not a light") : "";
@@ -86,15 +89,22 @@ std::optional<std::string> misplacedLabel(const std::string& expression, const s
 
 lpe::LabelPlacement labelPlacement(const Scene& scene) {
     lpe::LabelPlacement placement;
-    placement[kAmbientLabel] = kLightEvents;
-    for (const PointLight& light : scene.lights)
-        if (!light.name.empty()) placement[light.name] = kLightEvents;
-    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        auto& events = placement[scene.labelOf(i)];
-        // A name shared by a light and an object may be on either's events.
-        for (const EventType type : kObjectEvents) {
+    const auto add = [&placement](const std::string& label, std::vector<EventType> types) {
+        auto& events = placement[label];
+        // A label shared by several things (a material's name, a light's) may be on any of their events.
+        for (const EventType type : types)
             if (std::find(events.begin(), events.end(), type) == events.end()) events.push_back(type);
-        }
+    };
+    add(kAmbientLabel, kLightEvents);
+    for (const PointLight& light : scene.lights)
+        if (!light.name.empty()) add(light.name, kLightEvents);
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        std::vector<EventType> events = {EventType::Reflection, EventType::Transmission};
+        // A [[lights]] quad or sphere emits as L; another emitting surface as O (path_record.h).
+        if (object.declaredLight) events.push_back(EventType::Emitter);
+        else if (!isBlack(scene.materials[object.material].emission)) events.push_back(kObjectEmission);
+        add(scene.labelOf(i), events);
     }
     return placement;
 }

@@ -13,7 +13,8 @@
 namespace lightpath {
 
 // Which events carry each label of `scene`: a light's name (and "ambient") only L events, an
-// object's label (its name, else its material's) only R, T and O events.
+// object's label (its name, else its material's) R and T events, and L for a [[lights]] quad or
+// sphere, O for another emitting surface.
 lpe::LabelPlacement labelPlacement(const Scene& scene);
 
 // Nothing when `expression` can accept some path `integrator` produces (in `scene`, if given);
