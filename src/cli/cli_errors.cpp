@@ -74,18 +74,24 @@ CLI::Validator oneOf(std::vector<std::string> names) {
 std::string parseErrorMessage(const CLI::App& app, const CLI::ParseError& error) {
     std::string message = "lightpath: ";
     message += error.what();
+    const CLI::App& where = deepest(app);
+    // The words the parser could not place: those ExtrasError names ("The following argument(s)
+    // was/were not expected: a b"), else what was left over ("lightpath rendr": a subcommand is
+    // required, and rendr was not one).
+    std::vector<std::string> words;
     if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
-        // "The following argument(s) was/were not expected: a b": suggest for each word.
         const std::string text = error.what();
         const std::size_t colon = text.find(": ");
-        std::istringstream words(colon == std::string::npos ? "" : text.substr(colon + 2));
-        const CLI::App& where = deepest(app);
-        for (std::string word; words >> word;) {
-            const std::string bare = word.substr(0, word.find('='));
-            if (const auto match = nearest(bare, candidatesOf(where))) {
-                message += "; did you mean " + *match + "?";
-                break;
-            }
+        std::istringstream list(colon == std::string::npos ? "" : text.substr(colon + 2));
+        for (std::string word; list >> word;) words.push_back(word);
+    } else {
+        words = where.remaining();
+        if (!words.empty()) message += " (got " + words.front() + ")";
+    }
+    for (const std::string& word : words) {
+        if (const auto match = nearest(word.substr(0, word.find('=')), candidatesOf(where))) {
+            message += "; did you mean " + *match + "?";
+            break;
         }
     }
     return message + "\nRun with --help for more information.";
