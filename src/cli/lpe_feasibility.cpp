@@ -27,6 +27,19 @@ bool possible(const std::vector<std::string>& expressions, const lpe::LabelPlace
 
 std::string quotedExpression(const std::string& text) { return "'" + text + "'"; }
 
+// Is there a `|` outside every group and label? Then appending an event needs parentheses.
+bool alternatesAtTop(const std::string& text) {
+    int depth = 0;
+    bool inLabel = false;
+    for (const char c : text) {
+        if (c == '\'') inLabel = !inLabel;
+        if (inLabel) continue;
+        depth += (c == '(' || c == '[' || c == '<') ? 1 : (c == ')' || c == ']' || c == '>') ? -1 : 0;
+        if (c == '|' && depth == 0) return true;
+    }
+    return false;
+}
+
 // The integrators whose language does hold a path of `expression`.
 std::string integratorsThatCan(const std::string& expression, const lpe::LabelPlacement& placement) {
     std::string names;
@@ -50,7 +63,7 @@ std::string neverRendered(const std::string& expression) {
     if (!possible({expression, kEndsAtEmitter})) {
         return "never reaches a light: every path ends at a light, an emitting object or the background "
                "(L matches all three), e.g. write " +
-               quotedExpression((expression.find('|') == std::string::npos ? expression : "(" + expression + ")") + "L");
+               quotedExpression((alternatesAtTop(expression) ? "(" + expression + ")" : expression) + "L");
     }
     if (possible({expression, kPathsWithVolumes})) {
         return "needs a volume event (V), and lightpath renders no volumes: V never occurs";
