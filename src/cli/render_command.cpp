@@ -95,6 +95,7 @@ void run(const RenderCommand& command) {
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
+    command.setup.warnEmptyAovs(result.film, aovs, scene);
     if (command.stats) {
         printStats(result.stats);
         printAcceleratorStats(command.setup.accel, result.stats.accelerator);
