@@ -40,7 +40,7 @@ void RenderSetup::addOptions(CLI::App& command) {
     std::vector<std::string> presets;
     for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
     presets.emplace_back("none");
-    command.add_option("--aovs", aovs, "Predefined AOV set: classes (DESIGN.md's partition), taxonomy (the lecture's four "
+    command.add_option("--aovs", aovs, "Predefined AOV set: classes (the partition of docs/design.md), taxonomy (the lecture's four "
                                        "methods, overlapping) or none")
         ->check(oneOf(presets));
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
@@ -213,7 +213,7 @@ RenderOptions RenderSetup::renderOptions() const {
     options.samplesPerPixel = samplesPerPixel;
     options.threads = threads;
     options.seed = seed;
-    parseSamplerKind(sampler, options.sampler);  // validated by the option's IsMember check
+    parseSamplerKind(sampler, options.sampler);  // validated by the option's oneOf check
     options.targetError = targetError;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;
