@@ -157,6 +157,8 @@ std::string toExpressionString(const Path& path) {
     for (const Event& event : path) {
         if (!text.empty()) text += ' ';
         const std::string label = event.label.empty() ? "" : "'" + event.label + "'";
+        // A camera, light, object emission or background matches whatever scattering it claims
+        // (Automaton::symbol), so none is printed: a renderer records None there.
         if (scatters(event.type)) {
             text += std::string("<") + letter(event.type) + letter(event.scatter) + label + ">";
         } else if (!label.empty()) {

@@ -25,7 +25,9 @@ std::string toCompactString(const Path& path);
 // path R S: one word without spaces or quotes is compact. Labels cannot contain '.
 std::string toTupleString(const Path& path);
 // "E <RS> <RD'floor'> <L.'key'>": an expression that, pasted into --lpe, matches exactly this path
-// (each event as an OSL tuple; OSL's <L.'key'> for labelled non-scattering events). Lossless too.
+// (each event as an OSL tuple; OSL's <L.'key'> for labelled non-scattering events). Reads back
+// through parsePath losslessly for every path a renderer records (camera, lights, object emission
+// and background with Scatter::None).
 std::string toExpressionString(const Path& path);
 // The compact form when it loses nothing, the tuple form otherwise: for reports and examples.
 std::string toDisplayString(const Path& path);

@@ -245,7 +245,7 @@ void addLpeCommand(CLI::App& app) {
         "reading it used.\n\n"
         "Examples:\n"
         "  lightpath lpe match 'E(D|G)L' EDL ESDL        match EDL, no match ESDL\n"
-        "  lightpath lpe match 'ES*<L'\\''key'\\''>' \"E RS L'key'\" \"E L'fill'\"\n"
+        "  lightpath lpe match 'ES*<L.'\\''key'\\''>' \"E RS L'key'\" \"E L'fill'\"\n"
         "  lightpath lpe match '<TS>+L' \"TS TS L\" \"RS L\"   refraction only");
     matchCommand->callback([match] { reportingErrors([&] { runMatch(*match); }); });
 
@@ -280,7 +280,7 @@ void addLpeCommand(CLI::App& app) {
         "Examples:\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' | dot -Tsvg > whitted.svg\n"
         "  lightpath lpe dot --set classes -o classes.dot\n"
-        "  lightpath lpe dot key='E.*<L'\\''key'\\''>' fill='E.*<L'\\''fill'\\''>'");
+        "  lightpath lpe dot key='E.*<L.'\\''key'\\''>' fill='E.*<L.'\\''fill'\\''>'");
     dotCommand->callback([dot] { reportingErrors([&] { runDot(*dot); }); });
 }
 

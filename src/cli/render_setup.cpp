@@ -213,7 +213,7 @@ RenderOptions RenderSetup::renderOptions() const {
     options.samplesPerPixel = samplesPerPixel;
     options.threads = threads;
     options.seed = seed;
-    parseSamplerKind(sampler, options.sampler);  // validated by the option's IsMember check
+    parseSamplerKind(sampler, options.sampler);  // validated by the option's oneOf check
     options.targetError = targetError;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;
