@@ -5,7 +5,7 @@
 const SVG = "http://www.w3.org/2000/svg";
 // Path vertices and the segments leaving them, coloured by event (Heckbert's letters).
 const EVENT_COLOURS = { E: "#ffffff", RD: "#4caf50", TD: "#4caf50", RG: "#ffc107", TG: "#ffc107",
-  RS: "#29b6f6", TS: "#ab47bc", Rs: "#9e9e9e", Ts: "#9e9e9e", L: "#ff5722", B: "#5c6bc0" };
+  RS: "#29b6f6", TS: "#ab47bc", Rs: "#9e9e9e", Ts: "#9e9e9e", L: "#ff5722", O: "#ff9800", B: "#5c6bc0" };
 const colourOf = (event) => EVENT_COLOURS[event] || "#e0e0e0";
 
 const state = {
@@ -109,7 +109,8 @@ function showWarnings(warnings) {
   list.replaceChildren(...warnings.map((w) => element("li", {}, "warning: " + w)));
   for (const tile of document.querySelectorAll(".tile.aov")) {
     const name = tile.querySelector(".name").value;
-    const mine = warnings.filter((w) => w.startsWith(name + ": "));
+    // The command line's warnings name an AOV as "AOV name (...)" or "--lpe name: ...".
+    const mine = warnings.filter((w) => w.startsWith(`AOV ${name} `) || w.startsWith(`--lpe ${name}:`));
     const line = tile.querySelector(".warning");
     line.textContent = mine.join(" ");
     line.hidden = mine.length === 0;

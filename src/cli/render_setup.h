@@ -3,18 +3,17 @@
 // options. Every error here is the user's input: it is reported as a CLI::Error with exit code 2.
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "film/aov_set.h"
+#include "film/film.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace lightpath {
-
-// The integrators --integrator accepts, in the order help texts list them.
-const std::vector<std::string>& integratorNames();
 
 struct RenderSetup {
     std::string scenePath;
@@ -31,7 +30,10 @@ struct RenderSetup {
     bool noBeauty = false;
     bool noSkip = false;
     std::string accel = "bvh";       // bvh, embree or none (brute force)
-    bool quiet = false;              // no progress bar
+    bool quiet = false;              // no progress bar, no warnings
+    // `serve`: an --lpe that no path of the integrator can fill is a warning (its tile stays black
+    // while the lecturer switches integrators), not an error.
+    bool neverFilledIsWarning = false;
     std::string robust = "on";       // on: robust numerics (default); off: the lecture's naive ones
     std::string sphereTest, triangleTest, rayOffset;  // per-method choices; empty: as --robust says
     float epsilon = 1e-4f;           // t_min of --ray-offset epsilon
@@ -41,9 +43,15 @@ struct RenderSetup {
     Scene loadScene() const;                           // with --resolution applied
     std::vector<lpe::NamedExpression> expressions() const;
     // Warns when AOVs overlap (on stderr, or into `warnings` when given); refuses a label that
-    // names nothing in `scene`.
+    // names nothing in `scene`. Refuses an AOV that can never be filled (cli/lpe_feasibility.h).
     AovSet buildAovSet(const Scene& scene, std::vector<std::string>* warnings = nullptr) const;
     RenderOptions renderOptions() const;
+    // After a render: warns of each AOV that could have received light but got none.
+    void warnEmptyAovs(const Film& film, const AovSet& aovs, const Scene& scene) const;
+
+private:
+    void refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const Scene& scene,
+                           const std::function<void(const std::string&)>& warn) const;
 };
 
 }  // namespace lightpath

@@ -61,25 +61,6 @@ json projectedSegment(const PinholeCamera& camera, Vec3 a, Vec3 b) {
 
 }  // namespace
 
-std::string exactExpression(const lpe::Path& path) {
-    std::string text;
-    for (const lpe::Event& e : path) {
-        std::string event;
-        const bool scatters = e.type == lpe::EventType::Reflection || e.type == lpe::EventType::Transmission;
-        if (e.type == lpe::EventType::Camera) event = "E";
-        else if (e.type == lpe::EventType::Background) event = "B";
-        else if (scatters) event = std::string("<") + lpe::letter(e.type) + lpe::letter(e.scatter);
-        else event = "<L";  // an emitter, not the background
-        if (!e.label.empty()) {
-            if (event.front() != '<') event = "<" + event + ".";
-            event += "'" + e.label + "'";
-        }
-        if (event.front() == '<') event += ">";
-        text += (text.empty() ? "" : " ") + event;
-    }
-    return text;
-}
-
 json explainPixel(const Job& job, int x, int y) {
     const int width = job.settings.width, height = job.settings.height;
     if (x < 0 || y < 0 || x >= width || y >= height)
@@ -133,7 +114,7 @@ json explainPixel(const Job& job, int x, int y) {
         }
         contributions.push_back({{"compact", lpe::toCompactString(path)},
                                  {"tuple", lpe::toTupleString(path)},
-                                 {"lpe", exactExpression(path)},
+                                 {"lpe", lpe::toExpressionString(path)},
                                  {"rgb", json::array({c.value.r, c.value.g, c.value.b})},
                                  {"aovs", aovs},
                                  {"states", states},

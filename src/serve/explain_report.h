@@ -11,7 +11,4 @@ namespace lightpath::serve {
 // Throws RequestError (400) for a pixel outside the job's image.
 nlohmann::json explainPixel(const Job& job, int x, int y);
 
-// The pasteable LPE that accepts exactly this path: "E <RD'floor'> <L'key'>".
-std::string exactExpression(const lpe::Path& path);
-
 }  // namespace lightpath::serve

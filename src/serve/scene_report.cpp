@@ -4,7 +4,8 @@
 #include <cctype>
 #include <limits>
 
-#include "cli/render_setup.h"
+#include "film/aov_presets.h"
+#include "integrators/registry.h"
 #include "integrators/event_symbols.h"
 #include "lpe/analysis.h"
 #include "serve/session.h"
@@ -34,19 +35,20 @@ std::string identifierFor(const std::string& label, const std::vector<lpe::Named
 
 std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
     std::vector<lpe::NamedExpression> set;
-    const auto add = [&](const std::string& label) {
+    // Lights are L events, emitting objects O events (docs/lpe.md), in OSL's spelling <L.'key'>.
+    const auto add = [&](char type, const std::string& label) {
         if (label.find('\'') != std::string::npos) return;  // cannot be quoted in an LPE
-        set.push_back({identifierFor(label, set), "E.*<L'" + label + "'>"});
+        set.push_back({identifierFor(label, set), std::string("E.*<") + type + ".'" + label + "'>"});
     };
-    if (!isBlackRgb(scene.ambient)) add(kAmbientLabel);
+    if (!isBlackRgb(scene.ambient)) add('L', kAmbientLabel);
     for (const PointLight& light : scene.lights)
-        if (!light.name.empty()) add(light.name);
+        if (!light.name.empty()) add('L', light.name);
     std::vector<std::string> emissive;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
         if (!isBlackRgb(scene.materials[scene.objects[i].material].emission)) emissive.push_back(scene.labelOf(i));
     std::sort(emissive.begin(), emissive.end());
     emissive.erase(std::unique(emissive.begin(), emissive.end()), emissive.end());
-    for (const std::string& label : emissive) add(label);
+    for (const std::string& label : emissive) add('O', label);
     if (!isBlackRgb(scene.background)) set.push_back({identifierFor("background", set), "E.*B"});
     return set;
 }
@@ -59,10 +61,11 @@ std::vector<lpe::NamedExpression> bounceSet() {
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<lpe::NamedExpression>>> presets(const Scene& scene) {
-    return {{"classes", lpe::classesSet()},
-            {"lights", lightGroups(scene)},
-            {"bounces", bounceSet()},
-            {"taxonomy", lpe::taxonomySet()}};
+    std::vector<std::pair<std::string, std::vector<lpe::NamedExpression>>> sets;
+    for (const AovPreset& preset : aovPresets()) sets.emplace_back(preset.name, preset.expressions());
+    sets.emplace_back("lights", lightGroups(scene));
+    sets.emplace_back("bounces", bounceSet());
+    return sets;
 }
 
 json describeScene(const Scene& scene, const std::string& scenePath) {

@@ -9,8 +9,8 @@
 
 namespace lightpath::serve {
 
-// The presets offered by the page: classes (DESIGN.md's partition), one AOV per light, one per
-// number of bounces, and the lecture's taxonomy.
+// The presets offered by the page: the command line's (classes, taxonomy: film/aov_presets.h), one
+// AOV per light, and one per number of bounces.
 std::vector<std::pair<std::string, std::vector<lpe::NamedExpression>>> presets(const Scene& scene);
 
 nlohmann::json describeScene(const Scene& scene, const std::string& scenePath);

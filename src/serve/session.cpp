@@ -19,13 +19,6 @@ std::size_t expressionOf(const std::vector<lpe::NamedExpression>& set, const std
     return set.size();
 }
 
-// An expression that accepts no path from the eye to a light selects nothing, whatever the scene:
-// the page warns about it (e.g. "ED", which never reaches a light).
-bool neverMatches(const std::string& expression) {
-    const lpe::Automaton both = lpe::Automaton::compile({{"x", expression}, {"universe", "E.*L"}});
-    return !both.findShortestPath([](lpe::OutputMask accepts) { return accepts == 3u; });
-}
-
 double maxSumError(const Film& film) {
     double worst = 0.0;
     for (int y = 0; y < film.height(); ++y) {
@@ -117,6 +110,7 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
     for (const auto& e : settings.lpes) setup.lpes.push_back(e.name + "=" + e.expression);
     setup.maxDepth = settings.maxDepth;
     setup.quiet = true;
+    setup.neverFilledIsWarning = true;  // the tile shows black and says why
     std::vector<std::string> warnings;
     std::optional<AovSet> aovs;
     try {
@@ -130,9 +124,6 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
                 field = "lpes[" + std::to_string(i) + "].expression";
         throw RequestError(400, field, message);
     }
-    for (const auto& e : settings.lpes)
-        if (neverMatches(e.expression))
-            warnings.push_back(e.name + ": " + e.expression + " never matches: it accepts no path from the eye (E) to a light (L)");
 
     Scene scene = scene_;
     scene.camera.width = settings.width;

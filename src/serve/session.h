@@ -35,7 +35,7 @@ public:
     const Settings settings;
     const Scene scene;  // the loaded scene at this job's resolution
     const AovSet aovs;
-    const std::vector<std::string> warnings;  // overlaps and never-matching expressions
+    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (cli/render_setup.h)
 
     // One sample through the pixel centre: pass 0, and `explain` (as `lightpath explain` does).
     const Renderer& centreRenderer() const;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "cli/render_setup.h"
-#include "lpe/analysis.h"
+#include "film/aov_presets.h"
+#include "integrators/registry.h"
 #include "integrators/path_record.h"
 #include "serve/request_error.h"
 
@@ -73,7 +73,7 @@ Settings defaultSettings(const Scene& scene) {
     Settings settings;
     settings.width = scene.camera.width;
     settings.height = scene.camera.height;
-    settings.lpes = lpe::classesSet();
+    settings.lpes = classesSet();
     return settings;
 }
 
@@ -90,7 +90,7 @@ Settings applySettings(const Settings& current, const std::string& body) {
         }
         if (key == "integrator") {
             settings.integrator = stringOf(value, key, 64);
-            const auto& names = integratorNames();
+            const auto names = integratorNames();
             if (std::find(names.begin(), names.end(), settings.integrator) == names.end()) {
                 std::string known;
                 for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;

@@ -8,6 +8,7 @@
 #include <regex>
 #include <vector>
 
+#include "film/aov_presets.h"
 #include "lpe/analysis.h"
 #include "lpe/automaton.h"
 #include "lpe/path_string.h"
@@ -101,10 +102,10 @@ TEST_CASE("serve: the page's files and the scene description") {
     CHECK(found);
     std::vector<std::string> presets;
     for (const json& p : s["presets"]) presets.push_back(p["name"]);
-    CHECK(presets == std::vector<std::string>{"classes", "lights", "bounces", "taxonomy"});
+    CHECK(presets == std::vector<std::string>{"classes", "taxonomy", "lights", "bounces"});
     // The light groups: the ambient term, the lamp and the background, each its own AOV.
-    CHECK(s["presets"][1]["lpes"] == json::parse(R"([{"name":"ambient","expression":"E.*<L'ambient'>"},
-        {"name":"lamp","expression":"E.*<L'lamp'>"},{"name":"background","expression":"E.*B"}])"));
+    CHECK(s["presets"][2]["lpes"] == json::parse(R"([{"name":"ambient","expression":"E.*<L.'ambient'>"},
+        {"name":"lamp","expression":"E.*<L.'lamp'>"},{"name":"background","expression":"E.*B"}])"));
 }
 
 TEST_CASE("serve: the bounce preset is a partition, so its AOVs sum to the beauty") {
@@ -146,7 +147,7 @@ TEST_CASE("serve: a render at 1 spp is the renderer's own image, its layers summ
     Scene scene = loadScene(scenePath("mirror-sphere.toml"));
     scene.camera.width = 48;
     scene.camera.height = 36;
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const RenderResult direct = Renderer(scene, aovs, RenderOptions{}).render();
     checkSameAsFilm(image, direct.film);
 
@@ -181,7 +182,7 @@ TEST_CASE("serve: passes refine: the image is the mean of independent jittered p
     Scene scene = loadScene(scenePath("mirror-sphere.toml"));
     scene.camera.width = 40;
     scene.camera.height = 30;
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     RenderOptions options;
     options.integrator = "path";
     options.samplesPerPixel = 4;
@@ -217,7 +218,7 @@ TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton state
     const json e = json::parse(r->body);
     REQUIRE(e["contributions"].size() > 1);
 
-    const lpe::Automaton classes = lpe::Automaton::compile(lpe::classesSet());
+    const lpe::Automaton classes = lpe::Automaton::compile(classesSet());
     const std::regex mirrorEvent("RS'mirror-ball'");
     bool sawMirror = false;
     Rgb beauty{0.0f};
@@ -228,8 +229,8 @@ TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton state
         CHECK(c["compact"] == lpe::toCompactString(path));
         // The AOVs named are the ones whose expressions accept the path (compiled here anew).
         std::vector<std::string> accepting;
-        for (std::size_t o = 0; o < lpe::classesSet().size(); ++o)
-            if (classes.matches(path, o)) accepting.push_back(lpe::classesSet()[o].name);
+        for (std::size_t o = 0; o < classesSet().size(); ++o)
+            if (classes.matches(path, o)) accepting.push_back(classesSet()[o].name);
         if (accepting.empty()) accepting.push_back("rest");
         CHECK(c["aovs"] == json(accepting));
         // The pasteable LPE accepts this path and not the same path ending at another light.
