@@ -242,7 +242,9 @@ function groupContributions(contributions) {
       groups.set(c.tuple, { ...c, rgb: [...c.rgb], count: 1 });
     }
   }
-  return [...groups.values()];
+  // Largest first, as `lightpath explain` sorts them.
+  const luminance = (rgb) => 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+  return [...groups.values()].sort((a, b) => luminance(b.rgb) - luminance(a.rgb));
 }
 
 async function explain(x, y) {
