@@ -47,7 +47,7 @@ bool embreeAvailable() {
 
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
-                             std::vector<TriangleNormals> vertexNormals)
+                             std::vector<TriangleNormals> vertexNormals, unsigned buildThreads)
     : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
       vertexNormals_(std::move(vertexNormals)), numerics_(numerics), accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
@@ -64,11 +64,15 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         for (std::uint32_t i = 0; i < triangles_.size(); ++i)
             primitives.push_back({triangleBounds(triangles_[i]), firstTriangle + i});
     }
-    bvh_ = Bvh(std::move(primitives));
-    slotTriangles_.resize(bvh_.primitiveIds().size());
-    for (std::size_t slot = 0; slot < slotTriangles_.size(); ++slot) {
-        const std::uint32_t id = bvh_.primitiveIds()[slot];
-        if (id >= firstTriangle) slotTriangles_[slot] = triangles_[id - firstTriangle];
+    bvh_ = Bvh(std::move(primitives), buildThreads);
+    if (accelerator_ == Accelerator::Bvh) {
+        const auto ids = bvh_.slotIds();
+        leafTriangles_.resize(ids.size() / kBvhWidth);
+        for (std::size_t slot = 0; slot < ids.size(); ++slot) {
+            if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
+                leafTriangles_[slot / kBvhWidth].set(static_cast<int>(slot % kBvhWidth),
+                                                     triangles_[ids[slot] - firstTriangle]);
+        }
     }
 #ifdef LIGHTPATH_HAS_EMBREE
     if (accelerator_ == Accelerator::Embree && !triangles_.empty())
@@ -106,12 +110,34 @@ std::uint32_t SceneGeometry::ignoredTriangle(const Ray& ray) const {
                : kNoPrimitive;
 }
 
-float SceneGeometry::intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const {
-    const std::uint32_t id = bvh_.primitiveIds()[slot];
-    if (id < spheres_.size() || id == ray.ignoredPrimitive) return intersectPrimitive(ray, id);
-    const Triangle& t = slotTriangles_[slot];
-    return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, sheared, t, ray.tMin)
-                                                          : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
+template <typename Keep>
+void SceneGeometry::intersectLeaf(const Ray& ray, const WatertightRay& sheared, std::uint32_t firstSlot,
+                                  std::uint32_t count, Keep keep) const {
+    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+    const std::uint32_t* ids = bvh_.slotIds().data() + firstSlot;
+    int triangleLanes = 0;
+    for (std::uint32_t lane = 0; lane < count; ++lane) {
+        const std::uint32_t id = ids[lane];
+        if (id >= firstTriangle && !leafTriangles_.empty()) {
+            if (id != ray.ignoredPrimitive) triangleLanes |= 1 << lane;
+        } else {
+            keep(intersectPrimitive(ray, id), id);
+        }
+    }
+    if (triangleLanes == 0) return;
+    const TrianglePack& pack = leafTriangles_[firstSlot / kBvhWidth];
+    if (numerics_.triangle == TriangleTest::Watertight) {
+        for (int lanes = watertightCandidates(pack, triangleLanes, ray, sheared, ray.tMin); lanes != 0;
+             lanes &= lanes - 1) {
+            const int lane = simd::firstLane(lanes);
+            keep(intersectTriangle(ray, sheared, pack.triangle(lane), ray.tMin), ids[lane]);
+        }
+    } else {
+        for (int lanes = triangleLanes; lanes != 0; lanes &= lanes - 1) {
+            const int lane = simd::firstLane(lanes);
+            keep(intersectTriangleMollerTrumbore(ray, pack.triangle(lane), ray.tMin), ids[lane]);
+        }
+    }
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
@@ -136,7 +162,7 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
     };
     const WatertightRay sheared(ray.direction);
     bvh_.closest(ray, best.t,
-                 [&](std::uint32_t slot) { keep(intersectSlot(probe, sheared, slot), bvh_.primitiveIds()[slot]); });
+                 [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, sheared, first, count, keep); });
     const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
     for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
@@ -179,7 +205,11 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     }
 #endif
     const WatertightRay sheared(ray.direction);
-    return bvh_.any(ray, [&](std::uint32_t slot) { return intersectSlot(ray, sheared, slot) != kNoHit; });
+    return bvh_.any(ray, [&](std::uint32_t first, std::uint32_t count) {
+        bool blocked = false;
+        intersectLeaf(ray, sheared, first, count, [&](float t, std::uint32_t) { blocked = blocked || t != kNoHit; });
+        return blocked;
+    });
 }
 
 bool SceneGeometry::occludedBruteForce(const Ray& ray) const {
