@@ -14,8 +14,14 @@ namespace lightpath {
 namespace {
 
 constexpr int kBins = 16;
-// Relative costs of one node visit and one primitive test (pbrt-v4 uses 1/2 : 1).
-constexpr float kTraversalCost = 0.5f;
+// Relative costs of one node visit and one leaf block test. A block's primitives are tested four
+// at once, so the SAH counts blocks of kBvhMaxLeafSize, not primitives (as Embree's builders do
+// for their 4-triangle leaves): a range that fits one block is always a leaf.
+constexpr float kTraversalCost = 1.0f;
+
+float blocks(std::size_t count) {
+    return static_cast<float>((count + kBvhMaxLeafSize - 1) / kBvhMaxLeafSize);
+}
 // Below this depth splits follow the SAH; deeper (only in pathological inputs) they halve the
 // range, so the depth stays within what bvh_detail::kStackSize allows.
 constexpr int kSahDepthLimit = 64;
@@ -150,7 +156,7 @@ private:
         const int widest = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
         if (depth < kSahDepthLimit && extent[widest] > 0.0f) {
             const Split best = findSplit(begin, end, centroids);
-            const float leafCost = static_cast<float>(count);
+            const float leafCost = blocks(count);
             const float splitCost = kTraversalCost + best.cost / bounds.halfArea();
             if (count <= kBvhMaxLeafSize && !(splitCost < leafCost)) return makeLeaf();
             if (best.axis >= 0) {
@@ -208,7 +214,7 @@ private:
             for (int b = kBins - 1; b > 0; --b) {
                 right.grow(axisBins[static_cast<std::size_t>(b)].bounds);
                 rightCount += axisBins[static_cast<std::size_t>(b)].count;
-                rightCost[static_cast<std::size_t>(b)] = right.halfArea() * static_cast<float>(rightCount);
+                rightCost[static_cast<std::size_t>(b)] = right.halfArea() * blocks(rightCount);
             }
             Bounds left;
             std::uint32_t leftCount = 0;
@@ -216,7 +222,7 @@ private:
                 left.grow(axisBins[static_cast<std::size_t>(b)].bounds);
                 leftCount += axisBins[static_cast<std::size_t>(b)].count;
                 if (leftCount == 0 || leftCount == end - begin) continue;
-                const float cost = left.halfArea() * static_cast<float>(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
+                const float cost = left.halfArea() * blocks(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
                 if (cost < best.cost) best = {axis, b, cost};
             }
         }

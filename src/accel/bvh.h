@@ -129,6 +129,7 @@ namespace bvh_detail {
 
 // gamma(3) = 3u / (1 - 3u), u = 2^-24: the slab test's far distance grown by 1 + 2 gamma(3)
 // never rejects a box the exact ray passes through (Ize 2013; pbrt-v4 Bounds3::IntersectP).
+// Folding it into the inverse direction keeps the count of roundings, so the bound still holds.
 inline constexpr float kFarPadding = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 // The closest-hit limit t is itself rounded, and a box's entry distance is computed by another
 // formula than a primitive's t; a box is skipped only when it starts clearly beyond the limit.
@@ -146,6 +147,7 @@ struct Pending {
 struct RaySetup {
     simd::Float4 origin[3];
     simd::Float4 inverse[3];
+    simd::Float4 farInverse[3];  // inverse grown by kFarPadding: the padding costs no multiply per node
     simd::Float4 tMin;
     int nearSide[3];  // which of a node's planes[side] a ray enters an axis' slab through
 
@@ -154,6 +156,7 @@ struct RaySetup {
         for (int a = 0; a < 3; ++a) {
             origin[a] = simd::Float4(ray.origin[a]);
             inverse[a] = simd::Float4(1.0f / ray.direction[a]);
+            farInverse[a] = simd::Float4(1.0f / ray.direction[a] * kFarPadding);
             nearSide[a] = std::signbit(ray.direction[a]) ? 1 : 0;
         }
     }
@@ -163,23 +166,34 @@ struct RaySetup {
     // is: maxKeepSecond / minKeepSecond keep the accumulated bound.
     int enter(const BvhNode& node, simd::Float4 tMax, simd::Float4& entry) const {
         simd::Float4 t0 = tMin, t1 = tMax;
-        const simd::Float4 pad(kFarPadding);
         for (int a = 0; a < 3; ++a) {
             const simd::Float4 nearPlane = simd::Float4::load(node.planes[nearSide[a]][a]);
             const simd::Float4 farPlane = simd::Float4::load(node.planes[1 - nearSide[a]][a]);
             t0 = simd::maxKeepSecond((nearPlane - origin[a]) * inverse[a], t0);
-            t1 = simd::minKeepSecond((farPlane - origin[a]) * inverse[a] * pad, t1);
+            t1 = simd::minKeepSecond((farPlane - origin[a]) * farInverse[a], t1);
         }
         entry = t0;
         return simd::lessEqual(t0, t1);
     }
 };
 
-// The hit lanes of `mask` sorted by entry distance, farthest first; returns how many.
+// The lanes of `mask` (two or more) in out[], farthest entry first; returns how many. Two, the
+// common case, take one comparison.
 inline int sortFarToNear(const BvhNode& node, int mask, const simd::Float4& entry, Pending out[kBvhWidth]) {
     alignas(16) float t[kBvhWidth];
     entry.store(t);
-    int n = 0;
+    const int a = simd::firstLane(mask);
+    mask &= mask - 1;
+    const int b = simd::firstLane(mask);
+    mask &= mask - 1;
+    if (t[a] >= t[b]) {
+        out[0] = {node.children[a], t[a]};
+        out[1] = {node.children[b], t[b]};
+    } else {
+        out[0] = {node.children[b], t[b]};
+        out[1] = {node.children[a], t[a]};
+    }
+    int n = 2;
     for (; mask != 0; mask &= mask - 1) {
         const int lane = simd::firstLane(mask);
         const Pending p{node.children[lane], t[lane]};
@@ -203,9 +217,10 @@ void Bvh::closest(const Ray& ray, const float& tLimit, Test test) const {
     bvh_detail::Pending stack[bvh_detail::kStackSize];
     int top = 0;
     std::uint32_t current = root_;
+    const BvhNode* nodes = nodes_.data();
     for (;;) {
         if (!BvhChild::isLeaf(current)) {
-            const BvhNode& node = nodes_[current];
+            const BvhNode& node = nodes[current];
             simd::Float4 entry;
             const int mask = setup.enter(node, simd::Float4(limit()), entry);
             if (mask != 0) {
@@ -233,8 +248,8 @@ void Bvh::closest(const Ray& ray, const float& tLimit, Test test) const {
     }
 }
 
-// Children are visited nearest first here too: a blocker near the shading point, the common
-// case, is then found before the far side of the scene is searched.
+// Any hit ends the search, and most shadow rays reach their light: their every candidate box is
+// visited whatever the order, so children go in lane order, without sorting.
 template <typename Test>
 bool Bvh::any(const Ray& ray, Test test) const {
     if (root_ == kNoRoot) return false;
@@ -243,20 +258,15 @@ bool Bvh::any(const Ray& ray, Test test) const {
     std::uint32_t stack[bvh_detail::kStackSize];
     int top = 0;
     std::uint32_t current = root_;
+    const BvhNode* nodes = nodes_.data();
     for (;;) {
         if (!BvhChild::isLeaf(current)) {
-            const BvhNode& node = nodes_[current];
+            const BvhNode& node = nodes[current];
             simd::Float4 entry;
-            const int mask = setup.enter(node, tMax, entry);
+            int mask = setup.enter(node, tMax, entry);
             if (mask != 0) {
-                if ((mask & (mask - 1)) == 0) {
-                    current = node.children[simd::firstLane(mask)];
-                    continue;
-                }
-                bvh_detail::Pending sorted[kBvhWidth];
-                const int n = bvh_detail::sortFarToNear(node, mask, entry, sorted);
-                for (int i = 0; i < n - 1; ++i) stack[top++] = sorted[i].child;
-                current = sorted[n - 1].child;
+                current = node.children[simd::firstLane(mask)];
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) stack[top++] = node.children[simd::firstLane(mask)];
                 continue;
             }
         } else if (test(BvhChild::firstSlot(current), BvhChild::count(current))) {

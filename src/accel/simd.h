@@ -37,6 +37,7 @@ inline int equal(Float4 a, Float4 b) { return _mm_movemask_ps(_mm_cmpeq_ps(a.v, 
 // a NaN x, which is how the slab test ignores a slab it cannot decide.
 inline Float4 maxKeepSecond(Float4 x, Float4 acc) { return Float4(_mm_max_ps(x.v, acc.v)); }
 inline Float4 minKeepSecond(Float4 x, Float4 acc) { return Float4(_mm_min_ps(x.v, acc.v)); }
+inline Float4 abs(Float4 x) { return Float4(_mm_andnot_ps(_mm_set1_ps(-0.0f), x.v)); }
 
 #else
 
@@ -80,6 +81,7 @@ inline Float4 maxKeepSecond(Float4 x, Float4 acc) {
 inline Float4 minKeepSecond(Float4 x, Float4 acc) {
     return Float4::apply(x, acc, [](float a, float b) { return a < b ? a : b; });
 }
+inline Float4 abs(Float4 x) { return Float4::apply(x, x, [](float a, float) { return a < 0.0f ? -a : a; }); }
 
 #endif
 

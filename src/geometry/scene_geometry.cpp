@@ -1,5 +1,6 @@
 #include "geometry/scene_geometry.h"
 
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -111,26 +112,34 @@ std::uint32_t SceneGeometry::ignoredTriangle(const Ray& ray) const {
 }
 
 template <typename Keep>
-void SceneGeometry::intersectLeaf(const Ray& ray, const WatertightRay& sheared, std::uint32_t firstSlot,
+void SceneGeometry::intersectLeaf(const Ray& ray, const PackedRay& packed, std::uint32_t firstSlot,
                                   std::uint32_t count, Keep keep) const {
-    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
     const std::uint32_t* ids = bvh_.slotIds().data() + firstSlot;
-    int triangleLanes = 0;
-    for (std::uint32_t lane = 0; lane < count; ++lane) {
-        const std::uint32_t id = ids[lane];
-        if (id >= firstTriangle && !leafTriangles_.empty()) {
-            if (id != ray.ignoredPrimitive) triangleLanes |= 1 << lane;
-        } else {
-            keep(intersectPrimitive(ray, id), id);
+    int triangleLanes = (1 << count) - 1;
+    if (!spheres_.empty() || leafTriangles_.empty()) {
+        // Spheres (and with Embree, only spheres) share the BVH: test them one by one.
+        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+        for (std::uint32_t lane = 0; lane < count; ++lane) {
+            if (ids[lane] >= firstTriangle && !leafTriangles_.empty()) continue;
+            triangleLanes &= ~(1 << lane);
+            keep(intersectPrimitive(ray, ids[lane]), ids[lane]);
         }
+    }
+    if (ray.ignoredPrimitive != kNoPrimitive) {
+        for (std::uint32_t lane = 0; lane < count; ++lane)
+            if (ids[lane] == ray.ignoredPrimitive) triangleLanes &= ~(1 << lane);
     }
     if (triangleLanes == 0) return;
     const TrianglePack& pack = leafTriangles_[firstSlot / kBvhWidth];
     if (numerics_.triangle == TriangleTest::Watertight) {
-        for (int lanes = watertightCandidates(pack, triangleLanes, ray, sheared, ray.tMin); lanes != 0;
-             lanes &= lanes - 1) {
+        const PackHits found = watertightHits(pack, triangleLanes, packed, ray.tMin, ray.tMax);
+        for (int lanes = found.hits; lanes != 0; lanes &= lanes - 1) {
             const int lane = simd::firstLane(lanes);
-            keep(intersectTriangle(ray, sheared, pack.triangle(lane), ray.tMin), ids[lane]);
+            keep(found.t[lane], ids[lane]);
+        }
+        for (int lanes = found.onEdge; lanes != 0; lanes &= lanes - 1) {
+            const int lane = simd::firstLane(lanes);
+            keep(intersectTriangle(ray, packed.sheared, pack.triangle(lane), ray.tMin), ids[lane]);
         }
     } else {
         for (int lanes = triangleLanes; lanes != 0; lanes &= lanes - 1) {
@@ -157,12 +166,14 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
         if (t == kNoHit) return;
         if (t < best.t || (t == best.t && id < best.primitive)) {
             best = {t, id};
-            probe.tMax = std::nextafter(t, std::numeric_limits<float>::infinity());
+            // The next float up: for a positive t, its bit pattern plus one.
+            probe.tMax = t > 0.0f ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u)
+                                  : std::nextafter(t, std::numeric_limits<float>::infinity());
         }
     };
-    const WatertightRay sheared(ray.direction);
+    const PackedRay packed(ray);
     bvh_.closest(ray, best.t,
-                 [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, sheared, first, count, keep); });
+                 [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
     const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
     for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
@@ -204,10 +215,10 @@ bool SceneGeometry::occluded(const Ray& ray) const {
         if (embree_->occluded(ray, ignoredTriangle(ray))) return true;
     }
 #endif
-    const WatertightRay sheared(ray.direction);
+    const PackedRay packed(ray);
     return bvh_.any(ray, [&](std::uint32_t first, std::uint32_t count) {
         bool blocked = false;
-        intersectLeaf(ray, sheared, first, count, [&](float t, std::uint32_t) { blocked = blocked || t != kNoHit; });
+        intersectLeaf(ray, packed, first, count, [&](float t, std::uint32_t) { blocked = blocked || t != kNoHit; });
         return blocked;
     });
 }

@@ -79,7 +79,7 @@ private:
     // intersectPrimitive gives it; its triangles are read from their leaf-ordered copy and
     // filtered four at once first: the same test on the same numbers, from adjacent memory.
     template <typename Keep>
-    void intersectLeaf(const Ray& ray, const WatertightRay& sheared, std::uint32_t firstSlot, std::uint32_t count,
+    void intersectLeaf(const Ray& ray, const PackedRay& packed, std::uint32_t firstSlot, std::uint32_t count,
                        Keep keep) const;
     // The ray's ignored primitive as an index among the triangles (what Embree knows), or kNoPrimitive.
     std::uint32_t ignoredTriangle(const Ray& ray) const;
