@@ -308,6 +308,8 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) {
     if (primitives.size() > (std::size_t{BvhChild::kBlockMask} + 1) / 2)
         throw std::length_error("too many primitives for a BVH with 29-bit block indices");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    // Below the grain no subtree is shared: starting threads would cost more than the build.
+    if (primitives.size() < 2 * kParallelGrain) threads = 1;
     if (!primitives.empty()) {
         BinaryBuilder binary(primitives);
         primitives = {};  // the builder works on its own copy: free this one before the build's peak
