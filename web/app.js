@@ -264,6 +264,11 @@ async function explain(x, y) {
   drawExplanation();
 }
 
+function formatFactor(f) {
+  const [r, g, b] = f.rgb.map((v) => Number(v.toPrecision(4)));
+  return r === g && g === b ? `${f.name} ${r}` : `${f.name} (${r} ${g} ${b})`;
+}
+
 function formatRgb(rgb) { return rgb.map((v) => v.toFixed(6)).join(" "); }
 
 function swatch(rgb) {
@@ -282,7 +287,8 @@ function drawExplanation() {
     row.append(element("td", {}, g.count > 1 ? `${i + 1} (×${g.count})` : `${i + 1}`),
                element("td", { class: "mono", title: g.tuple }, g.compact),
                element("td", { class: "mono lpe" }, g.lpe), element("td", {}, touched), rgb,
-               element("td", {}, g.aovs.join(", ")));
+               element("td", {}, g.aovs.join(", ")),
+               element("td", { class: "mono factors" }, g.factors.map(formatFactor).join(" × ")));
     row.addEventListener("click", () => selectPath(i));
     return row;
   });
@@ -295,6 +301,8 @@ function drawExplanation() {
     row.append(element("td", {}, s.layer), rgb, element("td", { class: "mono" }, s.expression));
     return row;
   }));
+  $("rejected").replaceChildren(...state.explained.rejected.map((r) =>
+    element("li", {}, `${r.lpe}: ${r.reason}`)));
   drawOverlay();
   drawTopView();
   highlightAutomaton();

@@ -66,7 +66,8 @@ json explainPixel(const Job& job, int x, int y) {
     if (x < 0 || y < 0 || x >= width || y >= height)
         throw RequestError(400, "x,y", "pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
                                            std::to_string(width) + "x" + std::to_string(height) + " image");
-    const std::vector<LoggedContribution> log = job.centreRenderer().explainPixel(x, y);
+    std::vector<Rejection> rejections;
+    const std::vector<LoggedContribution> log = job.centreRenderer().explainPixel(x, y, &rejections);
     const lpe::Automaton& automaton = job.aovs.automaton();
     const PinholeCamera camera(job.scene.camera);
     const std::vector<std::string> layers = job.aovs.layerNames();
@@ -112,11 +113,16 @@ json explainPixel(const Job& job, int x, int y) {
             aovs.push_back(job.aovs.expressions()[o].name);
             sums[1 + o] += c.value;
         }
+        json factors = json::array();
+        for (std::size_t f = 0; f < c.factorCount; ++f)
+            factors.push_back({{"name", c.factors[f].name},
+                               {"rgb", json::array({c.factors[f].value.r, c.factors[f].value.g, c.factors[f].value.b})}});
         contributions.push_back({{"compact", lpe::toCompactString(path)},
                                  {"tuple", lpe::toTupleString(path)},
                                  {"lpe", lpe::toExpressionString(path)},
                                  {"rgb", json::array({c.value.r, c.value.g, c.value.b})},
                                  {"aovs", aovs},
+                                 {"factors", factors},
                                  {"states", states},
                                  {"vertices", vertices},
                                  {"segments", segments}});
@@ -128,12 +134,19 @@ json explainPixel(const Job& job, int x, int y) {
                              {"rgb", json::array({sums[l].r, sums[l].g, sums[l].b})},
                              {"expression", aov ? job.aovs.expressions()[l - 1].expression : ""}});
     }
+    json rejected = json::array();
+    for (const Rejection& r : rejections) {
+        lpe::Path path;
+        for (std::size_t i = 0; i < r.path.size(); ++i) path.push_back(toLpeEvent(job.scene, r.path[i]));
+        rejected.push_back({{"compact", lpe::toCompactString(path)}, {"lpe", lpe::toExpressionString(path)}, {"reason", r.reason}});
+    }
     return {{"pixel", json::array({x, y})},
             {"generation", job.generation},
             {"integrator", job.settings.integrator},
             {"samples", 1},
             {"contributions", contributions},
-            {"sums", layerSums}};
+            {"sums", layerSums},
+            {"rejected", rejected}};
 }
 
 }  // namespace lightpath::serve

@@ -245,8 +245,16 @@ TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton state
         CHECK(c["segments"].size() == path.size() - 1);
         CHECK(c["vertices"][0]["event"] == "E");
         beauty += Rgb{c["rgb"][0].get<float>(), c["rgb"][1].get<float>(), c["rgb"][2].get<float>()};
+        // The value is the product of its factors (the terms of the illumination formula).
+        REQUIRE(!c["factors"].empty());
+        for (int channel = 0; channel < 3; ++channel) {
+            double product = 1.0;
+            for (const json& f : c["factors"]) product *= f["rgb"][channel].get<double>();
+            CHECK(product == doctest::Approx(c["rgb"][channel].get<double>()).epsilon(1e-4));
+        }
     }
     CHECK(sawMirror);
+    CHECK(e["rejected"].is_array());
     CHECK(e["sums"][0]["layer"] == "beauty");
     CHECK(e["sums"][0]["rgb"][1].get<float>() == doctest::Approx(beauty.g));
 
