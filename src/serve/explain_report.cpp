@@ -12,23 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-// What an event touched, by the name a student reads in the scene file.
-std::string subjectName(const Scene& scene, const PathEvent& event) {
-    switch (event.subject) {
-        case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
-        case Subject::Ambient: return kAmbientLabel;
-        case Subject::PointLight: {
-            const std::string& name = scene.lights[event.index].name;
-            return name.empty() ? "light #" + std::to_string(event.index) : name;
-        }
-        case Subject::Object: {
-            const std::string& name = scene.objects[event.index].name;
-            return name.empty() ? "object #" + std::to_string(event.index) + " (" + scene.labelOf(event.index) + ")" : name;
-        }
-    }
-    return {};
-}
-
 // The recorded event as the LPE engine's event, labelled as the automaton saw it.
 lpe::Event toLpeEvent(const Scene& scene, const PathEvent& e) {
     lpe::Event event{e.type, e.scatter, {}};
