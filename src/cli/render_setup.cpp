@@ -26,8 +26,9 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("scene", scenePath, "Scene file (TOML, see scenes/README.md)")->required();
     command.add_option("--integrator", integrator,
                        "raycast: first hit only; whitted: adds mirror and refraction rays; "
-                       "path: path tracing with global illumination (physically based reading)")
-        ->check(CLI::IsMember({"raycast", "whitted", "path"}))
+                       "path: path tracing with global illumination (physically based reading); "
+                       "bdpt: bidirectional path tracing, which also finds caustics under point lights")
+        ->check(CLI::IsMember({"raycast", "whitted", "path", "bdpt"}))
         ->capture_default_str();
     command.add_option("--lpe", lpes,
                        "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "

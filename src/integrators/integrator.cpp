@@ -1,5 +1,6 @@
 #include "integrators/integrator.h"
 
+#include "integrators/bdpt.h"
 #include "integrators/path.h"
 #include "integrators/raycast.h"
 #include "integrators/whitted.h"
@@ -10,6 +11,7 @@ std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
     if (name == "raycast") return std::make_unique<RaycastIntegrator>();
     if (name == "whitted") return std::make_unique<WhittedIntegrator>();
     if (name == "path") return std::make_unique<PathIntegrator>();
+    if (name == "bdpt") return std::make_unique<BdptIntegrator>();
     return nullptr;
 }
 

@@ -30,7 +30,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       integrator_(makeIntegrator(options.integrator)),
       context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
-    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted or path");
+    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted, path or bdpt");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
