@@ -128,7 +128,7 @@ private:
 };
 
 // t = 1: light vertex y_i joined to the pinhole, splatted into the pixel it projects to.
-void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks) {
+void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks, bool weighted) {
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[i];
     const ShadingPoint& sp = *y.surface;
@@ -154,8 +154,9 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
         if (pushLightEvents(path, light, i - 1) && path.wants(lightEvent)) {
             const Rgb f = sp.bsdf.eval(lobe, sp.wo, w);
             if (!isBlack(f)) {
-                const float weight = misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx),
-                                               i + 1, lightWalks);
+                const float weight =
+                    weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1, lightWalks)
+                             : 1.0f;
                 if (weight > 0.0f && visible(path)) path.splat(x, yPixel, lightEvent, y.beta * f * (cameraTerm * weight));
             }
         }
@@ -274,8 +275,10 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     if (lightWalks_) {
         Sampler lightSampler = sampler.forVertex(kLightWalkKey);
         lightCount = walkFromLight(lightSampler, light, path);
-        for (int i = 1; i < lightCount; ++i) joinToCamera(light, i, path, lightWalks_);
+        const bool weighted = strategies_ == Strategies::All;
+        for (int i = 1; i < lightCount; ++i) joinToCamera(light, i, path, lightWalks_, weighted);
     }
+    if (strategies_ == Strategies::LightTracingOnly) return;
 
     Vertices eye;
     eye[0] = cameraVertex(ctx.camera.eye());
@@ -298,10 +301,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             PathEvent event = emitter->event();
             event.position = hit->point;
             if (path.wants(event) && !isBlack(emitter->radiance(*hit, -ray.direction))) {
-                const Vec3 back = eye[t - 2].point - hit->point;
-                z.light = emitter;
-                z.pdfPosition = emitter->pdf(eye[t - 2].point, hit->point, hit->normal) *
-                                std::fabs(glm::dot(hit->normal, glm::normalize(back))) / glm::dot(back, back);
+                markEmitter(z, *emitter, eye[t - 2]);
                 const float weight = misWeight(joinedDensities({}, Lobe::Diffuse, {eye.data(), std::size_t(t)}, Lobe::Diffuse, ctx),
                                                0, lightWalks_);
                 z.light = nullptr;

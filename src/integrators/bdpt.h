@@ -17,6 +17,12 @@ namespace lightpath {
 // events the other integrators use, so every AOV means the same light. Produces E .* L.
 class BdptIntegrator final : public Integrator {
 public:
+    enum class Strategies : std::uint8_t {
+        All,               // every strategy, MIS-weighted
+        LightTracingOnly,  // t = 1 alone, unweighted: pure light tracing (tests, lectures)
+    };
+    explicit BdptIntegrator(Strategies strategies = Strategies::All) : strategies_(strategies) {}
+
     void preprocess(const RenderContext& context) override;
     void traceCameraRay(const Ray& ray, PathState& path) const override;
     bool splats() const override { return true; }
@@ -26,6 +32,7 @@ private:
     // then no light walk could add anything, none is traced, and the strategies s >= 2 are out of
     // the weights (what remains is the path tracer's s = 0 and s = 1).
     bool lightWalks_ = true;
+    Strategies strategies_;
 };
 
 }  // namespace lightpath

@@ -79,6 +79,17 @@ BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta,
     return v;
 }
 
+void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous) {
+    // Light::pdf is light sampling's solid-angle density; times cos / d^2 it is the density per
+    // unit area with which light sampling and emission both pick points on the light.
+    const Vec3 back = previous.point - z.point;
+    const float distance2 = glm::dot(back, back);
+    z.light = &emitter;
+    z.pdfPosition = distance2 > 0.0f ? emitter.pdf(previous.point, z.point, z.normal) *
+                                           std::fabs(glm::dot(z.normal, back)) / (std::sqrt(distance2) * distance2)
+                                     : 0.0f;
+}
+
 float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous) {
     return step.delta ? 1.0f : toAreaDensity(step.pdfRev, vertex, previous);
 }

@@ -93,6 +93,8 @@ BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal
 // (through a delta lobe when `delta`), hits `hit`.
 BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
                          float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode);
+// Makes surface vertex `z`, reached from `previous`, the origin x0 of a path on `emitter` (s = 0).
+void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous);
 // The area density of `previous` as the other walk would reach it from `vertex` by `step`.
 float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous);
 
