@@ -91,6 +91,9 @@ void run(const ExplainCommand& command) {
         std::printf("%3zu  %-8s %s\n     touched: %s\n     rgb:     %s\n     aovs:    %s\n", i + 1,
                     lpe::toCompactString(path).c_str(), lpe::toTupleString(path).c_str(), touched.str().c_str(),
                     formatRgb(c.value).c_str(), accepted.str().c_str());
+        if (c.lightVertices >= 0)
+            std::printf("     strategy: s=%d t=%d%s\n", c.lightVertices, c.eyeVertices,
+                        c.splatted ? " (light tracing, splatted here)" : "");
     }
     std::printf("\nsums\n");
     for (std::size_t l = 0; l < layers.size(); ++l) {
@@ -109,7 +112,9 @@ void addExplainCommand(CLI::App& app) {
     sub->footer(
         "Each contribution is shown as a compact path (EDL), as event tuples with the labels the\n"
         "automaton saw (E RD'floor' L'key'), the objects and lights it touched, its RGB value and\n"
-        "the AOVs whose expressions accept it; the sums per layer follow.\n\n"
+        "the AOVs whose expressions accept it; the sums per layer follow. Under bdpt each also\n"
+        "shows its strategy (s light vertices, t eye vertices); light tracing (t=1) lands on a pixel\n"
+        "from every pixel's samples, so explaining one pixel traces the whole image's light paths.\n\n"
         "Examples:\n"
         "  lightpath explain scenes/lecture-room.toml --pixel 320,240\n"
         "  lightpath explain scenes/mirror-sphere.toml --pixel 300,200 --lpe \"mirror=E<RS>+.*\"");

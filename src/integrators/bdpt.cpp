@@ -157,6 +157,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
                 const float weight =
                     weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1, lightWalks)
                              : 1.0f;
+                path.setStrategy(i + 1, 1);
                 if (weight > 0.0f && visible(path)) path.splat(x, yPixel, lightEvent, y.beta * f * (cameraTerm * weight));
             }
         }
@@ -185,6 +186,7 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
         const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
         if (isBlack(f)) continue;
         const float weight = misWeight(joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1, lightWalks);
+        path.setStrategy(1, t);
         if (weight > 0.0f && visible(path)) path.emit(sp.eventOf(lobe), lightEvent, z.beta * f * sample.weight * (weight / choice));
     }
 }
@@ -218,6 +220,7 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
                     const float weight = misWeight(joinedDensities({light.data(), std::size_t(s)}, lightLobe,
                                                                    {eye.data(), std::size_t(t)}, eyeLobe, ctx),
                                                    s, lightWalks);
+                    path.setStrategy(s, t);
                     if (weight > 0.0f && visible(path))
                         path.emit(lightEvent, z.beta * fz * fy * y.beta * (weight / distance2));
                 }
@@ -290,6 +293,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     for (int t = 2; t <= ctx.maxDepth + 2; ++t) {
         const auto hit = ctx.geometry.intersect(ray);
         if (!hit) {
+            path.setStrategy(0, t);
             addBackground(ray, beta, path);  // s = 0 only: nothing else samples the background
             break;
         }
@@ -305,6 +309,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
                 const float weight = misWeight(joinedDensities({}, Lobe::Diffuse, {eye.data(), std::size_t(t)}, Lobe::Diffuse, ctx),
                                                0, lightWalks_);
                 z.light = nullptr;
+                path.setStrategy(0, t);
                 addEmission(*hit, ray, beta, weight, path);
             }
         }

@@ -20,6 +20,9 @@ struct LoggedContribution {
     lpe::OutputMask accepted = 0;
     PathRecord path;
     bool splatted = false;  // light tracing's: it landed on this pixel from the light's side
+    // Bidirectional path tracing's strategy: s vertices from the light, t from the eye; -1 for
+    // the other integrators.
+    std::int8_t lightVertices = -1, eyeVertices = -1;
 };
 
 class ContributionSink {
@@ -37,13 +40,13 @@ public:
             for (lpe::OutputMask m = accepted; m != 0; m &= m - 1)
                 layers_[1 + static_cast<std::size_t>(std::countr_zero(m))] += value;
         }
-        if (log_ != nullptr) log_->push_back({value, accepted, path});
+        if (log_ != nullptr) log_->push_back({value, accepted, path, false, strategyS_, strategyT_});
     }
 
     // A contribution to pixel (x, y) of the whole image, wherever the current sample is.
     void splat(int x, int y, const Rgb& value, lpe::OutputMask accepted, const PathRecord& path) {
         if (log_ != nullptr) {
-            if (x == logX_ && y == logY_) log_->push_back({value, accepted, path, true});
+            if (x == logX_ && y == logY_) log_->push_back({value, accepted, path, true, strategyS_, strategyT_});
             return;
         }
         if (splats_ == nullptr) return;
@@ -54,6 +57,12 @@ public:
             for (lpe::OutputMask m = accepted; m != 0; m &= m - 1)
                 splats_->add(x, y, 1 + static_cast<std::size_t>(std::countr_zero(m)), value);
         }
+    }
+
+    // The bidirectional strategy the next contributions come from (only `explain` reads it).
+    void setStrategy(int s, int t) {
+        strategyS_ = static_cast<std::int8_t>(s);
+        strategyT_ = static_cast<std::int8_t>(t);
     }
 
     // `explain` logs splats that land on the pixel it explains.
@@ -67,6 +76,7 @@ private:
     SplatFilm* splats_;
     std::vector<LoggedContribution>* log_;
     int logX_ = -1, logY_ = -1;
+    std::int8_t strategyS_ = -1, strategyT_ = -1;
 };
 
 }  // namespace lightpath

@@ -183,7 +183,25 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {
     ContributionSink sink(layers, nullptr, &log);
     RayCounters counters;
     PathState path(context_, sink, counters);
+    sink.logSplatsAt(x, y);
     renderPixel(x, y, layers, path);
+    if (integrator_->splats()) {
+        // Light tracing lands on this pixel from any pixel's sample: trace every pixel's paths
+        // (one thread, the whole image's work) and keep the splats that land here.
+        std::vector<LoggedContribution> other;
+        ContributionSink otherSink(layers, nullptr, &other);
+        otherSink.logSplatsAt(x, y);
+        PathState otherPath(context_, otherSink, counters);
+        for (int py = 0; py < camera_.height(); ++py) {
+            for (int px = 0; px < camera_.width(); ++px) {
+                if (px == x && py == y) continue;
+                renderPixel(px, py, layers, otherPath);
+                for (LoggedContribution& c : other)
+                    if (c.splatted) log.push_back(c);
+                other.clear();
+            }
+        }
+    }
     // Logged values are per sample; scale them like the pixel so they sum to it.
     const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
     for (LoggedContribution& c : log) c.value *= weight;
