@@ -13,7 +13,7 @@
 #include "film/aov_set.h"
 #include "integrators/bdpt.h"
 #include "integrators/bdpt_vertex.h"
-#include "lpe/analysis.h"
+#include "film/aov_presets.h"
 #include "math/random.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -84,8 +84,8 @@ TEST_CASE("bdpt: the Cornell box with its area light, every classes AOV equals t
     scene.camera.width = scene.camera.height = 32;
     // The same seed: both see the same jittered first hits (common random numbers), so the paired
     // differences are small and the test sharp, while their expectations stay each method's own.
-    const Film bdpt = render(scene, lpe::classesSet(), "bdpt", 128, 5, 11);
-    const Film path = render(scene, lpe::classesSet(), "path", 128, 5, 11);
+    const Film bdpt = render(scene, classesSet(), "bdpt", 128, 5, 11);
+    const Film path = render(scene, classesSet(), "path", 128, 5, 11);
     checkAgreement(bdpt, path);
 }
 
@@ -116,7 +116,7 @@ void checkLayer(const Film& film, const std::string& name, double expected) {
 
 TEST_CASE("bdpt: furnace, a closed emissive diffuse sphere has radiance Le / (1 - rho), split as the path tracer splits it") {
     const double rho = 0.5, le = 1.0;
-    const Film film = render(furnace(float(rho), Rgb{float(le)}), lpe::classesSet(), "bdpt", 32, 64, 3);
+    const Film film = render(furnace(float(rho), Rgb{float(le)}), classesSet(), "bdpt", 32, 64, 3);
     checkLayer(film, "beauty", le / (1.0 - rho));
     checkLayer(film, "raycast", rho * le);
     checkLayer(film, "indirect", le * rho * rho / (1.0 - rho));
@@ -126,7 +126,7 @@ TEST_CASE("bdpt: furnace, a closed emissive diffuse sphere has radiance Le / (1 
 TEST_CASE("bdpt: furnace, a point light of radiant intensity pi at the centre of a unit sphere with kd 0.5") {
     Scene scene = furnace(0.5f, Rgb{0.0f});
     scene.lights.push_back({"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
-    const Film film = render(scene, lpe::classesSet(), "bdpt", 32, 64, 5);
+    const Film film = render(scene, classesSet(), "bdpt", 32, 64, 5);
     checkLayer(film, "beauty", 1.0);
     checkLayer(film, "raycast", 0.5);
     checkLayer(film, "indirect", 0.5);
@@ -147,7 +147,7 @@ TEST_CASE("bdpt: bit-identical images on 1, 2 and 8 threads, splats included") {
 
 // --- The pieces a test can hold: a scene with its geometry, lights and automaton. ---
 struct World {
-    explicit World(const Scene& s, std::vector<lpe::NamedExpression> set = lpe::classesSet(), int maxDepth = 5)
+    explicit World(const Scene& s, std::vector<lpe::NamedExpression> set = classesSet(), int maxDepth = 5)
         : scene(s), aovs(std::move(set)), geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh,
                                                    scene.triangleNormals),
           symbols(scene, aovs.automaton()), analysis(scene), lights(scene, geometry), camera(scene.camera),
