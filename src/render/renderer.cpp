@@ -30,7 +30,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       integrator_(makeIntegrator(options.integrator)),
       context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
-    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted or path");
+    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted, path or bdpt");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
@@ -183,7 +183,25 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector
     ContributionSink sink(layers, nullptr, &log, rejections);
     RayCounters counters;
     PathState path(context_, sink, counters);
+    sink.logSplatsAt(x, y);
     renderPixel(x, y, layers, path);
+    if (integrator_->splats()) {
+        // Light tracing lands on this pixel from any pixel's sample: trace every pixel's paths
+        // (one thread, the whole image's work) and keep the splats that land here.
+        std::vector<LoggedContribution> other;
+        ContributionSink otherSink(layers, nullptr, &other);
+        otherSink.logSplatsAt(x, y);
+        PathState otherPath(context_, otherSink, counters);
+        for (int py = 0; py < camera_.height(); ++py) {
+            for (int px = 0; px < camera_.width(); ++px) {
+                if (px == x && py == y) continue;
+                renderPixel(px, py, layers, otherPath);
+                for (LoggedContribution& c : other)
+                    if (c.splatted) log.push_back(c);
+                other.clear();
+            }
+        }
+    }
     // Logged values are per sample; scale them like the pixel so they sum to it.
     const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
     for (LoggedContribution& c : log) c.value *= weight;

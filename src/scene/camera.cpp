@@ -13,7 +13,8 @@ PinholeCamera::PinholeCamera(const CameraDescription& d)
 }
 
 Ray PinholeCamera::generateRay(float x, float y) const {
-    // Map the film position to [-aspect, aspect] x [-1, 1] on the image plane at distance 1.
+    // Map the film position to [-aspect, aspect] x [-1, 1] (times tan(fov/2)) on the image plane
+    // at distance 1.
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const float u = (2.0f * x / static_cast<float>(width_) - 1.0f) * aspect * halfHeight_;
     const float v = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
@@ -21,6 +22,43 @@ Ray PinholeCamera::generateRay(float x, float y) const {
     ray.origin = eye_;
     ray.direction = glm::normalize(forward_ + u * right_ + v * up_);
     return ray;
+}
+
+std::optional<Vec2> PinholeCamera::project(const Vec3& point) const {
+    // generateRay inverted: the point's coordinates on the image plane at distance 1.
+    const Vec3 d = point - eye_;
+    const float depth = glm::dot(d, forward_);
+    if (!(depth > 0.0f)) return std::nullopt;
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    const float u = glm::dot(d, right_) / depth, v = glm::dot(d, up_) / depth;
+    const float x = (u / (aspect * halfHeight_) + 1.0f) * 0.5f * static_cast<float>(width_);
+    const float y = (1.0f - v / halfHeight_) * 0.5f * static_cast<float>(height_);
+    if (!(x >= 0.0f && x < static_cast<float>(width_) && y >= 0.0f && y < static_cast<float>(height_))) return std::nullopt;
+    return Vec2{x, y};
+}
+
+float PinholeCamera::imageArea() const {
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    return (2.0f * aspect * halfHeight_) * (2.0f * halfHeight_);
+}
+
+float PinholeCamera::cosineInImage(const Vec3& direction) const {
+    const float cosTheta = glm::dot(direction, forward_);
+    if (!(cosTheta > 0.0f)) return 0.0f;
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    const float u = glm::dot(direction, right_) / cosTheta, v = glm::dot(direction, up_) / cosTheta;
+    if (std::fabs(u) > aspect * halfHeight_ || std::fabs(v) > halfHeight_) return 0.0f;
+    return cosTheta;
+}
+
+float PinholeCamera::importance(const Vec3& direction) const {
+    const float c = cosineInImage(direction);
+    return c > 0.0f ? 1.0f / (imageArea() * c * c * c * c) : 0.0f;
+}
+
+float PinholeCamera::pdfDirection(const Vec3& direction) const {
+    const float c = cosineInImage(direction);
+    return c > 0.0f ? 1.0f / (imageArea() * c * c * c) : 0.0f;
 }
 
 }  // namespace lightpath
