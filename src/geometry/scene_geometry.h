@@ -67,6 +67,23 @@ public:
     const std::vector<Triangle>& triangles() const { return triangles_; }
     std::size_t primitiveCount() const { return spheres_.size() + planes_.size() + triangles_.size(); }
 
+    // The one codec of scene-wide primitive ids: spheres first, then planes, then triangles.
+    struct PrimitiveRef {
+        ShapeKind shape;
+        std::uint32_t index;  // into spheres(), planes() or triangles()
+    };
+    PrimitiveRef decodePrimitive(std::uint32_t id) const {
+        if (id < spheres_.size()) return {ShapeKind::Sphere, id};
+        id -= static_cast<std::uint32_t>(spheres_.size());
+        if (id < planes_.size()) return {ShapeKind::Plane, id};
+        return {ShapeKind::Triangle, id - static_cast<std::uint32_t>(planes_.size())};
+    }
+    std::uint32_t sphereId(std::uint32_t index) const { return index; }
+    std::uint32_t planeId(std::uint32_t index) const { return static_cast<std::uint32_t>(spheres_.size()) + index; }
+    std::uint32_t triangleId(std::uint32_t index) const {
+        return static_cast<std::uint32_t>(spheres_.size() + planes_.size()) + index;
+    }
+
 private:
     std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
     bool occludedBruteForce(const Ray& ray) const;

@@ -1,12 +1,14 @@
 #pragma once
 // Where the integrators hand every contribution: its radiance, the outputs (AOVs) whose
 // expressions accepted its light path, and the path itself. The sink adds the value to the beauty
-// and to each accepting AOV, or to `rest` when none accepted (DESIGN.md, "Recording paths").
+// and to each accepting AOV, or to `rest` when none accepted (docs/design.md, "Recording paths").
+// Light tracing's contributions to other pixels go to the splat film, classified the same way.
 #include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "film/splat_film.h"
 #include "integrators/path_record.h"
 #include "lpe/automaton.h"
 #include "math/types.h"
@@ -17,13 +19,15 @@ struct LoggedContribution {
     Rgb value{0.0f};
     lpe::OutputMask accepted = 0;
     PathRecord path;
+    bool splatted = false;  // light tracing's: it landed on this pixel from the light's side
 };
 
 class ContributionSink {
 public:
     // `layers` holds one accumulator per image layer: [0] beauty, [1..n] the n outputs, [n+1] rest.
-    explicit ContributionSink(std::span<Rgb> layers, std::vector<LoggedContribution>* log = nullptr)
-        : layers_(layers), log_(log) {}
+    explicit ContributionSink(std::span<Rgb> layers, SplatFilm* splats = nullptr,
+                              std::vector<LoggedContribution>* log = nullptr)
+        : layers_(layers), splats_(splats), log_(log) {}
 
     void add(const Rgb& value, lpe::OutputMask accepted, const PathRecord& path) {
         layers_[0] += value;
@@ -36,9 +40,33 @@ public:
         if (log_ != nullptr) log_->push_back({value, accepted, path});
     }
 
+    // A contribution to pixel (x, y) of the whole image, wherever the current sample is.
+    void splat(int x, int y, const Rgb& value, lpe::OutputMask accepted, const PathRecord& path) {
+        if (log_ != nullptr) {
+            if (x == logX_ && y == logY_) log_->push_back({value, accepted, path, true});
+            return;
+        }
+        if (splats_ == nullptr) return;
+        splats_->add(x, y, 0, value);
+        if (accepted == 0) {
+            splats_->add(x, y, layers_.size() - 1, value);
+        } else {
+            for (lpe::OutputMask m = accepted; m != 0; m &= m - 1)
+                splats_->add(x, y, 1 + static_cast<std::size_t>(std::countr_zero(m)), value);
+        }
+    }
+
+    // `explain` logs splats that land on the pixel it explains.
+    void logSplatsAt(int x, int y) {
+        logX_ = x;
+        logY_ = y;
+    }
+
 private:
     std::span<Rgb> layers_;
+    SplatFilm* splats_;
     std::vector<LoggedContribution>* log_;
+    int logX_ = -1, logY_ = -1;
 };
 
 }  // namespace lightpath

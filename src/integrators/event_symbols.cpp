@@ -4,22 +4,10 @@
 
 namespace lightpath {
 
-EventSymbols::EventSymbols(const Scene& scene, const lpe::Automaton& automaton) {
-    using lpe::EventType;
-    using lpe::Scatter;
-    camera = automaton.symbol(EventType::Camera, Scatter::None, 0);
-    background = automaton.symbol(EventType::Background, Scatter::None, 0);
-    ambient = automaton.symbol(EventType::Emitter, Scatter::None, automaton.labelClass(kAmbientLabel));
-    for (const PointLight& light : scene.lights)
-        lights.push_back(automaton.symbol(EventType::Emitter, Scatter::None, automaton.labelClass(light.name)));
-    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        const auto label = automaton.labelClass(scene.labelOf(i));
-        objects.push_back({automaton.symbol(EventType::Reflection, Scatter::Diffuse, label),
-                           automaton.symbol(EventType::Reflection, Scatter::Glossy, label),
-                           automaton.symbol(EventType::Reflection, Scatter::Specular, label),
-                           automaton.symbol(EventType::Transmission, Scatter::Specular, label),
-                           automaton.symbol(EventType::Emitter, Scatter::None, label)});
-    }
+EventSymbols::EventSymbols(const Scene& scene, const lpe::Automaton& automaton)
+    : automaton_(automaton), ambient_(automaton.labelClass(kAmbientLabel)) {
+    for (const PointLight& light : scene.lights) lights_.push_back(automaton.labelClass(light.name));
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) objects_.push_back(automaton.labelClass(scene.labelOf(i)));
 }
 
 std::vector<std::string> sceneLabels(const Scene& scene) {

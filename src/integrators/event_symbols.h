@@ -1,33 +1,42 @@
 #pragma once
-// The automaton symbols of every event a scene can produce, looked up once per render so the
-// tracer advances its automaton state by table lookups only (DESIGN.md: no strings in the hot loop).
+// Turns a recorded event into the automaton's symbol: its type and scattering, and the label class
+// of what it touched, looked up once per render so the tracer advances its automaton state by
+// arithmetic and table lookups only (docs/design.md: no strings in the hot loop).
 #include <string>
 #include <vector>
 
+#include "integrators/path_record.h"
 #include "lpe/automaton.h"
 #include "scene/scene.h"
 
 namespace lightpath {
 
-struct SurfaceSymbols {
-    lpe::Automaton::Symbol diffuse;     // R D: the kd (N.L) term and the ambient term
-    lpe::Automaton::Symbol glossy;      // R G: the ks (H.N)^n highlight
-    lpe::Automaton::Symbol mirror;      // R S: the kr-weighted mirror ray (and total internal reflection)
-    lpe::Automaton::Symbol refraction;  // T S: the kt-weighted refracted ray
-    lpe::Automaton::Symbol emission;    // L: the surface itself emitting (an area light)
-};
-
-struct EventSymbols {
-    lpe::Automaton::Symbol camera;
-    lpe::Automaton::Symbol background;
-    lpe::Automaton::Symbol ambient;
-    std::vector<lpe::Automaton::Symbol> lights;  // per point light
-    std::vector<SurfaceSymbols> objects;         // per scene object
-
+class EventSymbols {
+public:
     EventSymbols(const Scene& scene, const lpe::Automaton& automaton);
+
+    lpe::Automaton::Symbol operator()(const PathEvent& event) const {
+        return automaton_.symbol(event.type, event.scatter, labelClass(event));
+    }
+
+private:
+    lpe::Automaton::LabelClass labelClass(const PathEvent& event) const {
+        switch (event.subject) {
+            case Subject::Object: return objects_[event.index];
+            case Subject::PointLight: return lights_[event.index];
+            case Subject::Ambient: return ambient_;
+            case Subject::None: break;
+        }
+        return 0;
+    }
+
+    const lpe::Automaton& automaton_;
+    lpe::Automaton::LabelClass ambient_;
+    std::vector<lpe::Automaton::LabelClass> lights_;   // per point light
+    std::vector<lpe::Automaton::LabelClass> objects_;  // per scene object
 };
 
-// The label of the ambient term's L event (DESIGN.md: `<L'ambient'>`).
+// The label of the ambient term's L event (docs/design.md: `<L'ambient'>`).
 inline constexpr const char* kAmbientLabel = "ambient";
 
 // Every label an event of this scene can carry: "ambient", the point lights' names, and each

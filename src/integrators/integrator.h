@@ -1,19 +1,19 @@
 #pragma once
-// What every integrator shares: the read-only render context, and the per-thread tracer state
-// through which contributions reach the sink with their automaton state.
+// The integrator contract (docs/design.md). Every method reads the same light transport: the
+// scene's materials through Bsdf (materials/bsdf.h), its lights through Light (lights/light.h),
+// and meets the LPE automaton only through PathState. A new integrator is one file implementing
+// this, plus its row in the registry.
 #include <memory>
 #include <string_view>
 
 #include "geometry/scene_geometry.h"
-#include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
-#include "integrators/path_record.h"
-#include "integrators/ray_counters.h"
-#include "lights/emitters.h"
+#include "integrators/path_state.h"
+#include "lights/light_set.h"
 #include "lpe/automaton.h"
 #include "math/ray.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
-#include "sampling/sampler.h"
 #include "scene/scene_analysis.h"
 
 namespace lightpath {
@@ -24,8 +24,11 @@ struct RenderContext {
     const lpe::Automaton& automaton;
     const EventSymbols& symbols;
     const SceneAnalysis& analysis;
-    const EmitterSet& emitters;
-    int maxDepth = 5;  // Whitted: specular bounces after the first hit; path: scattering events
+    const LightSet& lights;
+    const PinholeCamera& camera;
+    // The most scattering events (R or T) a path may have before its light: 1 is ray casting's
+    // E(D|G)L, and every integrator cuts its paths at the same length.
+    int maxDepth = 5;
     // The outputs the user asked for. When every contribution is wanted (the beauty or `rest` is
     // written, or skipping is off) nothing may be skipped on their account.
     lpe::OutputMask requested = 0;
@@ -35,44 +38,16 @@ struct RenderContext {
     bool skipEnabled = true;
 };
 
-// One worker's view of a render: the shared context plus its own sink, counters and path stack.
-class Tracer {
-public:
-    Tracer(const RenderContext& context, ContributionSink& sink, RayCounters& counters)
-        : context(context), counters(counters), sink_(sink) {}
-
-    // Records `surface` then `light` after `state`, and hands `value` to the sink with the outputs
-    // that accept the resulting path. Non-finite values are counted and dropped, never stored.
-    void emit(lpe::Automaton::State state, const PathEvent& surface, lpe::Automaton::Symbol surfaceSymbol,
-              const PathEvent& light, lpe::Automaton::Symbol lightSymbol, const Rgb& value);
-    // The same for a path that ends without a surface event (background, emitter hit directly).
-    void emit(lpe::Automaton::State state, const PathEvent& light, lpe::Automaton::Symbol lightSymbol,
-              const Rgb& value);
-
-    // Would a contribution accepted by `accepted` reach a requested output?
-    bool wants(lpe::OutputMask accepted) const {
-        return context.keepAllPaths || (accepted & context.requested) != 0;
-    }
-    // Can a branch in `state` still reach a requested output (DESIGN.md: dead states stop)?
-    bool alive(lpe::Automaton::State state) const {
-        return context.keepAllPaths || !context.automaton.isDead(state, context.requested);
-    }
-
-    const RenderContext& context;
-    RayCounters& counters;
-    PathRecord path;
-    Sampler* sampler = nullptr;  // the current pixel sample's random numbers
-
-private:
-    ContributionSink& sink_;
-};
-
 class Integrator {
 public:
     virtual ~Integrator() = default;
-    // Traces one camera ray; the camera event is already on the tracer's path and `state` is the
-    // automaton state after it.
-    virtual void traceCameraRay(const Ray& ray, lpe::Automaton::State state, Tracer& tracer) const = 0;
+    // Once per render, before any camera ray: a solve over the whole scene (radiosity) or
+    // anything else that does not depend on the pixel.
+    virtual void preprocess(const RenderContext&) {}
+    // Traces one camera ray. The camera event is already on `path`.
+    virtual void traceCameraRay(const Ray& ray, PathState& path) const = 0;
+    // True when the integrator splats (PathState::splat) into pixels other than the one sampled.
+    virtual bool splats() const { return false; }
 };
 
 // "raycast", "whitted" or "path"; nullptr for an unknown name.

@@ -8,6 +8,7 @@
 
 #include "lpe/event.h"
 #include "math/random.h"
+#include "math/types.h"
 
 namespace lightpath {
 
@@ -24,7 +25,13 @@ struct PathEvent {
     lpe::Scatter scatter = lpe::Scatter::None;
     Subject subject = Subject::None;
     std::uint32_t index = 0;
+    // Where it happened, in world space: the eye, a hit point, a point on a light; for the
+    // background, a point far along the escaping ray. Only `explain` and `serve` read it.
+    Vec3 position{0.0f};
 };
+
+// OSL's `O`: light emitted by a surface that is not a [[lights]] entry.
+inline constexpr lpe::EventType kObjectEmission = lpe::EventType::Emitter;
 
 // Longest recorded path: the camera, kMaxDepth specular bounces, one surface and the light.
 inline constexpr int kMaxDepth = 64;

@@ -4,17 +4,15 @@
 namespace lightpath {
 
 // Whitted ray tracing (Whitted 1980): ray casting plus recursive mirror rays weighted by kr and
-// refracted rays weighted by kt, up to maxDepth bounces: I = local + kr I_reflected + kt I_refracted.
-// Produces E S* (D|G) L, E S* L (background through mirrors and glass) and EL.
+// refracted rays weighted by kt (Fresnel's split where the material asks for it), every branch
+// traced: I = local + kr I_reflected + kt I_refracted. Produces E S* (D|G) L and E S* L.
 class WhittedIntegrator final : public Integrator {
 public:
-    void traceCameraRay(const Ray& ray, lpe::Automaton::State state, Tracer& tracer) const override;
+    void traceCameraRay(const Ray& ray, PathState& path) const override;
 
 private:
-    void trace(const Ray& ray, lpe::Automaton::State state, const Rgb& throughput, int depth,
-               Tracer& tracer) const;
-    void traceSpecular(const Ray& ray, const PathEvent& event, lpe::Automaton::Symbol symbol,
-                       lpe::Automaton::State state, const Rgb& throughput, int depth, Tracer& tracer) const;
+    // `depth`: scattering events on the path so far.
+    void trace(const Ray& ray, const Rgb& throughput, int depth, PathState& path) const;
 };
 
 }  // namespace lightpath

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -24,10 +25,10 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
                 scene.triangleNormals),
       symbols_(scene, aovs.automaton()),
       analysis_(scene),
-      emitters_(scene_, geometry_),
+      lights_(scene_, geometry_),
       camera_(scene.camera),
       integrator_(makeIntegrator(options.integrator)),
-      context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, emitters_, options.maxDepth,
+      context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
     if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted or path");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
@@ -39,6 +40,10 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
         const bool beautyOrRest = l == 0 || l + 1 == aovs.layerCount();
         if (options.writeBeauty || !beautyOrRest) writtenLayers_.push_back(l);
     }
+    if (integrator_->splats() && options.targetError > 0.0)
+        throw std::invalid_argument("adaptive sampling (--target-error) cannot be combined with the " + options.integrator +
+                                    " integrator, whose light tracing adds to every pixel");
+    integrator_->preprocess(context_);
 }
 
 namespace {
@@ -59,7 +64,7 @@ constexpr int kAdaptiveMinimum = 8;
 
 }  // namespace
 
-int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const {
+int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, PathState& path) const {
     const int spp = options_.samplesPerPixel;
     const bool adaptive = options_.targetError > 0.0;
     double sum = 0.0, sumOfSquares = 0.0;
@@ -67,21 +72,19 @@ int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) c
     while (taken < spp) {
         const Rgb beautyBefore = layers[0];
         Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, options_.seed);
-        tracer.sampler = &sampler;
+        path.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are jittered within it.
         const Vec2 jitter = sampler.next2D();
         const Vec2 offset = spp > 1 ? jitter : Vec2{0.5f};
         ++taken;
-        const auto state = context_.automaton.step(context_.automaton.start(), symbols_.camera);
-        if (!tracer.alive(state)) {
-            ++tracer.counters.cameraDead;
+        if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
+            ++path.counters.cameraDead;
             continue;
         }
         const Ray ray = camera_.generateRay(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
-        ++tracer.counters.camera;
-        tracer.path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None});
-        integrator_->traceCameraRay(ray, state, tracer);
-        tracer.path.pop();
+        ++path.counters.camera;
+        integrator_->traceCameraRay(ray, path);
+        path.pop();
         if (!adaptive) continue;
         const double value = luminance(layers[0] - beautyBefore);
         sum += value;
@@ -94,6 +97,18 @@ int Renderer::renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) c
         for (Rgb& layer : layers) layer *= weight;
     }
     return taken;
+}
+
+void Renderer::addSplats(const SplatFilm& splats, Film& film) const {
+    // Every pixel sample traced one light path, so the splats of the whole image are divided by
+    // the samples per pixel, like each pixel's own mean (Veach 1997, 10.3.4.3).
+    const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            const std::span<Rgb> pixel = film.pixel(x, y);
+            for (std::size_t l = 0; l < writtenLayers_.size(); ++l) pixel[l] += splats.at(x, y, writtenLayers_[l]) * weight;
+        }
+    }
 }
 
 bool Renderer::cancelled() const {
@@ -120,10 +135,12 @@ RenderResult Renderer::render() const {
     ProgressBar progress(tileCount, options_.progress);
     std::atomic<int> nextTile{0};
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
+    std::optional<SplatFilm> splats;
+    if (integrator_->splats()) splats.emplace(width, height, aovs_.layerCount());
     auto work = [&](int worker) {
         std::vector<Rgb> layers(aovs_.layerCount());
-        ContributionSink sink(layers);
-        Tracer tracer(context_, sink, counters[static_cast<std::size_t>(worker)]);
+        ContributionSink sink(layers, splats ? &*splats : nullptr);
+        PathState path(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
         for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
@@ -133,7 +150,7 @@ RenderResult Renderer::render() const {
                     // takes seconds, and Ctrl-C must stop the render promptly.
                     if (cancelled()) return;
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
-                    renderPixel(x, y, layers, tracer);
+                    renderPixel(x, y, layers, path);
                     const std::span<Rgb> pixel = film.pixel(x, y);
                     for (std::size_t l = 0; l < writtenLayers_.size(); ++l) pixel[l] = layers[writtenLayers_[l]];
                 }
@@ -145,6 +162,7 @@ RenderResult Renderer::render() const {
     for (int w = 1; w < threadCount; ++w) workers.emplace_back(work, w);
     work(0);
     workers.clear();
+    if (splats) addSplats(*splats, film);
 
     RenderStats stats;
     for (const RayCounters& c : counters) stats.rays += c;
@@ -162,10 +180,10 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {
                                     std::to_string(camera_.height()) + " image");
     std::vector<Rgb> layers(aovs_.layerCount());
     std::vector<LoggedContribution> log;
-    ContributionSink sink(layers, &log);
+    ContributionSink sink(layers, nullptr, &log);
     RayCounters counters;
-    Tracer tracer(context_, sink, counters);
-    renderPixel(x, y, layers, tracer);
+    PathState path(context_, sink, counters);
+    renderPixel(x, y, layers, path);
     // Logged values are per sample; scale them like the pixel so they sum to it.
     const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
     for (LoggedContribution& c : log) c.value *= weight;

@@ -10,13 +10,14 @@
 
 #include "film/aov_set.h"
 #include "film/film.h"
+#include "film/splat_film.h"
 #include "geometry/numerics.h"
 #include "geometry/scene_geometry.h"
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
-#include "lights/emitters.h"
 #include "integrators/ray_counters.h"
+#include "lights/light_set.h"
 #include "scene/camera.h"
 #include "sampling/sampler.h"
 #include "scene/scene_analysis.h"
@@ -72,8 +73,10 @@ public:
 
 private:
     // Samples one pixel into `layers` (their mean); returns the number of samples taken.
-    int renderPixel(int x, int y, std::span<Rgb> layers, Tracer& tracer) const;
+    int renderPixel(int x, int y, std::span<Rgb> layers, PathState& path) const;
     bool cancelled() const;  // RenderOptions::cancel is set
+    // Light tracing's contributions, added to the film once every tile is done.
+    void addSplats(const SplatFilm& splats, Film& film) const;
 
     const Scene& scene_;
     const AovSet& aovs_;
@@ -81,7 +84,7 @@ private:
     SceneGeometry geometry_;
     EventSymbols symbols_;
     SceneAnalysis analysis_;
-    EmitterSet emitters_;
+    LightSet lights_;
     PinholeCamera camera_;
     std::vector<std::size_t> writtenLayers_;  // indices into AovSet::layerNames()
     std::unique_ptr<Integrator> integrator_;

@@ -17,6 +17,9 @@ struct PhongMaterial {
     Rgb kr{0.0f};        // mirror reflection weight
     Rgb kt{0.0f};        // transmission (refraction) weight
     float ior = 1.5f;    // index of refraction of the inside, > 0
+    // Fresnel glass: the mirror ray gains kt F and the refracted ray keeps kt (1 - F), F the
+    // dielectric's reflectance at the angle of incidence; off, the weights are kr and kt exactly.
+    bool fresnel = false;
     Rgb emission{0.0f};  // emitted radiance: makes the surface an area light (an L event)
 
     bool isSpecular() const { return !isBlack(kr) || !isBlack(kt); }

@@ -44,7 +44,8 @@ PhongMaterial phongFromMtl(const std::string& name, const float ambient[3], cons
     m.n = std::max(shininess, 0.0f);
     m.emission = rgb(emission);
     // MTL illumination models (Wavefront's spec): 3 "reflection on, ray trace", 5 "Fresnel on,
-    // ray trace" reflect in the mirror direction weighted by Ks; 4, 6, 7 and 9 also transmit.
+    // ray trace" reflect in the mirror direction weighted by Ks; 4, 6, 7 and 9 also transmit, and
+    // 7, "refraction on, Fresnel on", splits kt between reflection and refraction by Fresnel.
     const bool mirror = illum == 3 || illum == 4 || illum == 5 || illum == 6 || illum == 7 || illum == 9;
     const bool transmits = illum == 4 || illum == 6 || illum == 7 || illum == 9;
     if (mirror) m.kr = m.ks;
@@ -52,6 +53,7 @@ PhongMaterial phongFromMtl(const std::string& name, const float ambient[3], cons
         const Rgb filter = rgb(transmittance);
         m.kt = isBlack(filter) ? Rgb(1.0f - std::clamp(dissolve, 0.0f, 1.0f)) : filter;
         if (ior > 0.0f) m.ior = ior;
+        m.fresnel = illum == 7;
     }
     return m;
 }

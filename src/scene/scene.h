@@ -17,6 +17,9 @@ namespace lightpath {
 struct SceneObject {
     std::string name;
     std::uint32_t material = 0;
+    // A [[lights]] quad or sphere: its emission ends a path with `L`. Any other surface whose
+    // material emits ends it with OSL's `O` (object emission).
+    bool declaredLight = false;
 };
 
 // Everything a scene file describes, as plain data.

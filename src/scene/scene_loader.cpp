@@ -84,7 +84,7 @@ void readWorld(const TomlTable& table, Scene& scene) {
 
 // Keys the file leaves out keep the defaults of PhongMaterial (material.h).
 PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
-    table.allowOnly({"ka", "kd", "ks", "n", "kr", "kt", "ior", "emission"});
+    table.allowOnly({"ka", "kd", "ks", "n", "kr", "kt", "ior", "fresnel", "emission"});
     PhongMaterial material;
     material.name = name;
     if (auto ka = table.find("ka")) material.ka = ka->rgb();
@@ -94,6 +94,7 @@ PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
     if (auto kr = table.find("kr")) material.kr = kr->rgb();
     if (auto kt = table.find("kt")) material.kt = kt->rgb();
     if (auto ior = table.find("ior")) material.ior = ior->number(positive);
+    if (auto fresnel = table.find("fresnel")) material.fresnel = fresnel->boolean();
     if (auto emission = table.find("emission")) material.emission = emission->rgb();
     return material;
 }
@@ -157,7 +158,7 @@ std::uint32_t addEmitterObject(const TomlTable& table, Scene& scene) {
     material.name = "area-light-" + std::to_string(scene.materials.size());
     material.emission = table.required("radiance").rgb();
     scene.materials.push_back(material);
-    scene.objects.push_back({readLightName(table), static_cast<std::uint32_t>(scene.materials.size() - 1)});
+    scene.objects.push_back({readLightName(table), static_cast<std::uint32_t>(scene.materials.size() - 1), true});
     return static_cast<std::uint32_t>(scene.objects.size() - 1);
 }
 

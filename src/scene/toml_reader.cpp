@@ -154,6 +154,12 @@ std::string TomlValue::string() const {
     return node->get();
 }
 
+bool TomlValue::boolean() const {
+    const auto* node = node_->as_boolean();
+    if (!node) expected("true or false");
+    return node->get();
+}
+
 TomlTable TomlValue::table() const {
     const auto* node = node_->as_table();
     if (!node) expected("a table");

@@ -70,6 +70,7 @@ public:
     // [r, g, b], or one number for grey; each channel >= 0.
     Rgb rgb() const;
     std::string string() const;
+    bool boolean() const;
     TomlTable table() const;
     // An array of exactly `size` elements; `expected` says what kind, e.g. "3 numbers".
     std::vector<TomlValue> array(std::size_t size, std::string_view expected) const;

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "materials/phong_bsdf.h"
+#include "materials/bsdf.h"
 #include "sampling/warp.h"
 #include "statistics.h"
 
@@ -43,7 +43,7 @@ int binOf(const Vec3& w) {
 }
 
 // p-value that directions drawn by `sampling` follow the density `density` claims.
-double chiSquarePValue(const PhongBsdf& sampling, const PhongBsdf& density, float cosOut) {
+double chiSquarePValue(const Bsdf& sampling, const Bsdf& density, float cosOut) {
     const float sinOut = std::sqrt(1.0f - cosOut * cosOut);
     const Vec3 wo{sinOut, 0, cosOut};
 
@@ -53,7 +53,7 @@ double chiSquarePValue(const PhongBsdf& sampling, const PhongBsdf& density, floa
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     for (int i = 0; i < kSamples; ++i) {
         const auto s = sampling.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
-        observed[s ? binOf(s->direction) : kCosBins * kPhiBins] += 1.0;
+        observed[s ? binOf(s->wi) : kCosBins * kPhiBins] += 1.0;
     }
 
     // Expected: the density integrated over each cell (midpoint rule on a fine grid; dw = dcos dphi).
@@ -69,7 +69,7 @@ double chiSquarePValue(const PhongBsdf& sampling, const PhongBsdf& density, floa
                     const double phi = 2.0 * M_PI * (p + (b + 0.5) / kSub) / kPhiBins;
                     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
                     const Vec3 wi{float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)};
-                    integral += density.pdf(Lobe::Diffuse, wo, wi) + density.pdf(Lobe::Glossy, wo, wi);
+                    integral += density.pdf(Lobe::Diffuse, wo, wi) + density.pdf(Lobe::Highlight, wo, wi);
                 }
             }
             const double cell = integral * (2.0 / kCosBins) * (2.0 * M_PI / kPhiBins) / (kSub * kSub);
@@ -100,20 +100,20 @@ double chiSquarePValue(const PhongBsdf& sampling, const PhongBsdf& density, floa
     return test::chiSquarePValue(statistic, cells - 1);
 }
 
-TEST_CASE("chi-square: Lambert and normalised Phong sampling follow their densities") {
+TEST_CASE("chi-square: Lambert and Blinn highlight sampling follow their densities") {
     const Case cases[kTests] = {
         {"diffuse, normal incidence", makeMaterial(Rgb{0.8f}, Rgb{0}, 1), 1.0f},
         {"diffuse, grazing", makeMaterial(Rgb{0.5f}, Rgb{0}, 1), 0.1f},
-        {"phong n=1", makeMaterial(Rgb{0}, Rgb{0.9f}, 1), 0.7f},
-        {"phong n=10", makeMaterial(Rgb{0}, Rgb{0.9f}, 10), 0.5f},
-        {"phong n=100, grazing", makeMaterial(Rgb{0}, Rgb{0.9f}, 100), 0.2f},
-        {"phong n=40", makeMaterial(Rgb{0}, Rgb{0.5f}, 40), 0.9f},
-        {"diffuse + phong n=20", makeMaterial(Rgb{0.4f}, Rgb{0.3f}, 20), 0.6f},
-        {"coloured diffuse + phong n=5", makeMaterial({0.7f, 0.2f, 0.1f}, {0.1f, 0.1f, 0.6f}, 5), 0.3f},
+        {"highlight n=1", makeMaterial(Rgb{0}, Rgb{0.9f}, 1), 0.7f},
+        {"highlight n=10", makeMaterial(Rgb{0}, Rgb{0.9f}, 10), 0.5f},
+        {"highlight n=100, grazing", makeMaterial(Rgb{0}, Rgb{0.9f}, 100), 0.2f},
+        {"highlight n=40", makeMaterial(Rgb{0}, Rgb{0.5f}, 40), 0.9f},
+        {"diffuse + highlight n=20", makeMaterial(Rgb{0.4f}, Rgb{0.3f}, 20), 0.6f},
+        {"coloured diffuse + highlight n=5", makeMaterial({0.7f, 0.2f, 0.1f}, {0.1f, 0.1f, 0.6f}, 5), 0.3f},
     };
     for (const Case& c : cases) {
         CAPTURE(c.name);
-        const PhongBsdf bsdf(c.material, {0, 0, 1}, true);
+        const Bsdf bsdf(c.material, {0, 0, 1}, true);
         CHECK(chiSquarePValue(bsdf, bsdf, c.cosOut) > kSignificance);
     }
 }
@@ -122,7 +122,7 @@ TEST_CASE("chi-square machinery rejects a wrong density") {
     // Sampling the n = 10 lobe while the density claims n = 12 must fail the same test.
     const PhongMaterial sampled = makeMaterial(Rgb{0}, Rgb{0.9f}, 10);
     const PhongMaterial claimed = makeMaterial(Rgb{0}, Rgb{0.9f}, 12);
-    const PhongBsdf sampling(sampled, {0, 0, 1}, true), density(claimed, {0, 0, 1}, true);
+    const Bsdf sampling(sampled, {0, 0, 1}, true), density(claimed, {0, 0, 1}, true);
     CHECK(chiSquarePValue(sampling, density, 0.8f) < kSignificance);
 }
 
@@ -130,11 +130,12 @@ TEST_CASE("dielectric: reflection frequency is Fresnel's and refraction obeys Sn
     PhongMaterial glass;
     glass.kt = Rgb{1.0f};
     glass.ior = 1.5f;
+    glass.fresnel = true;
     for (const bool entering : {true, false}) {
         for (const float cosOut : {1.0f, 0.8f, 0.4f, 0.1f}) {
             CAPTURE(entering);
             CAPTURE(cosOut);
-            const PhongBsdf bsdf(glass, {0, 0, 1}, entering);
+            const Bsdf bsdf(glass, {0, 0, 1}, entering);
             const double eta = entering ? 1.0 / 1.5 : 1.5;  // n_i / n_t
             const double sinOut = std::sqrt(1.0 - double(cosOut) * cosOut);
             // Fresnel for unpolarised light, written out in double (Hecht, Optics, 4.4).
@@ -153,13 +154,13 @@ TEST_CASE("dielectric: reflection frequency is Fresnel's and refraction obeys Sn
             for (int i = 0; i < kTrials; ++i) {
                 const auto s = bsdf.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
                 REQUIRE(s);
-                if (!s->transmitted) {
+                if (s->lobe != Lobe::Refraction) {
                     ++reflected;
                     continue;
                 }
                 // Snell: n_i sin(theta_i) = n_t sin(theta_t), on the other side of the surface.
-                const double sinTransmitted = std::sqrt(double(s->direction.x) * s->direction.x + double(s->direction.y) * s->direction.y);
-                CHECK(s->direction.z < 0.0f);
+                const double sinTransmitted = std::sqrt(double(s->wi.x) * s->wi.x + double(s->wi.y) * s->wi.y);
+                CHECK(s->wi.z < 0.0f);
                 CHECK(sinTransmitted == doctest::Approx(eta * sinOut).epsilon(1e-4));
             }
             const double mean = expectedReflectance * kTrials;

@@ -67,22 +67,33 @@ Scene floorScene(float albedo) {
     return scene;
 }
 
-TEST_CASE("path: a Lambertian plane under a point light is rho/pi I cos(theta) / d^2 at every pixel") {
-    Scene scene = floorScene(0.6f);
-    const glm::dvec3 light{0.7, 2.5, -0.4};
-    scene.lights.push_back({"key", Vec3(light), Rgb{3.0f}, {1, 0, 0}});
+// A point light of intensity I has radiant intensity pi I, so Lambert's (rho/pi) pi I cos(theta)
+// falloff(d) is the lecture's kd (N.L) I / (c0 + c1 d + c2 d^2) exactly: the physical inverse-square
+// law for [0, 0, 1] and the lecture's attenuation for anything else.
+double litFloor(const Scene& scene, const glm::dvec3& light, const glm::dvec3& attenuation) {
     const Film film = renderPath(scene, {}, 1);
     double worst = 0.0;
     for (int j = 0; j < film.height(); ++j) {
         for (int i = 0; i < film.width(); ++i) {
             const glm::dvec3 p = floorPoint(scene.camera, i, j);
             const glm::dvec3 toLight = light - p;
-            const double d2 = glm::dot(toLight, toLight);
-            const double expected = 0.6 / M_PI * 3.0 * (toLight.y / std::sqrt(d2)) / d2;
+            const double d = glm::length(toLight);
+            const double falloff = 1.0 / (attenuation.x + attenuation.y * d + attenuation.z * d * d);
+            const double expected = 0.6 * 3.0 * (toLight.y / d) * falloff;
             worst = std::max(worst, std::fabs(film.at(0, i, j).g - expected) / expected);
         }
     }
-    CHECK(worst < 1e-4);
+    return worst;
+}
+
+TEST_CASE("path: a Lambertian plane under a point light is kd I cos(theta) / (c0 + c1 d + c2 d^2) at every pixel") {
+    const glm::dvec3 light{0.7, 2.5, -0.4};
+    for (const glm::dvec3 attenuation : {glm::dvec3{0, 0, 1}, glm::dvec3{1, 0.1, 0.01}, glm::dvec3{1, 0, 0}}) {
+        CAPTURE(attenuation.y);
+        Scene scene = floorScene(0.6f);
+        scene.lights.push_back({"key", Vec3(light), Rgb{3.0f}, Vec3(attenuation)});
+        CHECK(litFloor(scene, light, attenuation) < 1e-4);
+    }
 }
 
 // Lambert's formula for the irradiance at p (normal n) from a uniform polygon of radiance Le:
@@ -165,9 +176,9 @@ TEST_CASE("path: furnace, a closed emissive diffuse sphere has radiance Le / (1 
     CHECK(film.at(4, 3, 3).r == doctest::Approx(le));      // emission EL: seen directly, exactly Le
 }
 
-TEST_CASE("path: furnace, a point light of intensity pi at the centre of a unit sphere with kd 0.5") {
+TEST_CASE("path: furnace, a point light of radiant intensity pi at the centre of a unit sphere with kd 0.5") {
     Scene scene = furnace(0.5f, Rgb{0.0f});
-    scene.lights.push_back({"centre", {0, 0, 0}, Rgb{kPi}, {1, 0, 0}});
+    scene.lights.push_back({"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
     const Film film = renderPath(scene, lpe::classesSet(), 16);
     checkLayer(film, "beauty", 1.0);
     checkLayer(film, "raycast", 0.5);   // E D L: exactly 0.5 everywhere

@@ -1,0 +1,35 @@
+#pragma once
+// Where light tracing adds the contributions it finds for pixels other than the one being sampled.
+// Splats arrive from every worker in any order, so they are summed in 64-bit fixed point: integer
+// addition is associative, and the image is bit-identical for any number of threads and any order
+// of tiles (issue "bidirectional path tracing": deterministic splatting). One unit is 2^-20 of
+// radiance: a splat is rounded by at most 5e-7, and a pixel holds up to 8.8e12 before overflow.
+#include <atomic>
+#include <cstdint>
+#include <memory>
+
+#include "math/types.h"
+
+namespace lightpath {
+
+class SplatFilm {
+public:
+    SplatFilm(int width, int height, std::size_t layers);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Thread-safe; values are finite (the caller drops non-finite ones).
+    void add(int x, int y, std::size_t layer, const Rgb& value);
+    Rgb at(int x, int y, std::size_t layer) const;
+
+private:
+    static constexpr double kUnitsPerRadiance = 1048576.0;  // 2^20
+    std::size_t index(int x, int y, std::size_t layer) const {
+        return ((static_cast<std::size_t>(y) * width_ + x) * layers_ + layer) * 3;
+    }
+    int width_, height_;
+    std::size_t layers_;
+    std::unique_ptr<std::atomic<std::int64_t>[]> sums_;
+};
+
+}  // namespace lightpath

@@ -1,0 +1,68 @@
+#include "integrators/path_state.h"
+
+#include <cmath>
+
+#include "integrators/integrator.h"
+
+namespace lightpath {
+
+PathState::PathState(const RenderContext& context, ContributionSink& sink, RayCounters& counters)
+    : context(context), counters(counters), sink_(sink) {
+    states_[0] = context.automaton.start();
+}
+
+lpe::Automaton::State PathState::step(lpe::Automaton::State state, const PathEvent& event) const {
+    return context.automaton.step(state, context.symbols(event));
+}
+
+lpe::OutputMask PathState::acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const {
+    return context.automaton.accepts(step(state, light));
+}
+
+bool PathState::wanted(lpe::OutputMask accepted) const {
+    return context.keepAllPaths || (accepted & context.requested) != 0;
+}
+
+bool PathState::push(const PathEvent& event) {
+    const lpe::Automaton::State next = step(state(), event);
+    if (!context.keepAllPaths && context.automaton.isDead(next, context.requested)) return false;
+    events_.push(event);
+    states_[events_.size()] = next;
+    return true;
+}
+
+void PathState::pop() { events_.pop(); }
+
+bool PathState::finite(const Rgb& value) {
+    if (std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b)) return true;
+    ++counters.nonFinite;
+    return false;
+}
+
+void PathState::emit(const PathEvent& light, const Rgb& value) {
+    if (!finite(value)) return;
+    const lpe::OutputMask accepted = acceptsAfter(state(), light);
+    events_.push(light);
+    sink_.add(value, accepted, events_);
+    events_.pop();
+}
+
+void PathState::emit(const PathEvent& surface, const PathEvent& light, const Rgb& value) {
+    if (!finite(value)) return;
+    const lpe::OutputMask accepted = acceptsAfter(step(state(), surface), light);
+    events_.push(surface);
+    events_.push(light);
+    sink_.add(value, accepted, events_);
+    events_.pop();
+    events_.pop();
+}
+
+void PathState::splat(int x, int y, const PathEvent& light, const Rgb& value) {
+    if (!finite(value)) return;
+    const lpe::OutputMask accepted = acceptsAfter(state(), light);
+    events_.push(light);
+    sink_.splat(x, y, value, accepted, events_);
+    events_.pop();
+}
+
+}  // namespace lightpath

@@ -1,0 +1,62 @@
+#pragma once
+// The one type through which integrators meet the LPE automaton (docs/design.md). It owns the
+// events of the path being traced and the automaton state after each, so "step, check dead,
+// record, emit" is one call: push() refuses an event after which no requested output can accept,
+// emit() classifies a finished path and hands it to the sink. It also carries what a worker needs
+// per path: its counters and its current sample's random numbers.
+#include <array>
+
+#include "integrators/contribution_sink.h"
+#include "integrators/event_symbols.h"
+#include "integrators/path_record.h"
+#include "integrators/ray_counters.h"
+#include "lpe/automaton.h"
+#include "math/types.h"
+#include "sampling/sampler.h"
+
+namespace lightpath {
+
+struct RenderContext;
+
+class PathState {
+public:
+    PathState(const RenderContext& context, ContributionSink& sink, RayCounters& counters);
+
+    // Appends `event` and advances the automaton; false, and nothing appended, when no requested
+    // output can accept any path that continues from here (a dead state: the branch stops).
+    bool push(const PathEvent& event);
+    void pop();
+    std::size_t size() const { return events_.size(); }
+    const PathRecord& events() const { return events_; }
+    lpe::Automaton::State state() const { return states_[events_.size()]; }
+    // Names the vertex this path has reached, for per-vertex random numbers.
+    std::uint64_t key() const { return events_.key(); }
+
+    // Would a path ending now in `light` (after `surface`) reach a requested output?
+    bool wants(const PathEvent& light) const { return wanted(acceptsAfter(state(), light)); }
+    bool wants(const PathEvent& surface, const PathEvent& light) const {
+        return wanted(acceptsAfter(step(state(), surface), light));
+    }
+    // Ends the path in `light` (after `surface`) with radiance `value`. Non-finite values are
+    // counted and dropped, never stored.
+    void emit(const PathEvent& light, const Rgb& value);
+    void emit(const PathEvent& surface, const PathEvent& light, const Rgb& value);
+    // The same for light tracing: the finished path's value goes to pixel (x, y) of the image.
+    void splat(int x, int y, const PathEvent& light, const Rgb& value);
+
+    const RenderContext& context;
+    RayCounters& counters;
+    Sampler* sampler = nullptr;  // the current pixel sample's random numbers
+
+private:
+    lpe::Automaton::State step(lpe::Automaton::State state, const PathEvent& event) const;
+    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const;
+    bool wanted(lpe::OutputMask accepted) const;
+    bool finite(const Rgb& value);
+
+    ContributionSink& sink_;
+    PathRecord events_;
+    std::array<lpe::Automaton::State, kMaxPathEvents + 1> states_{};
+};
+
+}  // namespace lightpath

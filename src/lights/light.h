@@ -1,0 +1,63 @@
+#pragma once
+// The one light interface every integrator reads (docs/design.md): sample a point towards a
+// receiver (next-event estimation, ray casting's shadow rays), the density of that sampling (MIS),
+// sample a ray leaving the light (light tracing), and its power (choosing lights). A new kind of
+// light is one file implementing this, plus its line in LightSet's constructor.
+#include "geometry/surface_hit.h"
+#include "integrators/path_record.h"
+#include "math/ray.h"
+#include "math/types.h"
+
+namespace lightpath {
+
+// One point on a light as seen from a receiver.
+struct LightSample {
+    Vec3 point{0.0f};   // on the light
+    Vec3 normal{0.0f};  // the light's unit normal at `point`; zero for a point light
+    Vec3 wi{0.0f};      // unit, from the receiver towards `point`
+    float distance = 0.0f;
+    // What f |cos theta_i| is multiplied by: incident radiance over the sample's solid-angle density.
+    // A point light gives pi I falloff(d); an area light Le cos(theta_light) / (pdf_area d^2).
+    Rgb weight{0.0f};
+    float pdf = 0.0f;   // solid-angle density at the receiver; 0 for a delta light
+};
+
+// A ray leaving a light, for tracing light from the light's side.
+struct EmittedRay {
+    Ray ray;
+    Vec3 normal{0.0f};        // the light's normal at the origin; zero for a point light
+    Rgb radiance{0.0f};       // Le along the ray (a point light: its radiant intensity pi I)
+    float pdfPosition = 0.0f; // per unit area (1 for a point light: a delta in position)
+    float pdfDirection = 0.0f;// per steradian
+};
+
+class Light {
+public:
+    explicit Light(const PathEvent& event) : event_(event) {}
+    virtual ~Light() = default;
+
+    // A point on the light towards `receiver`.
+    virtual LightSample sample(const Vec3& receiver, Vec2 u) const = 0;
+    // The solid-angle density at `receiver` with which sample() returns `point` (normal `normal`)
+    // on this light; 0 for a delta light, which no other technique can reach.
+    virtual float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const = 0;
+    // A ray leaving the light: a point by area, a direction by cosine (area) or uniformly (point).
+    virtual EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const = 0;
+    // The radiance leaving the light at `hit` towards `towardViewer` (zero for a point light).
+    virtual Rgb radiance(const SurfaceHit& hit, const Vec3& towardViewer) const = 0;
+    // How light from the light falls off over distance d, in place of 1/d^2: the lecture's
+    // attenuation 1 / (c0 + c1 d + c2 d^2) for point lights, physical 1/d^2 for area lights.
+    virtual float falloff(float distance) const { return 1.0f / (distance * distance); }
+    // Emitted flux (W): lights are chosen in proportion to it.
+    virtual Rgb power() const = 0;
+    virtual bool isDelta() const = 0;
+
+    // The event this light ends a path with: `L` for a [[lights]] entry, `O` for a surface whose
+    // material emits (OSL's object emission), with the subject that labels it.
+    const PathEvent& event() const { return event_; }
+
+private:
+    PathEvent event_;
+};
+
+}  // namespace lightpath

@@ -1,0 +1,83 @@
+#include "lights/light_set.h"
+
+#include <algorithm>
+
+#include "lights/point_light.h"
+
+namespace lightpath {
+
+LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
+    : ofObject_(scene.objects.size(), nullptr), areaChoiceOfObject_(scene.objects.size(), 0.0f) {
+    for (std::uint32_t i = 0; i < scene.lights.size(); ++i)
+        lights_.push_back(std::make_unique<PointLightSource>(scene.lights[i], i));
+
+    // The emissive primitives of each object, by scene-wide id.
+    std::vector<std::vector<std::uint32_t>> primitives(scene.objects.size());
+    auto emits = [&](std::uint32_t object) { return !isBlack(scene.materials[scene.objects[object].material].emission); };
+    for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i)
+        if (emits(geometry.spheres()[i].object)) primitives[geometry.spheres()[i].object].push_back(geometry.sphereId(i));
+    for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i)
+        if (emits(geometry.triangles()[i].object)) primitives[geometry.triangles()[i].object].push_back(geometry.triangleId(i));
+    for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {
+        if (primitives[object].empty()) continue;
+        // A [[lights]] quad or sphere is a light (L); any other emitting surface is object emission (O).
+        const lpe::EventType type = scene.objects[object].declaredLight ? lpe::EventType::Emitter : kObjectEmission;
+        auto light = std::make_unique<AreaLightSource>(PathEvent{type, lpe::Scatter::None, Subject::Object, object},
+                                                       scene.materials[scene.objects[object].material].emission,
+                                                       geometry, primitives[object]);
+        if (light->empty()) continue;
+        ofObject_[object] = light.get();
+        lights_.push_back(std::move(light));
+    }
+    for (const auto& light : lights_) (light->isDelta() ? delta_ : area_).push_back(light.get());
+    areaChoices_ = distribution(area_);
+    std::vector<const Light*> all;
+    for (const auto& light : lights_) all.push_back(light.get());
+    emitterChoices_ = distribution(all);
+    for (const Choice& c : areaChoices_)
+        areaChoiceOfObject_[c.light->event().index] = c.probability;
+}
+
+std::vector<LightSet::Choice> LightSet::distribution(std::span<const Light* const> lights) {
+    std::vector<Choice> choices;
+    float total = 0.0f;
+    for (const Light* light : lights) total += maxComponent(light->power());
+    float cumulative = 0.0f;
+    for (const Light* light : lights) {
+        const float p = total > 0.0f ? maxComponent(light->power()) / total : 1.0f / float(lights.size());
+        cumulative += p;
+        choices.push_back({light, cumulative, p});
+    }
+    if (!choices.empty()) choices.back().cumulative = 1.0f;
+    return choices;
+}
+
+ChosenLight LightSet::choose(const std::vector<Choice>& choices, float u) {
+    if (choices.empty()) return {};
+    auto it = std::upper_bound(choices.begin(), choices.end(), u,
+                               [](float value, const Choice& c) { return value < c.cumulative; });
+    if (it == choices.end()) --it;
+    return {it->light, it->probability};
+}
+
+ChosenLight LightSet::chooseAreaLight(float u) const { return choose(areaChoices_, u); }
+ChosenLight LightSet::chooseEmitter(float u) const { return choose(emitterChoices_, u); }
+
+float LightSet::emitterProbability(const Light& light) const {
+    for (const Choice& c : emitterChoices_)
+        if (c.light == &light) return c.probability;
+    return 0.0f;
+}
+
+Rgb LightSet::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
+    const Light* light = lightOfObject(hit.object);
+    return light ? light->radiance(hit, towardViewer) : Rgb{0.0f};
+}
+
+float LightSet::pdf(const Vec3& receiver, const SurfaceHit& hit) const {
+    const Light* light = lightOfObject(hit.object);
+    if (!light) return 0.0f;
+    return areaChoiceOfObject_[hit.object] * light->pdf(receiver, hit.point, hit.normal);
+}
+
+}  // namespace lightpath
