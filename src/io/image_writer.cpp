@@ -12,6 +12,7 @@
 #include <mutex>
 #include <thread>
 
+#include "film/large_buffer.h"
 #include "io/image_module.h"
 
 namespace lightpath {
@@ -130,7 +131,7 @@ std::string writePng(const ImageCodec& codec, const Film& film, std::size_t laye
     const std::span<const Rgb> all = film.interleaved();
     const std::size_t stride = film.layerCount();
     const Srgb8Table& table = srgb8Table();
-    std::vector<unsigned char> encoded(all.size() / stride * 3);
+    std::vector<unsigned char, LargeBufferAllocator<unsigned char>> encoded(all.size() / stride * 3);
     for (std::size_t p = 0, i = layer; i < all.size(); ++p, i += stride)
         for (int c = 0; c < 3; ++c) encoded[p * 3 + static_cast<std::size_t>(c)] = table.encode(all[i][c]);
     return codec.write("png", temporary.string(), spec, encoded.data());
