@@ -1,7 +1,7 @@
 // libFuzzer target for the scene loader: any text either loads or is refused with a SceneError
 // (scenes/README.md, "Errors"). A scene that loads must be usable as it is: consistent indices,
 // valid labels, and a render (tiny, with every integrator) whose layers are finite, non-negative,
-// drop no non-finite contribution and sum to the beauty (DESIGN.md's promise; the tolerance of
+// drop no non-finite contribution and sum to the beauty (docs/design.md's promise; the tolerance of
 // tests/render/test_aov_sums.cpp), with `rest` zero for the `classes` partition.
 //
 // Hermetic: the scene "lives" in a directory that does not exist, so no mesh file ever loads.
@@ -14,9 +14,9 @@
 
 #include "film/aov_set.h"
 #include "fuzz_support.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace {
 
@@ -148,7 +148,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     scene.camera.width = kWidth;
     scene.camera.height = kHeight;
-    static const AovSet classes(lpe::classesSet());
+    static const AovSet classes(classesSet());
     for (const char* integrator : {"raycast", "whitted", "path"}) render(scene, classes, integrator, true);
     // Labels reach the automaton: the light touching the last object, and rest, sum to the beauty.
     if (!scene.objects.empty()) {
