@@ -1,7 +1,5 @@
 #include "io/image_writer.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -14,6 +12,7 @@
 
 #include "film/large_buffer.h"
 #include "io/image_module.h"
+#include "io/text_file.h"
 
 namespace lightpath {
 namespace {
@@ -35,14 +34,6 @@ std::string lowerExtension(const fs::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext;
-}
-
-fs::path temporaryName(const fs::path& target) {
-    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string once inlined here.
-    std::string name = ".";
-    name += target.filename().string();
-    name += ".tmp-" + std::to_string(::getpid());
-    return target.parent_path() / name;
 }
 
 // sRGB's transfer function (IEC 61966-2-1), in double: the definition toSrgb8 reproduces exactly.
