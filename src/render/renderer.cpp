@@ -14,6 +14,13 @@ namespace lightpath {
 namespace {
 
 constexpr int kTileSize = 16;
+// State that one worker writes while another reads or writes nearby keeps a cache line to itself:
+// two cores writing one line pass it back and forth (false sharing).
+constexpr std::size_t kCacheLine = 64;
+template <typename T>
+struct alignas(kCacheLine) CacheLinePadded {
+    T value{};
+};
 
 }  // namespace
 
@@ -133,16 +140,20 @@ RenderResult Renderer::render() const {
     threadCount = std::clamp(threadCount, 1, std::max(1, tileCount));
 
     ProgressBar progress(tileCount, options_.progress);
-    std::atomic<int> nextTile{0};
+    CacheLinePadded<std::atomic<int>> nextTile;  // bumped per tile, away from the locals the workers read
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
     std::optional<SplatFilm> splats;
     if (integrator_->splats()) splats.emplace(width, height, aovs_.layerCount());
     auto work = [&](int worker) {
-        std::vector<Rgb> layers(aovs_.layerCount());
+        // A cache line of padding on each side of the worker's accumulators: the heap may have put
+        // another worker's data next to them.
+        constexpr std::size_t kPad = (kCacheLine + sizeof(Rgb) - 1) / sizeof(Rgb);
+        std::vector<Rgb> padded(aovs_.layerCount() + 2 * kPad);
+        const std::span<Rgb> layers(padded.data() + kPad, aovs_.layerCount());
         ContributionSink sink(layers, splats ? &*splats : nullptr);
         PathState path(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
-        for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
+        for (int tile = nextTile.value++; tile < tileCount; tile = nextTile.value++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, height); ++y) {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
