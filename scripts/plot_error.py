@@ -14,7 +14,9 @@ def main(csv_path: str, png_path: str) -> None:
     curves = defaultdict(lambda: defaultdict(list))
     with open(csv_path, newline="") as f:
         for row in csv.DictReader(f):
-            curves[row["scene"]][row["sampler"]].append((float(row["seconds"]), float(row["rmse"])))
+            # Sampler curves are the path tracer's; the integrator comparison names its method.
+            label = row["sampler"] if row["integrator"] == "path" else f'{row["integrator"]} {row["sampler"]}'
+            curves[row["scene"]][label].append((float(row["seconds"]), float(row["rmse"])))
     scenes = sorted(curves)
     fig, axes = plt.subplots(1, len(scenes), figsize=(5 * len(scenes), 4), squeeze=False)
     for ax, scene in zip(axes[0], scenes):

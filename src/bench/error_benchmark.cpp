@@ -106,12 +106,59 @@ Scene furnaceScene(int size, double rho, double le) {
     return scene;
 }
 
+// A diffuse floor beside a mirror wall x = 1 under a point light, seen from above: the light the
+// mirror throws on the floor (E D S L, a caustic) is the light's mirror image at (2 - x, y, z),
+// kr times as bright (inverse-square law), averaged over each pixel's footprint.
+Scene mirrorCausticScene(int size, Reference& caustic) {
+    Scene scene;
+    scene.camera.eye = {0.2f, 1.0f, 0.1f};
+    scene.camera.lookAt = {0.2f, 0.0f, 0.1f};
+    scene.camera.up = {0.0f, 0.0f, -1.0f};
+    scene.camera.verticalFovDegrees = 50.0f;
+    scene.camera.width = scene.camera.height = size;
+    const double albedo = 0.6, kr = 0.8, intensity = 3.0;
+    const glm::dvec3 light{0.3, 1.2, 0.1}, image{2.0 - light.x, light.y, light.z};
+    PhongMaterial floor, mirror;
+    floor.name = "floor";
+    floor.kd = Rgb{static_cast<float>(albedo)};
+    mirror.name = "mirror";
+    mirror.kr = Rgb{static_cast<float>(kr)};
+    scene.materials = {floor, mirror};
+    scene.objects = {{"floor", 0}, {"mirror", 1}};
+    scene.planes.push_back({{0, 0, 0}, {0, 1, 0}, 0});
+    scene.planes.push_back({{1, 0, 0}, {-1, 0, 0}, 1});
+    scene.lights.push_back({"key", Vec3(light), Rgb{static_cast<float>(intensity)}, {0, 0, 1}});
+    const PinholeCamera camera(scene.camera);
+    constexpr int kSub = 8;
+    for (int j = 0; j < size; ++j) {
+        for (int i = 0; i < size; ++i) {
+            double sum = 0.0;
+            for (int b = 0; b < kSub; ++b) {
+                for (int a = 0; a < kSub; ++a) {
+                    const Ray ray = camera.generateRay(i + (a + 0.5f) / kSub, j + (b + 0.5f) / kSub);
+                    const glm::dvec3 o(ray.origin), d(ray.direction);
+                    const glm::dvec3 p = o + (-o.y / d.y) * d, toImage = image - p;
+                    const double distance = glm::length(toImage);
+                    sum += kr * albedo * intensity * (toImage.y / distance) / (distance * distance);
+                }
+            }
+            caustic.push_back(Rgb{static_cast<float>(sum / (kSub * kSub))});
+        }
+    }
+    return scene;
+}
+
 struct Measurement {
     double seconds, rmse, relmse;
 };
 
-Measurement measure(const Scene& scene, const Reference& reference, const RenderOptions& options) {
-    const AovSet aovs(std::vector<lpe::NamedExpression>{});
+// The error of the beauty, or of the one AOV `expression` when it is given.
+Measurement measure(const Scene& scene, const Reference& reference, const RenderOptions& options,
+                    const std::string& expression = "") {
+    std::vector<lpe::NamedExpression> set;
+    if (!expression.empty()) set.push_back({"measured", expression});
+    const AovSet aovs(set);
+    const std::size_t layer = expression.empty() ? 0 : 1;
     Film film(1, 1, {});
     const double start = processCpuSeconds();
     film = Renderer(scene, aovs, options).render().film;
@@ -120,7 +167,7 @@ Measurement measure(const Scene& scene, const Reference& reference, const Render
     std::size_t n = 0;
     for (int y = 0; y < film.height(); ++y) {
         for (int x = 0; x < film.width(); ++x) {
-            const Rgb& value = film.at(0, x, y);
+            const Rgb& value = film.at(layer, x, y);
             const Rgb& truth = reference[static_cast<std::size_t>(y * film.width() + x)];
             for (int c = 0; c < 3; ++c) {
                 const double e = double(value[c]) - double(truth[c]);
@@ -173,6 +220,58 @@ Reference cachedReference(const Scene& scene, const std::filesystem::path& cache
     const Film film = Renderer(scene, aovs, options).render().film;
     writeFilm(film, cacheFile, {{"lightpath:reference_spp", std::to_string(spp)}});
     return film.layer(0);
+}
+
+// Path tracing against bidirectional path tracing (independent sampling, 1 thread): error against
+// time on a caustic only light tracing finds, and on the Cornell box with its area light, where
+// both converge; bdpt's time to reach the path tracer's error at its largest budget, over path's.
+void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory,
+                        const std::filesystem::path& cacheDirectory, ErrorBenchmarkResult& result) {
+    struct Comparison {
+        std::string name;
+        Scene scene;
+        Reference reference;
+        std::string expression;  // the AOV measured; empty: the beauty
+    };
+    std::vector<Comparison> comparisons;
+    {
+        Reference caustic;
+        Scene scene = mirrorCausticScene(quick ? 32 : 64, caustic);
+        comparisons.push_back({"mirror-caustic", std::move(scene), std::move(caustic), "E(D|G)S+L"});
+    }
+    {
+        // The Cornell box lit by its ceiling lamp alone (the MTL's Ke), against a cached path
+        // tracer reference: both integrators converge to it.
+        Scene cornell = loadScene(scenesDirectory / "cornell-original.toml");
+        cornell.lights.clear();
+        cornell.camera.width = cornell.camera.height = 32;
+        Reference reference = cachedReference(cornell, cacheDirectory / "cornell-lamp-32-reference.exr", 4096);
+        comparisons.push_back({"cornell-lamp", std::move(cornell), std::move(reference), ""});
+    }
+    const int maxLog2 = quick ? 5 : 8;
+    for (const Comparison& c : comparisons) {
+        std::vector<std::vector<ErrorBenchmarkRow>> curves;
+        for (const char* integrator : {"path", "bdpt"}) {
+            std::vector<ErrorBenchmarkRow> curve;
+            for (int k = 0; k <= maxLog2; ++k) {
+                RenderOptions options;
+                options.integrator = integrator;
+                options.threads = 1;
+                options.samplesPerPixel = 1 << k;
+                options.seed = 1;
+                const Measurement m = measure(c.scene, c.reference, options, c.expression);
+                curve.push_back({c.name, integrator, "independent", options.samplesPerPixel, m.seconds, m.rmse, m.relmse});
+            }
+            result.rows.insert(result.rows.end(), curve.begin(), curve.end());
+            curves.push_back(std::move(curve));
+        }
+        // The path tracer's error at its largest budget; on the caustic it never falls (it finds
+        // none of the light), so bdpt's time to reach it says little there and the curves speak.
+        const double error = curves[0].back().rmse;
+        const double pathSeconds = secondsToReach(curves[0], error);
+        result.summaries.push_back({c.name, "path", fitSlope(curves[0]), 1.0});
+        result.summaries.push_back({c.name, "bdpt", fitSlope(curves[1]), secondsToReach(curves[1], error) / pathSeconds});
+    }
 }
 
 }  // namespace
@@ -235,6 +334,7 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& 
             result.summaries.push_back({bench.name, kStrategies[s].name, fitSlope(curves[s]),
                                         secondsToReach(curves[s], error) / independentSeconds});
     }
+    compareIntegrators(quick, scenesDirectory, cacheDirectory, result);
     return result;
 }
 

@@ -6,6 +6,10 @@
 //                     Lambert's closed-form polygon irradiance averaged over the pixel footprint
 //   furnace           a closed emissive diffuse sphere seen from inside: Le / (1 - rho) everywhere
 //   taxonomy          the lecture scene, against a high-sample render computed once and cached
+// then path tracing against bidirectional path tracing:
+//   mirror-caustic    the light a mirror throws on a floor (E(D|G)S+L) under a point light: the
+//                     light's mirror image in closed form; only bdpt's light tracing finds it
+//   cornell-lamp      the Cornell box under its area light, against a cached high-sample render
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,9 +25,11 @@ struct ErrorBenchmarkRow {
 };
 
 struct ErrorBenchmarkSummary {
-    std::string scene, sampler;
+    std::string scene, sampler;  // for the integrator comparison: the integrator
     double slope = 0.0;       // fitted d log(rmse) / d log(seconds)
-    double timeRatio = 0.0;   // seconds to reach the common error, over independent sampling's
+    // Seconds to reach the common error, over independent sampling's (samplers) or over the path
+    // tracer's at its largest budget (integrators).
+    double timeRatio = 0.0;
 };
 
 struct ErrorBenchmarkResult {

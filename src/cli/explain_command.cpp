@@ -32,6 +32,7 @@ struct PathGroup {
     std::vector<Rgb> values;
     std::vector<std::vector<TermFactor>> factors;  // per contribution, per sample
     Rgb sum{0.0f};
+    std::vector<std::string> strategies;  // bdpt: the strategies (s, t) that made it, in order found
 };
 
 // Terms that added nothing, grouped by path and reason.
@@ -88,6 +89,12 @@ std::vector<PathGroup> groupPaths(const Scene& scene, const std::vector<LoggedCo
         g.values.push_back(c.value);
         g.factors.emplace_back(c.factors.begin(), c.factors.begin() + static_cast<std::ptrdiff_t>(c.factorCount));
         g.sum += c.value;
+        if (c.lightVertices >= 0) {
+            const std::string strategy = "s=" + std::to_string(c.lightVertices) + " t=" + std::to_string(c.eyeVertices) +
+                                         (c.splatted ? " (light tracing, splatted here)" : "");
+            if (std::find(g.strategies.begin(), g.strategies.end(), strategy) == g.strategies.end())
+                g.strategies.push_back(strategy);
+        }
     }
     const auto luminance = [](const Rgb& v) { return 0.2126 * v.r + 0.7152 * v.g + 0.0722 * v.b; };
     std::stable_sort(groups.begin(), groups.end(),
@@ -173,6 +180,7 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
             std::printf("     factors: %s\n", joined(words, " x ").c_str());
         }
         if (g.factors.size() > kFactorRows) std::printf("     (factors of the first %zu of %zu samples shown)\n", kFactorRows, g.factors.size());
+        if (!g.strategies.empty()) std::printf("     strategy: %s\n", joined(g.strategies, ", ").c_str());
     }
     if (zero > 0 && !command.all)
         std::printf("\n(%zu path%s whose contributions sum to zero hidden; --all shows them)\n", zero, zero == 1 ? "" : "s");

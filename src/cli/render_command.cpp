@@ -3,13 +3,16 @@
 #include <sys/resource.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "cli/exit_codes.h"
 #include "cli/render_setup.h"
+#include "io/image_module.h"
 #include "io/image_writer.h"
 
 namespace lightpath {
@@ -18,8 +21,20 @@ namespace {
 struct RenderCommand {
     RenderSetup setup;
     std::string output;
+    std::string readyFile;  // created once Ctrl-C is handled and rendering begins (scripts, tests)
     bool stats = false;
 };
+
+// Wall time spent writing the output, and how much of it went on waiting for the image module.
+struct WriteStats {
+    double seconds = 0.0;
+    double moduleWaitSeconds = 0.0;
+    std::size_t files = 0;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 double peakMemoryMiB() {
     rusage usage{};
@@ -27,7 +42,7 @@ double peakMemoryMiB() {
     return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
 }
 
-void printStats(const RenderStats& stats) {
+void printStats(const RenderStats& stats, const WriteStats& write) {
     const RayCounters& r = stats.rays;
     const auto n = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
     std::printf("rays cast     camera %llu, shadow %llu, reflection %llu, refraction %llu (total %llu)\n",
@@ -43,6 +58,8 @@ void printStats(const RenderStats& stats) {
     std::printf("time          %.3f s on %d thread%s: %.0f samples/s, %.2f M rays/s\n", stats.seconds, stats.threads,
                 stats.threads == 1 ? "" : "s", static_cast<double>(stats.samples) / stats.seconds,
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);
+    std::printf("wall time     rendering %.3f s, writing %.3f s (%zu file%s; %.3f s of it waiting for the image module)\n",
+                stats.seconds, write.seconds, write.files, write.files == 1 ? "" : "s", write.moduleWaitSeconds);
     std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
     std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
 }
@@ -82,6 +99,17 @@ void run(const RenderCommand& command) {
         throw CLI::RuntimeError(std::string("-o: ") + e.what(), kExitBadInput);
     }
 
+    // Every input is accepted: an image will be written. Fail now if it could not be, and have
+    // the image module (OpenImageIO) loaded in the background while the scene renders.
+    try {
+        locateImageModule();
+    } catch (const ImageModuleError& e) {
+        throw CLI::RuntimeError(e.what(), kExitFailure);
+    }
+    if (!command.readyFile.empty() && !std::ofstream(command.readyFile))
+        throw CLI::RuntimeError("--ready-file: cannot create " + command.readyFile, kExitFailure);
+    preloadImageModule();
+
     const RenderResult result = renderer->render();
     if (result.cancelled) throw CLI::RuntimeError("interrupted: no image written", kExitInterrupted);
     ImageMetadata metadata{{"lightpath:scene", command.setup.scenePath},
@@ -90,14 +118,23 @@ void run(const RenderCommand& command) {
                            {"lightpath:max_depth", std::to_string(options.maxDepth)},
                            {"lightpath:seconds", std::to_string(result.stats.seconds)}};
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
+    WriteStats write;
+    const auto writeStart = std::chrono::steady_clock::now();
     try {
-        for (const auto& file : writeFilm(result.film, command.output, metadata)) std::cout << "wrote " << file.string() << "\n";
+        imageCodec();
+        write.moduleWaitSeconds = secondsSince(writeStart);
+        const auto files = writeFilm(result.film, command.output, metadata, options.threads);
+        write.seconds = secondsSince(writeStart);
+        write.files = files.size();
+        for (const auto& file : files) std::cout << "wrote " << file.string() << "\n";
+    } catch (const ImageModuleError& e) {
+        throw CLI::RuntimeError(e.what(), kExitFailure);
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
     command.setup.warnEmptyAovs(result.film, aovs, scene);
     if (command.stats) {
-        printStats(result.stats);
+        printStats(result.stats, write);
         printAcceleratorStats(command.setup.accel, result.stats.accelerator);
     }
 }
@@ -111,7 +148,10 @@ void addRenderCommand(CLI::App& app) {
     sub->add_option("-o,--output", command->output,
                     "Output: NAME.exr (one multi-layer EXR) or NAME.png (NAME.png + NAME.<aov>.png)")
         ->required();
-    sub->add_flag("--stats", command->stats, "Print rays cast by kind, time and throughput");
+    sub->add_flag("--stats", command->stats, "Print rays cast by kind, time and throughput, rendering and writing time");
+    sub->add_option("--ready-file", command->readyFile,
+                    "Create this (empty) file once Ctrl-C is handled and rendering begins: a script may then "
+                    "interrupt the render");
     sub->footer(
         "Without --lpe the `classes` AOVs are written: raycast E(D|G)L, raytrace ES+(D|G)L, mirror ES+L,\n"
         "emission EL, indirect ES*(D|G)(D|G|S)+L. `rest` (light no AOV accepts) is always written.\n\n"

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "film/large_buffer.h"
 #include "math/types.h"
 
 namespace lightpath {
@@ -36,7 +37,7 @@ private:
 
     int width_, height_;
     std::vector<std::string> layerNames_;
-    std::vector<Rgb> pixels_;
+    std::vector<Rgb, LargeBufferAllocator<Rgb>> pixels_;  // 174 MB at 1080p with the classes AOVs
 };
 
 }  // namespace lightpath

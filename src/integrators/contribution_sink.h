@@ -29,6 +29,9 @@ struct LoggedContribution {
     lpe::OutputMask accepted = 0;
     PathRecord path;
     bool splatted = false;  // light tracing's: it landed on this pixel from the light's side
+    // Bidirectional path tracing's strategy: s vertices from the light, t from the eye; -1 for
+    // the other integrators.
+    std::int8_t lightVertices = -1, eyeVertices = -1;
     std::array<TermFactor, kMaxTermFactors> factors{};
     std::size_t factorCount = 0;
 };
@@ -60,7 +63,7 @@ public:
                 layers_[1 + static_cast<std::size_t>(std::countr_zero(m))] += value;
         }
         if (log_ == nullptr) return;
-        LoggedContribution& logged = log_->emplace_back(LoggedContribution{value, accepted, path});
+        LoggedContribution& logged = log_->emplace_back(LoggedContribution{value, accepted, path, false, strategyS_, strategyT_});
         logged.factorCount = std::min(factors.size(), kMaxTermFactors);
         std::copy_n(factors.begin(), logged.factorCount, logged.factors.begin());
     }
@@ -72,7 +75,7 @@ public:
     // A contribution to pixel (x, y) of the whole image, wherever the current sample is.
     void splat(int x, int y, const Rgb& value, lpe::OutputMask accepted, const PathRecord& path) {
         if (log_ != nullptr) {
-            if (x == logX_ && y == logY_) log_->push_back({value, accepted, path, true});
+            if (x == logX_ && y == logY_) log_->push_back({value, accepted, path, true, strategyS_, strategyT_});
             return;
         }
         if (splats_ == nullptr) return;
@@ -83,6 +86,12 @@ public:
             for (lpe::OutputMask m = accepted; m != 0; m &= m - 1)
                 splats_->add(x, y, 1 + static_cast<std::size_t>(std::countr_zero(m)), value);
         }
+    }
+
+    // The bidirectional strategy the next contributions come from (only `explain` reads it).
+    void setStrategy(int s, int t) {
+        strategyS_ = static_cast<std::int8_t>(s);
+        strategyT_ = static_cast<std::int8_t>(t);
     }
 
     // `explain` logs splats that land on the pixel it explains.
@@ -97,6 +106,7 @@ private:
     std::vector<LoggedContribution>* log_;
     std::vector<Rejection>* rejections_;
     int logX_ = -1, logY_ = -1;
+    std::int8_t strategyS_ = -1, strategyT_ = -1;
 };
 
 }  // namespace lightpath

@@ -49,6 +49,8 @@ public:
     void reject(const PathEvent& surface, const PathEvent& light, std::string reason);
     // The same for light tracing: the finished path's value goes to pixel (x, y) of the image.
     void splat(int x, int y, const PathEvent& light, const Rgb& value);
+    // Bidirectional path tracing names the strategy (s, t) of what it emits next, for `explain`.
+    void setStrategy(int s, int t) { sink_.setStrategy(s, t); }
 
     const RenderContext& context;
     RayCounters& counters;

@@ -4,7 +4,10 @@
 namespace lightpath {
 
 // What a render cast and what it skipped, and why (`--stats`). Kept per worker thread and summed.
-struct RayCounters {
+// Aligned to a cache line: the workers' counters sit side by side in one vector and are bumped
+// for every ray, and two threads writing one line would pass it back and forth between cores
+// (false sharing: Whitted scaled 1.2-1.3x on two cores with them packed).
+struct alignas(64) RayCounters {
     std::uint64_t camera = 0;
     std::uint64_t shadow = 0;
     std::uint64_t reflection = 0;

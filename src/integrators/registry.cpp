@@ -1,5 +1,6 @@
 #include "integrators/registry.h"
 
+#include "integrators/bdpt.h"
 #include "integrators/path.h"
 #include "integrators/raycast.h"
 #include "integrators/whitted.h"
@@ -21,6 +22,9 @@ const std::vector<IntegratorInfo>& integrators() {
         {"path", "path tracing with global illumination (physically based reading)", "E.*L",
          "path tracing follows every bounce",
          [] { return std::unique_ptr<Integrator>(std::make_unique<PathIntegrator>()); }},
+        {"bdpt", "bidirectional path tracing: also light from the light's side, caustics under point lights", "E.*L",
+         "bidirectional path tracing follows every bounce, from the eye and from the lights",
+         [] { return std::unique_ptr<Integrator>(std::make_unique<BdptIntegrator>()); }},
     };
     return table;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// Writes a film with OpenImageIO (docs/design.md, "Output"):
+// Writes a film with OpenImageIO, through the image module loaded on first use (io/image_module.h;
+// docs/design.md, "Output"):
 //   NAME.exr  one multi-layer EXR: the layer "beauty" as R,G,B and each other layer as
 //             <layer>.R/.G/.B, the metadata as header attributes;
 //   NAME.png  the beauty as NAME.png and every other layer as NAME.<layer>.png, clamped and
@@ -27,17 +28,21 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // an extension other than .exr or .png.
 std::vector<std::filesystem::path> outputFiles(const Film& film, const std::filesystem::path& path);
 
-// Returns the files written.
+// Returns the files written. Files are written side by side on up to `threads` threads (0: one
+// per core). Throws ImageWriteError, naming the file, when one cannot be written (the image module
+// missing included); then none of them is.
 std::vector<std::filesystem::path> writeFilm(const Film& film, const std::filesystem::path& path,
-                                             const ImageMetadata& metadata);
+                                             const ImageMetadata& metadata, int threads = 0);
 
 // The same files in memory, for serving them (`lightpath serve`): the multi-layer EXR of writeFilm,
-// and one layer as an 8-bit sRGB PNG, each value first multiplied by `scale` (an exposure).
-// Throws ImageWriteError.
+// and one layer as an 8-bit sRGB PNG, each value first multiplied by `scale` (an exposure). The
+// image module writes files only, so each goes through a file of a private temporary folder,
+// read back and removed at once. Throws ImageWriteError.
 std::vector<unsigned char> encodeExr(const Film& film, const ImageMetadata& metadata);
 std::vector<unsigned char> encodePng(const Film& film, std::size_t layer, float scale = 1.0f);
 
-// The sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], in 0..255.
+// The sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1], in 0..255,
+// rounded to nearest; 0 for NaN and infinities.
 unsigned char toSrgb8(float linear);
 
 }  // namespace lightpath

@@ -8,10 +8,18 @@
 
 namespace lightpath {
 
+std::filesystem::path temporaryName(const std::filesystem::path& target) {
+    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string once inlined.
+    std::string name = ".";
+    name += target.filename().string();
+    name += ".tmp-" + std::to_string(::getpid());
+    return target.parent_path() / name;
+}
+
 void writeTextFileAtomically(const std::filesystem::path& path, const std::string& contents) {
     namespace fs = std::filesystem;
     if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    const fs::path temporary = path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+    const fs::path temporary = temporaryName(path);
     {
         std::ofstream out(temporary, std::ios::binary);
         out << contents;

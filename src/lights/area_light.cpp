@@ -28,6 +28,7 @@ AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const Sce
         if (!(area > 0.0f)) continue;  // a zero-area triangle emits nothing and cannot be sampled
         area_ += area;
         shapes_.push_back({primitive, area_});
+        spheres_ = geometry.decodePrimitive(primitive).shape == ShapeKind::Sphere;
     }
 }
 
@@ -92,6 +93,13 @@ EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     e.pdfPosition = 1.0f / area_;
     e.pdfDirection = cosineHemispherePdf(local.z) * (p.twoSided ? 0.5f : 1.0f);
     return e;
+}
+
+float AreaLightSource::pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const {
+    // sampleEmission's cosine lobe about the side's normal; a sphere picks either side by half.
+    const float cosine = glm::dot(normal, direction);
+    if (spheres_) return 0.5f * cosineHemispherePdf(std::fabs(cosine));
+    return cosine > 0.0f ? cosineHemispherePdf(cosine) : 0.0f;
 }
 
 Rgb AreaLightSource::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {

@@ -19,6 +19,7 @@ public:
     LightSample sample(const Vec3& receiver, Vec2 u) const override;
     float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const override;
     EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const override;
+    float pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const override;
     Rgb radiance(const SurfaceHit& hit, const Vec3& towardViewer) const override;
     Rgb power() const override;
     bool isDelta() const override { return false; }
@@ -42,6 +43,7 @@ private:
     const SceneGeometry& geometry_;
     std::vector<Shape> shapes_;
     float area_ = 0.0f;
+    bool spheres_ = false;  // its shapes are spheres (one object is one sphere or a mesh), two-sided
 };
 
 // Solid-angle density at `receiver` of a point sampled with `pdfArea` on a surface with `normal`.

@@ -43,6 +43,10 @@ public:
     virtual float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const = 0;
     // A ray leaving the light: a point by area, a direction by cosine (area) or uniformly (point).
     virtual EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const = 0;
+    // The density per steradian with which sampleEmission() leaves a point of outward normal
+    // `normal` (zero for a point light) along unit `direction`: bidirectional path tracing weighs
+    // a path that another strategy found by it (MIS, Veach 1997 ch. 10).
+    virtual float pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const = 0;
     // The radiance leaving the light at `hit` towards `towardViewer` (zero for a point light).
     virtual Rgb radiance(const SurfaceHit& hit, const Vec3& towardViewer) const = 0;
     // How light from the light falls off over distance d, in place of 1/d^2: the lecture's

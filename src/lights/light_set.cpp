@@ -69,6 +69,13 @@ float LightSet::emitterProbability(const Light& light) const {
     return 0.0f;
 }
 
+float LightSet::nextEventProbability(const Light& light) const {
+    if (light.isDelta()) return 1.0f;
+    for (const Choice& c : areaChoices_)
+        if (c.light == &light) return c.probability;
+    return 0.0f;
+}
+
 Rgb LightSet::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
     const Light* light = lightOfObject(hit.object);
     return light ? light->radiance(hit, towardViewer) : Rgb{0.0f};

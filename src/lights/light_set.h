@@ -36,6 +36,9 @@ public:
     // Any light in proportion to its power: where light tracing starts.
     ChosenLight chooseEmitter(float u) const;
     float emitterProbability(const Light& light) const;
+    // How often next-event estimation picks `light`: 1 for a delta light (each is sampled every
+    // time), chooseAreaLight's probability for an area light.
+    float nextEventProbability(const Light& light) const;
 
     // The area light that emissive `object` is, or nullptr.
     const Light* lightOfObject(std::uint32_t object) const {

@@ -15,6 +15,7 @@ public:
     LightSample sample(const Vec3& receiver, Vec2 u) const override;
     float pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0f; }
     EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const override;
+    float pdfEmissionDirection(const Vec3&, const Vec3&) const override { return 1.0f / (4.0f * kPi); }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
     float falloff(float distance) const override { return description_.attenuationAt(distance); }
     Rgb power() const override;

@@ -25,7 +25,7 @@ private:
     void draw(double elapsedSeconds) const;
 
     const int total_;
-    std::atomic<int> done_{0};
+    alignas(64) std::atomic<int> done_{0};  // bumped by every worker: a cache line of its own
     std::chrono::steady_clock::time_point started_;
     std::mutex mutex_;
     std::condition_variable wake_;

@@ -14,6 +14,13 @@ namespace lightpath {
 namespace {
 
 constexpr int kTileSize = 16;
+// State that one worker writes while another reads or writes nearby keeps a cache line to itself:
+// two cores writing one line pass it back and forth (false sharing).
+constexpr std::size_t kCacheLine = 64;
+template <typename T>
+struct alignas(kCacheLine) CacheLinePadded {
+    T value{};
+};
 
 }  // namespace
 
@@ -30,7 +37,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       integrator_(makeIntegrator(options.integrator)),
       context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
-    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted or path");
+    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted, path or bdpt");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
@@ -135,16 +142,20 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     threadCount = std::clamp(threadCount, 1, std::max(1, tileCount));
 
     ProgressBar progress(tileCount, options_.progress);
-    std::atomic<int> nextTile{0};
+    CacheLinePadded<std::atomic<int>> nextTile;  // bumped per tile, away from the locals the workers read
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
     std::optional<SplatFilm> splats;
     if (integrator_->splats()) splats.emplace(width, height, aovs_.layerCount());
     auto work = [&](int worker) {
-        std::vector<Rgb> layers(aovs_.layerCount());
+        // A cache line of padding on each side of the worker's accumulators: the heap may have put
+        // another worker's data next to them.
+        constexpr std::size_t kPad = (kCacheLine + sizeof(Rgb) - 1) / sizeof(Rgb);
+        std::vector<Rgb> padded(aovs_.layerCount() + 2 * kPad);
+        const std::span<Rgb> layers(padded.data() + kPad, aovs_.layerCount());
         ContributionSink sink(layers, splats ? &*splats : nullptr);
         PathState path(context_, sink, counters[static_cast<std::size_t>(worker)]);
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
-        for (int tile = nextTile++; tile < tileCount; tile = nextTile++) {
+        for (int tile = nextTile.value++; tile < tileCount; tile = nextTile.value++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, height); ++y) {
                 for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
@@ -185,7 +196,25 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector
     ContributionSink sink(layers, nullptr, &log, rejections);
     RayCounters counters;
     PathState path(context_, sink, counters);
+    sink.logSplatsAt(x, y);
     renderPixel(x, y, options_.seed, layers, path);
+    if (integrator_->splats()) {
+        // Light tracing lands on this pixel from any pixel's sample: trace every pixel's paths
+        // (one thread, the whole image's work) and keep the splats that land here.
+        std::vector<LoggedContribution> other;
+        ContributionSink otherSink(layers, nullptr, &other);
+        otherSink.logSplatsAt(x, y);
+        PathState otherPath(context_, otherSink, counters);
+        for (int py = 0; py < camera_.height(); ++py) {
+            for (int px = 0; px < camera_.width(); ++px) {
+                if (px == x && py == y) continue;
+                renderPixel(px, py, options_.seed, layers, otherPath);
+                for (LoggedContribution& c : other)
+                    if (c.splatted) log.push_back(c);
+                other.clear();
+            }
+        }
+    }
     // Logged values are per sample; scale them like the pixel so they sum to it.
     const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
     for (LoggedContribution& c : log) c.value *= weight;

@@ -13,7 +13,8 @@ PinholeCamera::PinholeCamera(const CameraDescription& d)
 }
 
 Ray PinholeCamera::generateRay(float x, float y) const {
-    // Map the film position to [-aspect, aspect] x [-1, 1] on the image plane at distance 1.
+    // Map the film position to [-aspect, aspect] x [-1, 1] (times tan(fov/2)) on the image plane
+    // at distance 1.
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const float u = (2.0f * x / static_cast<float>(width_) - 1.0f) * aspect * halfHeight_;
     const float v = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
@@ -25,16 +26,46 @@ Ray PinholeCamera::generateRay(float x, float y) const {
 
 float PinholeCamera::depth(const Vec3& point) const { return glm::dot(point - eye_, forward_); }
 
-std::optional<Vec2> PinholeCamera::project(const Vec3& point) const {
-    // generateRay's mapping run backwards: the point's offset from the eye in the camera frame,
-    // divided by its depth, lands on the image plane at distance 1 (perspective division).
-    const Vec3 offset = point - eye_;
-    const float z = glm::dot(offset, forward_);
-    if (!(z > 0.0f)) return std::nullopt;
+std::optional<Vec2> PinholeCamera::filmPosition(const Vec3& point) const {
+    // generateRay inverted: the point's coordinates on the image plane at distance 1.
+    const Vec3 d = point - eye_;
+    const float depth = glm::dot(d, forward_);
+    if (!(depth > 0.0f)) return std::nullopt;
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-    const float u = glm::dot(offset, right_) / z, v = glm::dot(offset, up_) / z;
+    const float u = glm::dot(d, right_) / depth, v = glm::dot(d, up_) / depth;
     return Vec2{(u / (aspect * halfHeight_) + 1.0f) * 0.5f * static_cast<float>(width_),
                 (1.0f - v / halfHeight_) * 0.5f * static_cast<float>(height_)};
+}
+
+std::optional<Vec2> PinholeCamera::project(const Vec3& point) const {
+    const std::optional<Vec2> p = filmPosition(point);
+    if (!p || !(p->x >= 0.0f && p->x < static_cast<float>(width_) && p->y >= 0.0f && p->y < static_cast<float>(height_)))
+        return std::nullopt;
+    return p;
+}
+
+float PinholeCamera::imageArea() const {
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    return (2.0f * aspect * halfHeight_) * (2.0f * halfHeight_);
+}
+
+float PinholeCamera::cosineInImage(const Vec3& direction) const {
+    const float cosTheta = glm::dot(direction, forward_);
+    if (!(cosTheta > 0.0f)) return 0.0f;
+    const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+    const float u = glm::dot(direction, right_) / cosTheta, v = glm::dot(direction, up_) / cosTheta;
+    if (std::fabs(u) > aspect * halfHeight_ || std::fabs(v) > halfHeight_) return 0.0f;
+    return cosTheta;
+}
+
+float PinholeCamera::importance(const Vec3& direction) const {
+    const float c = cosineInImage(direction);
+    return c > 0.0f ? 1.0f / (imageArea() * c * c * c * c) : 0.0f;
+}
+
+float PinholeCamera::pdfDirection(const Vec3& direction) const {
+    const float c = cosineInImage(direction);
+    return c > 0.0f ? 1.0f / (imageArea() * c * c * c) : 0.0f;
 }
 
 }  // namespace lightpath

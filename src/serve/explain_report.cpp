@@ -37,7 +37,7 @@ json projectedSegment(const PinholeCamera& camera, Vec3 a, Vec3 b) {
     if (da < kNear && db < kNear) return nullptr;
     if (da < kNear) a = a + (b - a) * ((kNear - da) / (db - da));
     if (db < kNear) b = b + (a - b) * ((kNear - db) / (da - db));
-    const auto pa = camera.project(a), pb = camera.project(b);
+    const auto pa = camera.filmPosition(a), pb = camera.filmPosition(b);
     if (!pa || !pb) return nullptr;
     return json::array({pa->x, pa->y, pb->x, pb->y});
 }
@@ -77,7 +77,7 @@ json explainPixel(const Job& job, int x, int y) {
                            {"touched", subjectName(job.scene, e)},
                            {"position", position ? point(*position) : json(nullptr)}};
             if (position) {
-                if (const auto p = camera.project(*position)) vertex["pixel"] = json::array({p->x, p->y});
+                if (const auto p = camera.filmPosition(*position)) vertex["pixel"] = json::array({p->x, p->y});
             }
             vertices.push_back(std::move(vertex));
             segments.push_back(position && previous ? projectedSegment(camera, *previous, *position) : json(nullptr));

@@ -1,0 +1,352 @@
+#include "integrators/bdpt.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "geometry/spawn_ray.h"
+#include "integrators/bdpt_vertex.h"
+#include "integrators/direct_light.h"
+
+namespace lightpath {
+namespace {
+
+// Walks shorter than this are never cut by Russian roulette (as in the path tracer).
+constexpr int kRouletteDepth = 3;
+// Names the light walk's own random numbers within a pixel sample (Sampler::forVertex), so the
+// eye's walk draws the same numbers whether or not a light walk was traced.
+constexpr std::uint64_t kLightWalkKey = 0x6c69676874ull;  // "light"
+
+using Vertices = std::array<BdptVertex, kMaxSubpathVertices>;
+
+// Russian roulette on a walk's throughput: false to stop; on going on, beta carries 1/q.
+bool survives(Rgb& beta, int depth, Sampler& sampler) {
+    if (depth < kRouletteDepth) return true;
+    const float q = std::min(0.95f, maxComponent(beta));
+    if (sampler.next1D() >= q) return false;
+    beta /= q;
+    return true;
+}
+
+// The light walk: x0 on a light chosen by power, then the light's ray and BSDF samples in
+// importance mode, up to `maxDepth` scattering vertices. Returns how many vertices it made.
+int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
+    const RenderContext& ctx = path.context;
+    const ChosenLight chosen = ctx.lights.chooseEmitter(sampler.next1D());
+    const Vec2 uPoint = sampler.next2D(), uDirection = sampler.next2D();
+    if (chosen.light == nullptr || !(chosen.probability > 0.0f)) return 0;
+    const Light& light = *chosen.light;
+    const EmittedRay e = light.sampleEmission(uPoint, uDirection);
+    if (!(e.pdfPosition > 0.0f) || !(e.pdfDirection > 0.0f) || isBlack(e.radiance)) return 0;
+    v[0] = lightVertex(light, e.ray.origin, e.normal, e.pdfPosition);
+    v[0].pdfFwd = chosen.probability * e.pdfPosition;
+    v[0].beta = e.radiance / (chosen.probability * e.pdfPosition);
+
+    // Leave an area light's surface like any surface, so the ray does not find its own start.
+    SurfaceHit origin;
+    origin.point = e.ray.origin;
+    origin.normal = origin.shadingNormal = e.normal;
+    origin.object = light.event().index;
+    origin.primitive = kNoPrimitive;
+    Ray ray = light.isDelta() ? e.ray : spawnRay(origin, e.ray.direction, ctx.geometry.numerics());
+    const float cosine = light.isDelta() ? 1.0f : std::fabs(glm::dot(e.normal, e.ray.direction));
+    Rgb beta = e.radiance * (cosine / (chosen.probability * e.pdfPosition * e.pdfDirection));
+    float pdf = e.pdfDirection;
+    bool delta = false;
+    int count = 1;
+    while (count <= ctx.maxDepth) {
+        const auto hit = ctx.geometry.intersect(ray);
+        if (!hit) break;
+        if (count == 1) {
+            // The light's first segment falls off as the light says (the lecture's attenuation
+            // for a point light) instead of the 1/d^2 the area density conversion assumes.
+            const float d = glm::length(hit->point - v[0].point);
+            beta *= light.falloff(d) * d * d;
+        }
+        BdptVertex& here = v[count];
+        here = surfaceVertex(*hit, ray, beta, v[count - 1], pdf, delta, ctx, TransportMode::Importance);
+        ++count;
+        if (count > ctx.maxDepth) break;  // a vertex deeper could not be joined within maxDepth
+        const float uLobe = sampler.next1D();
+        const Vec2 u = sampler.next2D();
+        const auto step = sampledStep(*here.surface, uLobe, u);
+        if (!step) break;
+        here.lobe = step->lobe;
+        here.delta = step->delta;
+        v[count - 2].pdfRev = reverseDensity(*step, here, v[count - 2]);
+        beta *= step->weight;
+        if (!survives(beta, count - 1, sampler)) break;
+        ++(step->lobe == Lobe::Refraction ? path.counters.refraction : path.counters.reflection);
+        pdf = step->pdf;
+        delta = step->delta;
+        ray = spawnRay(here.surface->hit, step->wi, ctx.geometry.numerics());
+    }
+    return count;
+}
+
+// Pushes the events of light vertices y(last) ... y1 (nearest the eye first): the light walk
+// reversed. False, with nothing left pushed, when the automaton dies on the way.
+bool pushLightEvents(PathState& path, const Vertices& light, int last) {
+    const std::size_t before = path.size();
+    for (int i = last; i >= 1; --i) {
+        if (!path.push(light[i].surface->eventOf(light[i].lobe))) {
+            while (path.size() > before) path.pop();
+            return false;
+        }
+    }
+    return true;
+}
+
+void popTo(PathState& path, std::size_t size) {
+    while (path.size() > size) path.pop();
+}
+
+PathEvent eventOfLight(const BdptVertex& origin) {
+    PathEvent event = origin.light->event();
+    event.position = origin.point;
+    return event;
+}
+
+// A shadow ray's answer, cast at most once per join and only when a contribution needs it.
+class Visibility {
+public:
+    Visibility(const SurfaceHit& from, const Vec3& to) : from_(from), to_(to) {}
+    bool operator()(PathState& path) {
+        if (!known_) {
+            ++path.counters.shadow;
+            const RenderContext& ctx = path.context;
+            visible_ = !ctx.geometry.occluded(spawnShadowRay(from_, to_, ctx.geometry.numerics()));
+            known_ = true;
+        }
+        return visible_;
+    }
+
+private:
+    const SurfaceHit& from_;
+    Vec3 to_;
+    bool known_ = false, visible_ = false;
+};
+
+// t = 1: light vertex y_i joined to the pinhole, splatted into the pixel it projects to.
+void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks, bool weighted) {
+    const RenderContext& ctx = path.context;
+    const BdptVertex& y = light[i];
+    const ShadingPoint& sp = *y.surface;
+    if (!sp.bsdf.hasSmoothLobe()) return;
+    const auto raster = ctx.camera.project(y.point);
+    if (!raster) return;
+    const Vec3 toEye = ctx.camera.eye() - y.point;
+    const float distance2 = glm::dot(toEye, toEye);
+    const Vec3 w = toEye / std::sqrt(distance2);
+    const float importance = ctx.camera.importance(-w);
+    if (!(importance > 0.0f)) return;
+    // We cos(theta_eye) / d^2: the pinhole's importance through the solid angle it subtends.
+    const float cameraTerm = importance * glm::dot(-w, ctx.camera.forward()) / distance2;
+    const int x = std::min(static_cast<int>(raster->x), ctx.camera.width() - 1);
+    const int yPixel = std::min(static_cast<int>(raster->y), ctx.camera.height() - 1);
+    const PathEvent lightEvent = eventOfLight(light[0]);
+    const BdptVertex eye[1] = {cameraVertex(ctx.camera.eye())};
+    Visibility visible(sp.hit, ctx.camera.eye());
+    const std::size_t before = path.size();
+    for (const Lobe lobe : kSmoothLobes) {
+        if (!sp.bsdf.has(lobe)) continue;
+        if (!path.push(sp.eventOf(lobe))) continue;
+        if (pushLightEvents(path, light, i - 1) && path.wants(lightEvent)) {
+            const Rgb f = sp.bsdf.eval(lobe, sp.wo, w);
+            if (!isBlack(f)) {
+                const float weight =
+                    weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1, lightWalks)
+                             : 1.0f;
+                path.setStrategy(i + 1, 1);
+                if (weight > 0.0f && visible(path)) path.splat(x, yPixel, lightEvent, y.beta * f * (cameraTerm * weight));
+            }
+        }
+        popTo(path, before);
+    }
+}
+
+// s = 1: light sampling at eye vertex z_t-1, through every delta light and one area light chosen
+// by power, as the path tracer's next-event estimation does.
+void joinToLightSample(const Vertices& eye, int t, const Light& light, float choice, Vec2 uPoint, PathState& path,
+                       bool lightWalks) {
+    const RenderContext& ctx = path.context;
+    const BdptVertex& z = eye[t - 1];
+    const ShadingPoint& sp = *z.surface;
+    const LightSample sample = light.sample(z.point, uPoint);
+    if (!(sample.distance > 0.0f) || isBlack(sample.weight)) return;
+    if (!light.isDelta() && !(sample.pdf > 0.0f)) return;
+    const float pdfPosition =
+        light.isDelta() ? 1.0f : sample.pdf * std::fabs(glm::dot(sample.normal, sample.wi)) / (sample.distance * sample.distance);
+    BdptVertex y[1] = {lightVertex(light, sample.point, sample.normal, pdfPosition)};
+    y[0].pdfFwd = choice * pdfPosition;
+    const PathEvent lightEvent = eventOfLight(y[0]);
+    Visibility visible(sp.hit, sample.point);
+    for (const Lobe lobe : kSmoothLobes) {
+        if (!sp.bsdf.has(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
+        const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
+        if (isBlack(f)) continue;
+        const float weight = misWeight(joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1, lightWalks);
+        path.setStrategy(1, t);
+        if (weight > 0.0f && visible(path)) path.emit(sp.eventOf(lobe), lightEvent, z.beta * f * sample.weight * (weight / choice));
+    }
+}
+
+// s, t >= 2: light vertex y_s-1 joined to eye vertex z_t-1, one contribution per pair of their
+// smooth lobes (each pair is a different path: E..D D..L and E..G D..L land in different AOVs).
+void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, PathState& path, bool lightWalks) {
+    const RenderContext& ctx = path.context;
+    const BdptVertex& y = light[s - 1];
+    const BdptVertex& z = eye[t - 1];
+    const ShadingPoint& ly = *y.surface;
+    const ShadingPoint& ez = *z.surface;
+    if (!ly.bsdf.hasSmoothLobe()) return;
+    const Vec3 d = y.point - z.point;
+    const float distance2 = glm::dot(d, d);
+    if (!(distance2 > 0.0f)) return;
+    const Vec3 w = d / std::sqrt(distance2);  // from z to y
+    const PathEvent lightEvent = eventOfLight(light[0]);
+    Visibility visible(ez.hit, y.point);
+    const std::size_t before = path.size();
+    for (const Lobe eyeLobe : kSmoothLobes) {
+        if (!ez.bsdf.has(eyeLobe)) continue;
+        const Rgb fz = ez.bsdf.eval(eyeLobe, ez.wo, w);
+        if (isBlack(fz) || !path.push(ez.eventOf(eyeLobe))) continue;
+        const std::size_t withEye = path.size();
+        for (const Lobe lightLobe : kSmoothLobes) {
+            if (!ly.bsdf.has(lightLobe) || !path.push(ly.eventOf(lightLobe))) continue;
+            if (pushLightEvents(path, light, s - 2) && path.wants(lightEvent)) {
+                const Rgb fy = ly.bsdf.eval(lightLobe, ly.wo, -w);
+                if (!isBlack(fy)) {
+                    const float weight = misWeight(joinedDensities({light.data(), std::size_t(s)}, lightLobe,
+                                                                   {eye.data(), std::size_t(t)}, eyeLobe, ctx),
+                                                   s, lightWalks);
+                    path.setStrategy(s, t);
+                    if (weight > 0.0f && visible(path))
+                        path.emit(lightEvent, z.beta * fz * fy * y.beta * (weight / distance2));
+                }
+            }
+            popTo(path, withEye);
+        }
+        popTo(path, before);
+    }
+}
+
+}  // namespace
+
+void BdptIntegrator::preprocess(const RenderContext& ctx) {
+    lightWalks_ = true;
+    if (ctx.keepAllPaths) return;
+    // Does any requested output accept E, one or more scattering events, then a light? Search the
+    // automaton over this scene's own events (every object through every lobe, every light).
+    std::vector<PathEvent> scattering, lights;
+    for (std::uint32_t object = 0; object < ctx.scene.objects.size(); ++object) {
+        for (int l = 0; l < kLobeCount; ++l) {
+            const ScatterEvent e = eventOf(static_cast<Lobe>(l));
+            scattering.push_back({e.type, e.scatter, Subject::Object, object});
+        }
+    }
+    for (const auto& light : ctx.lights.all()) lights.push_back(light->event());
+    const lpe::Automaton& automaton = ctx.automaton;
+    std::vector<bool> seen(automaton.stateCount(), false);
+    const lpe::Automaton::State afterEye =
+        automaton.step(automaton.start(), ctx.symbols({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0}));
+    std::vector<lpe::Automaton::State> frontier;
+    for (const PathEvent& e : scattering) {
+        const auto next = automaton.step(afterEye, ctx.symbols(e));
+        if (!seen[next]) seen[next] = true, frontier.push_back(next);
+    }
+    bool useful = false;
+    while (!frontier.empty() && !useful) {
+        const auto state = frontier.back();
+        frontier.pop_back();
+        for (const PathEvent& light : lights)
+            useful = useful || (automaton.accepts(automaton.step(state, ctx.symbols(light))) & ctx.requested) != 0;
+        for (const PathEvent& e : scattering) {
+            const auto next = automaton.step(state, ctx.symbols(e));
+            if (!seen[next]) seen[next] = true, frontier.push_back(next);
+        }
+    }
+    lightWalks_ = useful;
+}
+
+void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const {
+    const RenderContext& ctx = path.context;
+    Sampler& sampler = *path.sampler;
+
+    Vertices light;
+    int lightCount = 0;
+    if (lightWalks_) {
+        Sampler lightSampler = sampler.forVertex(kLightWalkKey);
+        lightCount = walkFromLight(lightSampler, light, path);
+        const bool weighted = strategies_ == Strategies::All;
+        for (int i = 1; i < lightCount; ++i) joinToCamera(light, i, path, lightWalks_, weighted);
+    }
+    if (strategies_ == Strategies::LightTracingOnly) return;
+
+    Vertices eye;
+    eye[0] = cameraVertex(ctx.camera.eye());
+    const std::size_t pathStart = path.size();
+    Ray ray = cameraRay;
+    Rgb beta{1.0f};
+    float pdf = ctx.camera.pdfDirection(cameraRay.direction);
+    bool delta = false;
+    for (int t = 2; t <= ctx.maxDepth + 2; ++t) {
+        const auto hit = ctx.geometry.intersect(ray);
+        if (!hit) {
+            path.setStrategy(0, t);
+            addBackground(ray, beta, path);  // s = 0 only: nothing else samples the background
+            break;
+        }
+        BdptVertex& z = eye[t - 1];
+        z = surfaceVertex(*hit, ray, beta, eye[t - 2], pdf, delta, ctx, TransportMode::Radiance);
+
+        // s = 0: an emitter found by the eye's walk.
+        if (const Light* emitter = ctx.lights.lightOfObject(hit->object)) {
+            PathEvent event = emitter->event();
+            event.position = hit->point;
+            if (path.wants(event) && !isBlack(emitter->radiance(*hit, -ray.direction))) {
+                markEmitter(z, *emitter, eye[t - 2]);
+                const float weight = misWeight(joinedDensities({}, Lobe::Diffuse, {eye.data(), std::size_t(t)}, Lobe::Diffuse, ctx),
+                                               0, lightWalks_);
+                z.light = nullptr;
+                path.setStrategy(0, t);
+                addEmission(*hit, ray, beta, weight, path);
+            }
+        }
+        // Joins at z scatter once more; the path may have at most maxDepth scattering events.
+        if (t - 1 > ctx.maxDepth) break;
+        const ShadingPoint& sp = *z.surface;
+        if (sp.bsdf.hasSmoothLobe()) {
+            const float uChoice = sampler.next1D();
+            const Vec2 uPoint = sampler.next2D();
+            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, uPoint, path, lightWalks_);
+            const ChosenLight chosen = ctx.lights.chooseAreaLight(uChoice);
+            if (chosen.light != nullptr)
+                joinToLightSample(eye, t, *chosen.light, chosen.probability, uPoint, path, lightWalks_);
+            const int longestLight = std::min(lightCount, ctx.maxDepth + 2 - t);
+            for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, path, lightWalks_);
+        }
+
+        const float uLobe = sampler.next1D();
+        const Vec2 u = sampler.next2D();
+        const auto step = sampledStep(sp, uLobe, u);
+        if (!step) break;
+        const bool transmitted = step->lobe == Lobe::Refraction;
+        if (!path.push(sp.eventOf(step->lobe))) {
+            ++(transmitted ? path.counters.refractionDead : path.counters.reflectionDead);
+            break;
+        }
+        z.lobe = step->lobe;
+        z.delta = step->delta;
+        if (t >= 3) eye[t - 2].pdfRev = reverseDensity(*step, z, eye[t - 2]);
+        beta *= step->weight;
+        if (!survives(beta, t - 1, sampler)) break;
+        ++(transmitted ? path.counters.refraction : path.counters.reflection);
+        pdf = step->pdf;
+        delta = step->delta;
+        ray = spawnRay(sp.hit, step->wi, ctx.geometry.numerics());
+    }
+    popTo(path, pathStart);
+}
+
+}  // namespace lightpath

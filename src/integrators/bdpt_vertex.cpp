@@ -1,0 +1,196 @@
+#include "integrators/bdpt_vertex.h"
+
+#include <cmath>
+
+#include "integrators/integrator.h"
+
+namespace lightpath {
+
+float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVertex& to) {
+    const Vec3 d = to.point - from.point;
+    const float distance2 = glm::dot(d, d);
+    if (!(distance2 > 0.0f)) return 0.0f;
+    float pdf = pdfSolidAngle / distance2;
+    // A point light and the pinhole have no surface: their density stays per unit solid angle
+    // times 1/d^2, and no strategy's weight reads it (neither can be hit by chance).
+    if (glm::dot(to.normal, to.normal) > 0.0f) pdf *= std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2);
+    return pdf;
+}
+
+ScatterStep prescribedStep(const ShadingPoint& vertex, Lobe lobe, const Vec3& wi) {
+    ScatterStep step;
+    step.wi = wi;
+    step.lobe = lobe;
+    step.delta = isDelta(lobe);
+    if (step.delta) {
+        step.pdf = step.pdfRev = 1.0f;
+        return step;
+    }
+    step.pdf = vertex.bsdf.pdf(lobe, vertex.wo, wi);
+    step.pdfRev = vertex.bsdf.pdf(lobe, wi, vertex.wo);
+    if (step.pdf > 0.0f) step.weight = vertex.bsdf.eval(lobe, vertex.wo, wi) / step.pdf;
+    return step;
+}
+
+std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, Vec2 u) {
+    const auto sample = vertex.bsdf.sample(vertex.wo, uLobe, u);
+    if (!sample) return std::nullopt;
+    ScatterStep step;
+    step.wi = sample->wi;
+    step.lobe = sample->lobe;
+    step.weight = sample->weight;
+    step.delta = isDelta(sample->lobe);
+    // A delta lobe's Dirac is common to every strategy that can make the path (those that do not
+    // join at this vertex), so both its densities count as 1 (pbrt-v4's remap0 of the same).
+    step.pdf = step.delta ? 1.0f : sample->pdf;
+    step.pdfRev = step.delta ? 1.0f : vertex.bsdf.pdf(sample->lobe, sample->wi, vertex.wo);
+    return step;
+}
+
+BdptVertex cameraVertex(const Vec3& eye) {
+    BdptVertex v;
+    v.kind = VertexKind::Camera;
+    v.point = eye;
+    v.beta = Rgb{1.0f};
+    v.pdfFwd = 1.0f;  // a pinhole: every strategy shares the eye's position
+    return v;
+}
+
+BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition) {
+    BdptVertex v;
+    v.kind = VertexKind::Light;
+    v.point = point;
+    v.normal = normal;
+    v.light = &light;
+    v.delta = light.isDelta();
+    v.pdfPosition = pdfPosition;
+    return v;
+}
+
+BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
+                         float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode) {
+    BdptVertex v;
+    v.kind = VertexKind::Surface;
+    v.point = hit.point;
+    v.normal = hit.normal;
+    v.beta = beta;
+    v.surface.emplace(makeShadingPoint(hit, ray, context, mode));
+    v.pdfFwd = delta ? 1.0f : toAreaDensity(pdfSolidAngle, previous, v);
+    return v;
+}
+
+void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous) {
+    // Light::pdf is light sampling's solid-angle density; times cos / d^2 it is the density per
+    // unit area with which light sampling and emission both pick points on the light.
+    const Vec3 back = previous.point - z.point;
+    const float distance2 = glm::dot(back, back);
+    z.light = &emitter;
+    z.pdfPosition = distance2 > 0.0f ? emitter.pdf(previous.point, z.point, z.normal) *
+                                           std::fabs(glm::dot(z.normal, back)) / (std::sqrt(distance2) * distance2)
+                                     : 0.0f;
+}
+
+float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous) {
+    return step.delta ? 1.0f : toAreaDensity(step.pdfRev, vertex, previous);
+}
+
+namespace {
+
+Vec3 directionTo(const BdptVertex& from, const BdptVertex& to) { return glm::normalize(to.point - from.point); }
+
+}  // namespace
+
+PathDensities joinedDensities(std::span<const BdptVertex> light, Lobe lightLobe, std::span<const BdptVertex> eye,
+                              Lobe eyeLobe, const RenderContext& context) {
+    PathDensities p;
+    const int s = static_cast<int>(light.size()), t = static_cast<int>(eye.size());
+    p.n = s + t;
+    for (int i = 0; i < s; ++i) {
+        p.fromLight[i] = light[i].pdfFwd;
+        p.fromEye[i] = light[i].pdfRev;
+        p.connectible[i] = !light[i].delta || light[i].kind == VertexKind::Light;
+    }
+    for (int j = 0; j < t; ++j) {
+        const int i = p.n - 1 - j;
+        p.fromEye[i] = eye[j].pdfFwd;
+        p.fromLight[i] = eye[j].pdfRev;
+        p.connectible[i] = !eye[j].delta;
+    }
+
+    if (s >= 1 && t >= 1) {
+        // The joined ends, each as the other side's walk would have sampled it.
+        const BdptVertex& y = light[s - 1];
+        const BdptVertex& z = eye[t - 1];
+        const Vec3 yz = directionTo(y, z);
+        p.connectible[s - 1] = p.connectible[s] = true;
+        if (s == 1) {
+            p.fromLight[s] = toAreaDensity(y.light->pdfEmissionDirection(y.normal, yz), y, z);
+        } else {
+            p.fromLight[s] = toAreaDensity(y.surface->bsdf.pdf(lightLobe, y.surface->wo, yz), y, z);
+            p.fromEye[s - 2] = toAreaDensity(y.surface->bsdf.pdf(lightLobe, yz, y.surface->wo), y, light[s - 2]);
+        }
+        if (t == 1) {
+            p.fromEye[s - 1] = toAreaDensity(context.camera.pdfDirection(-yz), z, y);
+        } else {
+            p.fromEye[s - 1] = toAreaDensity(z.surface->bsdf.pdf(eyeLobe, z.surface->wo, -yz), z, y);
+            p.fromLight[s + 1] = toAreaDensity(z.surface->bsdf.pdf(eyeLobe, -yz, z.surface->wo), z, eye[t - 2]);
+        }
+    } else if (s == 0 && t >= 2) {
+        // An eye walk that hit a light: the light's first step as a light walk would take it.
+        const BdptVertex& x0 = eye[t - 1];
+        p.fromLight[1] = toAreaDensity(x0.light->pdfEmissionDirection(x0.normal, directionTo(x0, eye[t - 2])), x0, eye[t - 2]);
+    }
+
+    const BdptVertex& origin = s >= 1 ? light[0] : eye[t - 1];
+    if (origin.light != nullptr) {
+        p.originByNextEvent = double(context.lights.nextEventProbability(*origin.light)) * origin.pdfPosition;
+        p.originByEmission = double(context.lights.emitterProbability(*origin.light)) * origin.pdfPosition;
+        p.originHittable = !origin.light->isDelta();
+    }
+    return p;
+}
+
+namespace {
+
+bool available(const PathDensities& p, int s, bool lightWalks) {
+    const int t = p.n - s;
+    if (t < 1) return false;  // a pinhole cannot be hit by chance
+    if (s == 0) return p.originHittable;
+    if (s >= 2 && !lightWalks) return false;
+    // The light seen straight by the camera (s = 1, t = 1) is left to the eye's walk (s = 0).
+    if (t == 1) return s >= 2 && p.connectible[s - 1];
+    return p.connectible[s - 1] && p.connectible[s];
+}
+
+// The factor x0's choice contributes to strategy s's density.
+double originFactor(const PathDensities& p, int s) {
+    return s == 0 ? 1.0 : s == 1 ? p.originByNextEvent : p.originByEmission;
+}
+
+}  // namespace
+
+float misWeight(const PathDensities& p, int s, bool lightWalks) {
+    if (!available(p, s, lightWalks)) return 0.0f;
+    // p_k / p_(k-1) = O(k) / O(k-1) * fromLight[k-1] (but for x0, in O) / fromEye[k-1]: vertex k-1
+    // moves from the eye's walk to the light's (Veach 1997, eq. 10.9).
+    auto numerator = [&](int k) { return originFactor(p, k) * (k - 1 >= 1 ? p.fromLight[k - 1] : 1.0); };
+    auto denominator = [&](int k) { return originFactor(p, k - 1) * p.fromEye[k - 1]; };
+    double sum = 1.0;
+    double r = 1.0;
+    for (int k = s + 1; k < p.n; ++k) {
+        const double den = denominator(k);
+        if (!(den > 0.0)) return 0.0f;  // a factor of p_s: strategy s could not have made this path
+        r *= numerator(k) / den;
+        if (available(p, k, lightWalks)) sum += r * r;
+    }
+    r = 1.0;
+    for (int k = s - 1; k >= 0; --k) {
+        const double num = numerator(k + 1);
+        if (!(num > 0.0)) return 0.0f;
+        r *= denominator(k + 1) / num;
+        if (available(p, k, lightWalks)) sum += r * r;
+    }
+    return std::isfinite(sum) ? static_cast<float>(1.0 / sum) : 0.0f;
+}
+
+}  // namespace lightpath

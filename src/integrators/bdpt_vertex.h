@@ -1,0 +1,122 @@
+#pragma once
+// The vertices of bidirectional path tracing's subpaths and the multiple importance weights of its
+// strategies (Veach 1997, ch. 10; Veach and Guibas 1995). A path x0 (on a light) ... x(n-1) (the
+// eye) is made by strategy (s, t), s + t = n: s vertices walked from the light, t from the eye,
+// joined by one segment. Each vertex keeps its area density as its own walk sampled it (pdfFwd)
+// and as the other walk would have (pdfRev), so every strategy's density of the same path is a
+// product of these, and the power heuristic compares them.
+#include <array>
+#include <optional>
+#include <span>
+
+#include "integrators/path_record.h"
+#include "integrators/shading_point.h"
+#include "lights/light.h"
+#include "materials/bsdf.h"
+
+namespace lightpath {
+
+struct RenderContext;
+
+// A subpath has at most the eye (or the light) and one vertex per scattering event plus the end.
+inline constexpr int kMaxSubpathVertices = kMaxDepth + 2;
+
+// A vertex's shading point, which (holding references) cannot be assigned: replaced whole instead.
+class ShadingSlot {
+public:
+    ShadingSlot() = default;
+    ShadingSlot(const ShadingSlot& other) { *this = other; }
+    ShadingSlot& operator=(const ShadingSlot& other) {
+        if (this == &other) return *this;
+        value_.reset();
+        if (other.value_) value_.emplace(*other.value_);
+        return *this;
+    }
+    void emplace(const ShadingPoint& point) {
+        value_.reset();
+        value_.emplace(point);
+    }
+    const ShadingPoint& operator*() const { return *value_; }
+    const ShadingPoint* operator->() const { return &*value_; }
+    explicit operator bool() const { return value_.has_value(); }
+
+private:
+    std::optional<ShadingPoint> value_;
+};
+
+enum class VertexKind : std::uint8_t { Camera, Light, Surface };
+
+struct BdptVertex {
+    VertexKind kind = VertexKind::Surface;
+    Vec3 point{0.0f};
+    Vec3 normal{0.0f};  // geometric, for area densities; zero for a point light and the camera
+    // The walk's throughput up to this vertex: for an eye subpath the radiance weight, for a light
+    // subpath Le G f ... / densities, excluding this vertex's own scattering (pbrt-v4 "beta").
+    Rgb beta{0.0f};
+    float pdfFwd = 0.0f;  // area density of this vertex sampled by its own walk
+    float pdfRev = 0.0f;  // area density of this vertex sampled from the other side
+    // Surface: the lobe the walk left through (the path's event here) and whether it is a delta.
+    // Light: delta for a point light. A delta vertex cannot end a subpath that is joined.
+    Lobe lobe = Lobe::Diffuse;
+    bool delta = false;
+    const Light* light = nullptr;  // the light of x0
+    float pdfPosition = 0.0f;      // x0's density per unit area on its light
+    ShadingSlot surface;
+
+    bool onSurface() const { return kind == VertexKind::Surface; }
+};
+
+// Solid-angle density at `from` converted to area density at `to` (Veach 1997, eq. 8.10).
+float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVertex& to);
+
+// Where one scattering step left a vertex, as the walk sampled it or as a test prescribes it.
+struct ScatterStep {
+    Vec3 wi{0.0f};
+    Lobe lobe = Lobe::Diffuse;
+    Rgb weight{0.0f};      // f |cos| / pdf
+    float pdf = 0.0f;      // solid angle, forward; 1 for a delta lobe (its Dirac cancels between strategies)
+    float pdfRev = 0.0f;   // solid angle, the same lobe with wo and wi swapped
+    bool delta = false;
+};
+
+// The step that scatters from `vertex` into `wi` through `lobe`: for a walk that must pass through
+// given points (tests, and the same arithmetic as a sampled step).
+ScatterStep prescribedStep(const ShadingPoint& vertex, Lobe lobe, const Vec3& wi);
+// The step Bsdf::sample takes, with its reverse density; nullopt when it scatters nothing.
+std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, Vec2 u);
+
+// Builders of subpath vertices.
+BdptVertex cameraVertex(const Vec3& eye);
+// x0 on `light`, at `point` with outward `normal`, sampled with area density `pdfPosition`.
+BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition);
+// The vertex where a walk's `ray`, leaving `previous` with solid-angle density `pdfSolidAngle`
+// (through a delta lobe when `delta`), hits `hit`.
+BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
+                         float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode);
+// Makes surface vertex `z`, reached from `previous`, the origin x0 of a path on `emitter` (s = 0).
+void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous);
+// The area density of `previous` as the other walk would reach it from `vertex` by `step`.
+float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous);
+
+// Every strategy's density of one path, per vertex, in the path's order from the light.
+struct PathDensities {
+    int n = 0;
+    std::array<double, 2 * kMaxSubpathVertices> fromLight{};  // x_i sampled by a walk from the light
+    std::array<double, 2 * kMaxSubpathVertices> fromEye{};    // x_i sampled by a walk from the eye
+    std::array<bool, 2 * kMaxSubpathVertices> connectible{};  // x_i may end a joined subpath
+    double originByNextEvent = 0.0;  // x0 chosen by light sampling (s = 1): choice * pdfPosition
+    double originByEmission = 0.0;   // x0 chosen to start a light walk (s >= 2)
+    bool originHittable = false;     // an eye walk can find x0 by chance (an area light: s = 0)
+};
+
+// The densities of the path made by joining light[0..s) and eye[0..t) (either may be empty: s = 0
+// is an eye walk that hit a light, t = 0 is not a strategy of a pinhole), the joined ends scattering
+// through `lightLobe` and `eyeLobe`.
+PathDensities joinedDensities(std::span<const BdptVertex> light, Lobe lightLobe, std::span<const BdptVertex> eye,
+                              Lobe eyeLobe, const RenderContext& context);
+
+// The power-heuristic weight of strategy s for `path`: p_s^2 / sum over the strategies that can
+// make it of p_k^2. `lightWalks`: strategies s >= 2 are in use (light subpaths are traced).
+float misWeight(const PathDensities& path, int s, bool lightWalks);
+
+}  // namespace lightpath

@@ -1,0 +1,55 @@
+#pragma once
+// The interface between lightpath and its image module, liblightpath-image.so: the only code that
+// includes OpenImageIO. Debian's libOpenImageIO pulls in about 260 shared libraries, which take
+// the dynamic loader half a second to map; a command that writes no image must not pay that, so
+// the module is opened with dlopen on first use (io/image_module.h) and this header is all the
+// two sides share. Both are built together by the same compiler, so the types may be C++.
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lightpath {
+
+// The module's entry point, `extern "C"` so dlsym finds it by this name. It returns its codec,
+// or nullptr when `interfaceVersion` is not the one it was built with (a stale module).
+inline constexpr const char* kImageCodecEntryPoint = "lightpathImageCodec";
+// Bumped whenever anything in this header changes.
+inline constexpr int kImageCodecInterfaceVersion = 1;
+
+enum class PixelFormat { UInt8, Float32 };
+
+// One image file to write: `channelNames.size()` interleaved values per pixel, row by row.
+struct ImageFileSpec {
+    int width = 0;
+    int height = 0;
+    std::vector<std::string> channelNames;
+    PixelFormat format = PixelFormat::UInt8;
+    std::vector<std::pair<std::string, std::string>> textAttributes;  // metadata and options
+    std::vector<std::pair<std::string, int>> intAttributes;           // e.g. png:compressionLevel
+};
+
+// An image read back: every channel as float, interleaved, row by row.
+struct ImageData {
+    int width = 0;
+    int height = 0;
+    std::vector<std::string> channelNames;
+    std::vector<float> pixels;
+};
+
+class ImageCodec {
+public:
+    // Writes `pixels` as format `formatName` ("png", "exr") into `file`, whatever its name's
+    // extension. Returns an empty string, or why it could not. Safe to call from several
+    // threads at once, each for its own file.
+    virtual std::string write(const std::string& formatName, const std::string& file, const ImageFileSpec& spec,
+                              const void* pixels) const = 0;
+    // Reads `file` into `image`. Returns an empty string, or why it could not.
+    virtual std::string read(const std::string& file, ImageData& image) const = 0;
+
+protected:
+    ~ImageCodec() = default;  // the module owns its codec; it lives as long as the process
+};
+
+using ImageCodecEntryPoint = const ImageCodec* (*)(int interfaceVersion);
+
+}  // namespace lightpath

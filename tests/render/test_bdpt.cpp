@@ -1,0 +1,469 @@
+// Bidirectional path tracing against references that do not come from it: the path tracer on
+// scenes both can converge on, the furnace's closed forms, the inverse-square law for light
+// tracing alone, a mirror's caustic as the light's mirror image, and the MIS weights of every
+// strategy of random paths summing to one. Statistical checks are Student's t-tests with a control
+// 5% off that must be rejected.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "integrators/bdpt.h"
+#include "integrators/bdpt_vertex.h"
+#include "film/aov_presets.h"
+#include "math/random.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "scene_builder.h"
+#include "statistics.h"
+
+namespace lightpath {
+namespace {
+
+using test::studentTTest;
+
+constexpr double kPValue = 0.001;
+
+Film render(const Scene& scene, const std::vector<lpe::NamedExpression>& set, const char* integrator, int spp,
+            int maxDepth, std::uint64_t seed, int threads = 0) {
+    const AovSet aovs(set);
+    RenderOptions options;
+    options.integrator = integrator;
+    options.samplesPerPixel = spp;
+    options.maxDepth = maxDepth;
+    options.seed = seed;
+    options.threads = threads;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+std::vector<double> channel(const Film& film, std::size_t layer, int c) {
+    std::vector<double> values;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) values.push_back(film.at(layer, x, y)[c]);
+    return values;
+}
+
+double mean(const std::vector<double>& values) {
+    double sum = 0.0;
+    for (double v : values) sum += v;
+    return sum / double(values.size());
+}
+
+// bdpt - path per pixel has mean zero on every layer and channel; bdpt - 1.05 path must not,
+// wherever the layer holds light.
+void checkAgreement(const Film& bdpt, const Film& path) {
+    REQUIRE(bdpt.layerNames() == path.layerNames());
+    int controls = 0;
+    for (std::size_t layer = 0; layer < bdpt.layerCount(); ++layer) {
+        for (int c = 0; c < 3; ++c) {
+            const std::vector<double> a = channel(bdpt, layer, c), b = channel(path, layer, c);
+            std::vector<double> difference(a.size()), wrong(a.size());
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                difference[i] = a[i] - b[i];
+                wrong[i] = a[i] - 1.05 * b[i];
+            }
+            CAPTURE(bdpt.layerNames()[layer]);
+            CAPTURE(c);
+            CAPTURE(mean(a));
+            CAPTURE(mean(b));
+            CHECK(studentTTest(difference, 0.0) > kPValue);
+            if (mean(b) > 1e-3) {
+                CHECK(studentTTest(wrong, 0.0) < kPValue);
+                ++controls;
+            }
+        }
+    }
+    CHECK(controls >= 6);  // beauty and at least one AOV in every channel carried the controls
+}
+
+TEST_CASE("bdpt: the Cornell box with its area light, every classes AOV equals the path tracer's (t-test)") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.toml");
+    scene.camera.width = scene.camera.height = 32;
+    // The same seed: both see the same jittered first hits (common random numbers), so the paired
+    // differences are small and the test sharp, while their expectations stay each method's own.
+    const Film bdpt = render(scene, classesSet(), "bdpt", 128, 5, 11);
+    const Film path = render(scene, classesSet(), "path", 128, 5, 11);
+    checkAgreement(bdpt, path);
+}
+
+// A closed sphere seen from its centre.
+Scene furnace(float albedo, Rgb emission) {
+    Scene scene;
+    scene.camera = test::centredCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 25);
+    scene.camera.verticalFovDegrees = 90.0f;
+    PhongMaterial wall;
+    wall.name = "wall";
+    wall.kd = Rgb{albedo};
+    wall.emission = emission;
+    test::addSphere(scene, "furnace", test::addMaterial(scene, wall), {0, 0, 0}, 1.0f);
+    return scene;
+}
+
+void checkLayer(const Film& film, const std::string& name, double expected) {
+    const auto& names = film.layerNames();
+    const std::size_t layer = static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    REQUIRE(layer < names.size());
+    CAPTURE(name);
+    CAPTURE(expected);
+    const std::vector<double> values = channel(film, layer, 0);
+    CAPTURE(mean(values));
+    CHECK(studentTTest(values, expected) > kPValue);
+    CHECK(studentTTest(values, expected * 1.05) < kPValue);
+}
+
+TEST_CASE("bdpt: furnace, a closed emissive diffuse sphere has radiance Le / (1 - rho), split as the path tracer splits it") {
+    const double rho = 0.5, le = 1.0;
+    const Film film = render(furnace(float(rho), Rgb{float(le)}), classesSet(), "bdpt", 32, 64, 3);
+    checkLayer(film, "beauty", le / (1.0 - rho));
+    checkLayer(film, "raycast", rho * le);
+    checkLayer(film, "indirect", le * rho * rho / (1.0 - rho));
+    checkLayer(film, "emission", le);
+}
+
+TEST_CASE("bdpt: furnace, a point light of radiant intensity pi at the centre of a unit sphere with kd 0.5") {
+    Scene scene = furnace(0.5f, Rgb{0.0f});
+    scene.lights.push_back({"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
+    const Film film = render(scene, classesSet(), "bdpt", 32, 64, 5);
+    checkLayer(film, "beauty", 1.0);
+    checkLayer(film, "raycast", 0.5);
+    checkLayer(film, "indirect", 0.5);
+}
+
+TEST_CASE("bdpt: bit-identical images on 1, 2 and 8 threads, splats included") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
+    scene.camera.width = 40;
+    scene.camera.height = 30;
+    const std::vector<lpe::NamedExpression> set{{"caustic", "E(D|G)S+L"}};
+    const Film one = render(scene, set, "bdpt", 2, 5, 1, 1);
+    for (int threads : {2, 8}) {
+        const Film other = render(scene, set, "bdpt", 2, 5, 1, threads);
+        const auto a = one.interleaved(), b = other.interleaved();
+        CHECK(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+    }
+}
+
+// --- The pieces a test can hold: a scene with its geometry, lights and automaton. ---
+struct World {
+    explicit World(const Scene& s, std::vector<lpe::NamedExpression> set = classesSet(), int maxDepth = 5)
+        : scene(s), aovs(std::move(set)), geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh,
+                                                   scene.triangleNormals),
+          symbols(scene, aovs.automaton()), analysis(scene), lights(scene, geometry), camera(scene.camera),
+          context{scene, geometry, aovs.automaton(), symbols, analysis, lights, camera, maxDepth,
+                  aovs.automaton().allOutputs(), true, true} {}
+    Scene scene;
+    AovSet aovs;
+    SceneGeometry geometry;
+    EventSymbols symbols;
+    SceneAnalysis analysis;
+    LightSet lights;
+    PinholeCamera camera;
+    RenderContext context;
+};
+
+TEST_CASE("camera: project() inverts generateRay, and importance integrates to one over the image") {
+    CameraDescription d;
+    d.eye = {0.3f, 1.2f, 4.0f};
+    d.lookAt = {-0.2f, 0.8f, 0.0f};
+    d.width = 64;
+    d.height = 40;
+    d.verticalFovDegrees = 50.0f;
+    const PinholeCamera camera(d);
+    Pcg32 rng(9, 1);
+    for (int i = 0; i < 1000; ++i) {
+        const float x = rng.nextFloat() * 64.0f, y = rng.nextFloat() * 40.0f;
+        const Ray ray = camera.generateRay(x, y);
+        const auto p = camera.project(ray.at(0.5f + 10.0f * rng.nextFloat()));
+        REQUIRE(p);
+        CHECK(p->x == doctest::Approx(x).epsilon(1e-4));
+        CHECK(p->y == doctest::Approx(y).epsilon(1e-4));
+    }
+    CHECK_FALSE(camera.project(d.eye + (d.eye - d.lookAt)));           // behind the camera
+    CHECK_FALSE(camera.project(camera.generateRay(-1.0f, 5.0f).at(2)));  // left of the image
+    // The directional density over the image is normalised: sum pdf(w) dw over a fine grid of
+    // pixels, dw = dA cos^3 / 1 on the plane at distance 1 (independent of the formula's form).
+    const double halfHeight = std::tan(glm::radians(25.0)), halfWidth = halfHeight * 64.0 / 40.0;
+    double integral = 0.0;
+    const int n = 400;
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const Ray ray = camera.generateRay((i + 0.5f) * 64.0f / n, (j + 0.5f) * 40.0f / n);
+            const double u = (2.0 * (i + 0.5) / n - 1.0) * halfWidth, v = (2.0 * (j + 0.5) / n - 1.0) * halfHeight;
+            const double r2 = 1.0 + u * u + v * v;
+            const double dA = (2.0 * halfWidth / n) * (2.0 * halfHeight / n);
+            integral += camera.pdfDirection(ray.direction) * dA / (r2 * std::sqrt(r2));
+        }
+    }
+    CHECK(integral == doctest::Approx(1.0).epsilon(1e-3));
+}
+
+// Random paths x0 (on a light) ... x(n-1) (the eye) inside a closed sphere whose wall is diffuse,
+// glossy, a mirror and an emitter at once, lit also by a point light: any two points inside see
+// each other, so every strategy can make every path. Each strategy's subpaths are rebuilt through
+// the given points by the integrator's own vertex code, and their weights must sum to one.
+TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over random paths") {
+    Scene scene;
+    scene.camera = test::centredCamera({0.1f, -0.2f, 0.3f}, {0, 0, -1}, {0, 1, 0}, 33);
+    scene.camera.verticalFovDegrees = 70.0f;
+    PhongMaterial wall;
+    wall.name = "wall";
+    wall.kd = Rgb{0.4f};
+    wall.ks = Rgb{0.3f};
+    wall.n = 12.0f;
+    wall.kr = Rgb{0.2f};
+    wall.emission = Rgb{1.0f};
+    test::addSphere(scene, "room", test::addMaterial(scene, wall), {0, 0, 0}, 1.0f);
+    scene.lights.push_back({"bulb", {-0.2f, 0.4f, 0.1f}, Rgb{1.0f}, {0, 0, 1}});
+    const World world(scene);
+    const RenderContext& ctx = world.context;
+    const Light& areaLight = *world.lights.lightOfObject(0);
+    const Light& pointLight = *world.lights.deltaLights()[0];
+
+    Pcg32 rng(2024, 1);
+    auto u2 = [&] { return Vec2{rng.nextFloat(), rng.nextFloat()}; };
+    auto smoothLobe = [&] { return rng.nextFloat() < 0.5f ? Lobe::Diffuse : Lobe::Highlight; };
+    int paths = 0, shared = 0, withDelta = 0;
+    double worst = 0.0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const int n = 3 + trial % 5;  // 3 .. 7 vertices
+        const Light& light = trial % 2 == 0 ? areaLight : pointLight;
+        // x0 and a light walk to x(n-3), then the eye's first hit x(n-2) and the eye x(n-1).
+        std::vector<SurfaceHit> hits(n);
+        std::vector<Lobe> lobes(n, Lobe::Diffuse);
+        const EmittedRay e = light.sampleEmission(u2(), u2());
+        CHECK(light.pdfEmissionDirection(e.normal, e.ray.direction) == doctest::Approx(e.pdfDirection).epsilon(1e-4));
+        Ray ray{e.ray.origin + 1e-4f * e.ray.direction, e.ray.direction};  // off the light's own surface
+        bool ok = true;
+        for (int i = 1; i <= n - 3 && ok; ++i) {
+            const auto hit = world.geometry.intersect(ray);
+            if (!hit) { ok = false; break; }
+            hits[i] = *hit;
+            const ShadingPoint sp = makeShadingPoint(*hit, ray, ctx, TransportMode::Importance);
+            const auto step = sampledStep(sp, rng.nextFloat(), u2());
+            if (i == n - 3) {
+                lobes[i] = smoothLobe();  // the last light-side vertex meets the eye's: smooth
+                break;
+            }
+            if (!step) {
+                ok = false;
+                break;
+            }
+            lobes[i] = step->lobe;
+            withDelta += step->delta;
+            ray = Ray{hit->point + 1e-4f * step->wi, step->wi};
+        }
+        const Ray cameraRay = world.camera.generateRay(33.0f * rng.nextFloat(), 33.0f * rng.nextFloat());
+        const auto first = world.geometry.intersect(cameraRay);
+        if (!ok || !first) continue;
+        hits[n - 2] = *first;
+        lobes[n - 2] = smoothLobe();
+        std::vector<Vec3> points(n);
+        points[0] = e.ray.origin;
+        for (int i = 1; i < n - 1; ++i) points[i] = hits[i].point;
+        points[n - 1] = world.camera.eye();
+
+        double sum = 0.0;
+        int contributing = 0;
+        for (int s = 0; s < n; ++s) {
+            const int t = n - s;
+            std::array<BdptVertex, kMaxSubpathVertices> lightPath, eyePath;
+            // Light subpath x0 .. x(s-1), as a light walk would have made it.
+            if (s >= 1) {
+                const float pdfPosition = e.pdfPosition;
+                lightPath[0] = lightVertex(light, points[0], e.normal, pdfPosition);
+                lightPath[0].pdfFwd = world.lights.emitterProbability(light) * pdfPosition;
+                float pdf = light.pdfEmissionDirection(e.normal, glm::normalize(points[1] - points[0]));
+                bool delta = false;
+                for (int i = 1; i < s; ++i) {
+                    const Vec3 w = glm::normalize(points[i] - points[i - 1]);
+                    lightPath[i] = surfaceVertex(hits[i], Ray{points[i - 1], w}, Rgb{1.0f}, lightPath[i - 1], pdf, delta, ctx,
+                                                 TransportMode::Importance);
+                    if (i + 1 < s) {
+                        const ScatterStep step =
+                            prescribedStep(*lightPath[i].surface, lobes[i], glm::normalize(points[i + 1] - points[i]));
+                        lightPath[i].lobe = step.lobe;
+                        lightPath[i].delta = step.delta;
+                        lightPath[i - 1].pdfRev = reverseDensity(step, lightPath[i], lightPath[i - 1]);
+                        pdf = step.pdf;
+                        delta = step.delta;
+                    }
+                }
+            }
+            // Eye subpath x(n-1) .. x(s), as the eye's walk would have made it.
+            eyePath[0] = cameraVertex(points[n - 1]);
+            float pdf = world.camera.pdfDirection(glm::normalize(points[n - 2] - points[n - 1]));
+            bool delta = false;
+            for (int j = 1; j < t; ++j) {
+                const int i = n - 1 - j;
+                const Vec3 w = glm::normalize(points[i] - points[i + 1]);
+                const SurfaceHit hit = i == 0 ? SurfaceHit{1.0f, points[0], e.normal, e.normal, 0} : hits[i];
+                eyePath[j] = surfaceVertex(hit, Ray{points[i + 1], w}, Rgb{1.0f}, eyePath[j - 1], pdf, delta, ctx,
+                                           TransportMode::Radiance);
+                if (j + 1 < t) {
+                    const ScatterStep step = prescribedStep(*eyePath[j].surface, lobes[i], glm::normalize(points[i - 1] - points[i]));
+                    eyePath[j].lobe = step.lobe;
+                    eyePath[j].delta = step.delta;
+                    if (j >= 2) eyePath[j - 1].pdfRev = reverseDensity(step, eyePath[j], eyePath[j - 1]);
+                    pdf = step.pdf;
+                    delta = step.delta;
+                }
+            }
+            if (s == 0) {
+                if (light.isDelta()) continue;  // nothing hits a point
+                markEmitter(eyePath[t - 1], light, eyePath[t - 2]);
+            }
+            const Lobe lightLobe = s >= 1 ? lobes[s - 1] : Lobe::Diffuse;
+            const Lobe eyeLobe = lobes[s];
+            // A join cannot pass through a mirror bounce: that strategy does not make this path.
+            if ((s >= 2 && isDelta(lightLobe)) || (t >= 2 && s >= 1 && isDelta(eyeLobe))) continue;
+            const float w = misWeight(joinedDensities({lightPath.data(), std::size_t(s)}, lightLobe,
+                                                      {eyePath.data(), std::size_t(t)}, eyeLobe, ctx),
+                                      s, true);
+            REQUIRE(std::isfinite(w));
+            sum += w;
+            contributing += w > 1e-6f;
+        }
+        ++paths;
+        shared += contributing >= 2;
+        worst = std::max(worst, std::fabs(sum - 1.0));
+        CAPTURE(n);
+        CAPTURE(trial);
+        CHECK(sum == doctest::Approx(1.0).epsilon(1e-4));
+    }
+    CAPTURE(worst);
+    CHECK(paths > 2000);
+    CHECK(shared > paths / 2);  // most paths are found by more than one strategy
+    CHECK(withDelta > 100);     // and many pass a mirror bounce
+}
+
+// Renders with light tracing alone (t = 1, unweighted), splats summed as the renderer does.
+Film lightTrace(const World& world, int spp) {
+    const int width = world.camera.width(), height = world.camera.height();
+    BdptIntegrator integrator(BdptIntegrator::Strategies::LightTracingOnly);
+    BdptIntegrator& base = integrator;
+    base.preprocess(world.context);
+    SplatFilm splats(width, height, world.aovs.layerCount());
+    std::vector<Rgb> layers(world.aovs.layerCount());
+    ContributionSink sink(layers, &splats);
+    RayCounters counters;
+    PathState path(world.context, sink, counters);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            for (int i = 0; i < spp; ++i) {
+                Sampler sampler = Sampler::forPixel(SamplerKind::Independent, x, y, i, spp, 1);
+                path.sampler = &sampler;
+                REQUIRE(path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, world.camera.eye()}));
+                base.traceCameraRay(world.camera.generateRay(x + 0.5f, y + 0.5f), path);
+                path.pop();
+            }
+        }
+    }
+    CHECK(isBlack(layers[0]));  // light tracing adds only through splats
+    Film film(width, height, world.aovs.layerNames());
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (std::size_t l = 0; l < world.aovs.layerCount(); ++l) film.at(l, x, y) = splats.at(x, y, l) / float(spp);
+    return film;
+}
+
+// The mean over pixel (i, j) of a function of the floor point y = 0 its rays see, by an 8x8 grid:
+// light tracing estimates the pixel's mean radiance, not its centre's.
+template <class F>
+double pixelMean(const PinholeCamera& camera, int i, int j, F f) {
+    double sum = 0.0;
+    for (int b = 0; b < 8; ++b) {
+        for (int a = 0; a < 8; ++a) {
+            const Ray ray = camera.generateRay(i + (a + 0.5f) / 8.0f, j + (b + 0.5f) / 8.0f);
+            const glm::dvec3 d(ray.direction), o(ray.origin);
+            sum += f(o + (-o.y / d.y) * d);
+        }
+    }
+    return sum / 64.0;
+}
+
+Scene floorUnderLight(const glm::dvec3& light, const glm::dvec3& attenuation) {
+    Scene scene;
+    scene.camera = test::centredCamera({0.3f, 1.0f, 0.2f}, {0.3f, 0, 0.2f}, {0, 0, -1}, 21);
+    scene.camera.verticalFovDegrees = 60.0f;
+    PhongMaterial floor;
+    floor.name = "floor";
+    floor.kd = Rgb{0.6f};
+    test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
+    scene.lights.push_back({"key", Vec3(light), Rgb{3.0f}, Vec3(attenuation)});
+    return scene;
+}
+
+void checkAgainst(const Film& film, std::size_t layer, const PinholeCamera& camera,
+                  const std::function<double(const glm::dvec3&)>& expected) {
+    std::vector<double> differences, wrong;
+    for (int j = 0; j < film.height(); ++j) {
+        for (int i = 0; i < film.width(); ++i) {
+            const double e = pixelMean(camera, i, j, expected);
+            differences.push_back(film.at(layer, i, j).g - e);
+            wrong.push_back(film.at(layer, i, j).g - 1.05 * e);
+        }
+    }
+    CAPTURE(mean(differences));
+    CHECK(studentTTest(differences, 0.0) > kPValue);
+    CHECK(studentTTest(wrong, 0.0) < kPValue);
+}
+
+TEST_CASE("bdpt: light tracing alone lights a Lambertian plane under a point light as kd I cos(theta) falloff(d)") {
+    const glm::dvec3 light{0.7, 1.5, -0.4};
+    for (const glm::dvec3 attenuation : {glm::dvec3{0, 0, 1}, glm::dvec3{1, 0.1, 0.01}}) {
+        CAPTURE(attenuation.x);
+        const World world(floorUnderLight(light, attenuation), {});
+        const Film film = lightTrace(world, 1024);
+        checkAgainst(film, 0, world.camera, [&](const glm::dvec3& p) {
+            const glm::dvec3 toLight = light - p;
+            const double d = glm::length(toLight);
+            return 0.6 * 3.0 * (toLight.y / d) / (attenuation.x + attenuation.y * d + attenuation.z * d * d);
+        });
+    }
+}
+
+// A mirror wall x = 1 beside a diffuse floor: light reaching the floor by the mirror (E D S L) is
+// the light's mirror image at (2 - x, y, z), kr times as bright, under the inverse-square law.
+TEST_CASE("bdpt: a mirror's caustic is the mirror image of the point light, scaled by kr") {
+    const glm::dvec3 light{0.3, 1.2, 0.1}, image{2.0 - light.x, light.y, light.z};
+    const double kr = 0.8;
+    Scene scene = floorUnderLight(light, {0, 0, 1});
+    scene.camera = test::centredCamera({0.2f, 1.0f, 0.1f}, {0.2f, 0, 0.1f}, {0, 0, -1}, 31);
+    scene.camera.verticalFovDegrees = 50.0f;
+    PhongMaterial mirror;
+    mirror.name = "mirror";
+    mirror.kr = Rgb{float(kr)};
+    test::addPlane(scene, "mirror", test::addMaterial(scene, mirror), {1, 0, 0}, {-1, 0, 0});
+    const std::vector<lpe::NamedExpression> set{{"caustic", "E(D|G)S+L"}};
+    const Film film = render(scene, set, "bdpt", 1024, 5, 21);
+    checkAgainst(film, 1, PinholeCamera(scene.camera), [&](const glm::dvec3& p) {
+        const glm::dvec3 toImage = image - p;
+        const double d = glm::length(toImage);
+        return kr * 0.6 * 3.0 * (toImage.y / d) / (d * d);
+    });
+}
+
+TEST_CASE("bdpt: the caustic under a point light behind a glass ball is found by bdpt and is exactly zero under path") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    // A bare L also matches the background, which the path tracer does see through the glass from
+    // the floor (E D S B): without a background, E(D|G)S+L is light from the lamp alone.
+    scene.background = Rgb{0.0f};
+    const std::vector<lpe::NamedExpression> set{{"caustic", "E(D|G)S+L"}};
+    auto total = [](const Film& film) {
+        double sum = 0.0;
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x) sum += film.at(1, x, y).g;
+        return sum;
+    };
+    const double path = total(render(scene, set, "path", 4, 5, 1));
+    const double bdpt = total(render(scene, set, "bdpt", 4, 5, 1));
+    CHECK(path == 0.0);
+    CHECK(bdpt > 0.0);
+}
+
+}  // namespace
+}  // namespace lightpath
