@@ -1,0 +1,191 @@
+// Radiosity (issue "Radiosity, the lecture's fourth method"): form factors against Hottel's closed
+// forms, a closed box against Le / (1 - rho), energy conservation, agreement with the path tracer
+// on the Cornell box, and classification (AOVs sum to the beauty, light groups, bounces, skipping).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+
+#include "film/aov_set.h"
+#include "integrators/radiosity.h"
+#include "lpe/analysis.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "scene_builder.h"
+
+namespace lightpath {
+namespace {
+
+// Everything a RenderContext refers to, for calling the integrator directly.
+struct Solved {
+    Scene scene;
+    AovSet aovs;
+    SceneGeometry geometry;
+    EventSymbols symbols;
+    SceneAnalysis analysis;
+    LightSet lights;
+    PinholeCamera camera;
+    RenderContext context;
+    RadiosityIntegrator radiosity;
+
+    Solved(Scene s, const RadiosityOptions& options, int maxDepth)
+        : scene(std::move(s)),
+          aovs(lpe::classesSet()),
+          geometry(scene.spheres, scene.planes, scene.triangles, NumericsOptions{}, Accelerator::Bvh),
+          symbols(scene, aovs.automaton()),
+          analysis(scene),
+          lights(scene, geometry),
+          camera(scene.camera),
+          context{scene, geometry, aovs.automaton(), symbols, analysis, lights, camera, maxDepth,
+                  aovs.automaton().allOutputs(), true, true, options, 2} {
+        radiosity.preprocess(context);
+    }
+
+    // Area-weighted form factor from the front of every patch of object `from` to the front of
+    // every patch of object `to`.
+    double objectFormFactor(std::uint32_t from, std::uint32_t to) const {
+        const auto& patches = radiosity.mesh().patches();
+        double area = 0.0, sum = 0.0;
+        for (std::uint32_t p = 0; p < patches.size(); ++p) {
+            if (patches[p].object != from) continue;
+            area += patches[p].area;
+            const auto row = radiosity.formFactors(p, 0);
+            for (std::size_t i = 0; i < row.targets.size(); ++i)
+                if (row.targets[i] % 2 == 0 && patches[row.targets[i] / 2].object == to) sum += patches[p].area * row.factors[i];
+        }
+        return sum / area;
+    }
+};
+
+PhongMaterial diffuse(const std::string& name, float albedo, float emission = 0.0f) {
+    PhongMaterial m;
+    m.name = name;
+    m.kd = Rgb{albedo};
+    m.emission = Rgb{emission};
+    return m;
+}
+
+void addQuad(Scene& scene, std::uint32_t object, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+    scene.triangles.push_back({a, b, c, object});
+    scene.triangles.push_back({a, c, d, object});
+}
+
+// Hottel's view factors (Howell's catalogue, C-11 and C-14), written out from the formulas.
+double parallelSquares(double a, double b, double c) {
+    const double x = a / c, y = b / c;
+    const double x1 = std::sqrt(1 + x * x), y1 = std::sqrt(1 + y * y);
+    return 2.0 / (M_PI * x * y) *
+           (std::log(std::sqrt((1 + x * x) * (1 + y * y) / (1 + x * x + y * y))) + x * y1 * std::atan(x / y1) +
+            y * x1 * std::atan(y / x1) - x * std::atan(x) - y * std::atan(y));
+}
+
+double perpendicularSharingEdge(double h, double w) {
+    const double hw = std::sqrt(h * h + w * w);
+    const double a = (1 + w * w) * (1 + h * h) / (1 + w * w + h * h);
+    const double b = std::pow(w * w * (1 + w * w + h * h) / ((1 + w * w) * (w * w + h * h)), w * w);
+    const double c = std::pow(h * h * (1 + h * h + w * w) / ((1 + h * h) * (h * h + w * w)), h * h);
+    return 1.0 / (M_PI * w) *
+           (w * std::atan(1 / w) + h * std::atan(1 / h) - hw * std::atan(1 / hw) + 0.25 * std::log(a * b * c));
+}
+
+TEST_CASE("the closed forms themselves: Howell's tabulated values") {
+    CHECK(parallelSquares(1, 1, 1) == doctest::Approx(0.1998).epsilon(1e-3));
+    CHECK(perpendicularSharingEdge(1, 1) == doctest::Approx(0.2000).epsilon(1e-3));
+}
+
+TEST_CASE("form factors of unit squares match Hottel's closed forms to 1% at the default density") {
+    const RadiosityOptions defaults;
+    SUBCASE("parallel, directly opposed, one apart") {
+        Scene scene;
+        const auto m = test::addMaterial(scene, diffuse("grey", 0.5f));
+        const auto lower = test::addObject(scene, "lower", m), upper = test::addObject(scene, "upper", m);
+        addQuad(scene, lower, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});  // facing +z
+        addQuad(scene, upper, {0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1});  // facing -z
+        const Solved solved(scene, defaults, 2);
+        const double expected = parallelSquares(1, 1, 1);
+        CHECK(solved.objectFormFactor(lower, upper) == doctest::Approx(expected).epsilon(0.01));
+        CHECK(solved.objectFormFactor(upper, lower) == doctest::Approx(expected).epsilon(0.01));
+    }
+    SUBCASE("perpendicular, sharing an edge") {
+        Scene scene;
+        const auto m = test::addMaterial(scene, diffuse("grey", 0.5f));
+        const auto floor = test::addObject(scene, "floor", m), wall = test::addObject(scene, "wall", m);
+        addQuad(scene, floor, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});  // facing +z
+        addQuad(scene, wall, {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1});   // facing +x
+        const Solved solved(scene, defaults, 2);
+        const double expected = perpendicularSharingEdge(1, 1);
+        CHECK(solved.objectFormFactor(floor, wall) == doctest::Approx(expected).epsilon(0.01));
+        CHECK(solved.objectFormFactor(wall, floor) == doctest::Approx(expected).epsilon(0.01));
+    }
+}
+
+// The unit cube [0,1]^3 wound inwards, every face of albedo rho emitting Le towards the inside.
+Scene emissiveBox(float albedo, float emission) {
+    Scene scene;
+    const auto m = test::addMaterial(scene, diffuse("wall", albedo, emission));
+    const auto box = test::addObject(scene, "box", m);
+    const Vec3 p[8] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    addQuad(scene, box, p[0], p[1], p[2], p[3]);  // z = 0, facing +z
+    addQuad(scene, box, p[4], p[7], p[6], p[5]);  // z = 1, facing -z
+    addQuad(scene, box, p[0], p[4], p[5], p[1]);  // y = 0, facing +y
+    addQuad(scene, box, p[3], p[2], p[6], p[7]);  // y = 1, facing -y
+    addQuad(scene, box, p[0], p[3], p[7], p[4]);  // x = 0, facing +x
+    addQuad(scene, box, p[1], p[5], p[6], p[2]);  // x = 1, facing -x
+    scene.camera = test::centredCamera({0.5f, 0.5f, 0.5f}, {1.0f, 0.5f, 0.5f}, {0, 1, 0}, 15);
+    scene.camera.verticalFovDegrees = 80.0f;
+    return scene;
+}
+
+TEST_CASE("a closed box of albedo rho emitting Le everywhere shows Le / (1 - rho)") {
+    constexpr float kAlbedo = 0.6f, kEmission = 1.5f;
+    const double expected = kEmission / (1.0 - kAlbedo);
+    const AovSet aovs(lpe::classesSet());
+    RenderOptions options;
+    options.integrator = "radiosity";
+    options.maxDepth = kMaxDepth;
+    options.radiosity.patchBudget = 1536;
+    const RenderResult result = Renderer(emissiveBox(kAlbedo, kEmission), aovs, options).render();
+    double worst = 0.0;
+    for (int y = 0; y < result.film.height(); ++y)
+        for (int x = 0; x < result.film.width(); ++x)
+            worst = std::max(worst, std::fabs(double(result.film.at(0, x, y).g) / expected - 1.0));
+    CAPTURE(expected);
+    CHECK(worst < 0.01);
+    REQUIRE(result.stats.radiosity);
+    CHECK(result.stats.radiosity->residual < options.radiosity.tolerance);
+}
+
+TEST_CASE("energy is conserved: rows of the form factors sum to 1 in a closed box, each bounce keeps rho of the last") {
+    constexpr float kAlbedo = 0.5f;
+    RadiosityOptions options;
+    options.patchBudget = 768;
+    options.tolerance = 0.0;
+    const Solved solved(emissiveBox(kAlbedo, 1.0f), options, 6);
+    const auto& patches = solved.radiosity.mesh().patches();
+    double worstInside = 0.0, worstOutside = 0.0;
+    for (std::uint32_t p = 0; p < patches.size(); ++p) {
+        const auto insideRow = solved.radiosity.formFactors(p, 0), outsideRow = solved.radiosity.formFactors(p, 1);
+        const double inside = std::accumulate(insideRow.factors.begin(), insideRow.factors.end(), 0.0);
+        const double outside = std::accumulate(outsideRow.factors.begin(), outsideRow.factors.end(), 0.0);
+        worstInside = std::max(worstInside, std::fabs(inside - 1.0));
+        worstOutside = std::max(worstOutside, outside);
+    }
+    CHECK(worstInside < 1e-6);   // every ray from the inside lands on the inside
+    CHECK(worstOutside == 0.0);  // every ray from the outside escapes
+
+    // Flux leaving the inside after each bounce: each bounce reflects rho of the one before.
+    std::vector<double> flux;
+    for (int k = 1; k <= 6; ++k) {
+        double sum = 0.0;
+        for (std::uint32_t p = 0; p < patches.size(); ++p) sum += patches[p].area * solved.radiosity.patchRadiance(0, k, p, 0).g;
+        flux.push_back(sum);
+    }
+    // Bounce 1: the box's own emission Le pi over 6 unit faces, reflected: rho Le (per unit pi, x6).
+    CHECK(flux[0] == doctest::Approx(6.0 * kAlbedo).epsilon(0.01));
+    for (std::size_t k = 1; k < flux.size(); ++k) CHECK(flux[k] / flux[k - 1] == doctest::Approx(kAlbedo).epsilon(0.005));
+}
+
+}  // namespace
+}  // namespace lightpath
