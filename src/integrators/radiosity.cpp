@@ -227,20 +227,37 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 if (isBlack(reflectance_[p])) continue;
                 Pcg32 rng(mixBits(e ^ (std::uint64_t(l) << 40)), 0x1165u);
                 shuffle(order, rng);
+                // Radiance reflected by a Lambertian patch, over kd: (1/pi) cos(theta) times each
+                // light sample's weight, plus, for an area light, the emitter's radiance met by a
+                // cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
+                // heuristic, so neither the 1/d^2 of points near the emitter nor small bright
+                // emitters make the patch noisy.
                 Rgb sum{0.0f};
                 for (std::uint32_t k = 0; k < samples; ++k) {
                     const PatchPoint point = mesh_->samplePoint(p, stratum(k, side, rng));
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
+                    const SurfaceHit from = surfacePoint(patches[p], point);
                     const LightSample s = light.sample(point.point, stratum(order[k], side, rng));
                     const float cosTheta = glm::dot(normal, s.wi);
-                    if (!(s.distance > 0.0f) || cosTheta <= 0.0f || isBlack(s.weight)) continue;
+                    if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
+                        ++cast;
+                        if (!context.geometry.occluded(spawnShadowRay(from, s.point, context.geometry.numerics()))) {
+                            const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
+                            sum += (weight * cosTheta / kPi) * s.weight;
+                        }
+                    }
+                    if (light.isDelta()) continue;
+                    const Vec3 local = sampleCosineHemisphere(Vec2{rng.nextFloat(), rng.nextFloat()});
+                    const Vec3 direction = Frame(normal).toWorld(local);
                     ++cast;
-                    const SurfaceHit from = surfacePoint(patches[p], point);
-                    if (context.geometry.occluded(spawnShadowRay(from, s.point, context.geometry.numerics()))) continue;
-                    sum += cosTheta * s.weight;
+                    const auto hit = context.geometry.intersect(spawnRay(from, direction, context.geometry.numerics()));
+                    if (!hit || context.lights.lightOfObject(hit->object) != &light) continue;
+                    const Rgb emitted = light.radiance(*hit, -direction);
+                    if (isBlack(emitted)) continue;
+                    const float lightPdf = light.pdf(point.point, hit->point, hit->normal);
+                    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
                 }
-                // A Lambertian patch reflects (kd / pi) cos(theta) times each sample's weight.
-                values_[valueIndex(l, 1, e)] = reflectance_[p] / kPi * sum / float(samples);
+                values_[valueIndex(l, 1, e)] = reflectance_[p] * sum / float(samples);
             }
             shadowRays += cast;
         });

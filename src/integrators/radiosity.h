@@ -29,7 +29,7 @@ struct RadiosityStats {
     std::size_t patches = 0;
     float patchSize = 0.0f;
     std::uint64_t formFactorRays = 0;
-    std::uint64_t shadowRays = 0;      // direct light at patch sample points
+    std::uint64_t shadowRays = 0;      // direct light: shadow rays and, for area lights, rays towards them
     int iterations = 0;                // bounces solved (Jacobi iterations, the first one direct)
     int lightsSolved = 0;              // lights some requested output accepts
     int lightBouncesSolved = 0;        // (light, bounce) solutions computed, summed over lights
