@@ -268,3 +268,117 @@ TEST_CASE("control: radiosity of a Cornell box 10% darker fails the same toleran
 
 }  // namespace
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+struct Rendered {
+    Film film;
+    RadiosityStats stats;
+};
+
+Rendered renderCornell(std::vector<lpe::NamedExpression> expressions, bool beauty, int maxDepth = 5) {
+    const AovSet aovs(std::move(expressions));
+    RenderOptions options;
+    options.integrator = "radiosity";
+    options.writeBeauty = beauty;
+    options.maxDepth = maxDepth;
+    options.threads = 2;
+    options.radiosity.patchBudget = 1024;
+    options.radiosity.tolerance = 0.0;
+    RenderResult result = Renderer(cornellBox(32), aovs, options).render();
+    REQUIRE(result.stats.radiosity);
+    return {std::move(result.film), *result.stats.radiosity};
+}
+
+// Layers 1..n-1 (all but the beauty at 0) against the beauty, per pixel and channel.
+void checkSumsToBeauty(const Film& film, bool restIsZero) {
+    double worst = 0.0, rest = 0.0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            Rgb sum{0.0f};
+            for (std::size_t l = 1; l < film.layerCount(); ++l) sum += film.at(l, x, y);
+            const Rgb beauty = film.at(0, x, y);
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::fabs(double(sum[c]) - beauty[c]) / (1e-5 * std::fabs(beauty[c]) + 1e-7));
+            rest = std::max(rest, double(maxComponent(film.at(film.layerCount() - 1, x, y))));
+        }
+    CHECK(worst <= 1.0);
+    if (restIsZero) CHECK(rest == 0.0);
+}
+
+double layerTotal(const Film& film, std::size_t layer) {
+    double total = 0.0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) total += film.at(layer, x, y).g;
+    return total;
+}
+
+bool sameLayer(const Film& a, std::size_t la, const Film& b, std::size_t lb) {
+    const auto x = a.layer(la), y = b.layer(lb);
+    return std::equal(x.begin(), x.end(), y.begin(), y.end());
+}
+
+TEST_CASE("radiosity's classes partition its light: raycast EDL, indirect ED{2,}L, emission EL, nothing else") {
+    const Rendered r = renderCornell(lpe::classesSet(), true);
+    checkSumsToBeauty(r.film, true);
+    const auto names = r.film.layerNames();
+    const auto index = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    CHECK(layerTotal(r.film, index("raycast")) > 0.0);
+    CHECK(layerTotal(r.film, index("indirect")) > 0.0);
+    CHECK(layerTotal(r.film, index("emission")) > 0.0);
+    // Radiosity has no specular paths.
+    CHECK(layerTotal(r.film, index("raytrace")) == 0.0);
+    CHECK(layerTotal(r.film, index("mirror")) == 0.0);
+}
+
+TEST_CASE("radiosity's light groups and bounces sum to the beauty") {
+    SUBCASE("light groups: the point light and the ceiling panel") {
+        const Rendered r = renderCornell({{"lamp", "E.*<L.'ceiling-lamp'>"}, {"panel", "E.*<L.'light'>"}}, true);
+        checkSumsToBeauty(r.film, true);
+        CHECK(layerTotal(r.film, 1) > 0.0);
+        CHECK(layerTotal(r.film, 2) > 0.0);
+    }
+    SUBCASE("bounce by bounce") {
+        const Rendered r = renderCornell(
+            {{"e", "EL"}, {"b1", "EDL"}, {"b2", "EDDL"}, {"b3", "EDDDL"}, {"b4", "ED{4,}L"}}, true);
+        checkSumsToBeauty(r.film, true);
+        // Each bounce carries less light than the one before (albedos below 1).
+        for (std::size_t l = 2; l < 5; ++l) CHECK(layerTotal(r.film, l) > layerTotal(r.film, l + 1));
+        CHECK(layerTotal(r.film, 5) > 0.0);
+    }
+}
+
+TEST_CASE("radiosity solves no light and no bounce that no requested output accepts") {
+    const Rendered full = renderCornell({{"b1", "EDL"}, {"lamp", "E.*<L.'ceiling-lamp'>"}}, true);
+    CHECK(full.stats.lightsSolved == 2);
+    CHECK(full.stats.iterations == 5);
+    CHECK(full.stats.lightBouncesSolved == 10);
+    CHECK(full.stats.formFactorRays > 0);
+
+    SUBCASE("direct light only: one iteration, no form factor") {
+        const Rendered direct = renderCornell({{"b1", "EDL"}}, false);
+        CHECK(direct.stats.iterations == 1);
+        CHECK(direct.stats.lightBouncesSolved == 2);
+        CHECK(direct.stats.formFactorRays == 0);
+        CHECK(sameLayer(direct.film, 0, full.film, 1));
+    }
+    SUBCASE("one light group: the other light is not solved") {
+        const Rendered lamp = renderCornell({{"lamp", "E.*<L.'ceiling-lamp'>"}}, false);
+        CHECK(lamp.stats.lightsSolved == 1);
+        CHECK(lamp.stats.lightBouncesSolved == 5);
+        CHECK(sameLayer(lamp.film, 0, full.film, 2));
+    }
+    SUBCASE("two bounces of one light") {
+        const Rendered two = renderCornell({{"b2", "EDD<L.'light'>"}}, false);
+        CHECK(two.stats.lightsSolved == 1);
+        CHECK(two.stats.iterations == 2);
+        CHECK(two.stats.lightBouncesSolved == 2);
+        CHECK(layerTotal(two.film, 0) > 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace lightpath
