@@ -80,6 +80,20 @@ inline double studentTTest(const std::vector<double>& samples, double expected) 
     return incompleteBeta(dof / 2.0, 0.5, dof / (dof + t * t));
 }
 
+// Two-sided p-value of Welch's t-test that two estimates have the same expectation, from their
+// means, sample variances and sample counts. Variances are floored at float rounding (relative
+// 1e-5 of the larger mean), so two deterministic estimates are compared on more than their last bits.
+inline double welchTTest(double meanA, double varianceA, double countA, double meanB, double varianceB, double countB) {
+    const double roundingFloor = 1e-5 * std::max(std::fabs(meanA), std::fabs(meanB));
+    const double a = std::max(varianceA, roundingFloor * roundingFloor) / countA;
+    const double b = std::max(varianceB, roundingFloor * roundingFloor) / countB;
+    if (a + b == 0.0) return meanA == meanB ? 1.0 : 0.0;
+    const double t = (meanA - meanB) / std::sqrt(a + b);
+    // Welch-Satterthwaite degrees of freedom.
+    const double dof = (a + b) * (a + b) / (a * a / (countA - 1.0) + b * b / (countB - 1.0));
+    return incompleteBeta(dof / 2.0, 0.5, dof / (dof + t * t));
+}
+
 // p-value of Pearson's chi-square statistic with `dof` degrees of freedom.
 inline double chiSquarePValue(double statistic, double dof) { return upperIncompleteGamma(dof / 2.0, statistic / 2.0); }
 

@@ -1,5 +1,8 @@
-// DESIGN.md's central promise: the AOVs and `rest` sum to the beauty, for every shipped scene and
-// every integrator; `rest` is zero for the `classes` partition.
+// The central promise (docs/design.md): the AOVs and `rest` sum to the beauty, for every shipped
+// scene and every integrator, and `rest` is zero for the `classes` partition: every path an
+// integrator produces falls in exactly one class. The sums alone hold whatever AOV a term is sent
+// to, so a light group is also checked against an independent render: the scene lit by that light
+// alone (test_routing.cpp checks each term's events).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -100,6 +103,52 @@ TEST_CASE("the lecture room: all default AOVs but indirect are non-zero under Wh
         const bool nonZero = std::any_of(layer.begin(), layer.end(), [](const Rgb& v) { return v != Rgb{0.0f}; });
         CHECK(nonZero == (names[l] != "indirect"));
     }
+}
+
+TEST_CASE("every shipped scene: a point light's group AOV is the scene lit by that light alone") {
+    int lit = 0;  // groups with light in them (a lamp may sit inside its fixture and light nothing)
+    for (const auto& file : shippedScenes()) {
+        const Scene full = loadScene(file);
+        for (std::size_t k = 0; k < full.lights.size(); ++k) {
+            if (full.lights[k].name.empty()) continue;
+            // Only light k shines: the other lights, emitters, the ambient term and the sky go dark.
+            Scene alone = full;
+            for (std::size_t i = 0; i < alone.lights.size(); ++i)
+                if (i != k) alone.lights[i].intensity = Rgb{0.0f};
+            for (PhongMaterial& m : alone.materials) m.emission = Rgb{0.0f};
+            alone.ambient = alone.background = Rgb{0.0f};
+            const std::string name = full.lights[k].name;
+            const AovSet group({{"group", "E.*<L'" + name + "'>"}});
+            const AovSet none(std::vector<lpe::NamedExpression>{});
+            for (const std::string integrator : {"raycast", "whitted"}) {
+                CAPTURE(file.filename().string());
+                CAPTURE(name);
+                CAPTURE(integrator);
+                auto render = [&](const Scene& scene, const AovSet& aovs) {
+                    Scene small = scene;
+                    small.camera.height = std::max(1, small.camera.height * 48 / small.camera.width);
+                    small.camera.width = 48;
+                    RenderOptions options;
+                    options.integrator = integrator;
+                    return Renderer(small, aovs, options).render().film;
+                };
+                const Film withGroup = render(full, group), single = render(alone, none);
+                double worst = 0.0, total = 0.0;
+                for (int y = 0; y < single.height(); ++y) {
+                    for (int x = 0; x < single.width(); ++x) {
+                        for (int c = 0; c < 3; ++c) {
+                            const double a = withGroup.at(1, x, y)[c], b = single.at(0, x, y)[c];
+                            worst = std::max(worst, std::fabs(a - b) / (1e-5 * std::fabs(b) + 1e-7));
+                            total += b;
+                        }
+                    }
+                }
+                lit += total > 0.0;
+                CHECK(worst <= 1.0);
+            }
+        }
+    }
+    CHECK(lit >= 10);
 }
 
 TEST_CASE("the image is bit-identical for 1, 2 and 8 threads, and across runs") {

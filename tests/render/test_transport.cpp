@@ -1,0 +1,207 @@
+// One light transport for every method (docs/design.md, "One light transport"). The lecture's
+// taxonomy nests by construction: ray casting's light is the path tracer's E(D|G)L, and what
+// Whitted adds is the path tracer's ES+(D|G)L and ES+L — tested as expectations on every shipped
+// scene (a t-test on the AOV means and per-pixel Welch tests), each with a control, the scene made
+// 5% brighter for one integrator, that must be rejected. And the path tracer still converges to the
+// Cornell box it rendered before the unification, when it agreed with a production path tracer.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "film/aov_set.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "statistics.h"
+
+namespace lightpath {
+namespace {
+
+constexpr double kPValue = 0.001;  // rejection threshold of one test
+constexpr int kRenders = 16;       // independent renders per estimate: per-pixel variances
+
+// Per pixel, over kRenders independent renders: the mean and sample variance of one expression's
+// AOV, R + G + B.
+struct PixelEstimates {
+    std::vector<double> mean, variance;
+    double count = kRenders;
+};
+
+PixelEstimates estimate(const Scene& scene, const std::string& integrator, int spp, const std::string& expression) {
+    const AovSet aovs(std::vector<lpe::NamedExpression>{{"a", expression}});
+    const std::size_t pixels = static_cast<std::size_t>(scene.camera.width) * scene.camera.height;
+    PixelEstimates e{std::vector<double>(pixels, 0.0), std::vector<double>(pixels, 0.0)};
+    std::vector<double> sumOfSquares(pixels, 0.0);
+    for (int r = 0; r < kRenders; ++r) {
+        RenderOptions options;
+        options.integrator = integrator;
+        options.samplesPerPixel = spp;
+        options.seed = 1000 + r;
+        options.writeBeauty = false;
+        const Film film = Renderer(scene, aovs, options).render().film;
+        for (int y = 0; y < film.height(); ++y) {
+            for (int x = 0; x < film.width(); ++x) {
+                const Rgb a = film.at(0, x, y);
+                const double v = double(a.r) + a.g + a.b;
+                const std::size_t i = static_cast<std::size_t>(y) * film.width() + x;
+                e.mean[i] += v / kRenders;
+                sumOfSquares[i] += v * v;
+            }
+        }
+    }
+    for (std::size_t i = 0; i < pixels; ++i)
+        e.variance[i] = std::max(0.0, (sumOfSquares[i] - kRenders * e.mean[i] * e.mean[i]) / (kRenders - 1));
+    return e;
+}
+
+struct Verdict {
+    double meanPValue;        // t-test over pixels that the per-pixel differences average to zero
+    int pixelsRejected;       // pixels whose Welch test rejects at 1%
+    int pixelsAllowed;        // how many of those H0 explains (binomial mean + 4 sigma)
+    double classicMean, pathMean;
+    bool accepted() const { return meanPValue > kPValue && pixelsRejected <= pixelsAllowed; }
+    bool rejected() const { return meanPValue < kPValue && pixelsRejected > pixelsAllowed; }
+};
+
+Verdict compare(const PixelEstimates& path, const PixelEstimates& classic) {
+    Verdict v{1.0, 0, 0, 0.0, 0.0};
+    std::vector<double> differences;
+    const std::size_t n = path.mean.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        differences.push_back(path.mean[i] - classic.mean[i]);
+        v.pathMean += path.mean[i] / double(n);
+        v.classicMean += classic.mean[i] / double(n);
+        if (test::welchTTest(path.mean[i], path.variance[i], path.count, classic.mean[i], classic.variance[i], classic.count) < 0.01)
+            ++v.pixelsRejected;
+    }
+    v.meanPValue = test::studentTTest(differences, 0.0);
+    v.pixelsAllowed = static_cast<int>(0.01 * n + 4.0 * std::sqrt(0.01 * 0.99 * n));
+    return v;
+}
+
+Scene smallScene(const std::filesystem::path& file, int width = 16) {
+    Scene scene = loadScene(file);
+    scene.camera.height = std::max(1, scene.camera.height * width / scene.camera.width);
+    scene.camera.width = width;
+    return scene;
+}
+
+// Every light and the background 5% brighter: the control that must be rejected.
+Scene brighter(Scene scene) {
+    for (PointLight& light : scene.lights) light.intensity *= 1.05f;
+    for (PhongMaterial& material : scene.materials) material.emission *= 1.05f;
+    scene.background *= 1.05f;
+    return scene;
+}
+
+std::vector<std::filesystem::path> shippedScenes() {
+    std::vector<std::filesystem::path> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes"))
+        if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
+    std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+bool allZero(const PixelEstimates& e) {
+    return std::all_of(e.mean.begin(), e.mean.end(), [](double v) { return v == 0.0; });
+}
+
+// Every light but the ambient term: the classic methods' fake stands in for light the path tracer
+// computes, and so does sky light on diffuse surfaces (E D B), which only the path tracer gathers.
+constexpr const char* kRealLights = "<L[^'ambient']>";
+
+// The classic integrator's light on `expression` against the path tracer's on the same expression.
+void checkNesting(const std::string& classic, const std::string& expression, const char* controlScene) {
+    const auto scenes = shippedScenes();
+    REQUIRE(scenes.size() >= 10);
+    for (const auto& file : scenes) {
+        CAPTURE(file.filename().string());
+        const Scene scene = smallScene(file);
+        const PixelEstimates classicLight = estimate(scene, classic, 4, expression);
+        const PixelEstimates pathLight = estimate(scene, "path", 64, expression);
+        if (allZero(classicLight)) {
+            // Nothing on these paths in this scene (no mirror, no glass): none for the path tracer either.
+            CHECK(allZero(pathLight));
+            continue;
+        }
+        const Verdict v = compare(pathLight, classicLight);
+        CAPTURE(v.classicMean);
+        CAPTURE(v.pathMean);
+        CAPTURE(v.meanPValue);
+        CAPTURE(v.pixelsRejected);
+        CHECK(v.accepted());
+    }
+    // The control: a scene whose light on these paths fills the image, 5% brighter under the
+    // classic integrator only.
+    const Scene scene = smallScene(std::filesystem::path(LIGHTPATH_SOURCE_DIR "/scenes") / controlScene, 32);
+    const Verdict control = compare(estimate(scene, "path", 256, expression),
+                                    estimate(brighter(scene), classic, 4, expression));
+    CAPTURE(control.classicMean);
+    CAPTURE(control.pathMean);
+    CAPTURE(control.meanPValue);
+    CAPTURE(control.pixelsRejected);
+    CHECK(control.rejected());
+}
+
+TEST_CASE("nesting: ray casting without its ambient is the path tracer's E(D|G)<L[^'ambient']>, on every shipped scene") {
+    checkNesting("raycast", std::string("E(D|G)") + kRealLights, "lecture-room.toml");
+}
+
+TEST_CASE("nesting: what Whitted adds, ES+(D|G)<L[^'ambient']>, is the path tracer's") {
+    checkNesting("whitted", std::string("ES+(D|G)") + kRealLights, "mirror-hall.toml");
+}
+
+TEST_CASE("nesting: the emitters Whitted sees through mirrors and glass, ES+L, are the path tracer's") {
+    checkNesting("whitted", "ES+L", "mirror-sphere.toml");
+}
+
+// The reference: tests/render/data/cornell-lamp.reference, one R G B line per pixel.
+std::vector<Rgb> readReference(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    REQUIRE(in);
+    std::vector<Rgb> pixels;
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream values(line);
+        Rgb v;
+        values >> v.r >> v.g >> v.b;
+        pixels.push_back(v);
+    }
+    return pixels;
+}
+
+TEST_CASE("the path tracer still converges to its Cornell box from before the shared transport") {
+    const std::filesystem::path data = LIGHTPATH_SOURCE_DIR "/tests/render/data";
+    const Scene scene = loadScene(data / "cornell-lamp.toml");
+    const std::vector<Rgb> reference = readReference(data / "cornell-lamp.reference");
+    REQUIRE(reference.size() == static_cast<std::size_t>(scene.camera.width * scene.camera.height));
+    const AovSet none(std::vector<lpe::NamedExpression>{});
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = 512;
+    options.maxDepth = 64;
+    options.seed = 3;
+    const Film film = Renderer(scene, none, options).render().film;
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        std::vector<double> differences, differencesWrong;
+        for (int y = 0; y < film.height(); ++y) {
+            for (int x = 0; x < film.width(); ++x) {
+                const double expected = reference[static_cast<std::size_t>(y) * film.width() + x][c];
+                differences.push_back(film.at(0, x, y)[c] - expected);
+                differencesWrong.push_back(film.at(0, x, y)[c] - 1.05 * expected);
+            }
+        }
+        CHECK(test::studentTTest(differences, 0.0) > kPValue);
+        CHECK(test::studentTTest(differencesWrong, 0.0) < kPValue);  // the control: 5% off is seen
+    }
+}
+
+}  // namespace
+}  // namespace lightpath
