@@ -6,6 +6,8 @@
 //                     Lambert's closed-form polygon irradiance averaged over the pixel footprint
 //   furnace           a closed emissive diffuse sphere seen from inside: Le / (1 - rho) everywhere
 //   taxonomy          the lecture scene, against a high-sample render computed once and cached
+//   cornell           the diffuse Cornell box, against the path tracer's cached high-sample render
+// Radiosity gets its own rows on the furnace and the Cornell box, one per patch budget.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@ namespace lightpath {
 struct ErrorBenchmarkRow {
     std::string scene, integrator, sampler;
     int spp = 0;              // samples per pixel (the most a pixel may take, for adaptive)
+    std::size_t patches = 0;  // radiosity's patch count (0 for the path tracer)
     double seconds = 0.0;     // CPU seconds of the render, one thread
     double rmse = 0.0;        // root mean squared error over pixels and channels
     double relmse = 0.0;      // mean of squared error / (reference^2 + 1e-2)
