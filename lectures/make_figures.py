@@ -443,8 +443,8 @@ def fig_ambient(run, fig_dir, out_png, title):
     w, p = exrs["whitted"], exrs["path"]
     panels = [Panel(w, "Whitted: beauty", "E S* (D|G) L"),
               Panel(p, "path tracer: beauty", "E(D|G|S)*L"),
-              Panel(w, "ambient term (x4)", "ES*D<L'ambient'>", layer="ambient", exposure=4),
-              Panel(p, "what it stands for (x4)", "ES*D(D|G|S)+L", layer="bounced", exposure=4)]
+              Panel(w, "ambient term", "ES*D<L'ambient'>", layer="ambient"),
+              Panel(p, "what it stands for", "ES*D(D|G|S)+L", layer="bounced")]
     compose(run, out_png, title, panels, cols=2, panel_w=640, panel_h=360, gap=30, top=90)
 
 

@@ -33,7 +33,7 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("--lpe", lpes,
                        "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "
                        "classes set unless --aovs classes is also given");
-    command.add_option("--aovs", aovs, "Predefined AOV set: classes (DESIGN.md's partition) or none")
+    command.add_option("--aovs", aovs, "Predefined AOV set: classes (the partition of docs/design.md) or none")
         ->check(CLI::IsMember({"classes", "none"}));
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel))

@@ -1,5 +1,5 @@
 #pragma once
-// Writes a film with OpenImageIO (DESIGN.md, "Output"):
+// Writes a film with OpenImageIO (docs/design.md, "Output"):
 //   NAME.exr  one multi-layer EXR: the layer "beauty" as R,G,B and each other layer as
 //             <layer>.R/.G/.B, the metadata as header attributes;
 //   NAME.png  the beauty as NAME.png and every other layer as NAME.<layer>.png, clamped and

@@ -112,7 +112,7 @@ std::vector<PhongMaterial> readMaterials(const TomlTable& table) {
     return materials;
 }
 
-// The label 'ambient' belongs to the ambient term of the illumination formula (DESIGN.md).
+// The label 'ambient' belongs to the ambient term of the illumination formula (docs/design.md).
 constexpr std::string_view kAmbientLabel = "ambient";
 
 std::string readLightName(const TomlTable& table) {

@@ -1,7 +1,7 @@
 // libFuzzer target for the scene loader: any text either loads or is refused with a SceneError
 // (scenes/README.md, "Errors"). A scene that loads must be usable as it is: consistent indices,
 // valid labels, and a render (tiny, with every integrator) whose layers are finite, non-negative,
-// drop no non-finite contribution and sum to the beauty (DESIGN.md's promise; the tolerance of
+// drop no non-finite contribution and sum to the beauty (docs/design.md's promise; the tolerance of
 // tests/render/test_aov_sums.cpp), with `rest` zero for the `classes` partition.
 //
 // Hermetic: the scene "lives" in a directory that does not exist, so no mesh file ever loads.

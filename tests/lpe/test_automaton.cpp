@@ -241,7 +241,7 @@ std::string token(const lpe::Event& e) {
 TEST_CASE("stepping event by event accepts at every prefix exactly what std::regex accepts") {
     const lpe::Automaton automaton = lpe::Automaton::compile(
         {{"a", "E(D|G)L"}, {"b", "ES*<L'key'>"}, {"c", "E.*[^D]L"}, {"d", "E<TS>+'glass'L"}});
-    // A bare L matches emitters and the background (DESIGN.md); any label goes where none is named.
+    // A bare L matches emitters and the background (docs/design.md); any label goes where none is named.
     const std::string light = "(?:<L_(?:'[^']*')?>|<B_>)", any = "<[^>]*>";
     const std::regex expected[] = {
         std::regex("<E_><[RT][DG](?:'[^']*')?>" + light),

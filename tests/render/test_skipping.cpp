@@ -1,5 +1,5 @@
 // Skipping what a scene or a request does not need, proven by counters, and never changing the
-// requested outputs (DESIGN.md: dead states stop; issue "Skip what a scene, or a request, doesn't need").
+// requested outputs (docs/design.md: dead states stop; issue "Skip what a scene, or a request, doesn't need").
 #include <doctest/doctest.h>
 
 #include <algorithm>
