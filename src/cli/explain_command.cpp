@@ -20,7 +20,11 @@ struct ExplainCommand {
 // What an event touched, as a student reads it: the object's or light's name.
 std::string subjectName(const Scene& scene, const PathEvent& event) {
     switch (event.subject) {
-        case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
+        case Subject::None:
+            if (event.type == lpe::EventType::Background) return "background";
+            // Radiosity's intermediate bounces: a sum over every patch, so no one object.
+            if (event.type != lpe::EventType::Camera) return "every patch (unlabelled bounce)";
+            return "camera";
         case Subject::Ambient: return "ambient";
         case Subject::PointLight: {
             const std::string& name = scene.lights[event.index].name;

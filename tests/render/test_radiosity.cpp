@@ -385,3 +385,28 @@ TEST_CASE("radiosity solves no light and no bounce that no requested output acce
 
 }  // namespace
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+TEST_CASE("radiosity on the shipped scenes with planes and spheres: the classes sum to the beauty") {
+    const AovSet aovs(lpe::classesSet());
+    for (const char* name : {"taxonomy.toml", "glass-sphere.toml", "mirror-sphere.toml", "szymczak-three-lights.toml"}) {
+        CAPTURE(name);
+        Scene scene = loadScene(std::string(LIGHTPATH_SOURCE_DIR "/scenes/") + name);
+        scene.camera.height = std::max(1, scene.camera.height * 32 / scene.camera.width);
+        scene.camera.width = 32;
+        RenderOptions options;
+        options.integrator = "radiosity";
+        options.threads = 2;
+        options.radiosity.patchBudget = 512;
+        const RenderResult result = Renderer(scene, aovs, options).render();
+        checkSumsToBeauty(result.film, true);
+        REQUIRE(result.stats.radiosity);
+        CHECK(result.stats.radiosity->patches <= 512);
+        CHECK(layerTotal(result.film, 0) > 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace lightpath
