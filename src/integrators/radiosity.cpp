@@ -134,12 +134,13 @@ std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context
     RayCounters counters;
     PathState path(context, sink, counters);
     if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, Vec3{0.0f}})) return wanted;
-    std::vector<bool> probed(context.scene.objects.size(), false);
-    for (const RadiosityPatch& patch : mesh_->patches()) {
-        if (probed[patch.object] || isBlack(reflectance_[&patch - mesh_->patches().data()])) continue;
-        probed[patch.object] = true;
-        if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, patch.object, Vec3{0.0f}}))
-            continue;
+    // Objects with a patch that reflects: radiosity shows light only on those.
+    std::vector<bool> reflects(context.scene.objects.size(), false);
+    for (std::size_t p = 0; p < mesh_->patches().size(); ++p)
+        if (!isBlack(reflectance_[p])) reflects[mesh_->patches()[p].object] = true;
+    for (std::uint32_t object = 0; object < reflects.size(); ++object) {
+        if (!reflects[object]) continue;
+        if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, object, Vec3{0.0f}})) continue;
         for (int k = 1; k <= context.maxDepth; ++k) {
             for (std::size_t l = 0; l < lights.size(); ++l)
                 if (path.wants(lights[l]->event())) wanted[l] = std::max(wanted[l], k);
