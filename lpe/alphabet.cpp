@@ -7,7 +7,7 @@
 namespace lpe::detail {
 namespace {
 
-// Bounds the symbol count (25 per label class) and with it the dense transition table.
+// Bounds the symbol count (35 per label class) and with it the dense transition table.
 constexpr std::size_t kMaxLabels = 1000;
 
 }  // namespace
@@ -46,12 +46,7 @@ std::vector<bool> Alphabet::allowedClasses(const syntax::EventPattern& pattern) 
 // scattering would match both `D` and `L`, and every automaton would grow states that exist only
 // for events no renderer produces (E(D|G|S)*L would need five states instead of four).
 Scatter Alphabet::effectiveScatter(int type, int scatter) {
-    switch (static_cast<EventType>(type)) {
-        case EventType::Camera:
-        case EventType::Emitter:
-        case EventType::Background: return Scatter::None;
-        default: return static_cast<Scatter>(scatter);
-    }
+    return scatters(static_cast<EventType>(type)) ? static_cast<Scatter>(scatter) : Scatter::None;
 }
 
 SymbolSet Alphabet::symbols(const syntax::EventSet& events) const {
@@ -77,14 +72,18 @@ SymbolSet Alphabet::symbols(const syntax::EventSet& events) const {
 std::vector<std::uint32_t> preferenceOrder(std::size_t classCount) {
     using T = EventType;
     using S = Scatter;
+    // The events a renderer produces come first; volumes (which lightpath never produces) and
+    // emitting objects after lights and the background, so examples end in L where they can.
     std::vector<std::pair<T, S>> pairs = {
         {T::Reflection, S::Diffuse},    {T::Reflection, S::Glossy},    {T::Reflection, S::Specular},
         {T::Reflection, S::Straight},   {T::Transmission, S::Specular}, {T::Transmission, S::Diffuse},
         {T::Transmission, S::Glossy},   {T::Transmission, S::Straight}, {T::Camera, S::None},
-        {T::Emitter, S::None},          {T::Background, S::None},       {T::Reflection, S::None},
-        {T::Transmission, S::None},
+        {T::Emitter, S::None},          {T::Background, S::None},       {T::ObjectEmission, S::None},
+        {T::Volume, S::Diffuse},        {T::Volume, S::Glossy},         {T::Volume, S::Specular},
+        {T::Volume, S::Straight},       {T::Reflection, S::None},       {T::Transmission, S::None},
+        {T::Volume, S::None},
     };
-    for (const T type : {T::Camera, T::Emitter, T::Background}) {
+    for (const T type : {T::Camera, T::Emitter, T::Background, T::ObjectEmission}) {
         for (const S scatter : {S::Diffuse, S::Glossy, S::Specular, S::Straight})
             pairs.emplace_back(type, scatter);
     }

@@ -1,21 +1,29 @@
 // Set properties decided on one automaton holding the set and its universe: a pair overlaps when
 // some universe path reaches a state accepting both; the set leaves a gap when some universe path
-// reaches a state accepting none. Breadth-first search makes every example a shortest one.
+// reaches a state accepting none; i is contained in j when no universe path reaches a state that
+// accepts i and not j. Breadth-first search makes every example a shortest one.
 #include "lpe/analysis.h"
 
 #include "lpe/error.h"
 
 namespace lpe {
+namespace {
 
-SetReport analyse(const std::vector<NamedExpression>& expressions, const std::string& universe) {
+Automaton compileWithUniverse(const std::vector<NamedExpression>& expressions, const std::string& universe,
+                              const char* what) {
     if (expressions.size() >= kMaxOutputs) {
-        throw LimitError("LPE limit: analyse takes at most " + std::to_string(kMaxOutputs - 1) +
+        throw LimitError(std::string("LPE limit: ") + what + " takes at most " + std::to_string(kMaxOutputs - 1) +
                          " expressions (one output is the universe)");
     }
     std::vector<NamedExpression> all = expressions;
     all.push_back({"universe", universe});
-    const Automaton automaton = Automaton::compile(all);
+    return Automaton::compile(all);
+}
 
+}  // namespace
+
+SetReport analyse(const std::vector<NamedExpression>& expressions, const std::string& universe) {
+    const Automaton automaton = compileWithUniverse(expressions, universe, "analyse");
     const OutputMask inUniverse = OutputMask{1} << expressions.size();
     const OutputMask named = inUniverse - 1;
     SetReport report;
@@ -31,25 +39,42 @@ SetReport analyse(const std::vector<NamedExpression>& expressions, const std::st
     return report;
 }
 
-const std::vector<NamedExpression>& classesSet() {
-    static const std::vector<NamedExpression> set = {
-        {"raycast", "E(D|G)L"},
-        {"raytrace", "ES+(D|G)L"},
-        {"mirror", "ES+L"},
-        {"emission", "EL"},
-        {"indirect", "ES*(D|G)(D|G|S)+L"},
-    };
-    return set;
+Containment compareLanguages(const std::vector<NamedExpression>& expressions, const std::string& universe) {
+    const Automaton automaton = compileWithUniverse(expressions, universe, "compareLanguages");
+    const OutputMask inUniverse = OutputMask{1} << expressions.size();
+    Containment result;
+    result.onlyIn.assign(expressions.size(), std::vector<std::optional<Path>>(expressions.size()));
+    for (std::size_t i = 0; i < expressions.size(); ++i) {
+        for (std::size_t j = 0; j < expressions.size(); ++j) {
+            if (i == j) continue;
+            const OutputMask wanted = (OutputMask{1} << i) | inUniverse, unwanted = OutputMask{1} << j;
+            result.onlyIn[i][j] = automaton.findShortestPath(
+                [wanted, unwanted](OutputMask m) { return (m & wanted) == wanted && !(m & unwanted); });
+        }
+    }
+    return result;
 }
 
-const std::vector<NamedExpression>& taxonomySet() {
-    static const std::vector<NamedExpression> set = {
-        {"raycasting", "E(D|G)L"},
-        {"raytracing", "E(S*)(D|G)L"},
-        {"radiosity", "ED*L"},
-        {"pathtracing", "E(D|G|S)*L"},
-    };
-    return set;
+std::optional<Path> commonPath(const std::vector<std::string>& expressions, const LabelPlacement& placement) {
+    if (expressions.empty() || expressions.size() > kMaxOutputs) {
+        throw LimitError("LPE limit: commonPath takes 1 to " + std::to_string(kMaxOutputs) + " expressions");
+    }
+    std::vector<NamedExpression> named;
+    for (const std::string& e : expressions) named.push_back({"e" + std::to_string(named.size()), e});
+    const Automaton automaton = Automaton::compile(named);
+
+    // A symbol is allowed unless its label class is a placed label and its type is not a place.
+    std::vector<bool> allowed(automaton.symbolCount(), true);
+    for (Automaton::Symbol symbol = 0; symbol < automaton.symbolCount(); ++symbol) {
+        const Event event = automaton.eventOf(symbol);
+        const auto placed = placement.find(event.label);
+        if (event.label.empty() || placed == placement.end()) continue;
+        bool there = false;
+        for (const EventType type : placed->second) there = there || type == event.type;
+        allowed[symbol] = there;
+    }
+    const OutputMask all = automaton.allOutputs();
+    return automaton.findShortestPath([all](OutputMask m) { return m == all; }, allowed);
 }
 
 }  // namespace lpe

@@ -31,7 +31,7 @@ Event Automaton::eventOf(Symbol symbol) const {
 
 // Breadth-first search, trying symbols in the preferred order: the first path found to a state is
 // a shortest one, and among those the one whose events come first in that order.
-std::optional<Path> Automaton::shortestPathImpl(const std::vector<bool>& goal) const {
+std::optional<Path> Automaton::shortestPathImpl(const std::vector<bool>& goal, const std::vector<bool>* allowed) const {
     constexpr State kUnvisited = UINT32_MAX;
     std::vector<State> parent(stateCount(), kUnvisited);
     std::vector<Symbol> via(stateCount(), 0);
@@ -46,6 +46,7 @@ std::optional<Path> Automaton::shortestPathImpl(const std::vector<bool>& goal) c
             return Path(path.rbegin(), path.rend());
         }
         for (const Symbol symbol : preferred_) {
+            if (allowed && !(*allowed)[symbol]) continue;
             const State next = step(state, symbol);
             // A dead state leads nowhere else; it is entered only when it is itself a goal.
             if (parent[next] != kUnvisited || (canAccept_[next] == 0 && !goal[next])) continue;

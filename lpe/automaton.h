@@ -26,7 +26,7 @@ inline constexpr std::size_t kMaxOutputs = 64;
 
 struct CompileOptions {
     // When non-empty, one extra output of this name is appended after the named ones: it accepts
-    // the paths of `universe` that no named expression accepts (the `rest` AOV, DESIGN.md).
+    // the paths of `universe` that no named expression accepts (the `rest` AOV, docs/design.md).
     std::string complementName;
     std::string universe = "E.*L";
     // Guards against exponential subset construction (states counted before minimisation);
@@ -83,6 +83,9 @@ public:
     // The same search, but tells "no such path" (nullopt) from "the empty path" (start state).
     template <class Predicate>
     std::optional<Path> findShortestPath(Predicate predicate) const;
+    // The same search through the symbols `allowed` lets through only (indexed by symbol).
+    template <class Predicate>
+    std::optional<Path> findShortestPath(Predicate predicate, const std::vector<bool>& allowed) const;
 
     // Graphviz DOT: states as circles (accepting ones double, labelled with their outputs), edges
     // labelled with the events that take them, in LPE syntax. The dead state is left out.
@@ -92,7 +95,7 @@ public:
     Event eventOf(Symbol symbol) const;
 
 private:
-    std::optional<Path> shortestPathImpl(const std::vector<bool>& goal) const;
+    std::optional<Path> shortestPathImpl(const std::vector<bool>& goal, const std::vector<bool>* allowed) const;
 
     State start_ = 0;
     std::size_t symbolCount_ = 0;
@@ -109,7 +112,14 @@ template <class Predicate>
 std::optional<Path> Automaton::findShortestPath(Predicate predicate) const {
     std::vector<bool> goal(stateCount());
     for (std::size_t s = 0; s < goal.size(); ++s) goal[s] = predicate(accepts_[s]);
-    return shortestPathImpl(goal);
+    return shortestPathImpl(goal, nullptr);
+}
+
+template <class Predicate>
+std::optional<Path> Automaton::findShortestPath(Predicate predicate, const std::vector<bool>& allowed) const {
+    std::vector<bool> goal(stateCount());
+    for (std::size_t s = 0; s < goal.size(); ++s) goal[s] = predicate(accepts_[s]);
+    return shortestPathImpl(goal, &allowed);
 }
 
 template <class Predicate>

@@ -2,10 +2,11 @@
 //
 // An edge stands for a set of symbols. Its label is the shorter of two descriptions of that set:
 // a union `A|B|...` of events, or a negated set `[^AB...]` of its complement, each found by a
-// greedy cover with the widest events first (`.`, R, T, D, G, S, s, L, E, <L>, B, then tuples).
-// Camera, emitter and background events match as if they did not scatter (automaton.h), so the
-// thirteen (type, scattering) pairs below stand for every symbol: `E`, `L` and `B` need no
-// scattering position and `D` is exactly "<RD> or <TD>".
+// greedy cover with the widest events first (`.`, R, T, V, D, G, S, s, L, E, <L>, B, O, then
+// tuples). Camera, emitter, background and object-emission events match as if they did not
+// scatter (automaton.h), so the nineteen (type, scattering) pairs below stand for every symbol:
+// `E`, `L`, `B` and `O` need no scattering position and `D` is exactly "<RD>, <TD> or <VD>".
+// Inside a negated set `[^...]` a bare `L` is OSL's (lights only), so there it is not a candidate.
 #include <map>
 #include <string>
 #include <string_view>
@@ -28,13 +29,14 @@ struct Pair {
 const std::vector<Pair>& possiblePairs() {
     static const std::vector<Pair> pairs = [] {
         std::vector<Pair> all{{T::Camera, S::None}};
-        for (const T type : {T::Reflection, T::Transmission}) {
+        for (const T type : {T::Reflection, T::Transmission, T::Volume}) {
             for (const S scatter : {S::Diffuse, S::Glossy, S::Specular, S::Straight, S::None}) {
                 all.push_back({type, scatter});
             }
         }
         all.push_back({T::Emitter, S::None});
         all.push_back({T::Background, S::None});
+        all.push_back({T::ObjectEmission, S::None});
         return all;
     }();
     return pairs;
@@ -50,6 +52,7 @@ struct Candidate {
     std::string types{};  // for whole event types (R, T, E, L, <L>, B): their tuple letters
     Pair single{};        // for a one-pair tuple <RD>: that pair, so that such tuples can merge
     bool isSingle = false;
+    bool topLevelOnly = false;  // its plain letter means something else inside a set
 };
 
 PairSet pairsWhere(bool (*keep)(const Pair&)) {
@@ -65,6 +68,7 @@ const std::vector<Candidate>& candidates() {
         all.push_back({".", "", pairsWhere([](const Pair&) { return true; })});
         all.push_back({"R", "<R", pairsWhere([](const Pair& p) { return p.type == T::Reflection; }), "R"});
         all.push_back({"T", "<T", pairsWhere([](const Pair& p) { return p.type == T::Transmission; }), "T"});
+        all.push_back({"V", "<V", pairsWhere([](const Pair& p) { return p.type == T::Volume; }), "V"});
         const auto scatterCandidate = [&all](const char* name, const char* head, S s) {
             PairSet set;
             for (const Pair& p : possiblePairs()) set.push_back(p.scatter == s);
@@ -74,15 +78,18 @@ const std::vector<Candidate>& candidates() {
         scatterCandidate("G", "<.G", S::Glossy);
         scatterCandidate("S", "<.S", S::Specular);
         scatterCandidate("s", "<.s", S::Straight);
-        all.push_back({"L", "<[LB]", pairsWhere([](const Pair& p) {
-                           return p.type == T::Emitter || p.type == T::Background;
-                       }), "LB"});
+        Candidate emitters{"L", "<[LBO]", pairsWhere([](const Pair& p) {
+                               return p.type == T::Emitter || p.type == T::Background || p.type == T::ObjectEmission;
+                           }), "LBO"};
+        emitters.topLevelOnly = true;
+        all.push_back(emitters);
         all.push_back({"E", "<E", pairsWhere([](const Pair& p) { return p.type == T::Camera; }), "E"});
         all.push_back({"<L>", "<L", pairsWhere([](const Pair& p) { return p.type == T::Emitter; }), "L"});
         all.push_back({"B", "<B", pairsWhere([](const Pair& p) { return p.type == T::Background; }), "B"});
+        all.push_back({"O", "<O", pairsWhere([](const Pair& p) { return p.type == T::ObjectEmission; }), "O"});
         for (std::size_t i = 0; i < possiblePairs().size(); ++i) {
             const Pair p = possiblePairs()[i];
-            if (p.type != T::Reflection && p.type != T::Transmission) continue;
+            if (!scatters(p.type)) continue;
             const std::string tuple = std::string("<") + letter(p.type) + letter(p.scatter);
             PairSet only(possiblePairs().size(), false);
             only[i] = true;
@@ -110,13 +117,14 @@ std::string labelSpec(const std::vector<bool>& classes, const std::vector<std::s
 
 // A greedy set cover of `target` by candidates that lie inside it; pairs outside `target` must
 // stay uncovered, so a candidate is used only if it is a subset.
-std::vector<const Candidate*> cover(const PairSet& target) {
+std::vector<const Candidate*> cover(const PairSet& target, bool inSet) {
     std::vector<const Candidate*> chosen;
     PairSet covered(target.size(), false);
     for (;;) {
         const Candidate* best = nullptr;
         std::size_t bestGain = 0;
         for (const Candidate& c : candidates()) {
+            if (inSet && c.topLevelOnly) continue;
             std::size_t gain = 0;
             bool inside = true;
             for (std::size_t i = 0; i < target.size(); ++i) {
@@ -135,7 +143,8 @@ std::vector<const Candidate*> cover(const PairSet& target) {
 }
 
 // The events of a symbol set, each a single-event atom of LPE syntax.
-std::vector<std::string> atoms(const std::vector<bool>& symbols, const Automaton& automaton) {
+// `inSet`: the atoms go inside `[^...]`, where a bare `L` reads as OSL's.
+std::vector<std::string> atoms(const std::vector<bool>& symbols, const Automaton& automaton, bool inSet) {
     const std::size_t classCount = automaton.labels().size() + 1;
     // Group the possible pairs by the label classes present with them; all classes = no label.
     std::map<std::vector<bool>, PairSet> groups;
@@ -159,14 +168,15 @@ std::vector<std::string> atoms(const std::vector<bool>& symbols, const Automaton
         const bool plain = classes == all;
         const std::string spec = plain ? "" : labelSpec(classes, automaton.labels());
         const auto text = [&](const Candidate& c) {
-            return plain ? c.plain : c.head.empty() ? spec : c.head + spec + ">";
+            // A type-only tuple writes OSL's '.' in the scattering position before its label.
+            return plain ? c.plain : c.head.empty() ? spec : c.head + (c.types.empty() ? "" : ".") + spec + ">";
         };
         // Single-pair tuples of one type merge into one tuple with a scattering set: <R[DG]>.
         std::map<char, std::string> scatterSets;
         // Whole event types may merge into one tuple with a type set: <[^L]'key'>.
         std::vector<std::string> typeAtoms;
         std::string types;
-        for (const Candidate* c : cover(pairs)) {
+        for (const Candidate* c : cover(pairs, inSet)) {
             if (c->isSingle) {
                 scatterSets[letter(c->single.type)] += letter(c->single.scatter);
             } else if (!c->types.empty()) {
@@ -183,11 +193,12 @@ std::vector<std::string> atoms(const std::vector<bool>& symbols, const Automaton
         std::size_t separate = 0;
         for (const std::string& atom : typeAtoms) separate += atom.size() + 1;
         std::string missing;
-        for (const char t : std::string("ERTLB")) {
+        for (const char t : std::string(kEventTypeLetters.begin(), kEventTypeLetters.end())) {
             if (types.find(t) == std::string::npos) missing += t;
         }
-        const std::string merged = types.size() < missing.size() + 1 ? "<[" + types + "]" + spec + ">"
-                                                                     : "<[^" + missing + "]" + spec + ">";
+        const std::string position = plain ? "" : "." + spec;
+        const std::string merged = types.size() < missing.size() + 1 ? "<[" + types + "]" + position + ">"
+                                                                     : "<[^" + missing + "]" + position + ">";
         if (typeAtoms.size() > 1 && merged.size() < separate) {
             result.push_back(merged);
         } else {
@@ -203,12 +214,12 @@ std::vector<std::string> atoms(const std::vector<bool>& symbols, const Automaton
 
 std::string describe(const std::vector<bool>& symbols, const Automaton& automaton) {
     std::string positive;
-    for (const std::string& atom : atoms(symbols, automaton)) {
+    for (const std::string& atom : atoms(symbols, automaton, false)) {
         positive += (positive.empty() ? "" : "|") + atom;
     }
     std::vector<bool> complement(symbols);
     complement.flip();
-    const std::vector<std::string> excluded = atoms(complement, automaton);
+    const std::vector<std::string> excluded = atoms(complement, automaton, true);
     if (excluded.empty()) return positive;
     std::string negative = "[^";
     for (const std::string& atom : excluded) negative += atom;

@@ -18,28 +18,20 @@ std::string shown(char c) {
     return std::string("byte 0x") + kHex[byte >> 4] + kHex[byte & 0xf];
 }
 
+// Letters of event.h's table: E/C R T L B V O, D G S s _ (and x).
 bool eventType(char c, EventType& type) {
-    switch (c) {
-        case 'E':
-        case 'C': type = EventType::Camera; return true;
-        case 'R': type = EventType::Reflection; return true;
-        case 'T': type = EventType::Transmission; return true;
-        case 'L': type = EventType::Emitter; return true;
-        case 'B': type = EventType::Background; return true;
-        default: return false;
-    }
+    const auto found = eventTypeOf(c);
+    if (found) type = *found;
+    return found.has_value();
 }
 
 bool scatter(char c, Scatter& scatter) {
-    switch (c) {
-        case 'D': scatter = Scatter::Diffuse; return true;
-        case 'G': scatter = Scatter::Glossy; return true;
-        case 'S': scatter = Scatter::Specular; return true;
-        case 's': scatter = Scatter::Straight; return true;
-        case '_': scatter = Scatter::None; return true;
-        default: return false;
-    }
+    const auto found = scatterOf(c);
+    if (found) scatter = *found;
+    return found.has_value();
 }
+
+bool noScatter(char c) { return c == letter(Scatter::None) || c == kNoScatterAlias; }
 
 class PathParser {
 public:
@@ -53,36 +45,44 @@ public:
             Event event;
             const char c = text_[pos_];
             if (eventType(c, event.type)) {
-                // R and T alone carry no scattering.
-            } else if (c != '_' && scatter(c, event.scatter)) {
+                // R, T and V alone carry no scattering.
+            } else if (!noScatter(c) && scatter(c, event.scatter)) {
                 event.type = EventType::Reflection;
             } else {
                 fail((isLetter(c) ? "unknown event letter " : "unexpected ") + shown(c) +
-                     " in a path; expected one of E C D G S s L B R T");
+                     " in a path; expected one of E C D G S s L B O R T V");
             }
             path.push_back(event);
         }
         return path;
     }
 
-    // "C TS RD'1' L'key'": type letter, optional scattering letter, optional quoted label; events
+    // "C TS RD'1' L'key'" or "E <TS> <RD'1'> <L.'key'>": type letter, optional scattering letter, optional quoted label; events
     // separated by whitespace. D, G, S or s alone stand for a reflection, as in the compact form.
     Path tuples() {
         Path path;
         while (pos_ < past_) {
             Event event;
-            const char c = text_[pos_];
+            // toExpressionString's form: the same tuple in angle brackets, '.' before a label.
+            const bool bracketed = text_[pos_] == '<';
+            if (bracketed) ++pos_;
+            const char c = pos_ < past_ ? text_[pos_] : ' ';
             if (eventType(c, event.type)) {
                 ++pos_;
                 if (pos_ < past_ && scatter(text_[pos_], event.scatter)) ++pos_;
-            } else if (c != '_' && scatter(c, event.scatter)) {
+                else if (bracketed && pos_ < past_ && text_[pos_] == '.') ++pos_;
+            } else if (!noScatter(c) && scatter(c, event.scatter)) {
                 event.type = EventType::Reflection;
                 ++pos_;
             } else {
                 fail((isLetter(c) ? "unknown event type " : "unexpected ") + shown(c) +
-                     " in a path; expected one of E C R T L B (or D G S s for a reflection)");
+                     " in a path; expected one of E C R T L B O V (or D G S s for a reflection)");
             }
             if (pos_ < past_ && text_[pos_] == '\'') event.label = label();
+            if (bracketed) {
+                if (pos_ >= past_ || text_[pos_] != '>') fail("expected '>' to close the event");
+                ++pos_;
+            }
             if (pos_ < past_ && !isSpace(text_[pos_])) {
                 fail("unexpected " + shown(text_[pos_]) +
                      " in a path; expected a space before the next event");
@@ -115,11 +115,7 @@ private:
 
 bool lossless(const Event& event) {
     if (!event.label.empty()) return false;
-    switch (event.type) {
-        case EventType::Reflection: return true;
-        case EventType::Transmission: return event.scatter == Scatter::None;
-        default: return event.scatter == Scatter::None;
-    }
+    return event.type == EventType::Reflection || event.scatter == Scatter::None;
 }
 
 }  // namespace
@@ -131,7 +127,8 @@ Path parsePath(std::string_view text) {
     while (first < past && isSpace(text[first])) ++first;
     while (past > first && isSpace(text[past - 1])) --past;
     const std::string_view body = text.substr(first, past - first);
-    const bool tuples = std::any_of(body.begin(), body.end(), [](char c) { return isSpace(c) || c == '\''; });
+    const bool tuples =
+        std::any_of(body.begin(), body.end(), [](char c) { return isSpace(c) || c == '\'' || c == '<'; });
     PathParser parser(text, first, past);
     return tuples ? parser.tuples() : parser.compact();
 }
@@ -139,8 +136,7 @@ Path parsePath(std::string_view text) {
 std::string toCompactString(const Path& path) {
     std::string text;
     for (const Event& event : path) {
-        const bool scatters = event.type == EventType::Reflection || event.type == EventType::Transmission;
-        text += scatters && event.scatter != Scatter::None ? letter(event.scatter) : letter(event.type);
+        text += scatters(event.type) && event.scatter != Scatter::None ? letter(event.scatter) : letter(event.type);
     }
     return text;
 }
@@ -152,6 +148,26 @@ std::string toTupleString(const Path& path) {
         text += letter(event.type);
         if (event.scatter != Scatter::None) text += letter(event.scatter);
         if (!event.label.empty()) text += "'" + event.label + "'";
+    }
+    return text;
+}
+
+std::string toExpressionString(const Path& path) {
+    std::string text;
+    for (const Event& event : path) {
+        if (!text.empty()) text += ' ';
+        const std::string label = event.label.empty() ? "" : "'" + event.label + "'";
+        // A camera, light, object emission or background matches whatever scattering it claims
+        // (Automaton::symbol), so none is printed: a renderer records None there.
+        if (scatters(event.type)) {
+            text += std::string("<") + letter(event.type) + letter(event.scatter) + label + ">";
+        } else if (!label.empty()) {
+            text += std::string("<") + letter(event.type) + "." + label + ">";
+        } else if (event.type == EventType::Emitter) {
+            text += "<L>";  // a bare L would match every emitter and the background
+        } else {
+            text += letter(event.type);
+        }
     }
     return text;
 }

@@ -55,14 +55,28 @@ struct Node {
     EventSet events;                             // Event
     std::vector<std::unique_ptr<Node>> children; // Concat, Alternate (2 or more), Repeat (1)
     std::uint32_t min = 0, max = 0;              // Repeat: {min,max}, max may be kUnbounded
+    std::size_t begin = 0, end = 0;              // Event: where its text is, [begin, end)
 };
 
 struct Expression {
     std::unique_ptr<Node> root;
     std::vector<std::string> labels;  // every label named, in order of appearance (may repeat)
+    // How the text was read where lightpath's reading is not OSL's spelling:
+    std::vector<std::size_t> heckbertBrackets;  // '[' read as Heckbert's optional group
+    std::vector<std::size_t> shorthandDots;     // where <L'key'> omits the '.' of <L.'key'>
+    std::vector<std::size_t> singleMemberSets;  // '[' of a set of one event, e.g. [S]
+    std::vector<std::size_t> letterThenLabel;   // a letter followed at once by a label: L'key'
 };
 
+// Where `|` binds: loosest, as in regular expressions (lightpath), or tighter than concatenation,
+// as OSL's lpeparse.cpp binds it (`AB|CD` is `A(B|C)D` there). OSL's is read only to explain.
+enum class Precedence { Regex, Osl };
+
 // Throws SyntaxError for malformed text and LimitError beyond the limits above.
-Expression parseExpression(std::string_view text);
+Expression parseExpression(std::string_view text, Precedence precedence = Precedence::Regex);
+
+// The expression as read, in OSL's spelling: Heckbert's [..] as (..)?, <L'key'> as <L.'key'>,
+// groups made explicit; whitespace between events dropped. Parses to the same language.
+std::string printExpression(const Expression& expression, std::string_view text);
 
 }  // namespace lpe::syntax

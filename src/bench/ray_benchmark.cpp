@@ -8,12 +8,12 @@
 
 #include "bench/timing.h"
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "geometry/scene_geometry.h"
 #include "math/random.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -197,7 +197,7 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
     // End to end: the Whitted render of CornellBox-Mirror, every ray it casts per second.
     Scene scene = loadScene(directory / "cornell-mirror.toml");
     scene.camera.width = scene.camera.height = quick ? 256 : 1024;
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     for (const std::string& accel : accels) {
         RenderOptions options;
         options.integrator = "whitted";

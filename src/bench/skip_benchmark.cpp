@@ -4,9 +4,9 @@
 
 #include "bench/timing.h"
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 
@@ -23,7 +23,7 @@ SkipBenchmarkResult runSkipBenchmark(const std::filesystem::path& scenePath, boo
     result.samplesPerPixel = 2;
     result.repetitions = quick ? 3 : 7;
 
-    const AovSet classes(lpe::classesSet());
+    const AovSet classes(classesSet());
     const AovSet rayCasting(std::vector<lpe::NamedExpression>{{"raycast", "E(D|G)L"}});
     const AovSet none(std::vector<lpe::NamedExpression>{});
     RenderOptions withBeauty;

@@ -1,12 +1,15 @@
 #include "cli/explain_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
 #include "cli/exit_codes.h"
 #include "cli/render_setup.h"
+#include "io/text_file.h"
 #include "lpe/path_string.h"
 
 namespace lightpath {
@@ -15,6 +18,19 @@ namespace {
 struct ExplainCommand {
     RenderSetup setup;
     std::string pixel;
+    bool all = false;   // also the paths whose contributions sum to zero
+    bool json = false;  // the documented JSON (docs/lpe.md) instead of text
+};
+
+// Identical paths (same events, labels and things touched) are one row: their contributions'
+// count and sum. Per-contribution values stay in `values`, where per-term factors will join them.
+struct PathGroup {
+    lpe::Path path;
+    std::string expression;  // toExpressionString: pasted into --lpe, it matches this path
+    std::vector<std::string> touched;
+    lpe::OutputMask accepted = 0;
+    std::vector<Rgb> values;
+    Rgb sum{0.0f};
 };
 
 // What an event touched, as a student reads it: the object's or light's name.
@@ -58,6 +74,137 @@ std::string formatRgb(const Rgb& v) {
     return buffer;
 }
 
+std::string jsonRgb(const Rgb& v) {
+    char buffer[96];
+    std::snprintf(buffer, sizeof buffer, "[%.9g, %.9g, %.9g]", v.r, v.g, v.b);
+    return buffer;
+}
+
+// Rows sorted by contribution (Rec. 709 luminance of the sum), largest first; ties keep the
+// order in which the renderer first produced the path.
+std::vector<PathGroup> groupPaths(const Scene& scene, const std::vector<LoggedContribution>& log) {
+    std::vector<PathGroup> groups;
+    std::map<std::string, std::size_t> index;
+    for (const LoggedContribution& c : log) {
+        PathGroup group;
+        group.path = toLpePath(scene, c.path);
+        group.expression = lpe::toExpressionString(group.path);
+        for (std::size_t e = 1; e < c.path.size(); ++e) group.touched.push_back(subjectName(scene, c.path[e]));
+        std::string key = group.expression;
+        for (const std::string& t : group.touched) key += "\n" + t;
+        const auto [at, added] = index.emplace(key, groups.size());
+        if (added) {
+            group.accepted = c.accepted;
+            groups.push_back(std::move(group));
+        }
+        PathGroup& g = groups[at->second];
+        g.values.push_back(c.value);
+        g.sum += c.value;
+    }
+    const auto luminance = [](const Rgb& v) { return 0.2126 * v.r + 0.7152 * v.g + 0.0722 * v.b; };
+    std::stable_sort(groups.begin(), groups.end(),
+                     [&](const PathGroup& a, const PathGroup& b) { return luminance(a.sum) > luminance(b.sum); });
+    return groups;
+}
+
+std::vector<std::string> aovNames(const AovSet& aovs, lpe::OutputMask accepted) {
+    std::vector<std::string> names;
+    for (std::size_t o = 0; o < aovs.expressions().size(); ++o)
+        if ((accepted >> o) & 1u) names.push_back(aovs.expressions()[o].name);
+    if (names.empty()) names.push_back("rest");
+    return names;
+}
+
+std::string joined(const std::vector<std::string>& words, const char* separator) {
+    std::string text;
+    for (const std::string& w : words) text += (text.empty() ? "" : separator) + w;
+    return text;
+}
+
+// Per layer: the sum of every contribution it takes (beauty all, rest those no AOV accepts).
+std::vector<Rgb> layerSums(const AovSet& aovs, const std::vector<PathGroup>& groups) {
+    std::vector<Rgb> sums(aovs.layerCount(), Rgb{0.0f});
+    for (const PathGroup& g : groups) {
+        sums[0] += g.sum;
+        if (g.accepted == 0) sums.back() += g.sum;
+        for (std::size_t o = 0; o < aovs.expressions().size(); ++o)
+            if ((g.accepted >> o) & 1u) sums[1 + o] += g.sum;
+    }
+    return sums;
+}
+
+void printText(const ExplainCommand& command, const RenderOptions& options, const AovSet& aovs, int x, int y,
+               std::size_t contributions, const std::vector<PathGroup>& groups) {
+    std::size_t shown = 0, zero = 0;
+    for (const PathGroup& g : groups) (isBlack(g.sum) ? zero : shown) += 1;
+    if (command.all) shown += zero;
+    std::printf("pixel %d,%d of %s (%s, %d spp): %zu contribution%s on %zu path%s\n\n", x, y,
+                command.setup.scenePath.c_str(), options.integrator.c_str(), options.samplesPerPixel, contributions,
+                contributions == 1 ? "" : "s", groups.size(), groups.size() == 1 ? "" : "s");
+    std::size_t row = 0;
+    for (const PathGroup& g : groups) {
+        if (isBlack(g.sum) && !command.all) continue;
+        std::printf("%3zu  %s\n     compact: %s   count: %zu   touched: %s\n     rgb:     %s%s\n     aovs:    %s\n",
+                    ++row, g.expression.c_str(), lpe::toCompactString(g.path).c_str(), g.values.size(),
+                    joined(g.touched, ", ").c_str(), formatRgb(g.sum).c_str(), g.values.size() > 1 ? "  (sum)" : "",
+                    joined(aovNames(aovs, g.accepted), ", ").c_str());
+    }
+    if (zero > 0 && !command.all)
+        std::printf("\n(%zu path%s whose contributions sum to zero hidden; --all shows them)\n", zero, zero == 1 ? "" : "s");
+    const auto layers = aovs.layerNames();
+    const std::vector<Rgb> sums = layerSums(aovs, groups);
+    std::printf("\nsums\n");
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        const std::string expression = (l == 0 || l + 1 == layers.size()) ? "" : aovs.expressions()[l - 1].expression;
+        std::printf("  %-10s %s  %s\n", layers[l].c_str(), formatRgb(sums[l]).c_str(), expression.c_str());
+    }
+}
+
+// The schema is documented in docs/lpe.md ("explain --json").
+void printJson(const ExplainCommand& command, const RenderOptions& options, const AovSet& aovs, int x, int y,
+               const std::vector<PathGroup>& groups) {
+    std::ostringstream json;
+    json << "{\n  \"schema\": \"lightpath-explain-1\",\n  \"scene\": " << jsonString(command.setup.scenePath)
+         << ",\n  \"integrator\": " << jsonString(options.integrator) << ",\n  \"spp\": " << options.samplesPerPixel
+         << ",\n  \"pixel\": [" << x << ", " << y << "],\n  \"layers\": [";
+    const auto layers = aovs.layerNames();
+    const std::vector<Rgb> sums = layerSums(aovs, groups);
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+        const bool named = l > 0 && l + 1 < layers.size();
+        json << (l ? "," : "") << "\n    {\"name\": " << jsonString(layers[l])
+             << ", \"expression\": " << (named ? jsonString(aovs.expressions()[l - 1].expression) : "null")
+             << ", \"rgb\": " << jsonRgb(sums[l]) << "}";
+    }
+    json << "\n  ],\n  \"paths\": [";
+    bool first = true;
+    std::size_t hidden = 0;
+    for (const PathGroup& g : groups) {
+        if (isBlack(g.sum) && !command.all) {
+            ++hidden;
+            continue;
+        }
+        json << (first ? "" : ",") << "\n    {\"path\": " << jsonString(g.expression)
+             << ", \"compact\": " << jsonString(lpe::toCompactString(g.path)) << ", \"count\": " << g.values.size()
+             << ", \"rgb\": " << jsonRgb(g.sum) << ",\n     \"events\": [";
+        for (std::size_t e = 0; e < g.path.size(); ++e) {
+            const lpe::Event& event = g.path[e];
+            json << (e ? ", " : "") << "{\"type\": \"" << lpe::letter(event.type) << "\", \"scatter\": \""
+                 << lpe::letter(event.scatter) << "\", \"label\": "
+                 << (event.label.empty() ? "null" : jsonString(event.label))
+                 << ", \"touched\": " << (e == 0 ? "null" : jsonString(g.touched[e - 1])) << "}";
+        }
+        json << "],\n     \"aovs\": [";
+        const auto names = aovNames(aovs, g.accepted);
+        for (std::size_t n = 0; n < names.size(); ++n) json << (n ? ", " : "") << jsonString(names[n]);
+        json << "],\n     \"contributions\": [";
+        for (std::size_t v = 0; v < g.values.size(); ++v) json << (v ? ", " : "") << "{\"rgb\": " << jsonRgb(g.values[v]) << "}";
+        json << "]}";
+        first = false;
+    }
+    json << "\n  ],\n  \"hidden_zero_paths\": " << hidden << "\n}\n";
+    std::cout << json.str();
+}
+
 void run(const ExplainCommand& command) {
     int x = 0, y = 0;
     char comma = 0, extra = 0;
@@ -72,34 +219,11 @@ void run(const ExplainCommand& command) {
     } catch (const std::invalid_argument& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
     }
-
-    const auto layers = aovs.layerNames();
-    std::vector<Rgb> sums(layers.size(), Rgb{0.0f});
-    std::printf("pixel %d,%d of %s (%s, %d spp): %zu contribution%s\n\n", x, y, command.setup.scenePath.c_str(),
-                options.integrator.c_str(), options.samplesPerPixel, log.size(), log.size() == 1 ? "" : "s");
-    for (std::size_t i = 0; i < log.size(); ++i) {
-        const LoggedContribution& c = log[i];
-        const lpe::Path path = toLpePath(scene, c.path);
-        std::ostringstream touched, accepted;
-        for (std::size_t e = 1; e < c.path.size(); ++e) touched << (e > 1 ? ", " : "") << subjectName(scene, c.path[e]);
-        sums[0] += c.value;
-        if (c.accepted == 0) {
-            accepted << "rest";
-            sums.back() += c.value;
-        }
-        for (std::size_t o = 0; o < aovs.expressions().size(); ++o) {
-            if (((c.accepted >> o) & 1u) == 0) continue;
-            accepted << (accepted.tellp() > 0 ? ", " : "") << aovs.expressions()[o].name;
-            sums[1 + o] += c.value;
-        }
-        std::printf("%3zu  %-8s %s\n     touched: %s\n     rgb:     %s\n     aovs:    %s\n", i + 1,
-                    lpe::toCompactString(path).c_str(), lpe::toTupleString(path).c_str(), touched.str().c_str(),
-                    formatRgb(c.value).c_str(), accepted.str().c_str());
-    }
-    std::printf("\nsums\n");
-    for (std::size_t l = 0; l < layers.size(); ++l) {
-        const std::string expression = (l == 0 || l + 1 == layers.size()) ? "" : aovs.expressions()[l - 1].expression;
-        std::printf("  %-10s %s  %s\n", layers[l].c_str(), formatRgb(sums[l]).c_str(), expression.c_str());
+    const std::vector<PathGroup> groups = groupPaths(scene, log);
+    if (command.json) {
+        printJson(command, options, aovs, x, y, groups);
+    } else {
+        printText(command, options, aovs, x, y, log.size(), groups);
     }
 }
 
@@ -110,10 +234,14 @@ void addExplainCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("explain", "Print every contribution to one pixel with its light path and AOVs");
     command->setup.addOptions(*sub);
     sub->add_option("--pixel", command->pixel, "Pixel X,Y (0,0 is the top-left corner)")->required();
+    sub->add_flag("--all", command->all, "Also show the paths whose contributions sum to zero");
+    sub->add_flag("--json", command->json, "Print JSON for tools (schema in docs/lpe.md) instead of text");
     sub->footer(
-        "Each contribution is shown as a compact path (EDL), as event tuples with the labels the\n"
-        "automaton saw (E RD'floor' L'key'), the objects and lights it touched, its RGB value and\n"
-        "the AOVs whose expressions accept it; the sums per layer follow.\n\n"
+        "Identical paths are grouped, with their count and the sum of their contributions, and sorted\n"
+        "by contribution, largest first; zero rows are hidden unless --all. Each path is printed as an\n"
+        "expression that, pasted into --lpe, matches it (E <RD'floor'> <L.'key'>), then its compact\n"
+        "form (EDL), the objects and lights it touched, its RGB and the AOVs that accept it; the sums\n"
+        "per layer follow.\n\n"
         "Examples:\n"
         "  lightpath explain scenes/lecture-room.toml --pixel 320,240\n"
         "  lightpath explain scenes/mirror-sphere.toml --pixel 300,200 --lpe \"mirror=E<RS>+.*\"");

@@ -9,17 +9,20 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_errors.h"
+#include "cli/exit_codes.h"
+#include "cli/lpe_feasibility.h"
+#include "film/aov_presets.h"
+#include "integrators/registry.h"
 #include "lpe/analysis.h"
 #include "lpe/automaton.h"
 #include "lpe/error.h"
 #include "lpe/path_string.h"
+#include "lpe/reading.h"
 
 namespace lightpath {
 namespace {
 
-// The README's exit codes (cli/exit_codes.h); this file depends on CLI11 and lpe only.
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 
 // Runs a subcommand, turning the engine's errors into CLI11's, which main() reports.
 template <class Body>
@@ -50,9 +53,21 @@ lpe::NamedExpression namedExpression(const std::string& argument, std::size_t in
     return {"lpe" + std::to_string(index + 1), argument};
 }
 
+// "E[S*](D|G)L  read as E(S*)?(D|G)L (Heckbert: [ ] = optional)" when lightpath's reading is not
+// what was written; the warnings of spellings other dialects read otherwise.
+std::string readingNote(const std::string& expression, const Warnings& warn, const std::string& name) {
+    const lpe::Reading reading = lpe::readExpression(expression);
+    for (const std::string& warning : reading.warnings) warn((name.empty() ? "" : name + ": ") + warning);
+    if (reading.notes.empty()) return {};
+    std::string notes;
+    for (const std::string& note : reading.notes) notes += (notes.empty() ? "" : "; ") + note;
+    return "  read as " + reading.text + " (" + notes + ")";
+}
+
 struct MatchOptions {
     std::string expression;
     std::vector<std::string> paths;
+    bool quiet = false;
 };
 
 void runMatch(const MatchOptions& options) {
@@ -60,6 +75,8 @@ void runMatch(const MatchOptions& options) {
     // Read every path first: a typo in the last one should not leave half a report.
     std::vector<lpe::Path> paths;
     for (const std::string& text : options.paths) paths.push_back(lpe::parsePath(text));
+    const std::string note = readingNote(options.expression, Warnings(options.quiet), "");
+    if (!note.empty()) std::cout << options.expression << note << '\n';
     for (std::size_t i = 0; i < paths.size(); ++i) {
         std::cout << (automaton.matches(paths[i], 0) ? "match     " : "no match  ") << options.paths[i] << '\n';
     }
@@ -70,12 +87,13 @@ struct SetOptions {
     std::string set;
     std::string universe;
     std::string output;
+    std::string integrator;
+    bool quiet = false;
 };
 
 std::vector<lpe::NamedExpression> expressionsOf(const SetOptions& options) {
     std::vector<lpe::NamedExpression> expressions;
-    if (options.set == "classes") expressions = lpe::classesSet();
-    if (options.set == "taxonomy") expressions = lpe::taxonomySet();
+    if (const auto preset = findAovPreset(options.set)) expressions = preset->expressions();
     for (std::size_t i = 0; i < options.expressions.size(); ++i) {
         expressions.push_back(namedExpression(options.expressions[i], i));
     }
@@ -85,23 +103,95 @@ std::vector<lpe::NamedExpression> expressionsOf(const SetOptions& options) {
     return expressions;
 }
 
+// The nest: every strict containment as maximal chains (A ⊂ B ⊂ C), then each covering pair with a
+// shortest path of the larger that the smaller lacks, and the overlapping pairs neither of which
+// contains the other. Nothing when no expression contains another and none overlap.
+void printNest(const std::vector<lpe::NamedExpression>& expressions, const std::string& universe,
+               const lpe::SetReport& report) {
+    const std::size_t n = expressions.size();
+    const lpe::Containment c = lpe::compareLanguages(expressions, universe);
+    const auto covers = [&](std::size_t larger, std::size_t smaller) {
+        if (!c.strictlyContains(larger, smaller)) return false;
+        for (std::size_t k = 0; k < n; ++k)
+            if (k != larger && k != smaller && c.strictlyContains(larger, k) && c.strictlyContains(k, smaller)) return false;
+        return true;
+    };
+    std::vector<std::string> lines;
+    std::vector<std::string> chains;
+    const auto extend = [&](auto&& self, std::vector<std::size_t> chain) -> void {
+        bool longer = false;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (!covers(j, chain.back())) continue;
+            longer = true;
+            auto next = chain;
+            next.push_back(j);
+            self(self, next);
+        }
+        if (!longer && chain.size() > 1) {
+            std::string text;
+            for (const std::size_t i : chain) text += (text.empty() ? "" : " \u2282 ") + expressions[i].name;
+            chains.push_back(text);
+        }
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        bool minimal = true;
+        for (std::size_t k = 0; k < n; ++k) minimal = minimal && !c.strictlyContains(i, k);
+        if (minimal) extend(extend, {i});
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            if (i < j && c.contains(i, j) && c.contains(j, i))
+                lines.push_back(expressions[i].name + " = " + expressions[j].name + ": they accept the same paths");
+            if (covers(j, i))
+                lines.push_back(expressions[i].name + " \u2282 " + expressions[j].name + ": " +
+                                lpe::toDisplayString(*c.onlyIn[j][i]) + " is only in " + expressions[j].name);
+        }
+    for (const lpe::Overlap& o : report.overlaps) {
+        const std::size_t i = o.first, j = o.second;
+        if (c.contains(i, j) || c.contains(j, i)) continue;
+        lines.push_back(expressions[i].name + ", " + expressions[j].name + ": neither contains the other (" +
+                        lpe::toDisplayString(*c.onlyIn[i][j]) + " only in " + expressions[i].name + ", " +
+                        lpe::toDisplayString(*c.onlyIn[j][i]) + " only in " + expressions[j].name + ")");
+    }
+    if (chains.empty() && lines.empty()) return;
+    std::cout << "nest (A \u2282 B: B accepts every path of " << universe << " that A accepts, and more):\n";
+    for (const std::string& chain : chains) std::cout << "  " << chain << '\n';
+    for (const std::string& line : lines) std::cout << "  " << line << '\n';
+}
+
+// Which expressions `integrator` can ever fill, and why not the others.
+void printIntegrator(const std::vector<lpe::NamedExpression>& expressions, const std::string& name, std::size_t width) {
+    const IntegratorInfo* info = findIntegrator(name);
+    std::cout << "--integrator " << info->name << " renders " << info->pathLanguage << ":\n";
+    for (const auto& e : expressions) {
+        const auto why = whyNeverFilled(e.expression, *info);
+        std::cout << "  " << e.name << std::string(width + 2 - e.name.size(), ' ')
+                  << (why ? "never filled: " + *why : std::string("can be filled")) << '\n';
+    }
+}
+
 void runCheck(const SetOptions& options) {
     const std::vector<lpe::NamedExpression> expressions = expressionsOf(options);
+    const auto preset = findAovPreset(options.set);
     const std::string universe =
-        !options.universe.empty() ? options.universe : options.set == "classes" ? "E(D|G|S)*L" : "E.*L";
+        !options.universe.empty() ? options.universe : preset ? preset->universe : "E.*L";
     const lpe::SetReport report = lpe::analyse(expressions, universe);
+    const Warnings warn(options.quiet);
 
     std::size_t width = 0;
     for (const auto& e : expressions) width = std::max(width, e.name.size());
     for (const auto& e : expressions) {
-        std::cout << e.name << std::string(width + 2 - e.name.size(), ' ') << e.expression << '\n';
+        std::cout << e.name << std::string(width + 2 - e.name.size(), ' ') << e.expression
+                  << readingNote(e.expression, warn, e.name) << '\n';
     }
+    if (expressions.size() > 1) printNest(expressions, universe, report);
     for (const lpe::Overlap& o : report.overlaps) {
         std::cout << "overlap: " << expressions[o.first].name << " and " << expressions[o.second].name
                   << " both accept " << lpe::toDisplayString(o.example) << '\n';
     }
     if (report.gap) std::cout << "gap: no expression accepts " << lpe::toDisplayString(*report.gap) << '\n';
     std::cout << "partition of " << universe << ": " << (report.partition() ? "yes" : "no") << '\n';
+    if (!options.integrator.empty()) printIntegrator(expressions, options.integrator, width);
 }
 
 void runDot(const SetOptions& options) {
@@ -121,8 +211,9 @@ void runDot(const SetOptions& options) {
 
 void addSetArguments(CLI::App& command, SetOptions& options) {
     command.add_option("expressions", options.expressions, "[name=]EXPR, e.g. raycast='E(D|G)L'");
-    command.add_option("--set", options.set, "start from a predefined set")
-        ->check(CLI::IsMember({"classes", "taxonomy"}));
+    std::vector<std::string> presets;
+    for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
+    command.add_option("--set", options.set, "start from a predefined set")->check(oneOf(presets));
 }
 
 }  // namespace
@@ -135,20 +226,26 @@ void addLpeCommand(CLI::App& app) {
         "  lightpath lpe match 'E(D|G)L' EDL ESDL\n"
         "  lightpath lpe check --set classes\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' -o automaton.dot\n\n"
-        "Syntax: E camera, L emitter or background, B background, D G S s scattering, R T reflection\n"
-        "and transmission, . any event, <RS> tuples (type, scattering, 'label'), [^D] sets,\n"
-        "'name' labels, and | ( ) * + ? {n} {n,} {n,m}.");
+        "Syntax: E (or C) camera, L any emitter (light, emitting object O or background B), D G S s\n"
+        "scattering, R T V reflection, transmission and volume, . any event, <RS> and <L.'key'> tuples\n"
+        "(type, scattering, 'label'), [SG] and [^D] sets, Heckbert's [S*] = (S*)?, 'name' labels, and\n"
+        "| ( ) * + ? {n} {n,} {n,m}. docs/lpe.md has the rules and the differences from OSL.");
 
     auto match = std::make_shared<MatchOptions>();
     CLI::App* matchCommand = lpe->add_subcommand("match", "Does each path match the expression?");
     matchCommand->add_option("expression", match->expression, "the light path expression")->required();
-    matchCommand->add_option("paths", match->paths, "paths, compact (ESDL) or tuples (\"E RS RD'floor' L'key'\")")
+    matchCommand->add_option("paths", match->paths,
+                             "paths, compact (ESDL), tuples (\"E RS RD'floor' L'key'\") or as explain prints them "
+                             "(\"E <RS> <RD'floor'> <L.'key'>\")")
         ->required();
+    matchCommand->add_flag("--quiet", match->quiet, "no warnings");
     matchCommand->footer(
-        "Prints `match` or `no match` and the path, one line per path.\n\n"
+        "Prints `match` or `no match` and the path, one line per path; first, when lightpath reads the\n"
+        "expression otherwise than it is written (Heckbert's [ ] = optional, <L'key'> = <L.'key'>), the\n"
+        "reading it used.\n\n"
         "Examples:\n"
         "  lightpath lpe match 'E(D|G)L' EDL ESDL        match EDL, no match ESDL\n"
-        "  lightpath lpe match 'ES*<L'\\''key'\\''>' \"E RS L'key'\" \"E L'fill'\"\n"
+        "  lightpath lpe match 'ES*<L.'\\''key'\\''>' \"E RS L'key'\" \"E L'fill'\"\n"
         "  lightpath lpe match '<TS>+L' \"TS TS L\" \"RS L\"   refraction only");
     matchCommand->callback([match] { reportingErrors([&] { runMatch(*match); }); });
 
@@ -157,13 +254,19 @@ void addLpeCommand(CLI::App& app) {
     addSetArguments(*checkCommand, *check);
     checkCommand->add_option("--universe", check->universe,
                              "the paths the set should split (default E.*L; E(D|G|S)*L with --set classes)");
+    checkCommand->add_option("--integrator", check->integrator, "also say which expressions this integrator can ever fill")
+        ->check(oneOf(integratorNames()));
+    checkCommand->add_flag("--quiet", check->quiet, "no warnings");
     checkCommand->footer(
-        "Every overlapping pair is shown with a shortest path both accept, the gap with a shortest\n"
-        "path of the universe none accepts. A set is a partition when there is neither: its AOVs\n"
-        "then sum exactly to the beauty. Unnamed expressions are called lpe1, lpe2, ...\n\n"
+        "Decides containment, not only overlap: the nest (A \u2282 B) of the expressions, each strict\n"
+        "containment with a shortest path of the larger that the smaller lacks. Every overlapping pair\n"
+        "is shown with a shortest path both accept, the gap with a shortest path of the universe none\n"
+        "accepts. A set is a partition when there is neither: its AOVs then sum exactly to the beauty.\n"
+        "--integrator NAME says which expressions that integrator can ever fill, and why not the others.\n"
+        "Unnamed expressions are called lpe1, lpe2, ...\n\n"
         "Examples:\n"
         "  lightpath lpe check --set classes\n"
-        "  lightpath lpe check --set taxonomy\n"
+        "  lightpath lpe check --set taxonomy --integrator whitted\n"
         "  lightpath lpe check direct='E(D|G)L' indirect='E.+(D|G)L' --universe 'E.*(D|G)L'");
     checkCommand->callback([check] { reportingErrors([&] { runCheck(*check); }); });
 
@@ -177,7 +280,7 @@ void addLpeCommand(CLI::App& app) {
         "Examples:\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' | dot -Tsvg > whitted.svg\n"
         "  lightpath lpe dot --set classes -o classes.dot\n"
-        "  lightpath lpe dot key='E.*<L'\\''key'\\''>' fill='E.*<L'\\''fill'\\''>'");
+        "  lightpath lpe dot key='E.*<L.'\\''key'\\''>' fill='E.*<L.'\\''fill'\\''>'");
     dotCommand->callback([dot] { reportingErrors([&] { runDot(*dot); }); });
 }
 

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "cli/bench_command.h"
+#include "cli/cli_errors.h"
 #include "cli/exit_codes.h"
 #include "cli/explain_command.h"
 #include "cli/lpe_command.h"
@@ -16,12 +17,14 @@ int main(int argc, char** argv) {
     CLI::App app{"lightpath: a ray tracer that records every contribution's light path (Heckbert's E(S*)(D|G)L)\n"
                  "and splits the image into AOVs by light path expressions."};
     app.require_subcommand(1);
+    app.set_version_flag("--version", lightpath::versionText(), "Print the version and the build's options (Embree on or off)");
     app.footer(
         "Examples:\n"
         "  lightpath render scenes/lecture-room.toml -o out/room.png     beauty + one PNG per AOV\n"
         "  lightpath explain scenes/lecture-room.toml --pixel 320,240    why a pixel has its colour\n"
         "  lightpath lpe match 'E(D|G)L' EDL ESDL                        does a path match?\n"
         "  lightpath lpe check --set classes                             is the AOV set a partition?\n"
+        "  lightpath lpe check --set taxonomy                            the nest of the four methods\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n"
         "  lightpath bench skip                                          what skipping saves\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
@@ -36,12 +39,15 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
     } catch (const CLI::RuntimeError& e) {
         std::cerr << "lightpath: " << e.what() << "\n";
         return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
-        // Wrong arguments are bad input, whatever CLI11's own code for them.
-        app.exit(e);
+        // Wrong arguments are bad input, whatever CLI11's own code for them; CLI11's message gets
+        // the prefix and a did-you-mean like every other error.
+        std::cerr << lightpath::parseErrorMessage(app, e) << "\n";
         return lightpath::kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << "lightpath: error: " << e.what() << "\n";

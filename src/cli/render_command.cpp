@@ -103,6 +103,7 @@ void run(const RenderCommand& command) {
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
+    command.setup.warnEmptyAovs(result.film, aovs, scene);
     if (command.stats) {
         printStats(result.stats);
         printAcceleratorStats(command.setup.accel, result.stats.accelerator);
@@ -126,8 +127,8 @@ void addRenderCommand(CLI::App& app) {
         "Examples:\n"
         "  lightpath render scenes/lecture-room.toml -o out/room.png\n"
         "  lightpath render scenes/mirror-sphere.toml -o out/m.exr --integrator whitted --max-depth 8 --stats\n"
-        "  lightpath render scenes/szymczak-three-lights.toml -o out/s.png --lpe \"ambient=E.*<L'ambient'>\"\n"
-        "      --lpe \"red=E.*<L'red-lamp'>\"\n"
+        "  lightpath render scenes/szymczak-three-lights.toml -o out/s.png --lpe \"ambient=E.*<L.'ambient'>\"\n"
+        "      --lpe \"red=E.*<L.'red-lamp'>\"\n"
         "  lightpath render scenes/glass-sphere.toml -o out/g.png --spp 16 --resolution 320x240");
     sub->callback([command] { run(*command); });
 }

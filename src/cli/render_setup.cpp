@@ -4,11 +4,16 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/cli_errors.h"
 #include "cli/exit_codes.h"
+#include "cli/lpe_feasibility.h"
+#include "film/aov_presets.h"
+#include "integrators/event_symbols.h"
+#include "integrators/registry.h"
 #include "lpe/analysis.h"
 #include "lpe/error.h"
 #include "lpe/path_string.h"
-#include "integrators/event_symbols.h"
+#include "lpe/reading.h"
 #include "scene/scene_loader.h"
 #include "scene/spelling.h"
 
@@ -24,23 +29,26 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 
 void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("scene", scenePath, "Scene file (TOML, see scenes/README.md)")->required();
-    command.add_option("--integrator", integrator,
-                       "raycast: first hit only; whitted: adds mirror and refraction rays; "
-                       "path: path tracing with global illumination (physically based reading); "
-                       "radiosity: diffuse patches solved bounce by bounce, ED*L only")
-        ->check(CLI::IsMember({"raycast", "whitted", "path", "radiosity"}))
-        ->capture_default_str();
+    std::string integratorHelp;
+    for (const IntegratorInfo& info : integrators())
+        integratorHelp += (integratorHelp.empty() ? "" : "; ") + std::string(info.name) + ": " + info.summary + " (" +
+                          info.pathLanguage + ")";
+    command.add_option("--integrator", integrator, integratorHelp)->check(oneOf(integratorNames()))->capture_default_str();
     command.add_option("--lpe", lpes,
                        "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "
                        "classes set unless --aovs classes is also given");
-    command.add_option("--aovs", aovs, "Predefined AOV set: classes (the partition of docs/design.md) or none")
-        ->check(CLI::IsMember({"classes", "none"}));
+    std::vector<std::string> presets;
+    for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
+    presets.emplace_back("none");
+    command.add_option("--aovs", aovs, "Predefined AOV set: classes (the partition of docs/design.md), taxonomy (the lecture's four "
+                                       "methods, overlapping) or none")
+        ->check(oneOf(presets));
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
         ->capture_default_str();
     command.add_option("--sampler", sampler,
                        "Pixel sample sequence: independent, stratified, or sobol (Owen-scrambled, low discrepancy)")
-        ->check(CLI::IsMember({"independent", "stratified", "sobol"}))
+        ->check(oneOf({"independent", "stratified", "sobol"}))
         ->capture_default_str();
     command.add_option("--target-error", targetError,
                        "Adaptive sampling: stop a pixel once the standard error of its mean is below this "
@@ -58,22 +66,24 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("--accel", accel,
                        "Closest-hit and shadow-ray search: bvh (ours), embree (if built with it; triangles) "
                        "or none (test every primitive)")
-        ->check(CLI::IsMember({"bvh", "embree", "none"}))
+        ->check(oneOf({"bvh", "embree", "none"}))
         ->capture_default_str();
-    command.add_flag("--quiet", quiet, "No progress bar (shown on a terminal for renders over a second)");
+    command.add_flag("--quiet", quiet,
+                     "No progress bar (shown on a terminal for renders over a second) and no warnings; errors are "
+                     "always shown");
     command.add_option("--robust", robust,
                        "Numerics: on (stable sphere test, watertight triangles, error-bound ray offsets) or off "
                        "(the lecture's b^2-4ac, Moller-Trumbore with |det| < 1e-6, t_min = --epsilon)")
-        ->check(CLI::IsMember({"on", "off"}))
+        ->check(oneOf({"on", "off"}))
         ->capture_default_str();
     command.add_option("--sphere-test", sphereTest, "Override --robust for spheres: stable or naive")
-        ->check(CLI::IsMember({"stable", "naive"}));
+        ->check(oneOf({"stable", "naive"}));
     command.add_option("--triangle-test", triangleTest, "Override --robust for triangles: watertight or moller-trumbore")
-        ->check(CLI::IsMember({"watertight", "moller-trumbore"}));
+        ->check(oneOf({"watertight", "moller-trumbore"}));
     command.add_option("--ray-offset", rayOffset,
                        "Override --robust for secondary ray origins: robust, wachter-binder, epsilon, none or "
                        "own-primitive (the lecture's: ignore the surface the ray leaves)")
-        ->check(CLI::IsMember({"robust", "wachter-binder", "epsilon", "none", "own-primitive"}));
+        ->check(oneOf({"robust", "wachter-binder", "epsilon", "none", "own-primitive"}));
     command.add_option("--epsilon", epsilon, "t_min of --ray-offset epsilon")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
@@ -106,7 +116,8 @@ Scene RenderSetup::loadScene() const {
     } catch (const SceneError& e) {
         badInput(e.what());
     }
-    for (const std::string& warning : scene.warnings) std::cerr << "warning: " << warning << "\n";
+    const Warnings warn(quiet);
+    for (const std::string& warning : scene.warnings) warn(warning);
     if (!resolution.empty()) {
         int width = 0, height = 0;
         char x = 0, extra = 0;
@@ -124,7 +135,7 @@ Scene RenderSetup::loadScene() const {
 std::vector<lpe::NamedExpression> RenderSetup::expressions() const {
     std::vector<lpe::NamedExpression> set;
     const std::string preset = aovs.empty() ? (lpes.empty() ? "classes" : "none") : aovs;
-    if (preset == "classes") set = lpe::classesSet();
+    if (const auto found = findAovPreset(preset)) set = found->expressions();
     for (std::size_t i = 0; i < lpes.size(); ++i) set.push_back(parseNamedExpression(lpes[i], i + 1));
     return set;
 }
@@ -147,6 +158,27 @@ void refuseUnknownLabels(const lpe::Automaton& automaton, const std::vector<lpe:
 
 }  // namespace
 
+// No silent black AOVs: an --lpe expression no path of this integrator in this scene can match is
+// refused before the render, with the reason; a preset's AOV that stays black under this
+// integrator (raytrace under raycast) is what the preset is for, and gets a warning.
+void RenderSetup::refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const Scene& scene) const {
+    const IntegratorInfo* info = findIntegrator(integrator);
+    if (!info) badInput("--integrator: " + choiceMessage(integrator, integratorNames()));
+    const std::size_t presetCount = set.size() - lpes.size();
+    const Warnings warn(quiet);
+    for (std::size_t i = 0; i < set.size(); ++i) {
+        const auto& e = set[i];
+        const auto why = whyNeverFilled(e.expression, *info, &scene);
+        if (!why) continue;
+        if (i < presetCount) {
+            warn("AOV " + e.name + " (" + e.expression + ") stays black under --integrator " + integrator + ": " + *why);
+        } else {
+            badInput("--lpe " + e.name + ": '" + e.expression + "' can never match under --integrator " + integrator +
+                     ": " + *why);
+        }
+    }
+}
+
 AovSet RenderSetup::buildAovSet(const Scene& scene) const {
     const auto set = expressions();
     std::optional<AovSet> aovs;
@@ -160,14 +192,36 @@ AovSet RenderSetup::buildAovSet(const Scene& scene) const {
         badInput(std::string("--lpe: ") + e.what());
     }
     refuseUnknownLabels(aovs->automaton(), set, scene, scenePath);
+    refuseNeverFilled(set, scene);
+    const Warnings warn(quiet);
+    for (const auto& e : set)
+        for (const std::string& warning : lpe::readExpression(e.expression).warnings) warn("--lpe " + e.name + ": " + warning);
     if (set.size() > 1) {
         // Overlapping AOVs count the same light twice; say so with a path both accept.
         for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps)
-            std::cerr << "warning: AOVs " << set[o.first].name << " and " << set[o.second].name
-                      << " overlap: both accept " << lpe::toCompactString(o.example) << " ("
-                      << lpe::toTupleString(o.example) << "); their sum counts such light twice\n";
+            warn("AOVs " + set[o.first].name + " and " + set[o.second].name + " overlap: both accept " +
+                 lpe::toCompactString(o.example) + " (" + lpe::toExpressionString(o.example) +
+                 "); their sum counts such light twice");
     }
     return std::move(*aovs);
+}
+
+void RenderSetup::warnEmptyAovs(const Film& film, const AovSet& aovs, const Scene& scene) const {
+    const IntegratorInfo* info = findIntegrator(integrator);
+    const Warnings warn(quiet);
+    for (std::size_t o = 0; o < aovs.expressions().size(); ++o) {
+        const std::size_t layer = o + 1;  // after the beauty
+        bool empty = true;
+        for (int y = 0; y < film.height() && empty; ++y)
+            for (int x = 0; x < film.width() && empty; ++x) empty = isBlack(film.at(layer, x, y));
+        const auto& e = aovs.expressions()[o];
+        // AOVs that can never be filled were refused or warned about before the render.
+        if (!empty || !info || whyNeverFilled(e.expression, *info, &scene)) continue;
+        warn("AOV " + e.name + " (" + e.expression + ") received nothing in this render: --integrator " + integrator +
+             " can produce its paths, but none reached it at " + std::to_string(film.width()) + "x" +
+             std::to_string(film.height()) + ", " + std::to_string(samplesPerPixel) + " spp, --max-depth " +
+             std::to_string(maxDepth));
+    }
 }
 
 RenderOptions RenderSetup::renderOptions() const {
@@ -177,7 +231,7 @@ RenderOptions RenderSetup::renderOptions() const {
     options.samplesPerPixel = samplesPerPixel;
     options.threads = threads;
     options.seed = seed;
-    parseSamplerKind(sampler, options.sampler);  // validated by the option's IsMember check
+    parseSamplerKind(sampler, options.sampler);  // validated by the option's oneOf check
     options.targetError = targetError;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "film/aov_set.h"
+#include "film/film.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 
@@ -28,7 +29,7 @@ struct RenderSetup {
     bool noBeauty = false;
     bool noSkip = false;
     std::string accel = "bvh";       // bvh, embree or none (brute force)
-    bool quiet = false;              // no progress bar
+    bool quiet = false;              // no progress bar, no warnings
     std::string robust = "on";       // on: robust numerics (default); off: the lecture's naive ones
     std::string sphereTest, triangleTest, rayOffset;  // per-method choices; empty: as --robust says
     float epsilon = 1e-4f;           // t_min of --ray-offset epsilon
@@ -44,8 +45,14 @@ struct RenderSetup {
     Scene loadScene() const;                           // with --resolution applied
     std::vector<lpe::NamedExpression> expressions() const;
     // Warns on stderr when AOVs overlap; refuses a label that names nothing in `scene`.
+    // Refuses an AOV that can never be filled (cli/lpe_feasibility.h).
     AovSet buildAovSet(const Scene& scene) const;
     RenderOptions renderOptions() const;
+    // After a render: warns of each AOV that could have received light but got none.
+    void warnEmptyAovs(const Film& film, const AovSet& aovs, const Scene& scene) const;
+
+private:
+    void refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const Scene& scene) const;
 };
 
 }  // namespace lightpath

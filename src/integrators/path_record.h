@@ -30,9 +30,6 @@ struct PathEvent {
     Vec3 position{0.0f};
 };
 
-// OSL's `O`: light emitted by a surface that is not a [[lights]] entry.
-inline constexpr lpe::EventType kObjectEmission = lpe::EventType::Emitter;
-
 // Longest recorded path: the camera, kMaxDepth specular bounces, one surface and the light.
 inline constexpr int kMaxDepth = 64;
 inline constexpr std::size_t kMaxPathEvents = kMaxDepth + 4;

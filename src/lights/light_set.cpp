@@ -21,7 +21,7 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
     for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {
         if (primitives[object].empty()) continue;
         // A [[lights]] quad or sphere is a light (L); any other emitting surface is object emission (O).
-        const lpe::EventType type = scene.objects[object].declaredLight ? lpe::EventType::Emitter : kObjectEmission;
+        const lpe::EventType type = scene.objects[object].declaredLight ? lpe::EventType::Emitter : lpe::EventType::ObjectEmission;
         auto light = std::make_unique<AreaLightSource>(PathEvent{type, lpe::Scatter::None, Subject::Object, object},
                                                        scene.materials[scene.objects[object].material].emission,
                                                        geometry, primitives[object]);

@@ -5,10 +5,10 @@
 
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
-#include "lpe/analysis.h"
 #include "geometry/spawn_ray.h"
 #include "render/renderer.h"
 #include "stress/sampling.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -90,7 +90,7 @@ double hostileQueries(const Scene& scene, const NumericsOptions& numerics) {
 
 void runNonFiniteRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
     const Scene scene = hostileScene(config.quick ? 63 : 161);  // odd: centre rays have zero components
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     for (const bool robust : {true, false}) {
         RenderOptions options;
         options.numerics = robust ? NumericsOptions{} : NumericsOptions::naive();

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -14,7 +14,7 @@ namespace {
 Film renderCornell(int threads, Accelerator accelerator) {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/cornell-mirror.toml");
     scene.camera.width = scene.camera.height = 48;
-    static const AovSet aovs(lpe::classesSet());
+    static const AovSet aovs(classesSet());
     RenderOptions options;
     options.integrator = "whitted";
     options.samplesPerPixel = 2;

@@ -17,7 +17,9 @@
 // - every DOT edge label, read back as an LPE, matches exactly the events of that edge;
 // - analyse(): examples are in both expressions (or none, for the gap) and the universe, and are
 //   no longer than any sampled path with that property, which also proves the overlap or gap;
-// - toTupleString and toDisplayString read back through parsePath to the same path.
+// - toTupleString, toDisplayString and toExpressionString read back through parsePath to the same
+//   path (the last up to the scattering non-scattering events claim), and toExpressionString
+//   compiled as an LPE accepts the path.
 #include <algorithm>
 #include <cstdint>
 #include <map>
@@ -155,6 +157,18 @@ void checkRoundTrips(const Path& path) {
     if (lpe::parsePath(display) != path) broken("toDisplayString \"" + display + "\" of " + show(path) + " does not read back");
     const std::string compact = lpe::toCompactString(path);
     if (lpe::toCompactString(lpe::parsePath(compact)) != compact) broken("toCompactString \"" + compact + "\" is not stable");
+    const std::string expression = lpe::toExpressionString(path);
+    // Non-scattering events print no scattering (they match whatever they claim): compare as recorded.
+    Path recorded = path;
+    for (lpe::Event& e : recorded)
+        if (!lpe::scatters(e.type)) e.scatter = lpe::Scatter::None;
+    if (lpe::parsePath(expression) != recorded) broken("toExpressionString \"" + expression + "\" does not read back");
+    try {
+        if (!Automaton::compile({{"path", expression}}).matches(path, 0))
+            broken("toExpressionString \"" + expression + "\" does not match its own path");
+    } catch (const lpe::LimitError&) {
+        // A path too long or with too many labels to compile says nothing about the printer.
+    }
 }
 
 void checkPath(const Subject& s, const Path& path) {

@@ -14,9 +14,9 @@
 
 #include "film/aov_set.h"
 #include "fuzz_support.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace {
 
@@ -148,7 +148,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
     scene.camera.width = kWidth;
     scene.camera.height = kHeight;
-    static const AovSet classes(lpe::classesSet());
+    static const AovSet classes(classesSet());
     for (const char* integrator : {"raycast", "whitted", "path"}) render(scene, classes, integrator, true);
     // Labels reach the automaton: the light touching the last object, and rest, sum to the beauty.
     if (!scene.objects.empty()) {

@@ -127,7 +127,7 @@ TEST_CASE("labels: <L'key'>, labelled events, and class 0 for labels no expressi
     // A label that no expression names behaves exactly like no label.
     const lpe::Automaton automaton = compileOne("E<RD>'key'|ED<L'key'>");
     CHECK(automaton.labels() == std::vector<std::string>{"key"});
-    CHECK(automaton.symbolCount() == 2 * 25);
+    CHECK(automaton.symbolCount() == 2 * 35);  // 7 event types x 5 scatterings per label class
     CHECK(automaton.labelClass("key") == 1);
     CHECK(automaton.labelClass("") == 0);
     CHECK(automaton.labelClass("floor") == 0);
@@ -365,15 +365,21 @@ TEST_CASE("toDot draws states, accepting outputs and edges in LPE syntax") {
     CHECK(edge("<L>") == "<L>");
     CHECK(edge("L") == "L");
     CHECK(edge("B") == "B");
-    CHECK(edge("<L'key'>") == "<L'key'>");
+    CHECK(edge("<L'key'>") == "<L.'key'>");
+    CHECK(edge("<L.'key'>") == "<L.'key'>");
+    CHECK(edge("O") == "O");
+    CHECK(edge("[LO]") == "<L>|O");
     CHECK(edge("[^D]") == "[^D]");
     CHECK(edge(".") == ".");
     CHECK(edge("'floor'") == "'floor'");
     CHECK(edge("<R[DG]>") == "<R[DG]>");
     CHECK(edge("[^'floor']") == "[^'floor']");
     CHECK(edge("(R|T)") == "R|T");
-    CHECK(edge("[^L]") == "[^L]");
-    CHECK(edge("(R|T|E|B)") == "<[^L]>");
+    // Inside a set L is OSL's, lights only: [^L] also takes emitting objects and the background.
+    CHECK(edge("[^L]") == "<[^L]>");
+    CHECK(edge("(R|T|E|B|V|O)") == "<[^L]>");
+    CHECK(edge("[^<L>]") == "<[^L]>");
+    CHECK(edge("(R|T|E|V)") == "R|T|V|E");  // [^L] would read as "not a light"
 }
 
 TEST_CASE("toDot edge labels, read back as LPEs, match exactly the events of their edge") {

@@ -34,7 +34,7 @@ struct ErrorCase {
 
 TEST_CASE("syntax errors name what was expected, at the offending position") {
     const std::vector<ErrorCase> cases = {
-        {"", 0, "expected an event (E, L, D, G, S, s, R, T, B, ., <...>, [...], '...') or '('"},
+        {"", 0, "expected an event (E, L, D, G, S, s, R, T, B, V, O, ., <...>, [...], '...') or '('"},
         {"   ", 3, "expected an event"},
         {"E(D|G L", 7, "expected ')' to close the group opened at column 2"},
         {"E((D)", 5, "expected ')' to close the group opened at column 2"},
@@ -62,7 +62,7 @@ TEST_CASE("syntax errors name what was expected, at the offending position") {
         {"EXL", 1, "unknown event letter 'X'; expected an event"},
         {"E%L", 1, "unexpected '%'; expected an event"},
         {"E]", 1, "unexpected ']'"},
-        {"E<X>", 2, "unknown event letter 'X' in tuple type position; expected one of E C R T L B . ["},
+        {"E<X>", 2, "unknown event letter 'X' in tuple type position; expected one of E C R T L B V O . ["},
         {"E<<", 2, "unexpected '<' in tuple type position"},
         {"E<>", 2, "empty tuple"},
         {"E<RQ>", 3, "unknown scattering letter 'Q' in tuple scattering position"},
@@ -73,10 +73,17 @@ TEST_CASE("syntax errors name what was expected, at the offending position") {
         {"E<RD['a' D]>", 9, "expected a quoted label"},
         {"E[]L", 2, "empty set"},
         {"E[^]L", 3, "empty set"},
-        {"E[DG", 4, "expected ']' to close the set opened at column 2"},
-        {"E[(D)]", 2, "unexpected '('"},
-        {"E[[D]]", 2, "unexpected '['"},
+        {"E[DG", 4, "expected ']' to close the set opened at column 2 ([ ] of single events is OSL's set, "
+                    "e.g. [SG]; [ ] holding an operator, a group or | is Heckbert's optional, e.g. [S*] = (S*)?)"},
+        {"E[S*", 4, "expected ']' to close the optional group opened at column 2 ([ ] of single events is OSL's set"},
+        {"E[S*)L", 4, "expected ']' to close the optional group opened at column 2"},
+        {"E[(D])L", 4, "expected ')' to close the group opened at column 3"},
+        {"E[^S*]L", 4, "unexpected '*'; a negated set [^...] holds single events"},
+        {"ES]L", 2, "unexpected ']'"},
         {"E[D^G]", 3, "unexpected '^'"},
+        {"ExL", 1, "'x' (no scattering) is a tuple position, as in OSL: write <Lx> or <.x>"},
+        {"E[x]L", 2, "unknown event letter 'x'"},
+        {"E<RZ'floor'>L", 3, "unknown scattering letter 'Z' in tuple scattering position; expected one of D G S s _ x"},
         {std::string("E\0L", 3), 1, "unexpected byte 0x00"},
         {"E\xC3\xA9L", 1, "unexpected byte 0xC3"},
     };

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -58,7 +58,7 @@ void checkLayersSumToBeauty(const Film& film) {
 }
 
 TEST_CASE("every shipped scene and integrator: the classes AOVs sum to the beauty and rest is zero") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const auto scenes = shippedScenes();
     REQUIRE(scenes.size() >= 5);
     for (const auto& file : scenes) {
@@ -85,7 +85,7 @@ TEST_CASE("every shipped scene: a partial set plus rest sums to the beauty") {
 }
 
 TEST_CASE("the Cornell box under the path tracer: indirect light is non-zero") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const Film film = renderSmall(LIGHTPATH_SOURCE_DIR "/scenes/cornell-original.toml", aovs, "path");
     const auto names = aovs.layerNames();
     const std::size_t indirect = static_cast<std::size_t>(std::find(names.begin(), names.end(), "indirect") - names.begin());
@@ -94,7 +94,7 @@ TEST_CASE("the Cornell box under the path tracer: indirect light is non-zero") {
 }
 
 TEST_CASE("the lecture room: all default AOVs but indirect are non-zero under Whitted") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const Film film = renderSmall(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml", aovs, "whitted");
     const auto names = aovs.layerNames();
     for (std::size_t l = 1; l + 1 < film.layerCount(); ++l) {
@@ -152,7 +152,7 @@ TEST_CASE("every shipped scene: a point light's group AOV is the scene lit by th
 }
 
 TEST_CASE("the image is bit-identical for 1, 2 and 8 threads, and across runs") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const auto file = std::filesystem::path(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml");
     const Film one = renderSmall(file, aovs, "whitted", 1);
     for (int threads : {1, 2, 8}) {

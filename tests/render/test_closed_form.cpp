@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene_builder.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -154,7 +154,7 @@ TEST_CASE("a pixel that misses everything gets the background, in the emission A
     Scene scene;
     scene.camera = centredCamera({0, 0, 5}, {0, 0, 0}, {0, 1, 0});
     scene.background = Rgb{0.1f, 0.2f, 0.3f};
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const Film film = Renderer(scene, aovs, RenderOptions{}).render().film;
     const auto names = aovs.layerNames();
     for (std::size_t l = 0; l < names.size(); ++l) {

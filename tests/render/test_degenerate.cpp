@@ -9,9 +9,9 @@
 #include <string>
 
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -87,7 +87,7 @@ Verdict inspect(const Film& film) {
 
 void checkRendersCleanly(const std::string& sceneText) {
     const Scene scene = loadSceneFromText(kStage + sceneText, "degenerate.toml");
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     for (const char* integrator : {"raycast", "whitted", "path"}) {
         CAPTURE(integrator);
         RenderOptions options;

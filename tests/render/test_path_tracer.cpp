@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene_builder.h"
 #include "statistics.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -169,7 +169,7 @@ void checkLayer(const Film& film, const std::string& name, double expected) {
 
 TEST_CASE("path: furnace, a closed emissive diffuse sphere has radiance Le / (1 - rho)") {
     const double rho = 0.5, le = 1.0;
-    const Film film = renderPath(furnace(float(rho), Rgb{float(le)}), lpe::classesSet(), 16);
+    const Film film = renderPath(furnace(float(rho), Rgb{float(le)}), classesSet(), 16);
     checkLayer(film, "beauty", le / (1.0 - rho));
     checkLayer(film, "raycast", rho * le);                  // E D L: one bounce of the emission
     checkLayer(film, "indirect", le * rho * rho / (1.0 - rho));
@@ -179,7 +179,7 @@ TEST_CASE("path: furnace, a closed emissive diffuse sphere has radiance Le / (1 
 TEST_CASE("path: furnace, a point light of radiant intensity pi at the centre of a unit sphere with kd 0.5") {
     Scene scene = furnace(0.5f, Rgb{0.0f});
     scene.lights.push_back({"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
-    const Film film = renderPath(scene, lpe::classesSet(), 16);
+    const Film film = renderPath(scene, classesSet(), 16);
     checkLayer(film, "beauty", 1.0);
     checkLayer(film, "raycast", 0.5);   // E D L: exactly 0.5 everywhere
     checkLayer(film, "indirect", 0.5);
@@ -187,7 +187,7 @@ TEST_CASE("path: furnace, a point light of radiant intensity pi at the centre of
 
 TEST_CASE("path: the classes AOVs sum to the beauty and indirect is non-zero in the lecture room") {
     // A room with walls, so light bounces: indirect must carry it and the sum must hold.
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     Scene scene = furnace(0.5f, Rgb{0.0f});
     scene.lights.push_back({"centre", {0, 0.5f, 0}, Rgb{1.0f}, {1, 0, 0}});
     RenderOptions options;
@@ -218,7 +218,7 @@ TEST_CASE("path: a tiny, distant light's MIS weights stay finite") {
     PhongMaterial light;
     light.emission = Rgb{1.0f};
     test::addSphere(scene, "light", test::addMaterial(scene, light), {1000, 1, 0}, 1e-6f);
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     RenderOptions options;
     options.integrator = "path";
     CHECK(Renderer(scene, aovs, options).render().stats.rays.nonFinite == 0);

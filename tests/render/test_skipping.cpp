@@ -6,10 +6,10 @@
 #include <filesystem>
 
 #include "film/aov_set.h"
-#include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "scene_builder.h"
+#include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
@@ -56,7 +56,7 @@ TEST_CASE("a ray-casting request without the beauty casts no reflection or refra
 }
 
 TEST_CASE("skipping leaves the requested outputs bit-identical") {
-    const AovSet classes(lpe::classesSet());
+    const AovSet classes(classesSet());
     const AovSet direct({{"direct", "E(D|G)L"}, {"through_glass", "E<TS>+.*"}});
     for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes")) {
         if (entry.path().extension() != ".toml") continue;
@@ -84,7 +84,7 @@ Scene floorWithLights(Vec3 ks) {
 
 TEST_CASE("shadow rays: one per lit-side light sample, none to lights behind or without light") {
     const Scene scene = floorWithLights(Rgb{0.0f});
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const RayCounters r = renderWith(scene, aovs, true, true).stats.rays;
     const std::uint64_t pixels = 15 * 15 * 2;  // two samples per pixel
     CHECK(r.camera == pixels);
@@ -95,7 +95,7 @@ TEST_CASE("shadow rays: one per lit-side light sample, none to lights behind or 
 }
 
 TEST_CASE("an all-diffuse scene evaluates no highlight; a glossy one does") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const RayCounters diffuse = renderWith(floorWithLights(Rgb{0.0f}), aovs, true, true).stats.rays;
     CHECK(diffuse.highlightEvaluated == 0);
     CHECK(diffuse.highlightNoKs > 0);
@@ -112,7 +112,7 @@ TEST_CASE("a light group request casts no shadow ray towards the other lights") 
 }
 
 TEST_CASE("without skipping every term is evaluated and every ray cast") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     const RayCounters r = renderWith(floorWithLights(Rgb{0.0f}), aovs, true, false).stats.rays;
     CHECK(r.shadow == 3 * 15 * 15 * 2);
     CHECK(r.shadowBehind + r.shadowZero + r.shadowDead + r.highlightNoKs == 0);

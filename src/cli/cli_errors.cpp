@@ -1,0 +1,119 @@
+#include "cli/cli_errors.h"
+
+#include <algorithm>
+#include <cctype>
+#include <iostream>
+#include <sstream>
+
+#include "scene/spelling.h"
+
+#ifndef LIGHTPATH_VERSION
+#error "LIGHTPATH_VERSION comes from the project's VERSION in CMakeLists.txt"
+#endif
+
+namespace lightpath {
+namespace {
+
+std::string lowered(std::string word) {
+    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+    return word;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+}
+
+// The nearest of `names` to `word`, case ignored; nothing when none is a likely typo.
+std::optional<std::string> nearest(const std::string& word, const std::vector<std::string>& names) {
+    std::vector<std::string> lowerNames;
+    for (const std::string& name : names) lowerNames.push_back(lowered(name));
+    const auto match = closestMatch(lowered(word), lowerNames);
+    if (!match) return std::nullopt;
+    return names[static_cast<std::size_t>(std::find(lowerNames.begin(), lowerNames.end(), *match) - lowerNames.begin())];
+}
+
+// The subcommand being parsed when the error struck: the deepest one that was given.
+const CLI::App& deepest(const CLI::App& app) {
+    for (const CLI::App* sub : app.get_subcommands())
+        if (sub->parsed()) return deepest(*sub);
+    return app;
+}
+
+// What a misspelt word could have been: the long options and subcommands of `app`.
+std::vector<std::string> candidatesOf(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options()) {
+        for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    }
+    for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    return names;
+}
+
+}  // namespace
+
+std::string choiceMessage(const std::string& word, const std::vector<std::string>& names) {
+    std::string message = word + " is not one of " + joined(names);
+    if (const auto match = nearest(word, names)) message += "; did you mean " + *match + "?";
+    return message;
+}
+
+CLI::Validator oneOf(std::vector<std::string> names) {
+    std::string description = "{";
+    for (const std::string& name : names) description += (description.size() > 1 ? "," : "") + name;
+    description += "}";
+    return CLI::Validator(
+        [names](std::string& value) {
+            return std::find(names.begin(), names.end(), value) != names.end() ? std::string()
+                                                                                 : choiceMessage(value, names);
+        },
+        description);
+}
+
+std::string parseErrorMessage(const CLI::App& app, const CLI::ParseError& error) {
+    std::string message = "lightpath: ";
+    message += error.what();
+    const CLI::App& where = deepest(app);
+    // The words the parser could not place: those ExtrasError names ("The following argument(s)
+    // was/were not expected: a b"), else what was left over ("lightpath rendr": a subcommand is
+    // required, and rendr was not one).
+    std::vector<std::string> words;
+    if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
+        const std::string text = error.what();
+        const std::size_t colon = text.find(": ");
+        std::istringstream list(colon == std::string::npos ? "" : text.substr(colon + 2));
+        for (std::string word; list >> word;) words.push_back(word);
+    } else {
+        words = where.remaining();
+        if (!words.empty()) message += " (got " + words.front() + ")";
+    }
+    for (const std::string& word : words) {
+        if (const auto match = nearest(word.substr(0, word.find('=')), candidatesOf(where))) {
+            message += "; did you mean " + *match + "?";
+            break;
+        }
+    }
+    return message + "\nRun with --help for more information.";
+}
+
+std::string versionText() {
+    std::string text = "lightpath " LIGHTPATH_VERSION "\nbuild: ";
+#ifdef LIGHTPATH_HAS_EMBREE
+    text += "Embree on (--accel embree)";
+#else
+    text += "Embree off (built without libembree-dev; --accel embree unavailable)";
+#endif
+#ifdef NDEBUG
+    text += ", release (assertions off)";
+#else
+    text += ", debug (assertions on)";
+#endif
+    return text;
+}
+
+void Warnings::operator()(const std::string& message) const {
+    if (!quiet_) std::cerr << "warning: " << message << "\n";
+}
+
+}  // namespace lightpath
