@@ -8,6 +8,7 @@
 #include <numeric>
 #include <optional>
 
+#include "film/aov_presets.h"
 #include "film/aov_set.h"
 #include "integrators/radiosity.h"
 #include "lpe/analysis.h"
@@ -32,7 +33,7 @@ struct Solved {
 
     Solved(Scene s, const RadiosityOptions& options, int maxDepth)
         : scene(std::move(s)),
-          aovs(lpe::classesSet()),
+          aovs(classesSet()),
           geometry(scene.spheres, scene.planes, scene.triangles, NumericsOptions{}, Accelerator::Bvh),
           symbols(scene, aovs.automaton()),
           analysis(scene),
@@ -146,7 +147,7 @@ Scene emissiveBox(float albedo, float emission) {
 TEST_CASE("a closed box of albedo rho emitting Le everywhere shows Le / (1 - rho)") {
     constexpr float kAlbedo = 0.6f, kEmission = 1.5f;
     const double expected = kEmission / (1.0 - kAlbedo);
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     RenderOptions options;
     options.integrator = "radiosity";
     options.maxDepth = kMaxDepth;
@@ -323,7 +324,7 @@ bool sameLayer(const Film& a, std::size_t la, const Film& b, std::size_t lb) {
 }
 
 TEST_CASE("radiosity's classes partition its light: raycast EDL, indirect ED{2,}L, emission EL, nothing else") {
-    const Rendered r = renderCornell(lpe::classesSet(), true);
+    const Rendered r = renderCornell(classesSet(), true);
     checkSumsToBeauty(r.film, true);
     const auto names = r.film.layerNames();
     const auto index = [&](const std::string& name) {
@@ -339,7 +340,7 @@ TEST_CASE("radiosity's classes partition its light: raycast EDL, indirect ED{2,}
 
 TEST_CASE("radiosity's light groups and bounces sum to the beauty") {
     SUBCASE("light groups: the point light and the ceiling panel") {
-        const Rendered r = renderCornell({{"lamp", "E.*<L.'ceiling-lamp'>"}, {"panel", "E.*<L.'light'>"}}, true);
+        const Rendered r = renderCornell({{"lamp", "E.*<L.'ceiling-lamp'>"}, {"panel", "E.*<O.'light'>"}}, true);
         checkSumsToBeauty(r.film, true);
         CHECK(layerTotal(r.film, 1) > 0.0);
         CHECK(layerTotal(r.film, 2) > 0.0);
@@ -375,7 +376,7 @@ TEST_CASE("radiosity solves no light and no bounce that no requested output acce
         CHECK(sameLayer(lamp.film, 0, full.film, 2));
     }
     SUBCASE("two bounces of one light") {
-        const Rendered two = renderCornell({{"b2", "EDD<L.'light'>"}}, false);
+        const Rendered two = renderCornell({{"b2", "EDD<O.'light'>"}}, false);
         CHECK(two.stats.lightsSolved == 1);
         CHECK(two.stats.iterations == 2);
         CHECK(two.stats.lightBouncesSolved == 2);
@@ -390,7 +391,7 @@ namespace lightpath {
 namespace {
 
 TEST_CASE("radiosity on the shipped scenes with planes and spheres: the classes sum to the beauty") {
-    const AovSet aovs(lpe::classesSet());
+    const AovSet aovs(classesSet());
     for (const char* name : {"taxonomy.toml", "glass-sphere.toml", "mirror-sphere.toml", "szymczak-three-lights.toml"}) {
         CAPTURE(name);
         Scene scene = loadScene(std::string(LIGHTPATH_SOURCE_DIR "/scenes/") + name);
