@@ -106,8 +106,11 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     const int lightsWanted = static_cast<int>(std::count_if(wanted.begin(), wanted.end(), [](int b) { return b > 0; }));
     stats_.lightsSolved = lightsWanted;
 
-    const std::uint32_t chunks = chunkCount(elementCount());
-    const int steps = static_cast<int>(chunks) * ((bounces_ > 1 ? 1 : 0) + lightsWanted + std::max(bounces_ - 1, 0));
+    // Progress steps: chunks of form factors, of each light's direct light, and of each later
+    // (light, bounce); the tolerance may stop the solve before the last.
+    int passes = (bounces_ > 1 ? 1 : 0) + lightsWanted;
+    for (int b : wanted) passes += std::max(b - 1, 0);
+    const int steps = static_cast<int>(chunkCount(elementCount())) * passes;
     ProgressBar progress(steps, context.progress, "radiosity steps");
     values_.assign(wanted.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
     rowStart_.assign(std::size_t(elementCount()) + 1, 0);
