@@ -165,8 +165,9 @@ CLASSES = [("raycast", "E(D|G)L"), ("raytrace", "ES+(D|G)L"), ("mirror", "ES+L")
 def taxonomy_renders(run, fig_dir):
     """The taxonomy scene under the three integrators, shared by figures 1, 2 and 11.
 
-    Rendered once, into 01-taxonomy/, with the classes AOVs plus the two of figure 11; a later
-    figure reuses the EXRs and lists the same commands in the gallery."""
+    Rendered once, into 01-taxonomy/, with the classes AOVs plus figure 11's ambient term (the
+    classic methods) or what it stands for (the path tracer: the only one whose paths bounce on);
+    a later figure reuses the EXRs and lists the same commands in the gallery."""
     if run.shared is None:
         scene = REPO / "scenes/taxonomy.toml"
         shared_dir = run.out / "01-taxonomy"
@@ -175,11 +176,10 @@ def taxonomy_renders(run, fig_dir):
         exrs = {}
         for integ in ("raycast", "whitted", "path"):
             spp = run.spp_path if integ == "path" else run.spp_direct
+            extra = "bounced=ES*D(D|G|S)+L" if integ == "path" else "ambient=ES*D<L'ambient'>"
             exrs[integ] = render(run, shared_dir, integ, scene, "--integrator", integ,
                                  "--resolution", run.res(640, 360), "--spp", spp,
-                                 "--sampler", "sobol", "--aovs", "classes",
-                                 "--lpe", "ambient=ES*D<L'ambient'>",
-                                 "--lpe", "bounced=ES*D(D|G|S)+L")
+                                 "--sampler", "sobol", "--aovs", "classes", "--lpe", extra)
         run.shared = (exrs, run.commands[before:])
     else:
         run.commands += run.shared[1]

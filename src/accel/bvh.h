@@ -1,9 +1,11 @@
 #pragma once
-// A bounding volume hierarchy over any primitives that have a bounding box: built with the
-// surface area heuristic (MacDonald and Booth 1990) evaluated on centroid bins (Wald 2007),
-// flattened depth-first into 32-byte nodes, traversed front to back for the closest hit and
-// with an early exit for any hit. The BVH only finds candidates: the caller's test decides hits,
-// so results are exactly those of testing every primitive.
+// A 4-wide bounding volume hierarchy over any primitives that have a bounding box. Built as a
+// binary tree with the surface area heuristic (MacDonald and Booth 1990) evaluated on centroid
+// bins (Wald 2007), its subtrees on several threads, then collapsed into nodes of four children
+// whose boxes one ray tests at once with SIMD (Wald, Benthin and Boulos 2008; Ernst and Greiner
+// 2008). Traversal visits children front to back for the closest hit and exits early for any hit.
+// The BVH only finds candidates: the caller's test decides hits, so results are exactly those of
+// testing every primitive.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -11,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "accel/simd.h"
 #include "math/ray.h"
 #include "math/types.h"
 
@@ -43,51 +46,82 @@ struct BvhPrimitive {
     std::uint32_t id = 0;
 };
 
-// Interior: `offset` is the second child (the first follows the node); leaf: `offset` is the
-// first of `count` entries of primitiveIds(). `axis` is the split axis, for ordered traversal.
-struct BvhNode {
-    Vec3 lo;
-    Vec3 hi;
-    std::uint32_t offset = 0;
-    std::uint16_t count = 0;
-    std::uint8_t axis = 0;
-    std::uint8_t pad = 0;
+inline constexpr int kBvhWidth = 4;
+// A leaf holds at most this many primitives, in one block of kBvhWidth slots.
+inline constexpr std::uint32_t kBvhMaxLeafSize = kBvhWidth;
+// The id of a padding slot: a leaf's block holds fewer primitives than slots.
+inline constexpr std::uint32_t kBvhEmptySlot = std::numeric_limits<std::uint32_t>::max();
+
+// A child reference: an interior node's index, or (kLeafFlag set) a leaf: its block index in
+// bits 0-28 and its primitive count - 1 in bits 29-30. Its primitives are in slots
+// kBvhWidth * block + [0, count).
+struct BvhChild {
+    static constexpr std::uint32_t kLeafFlag = 1u << 31;
+    static constexpr std::uint32_t kBlockMask = (1u << 29) - 1;
+    // An unused lane (its box is empty, never entered), and the root of an empty tree: a block
+    // index no tree reaches (Bvh limits the primitive count).
+    static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
+
+    static std::uint32_t leaf(std::uint32_t block, std::uint32_t count) {
+        return kLeafFlag | ((count - 1) << 29) | block;
+    }
+    static bool isLeaf(std::uint32_t child) { return (child & kLeafFlag) != 0; }
+    static std::uint32_t firstSlot(std::uint32_t child) { return kBvhWidth * (child & kBlockMask); }
+    static std::uint32_t count(std::uint32_t child) { return ((child >> 29) & 3u) + 1; }
 };
-static_assert(sizeof(BvhNode) == 32, "two nodes per 64-byte cache line");
-static_assert(offsetof(BvhNode, hi) == 3 * sizeof(float), "the six box planes are contiguous floats");
+
+// Four children's boxes as planes[side][axis][lane] (side 0 = lo, 1 = hi), so one load fetches
+// one plane of all four boxes. An unused lane has lo = +inf and hi = -inf.
+struct alignas(64) BvhNode {
+    alignas(16) float planes[2][3][kBvhWidth];
+    std::uint32_t children[kBvhWidth];
+
+    Bounds childBounds(int lane) const {
+        return {{planes[0][0][lane], planes[0][1][lane], planes[0][2][lane]},
+                {planes[1][0][lane], planes[1][1][lane], planes[1][2][lane]}};
+    }
+};
+static_assert(sizeof(BvhNode) == 128, "a node is two 64-byte cache lines");
 
 struct BvhStats {
     double buildSeconds = 0.0;
     std::size_t nodes = 0;
     std::size_t nodeBytes = 0;
     std::size_t primitives = 0;
+    std::size_t leaves = 0;
 };
 
 class Bvh {
 public:
     Bvh() = default;
-    explicit Bvh(std::vector<BvhPrimitive> primitives);
+    // Builds on `threads` threads (0: all the hardware has). The tree is the same for any count.
+    explicit Bvh(std::vector<BvhPrimitive> primitives, unsigned threads = 0);
 
-    bool empty() const { return nodes_.empty(); }
+    bool empty() const { return root_ == kNoRoot; }
     const BvhStats& stats() const { return stats_; }
     std::span<const BvhNode> nodes() const { return nodes_; }
-    std::span<const std::uint32_t> primitiveIds() const { return ids_; }
+    // The root: a node index, or a leaf when there are at most kBvhMaxLeafSize primitives.
+    std::uint32_t root() const { return root_; }
+    // One id per slot, kBvhEmptySlot for padding; the caller may keep its own per-slot data in
+    // the same order, so a leaf's primitives are read from one block of adjacent memory.
+    std::span<const std::uint32_t> slotIds() const { return ids_; }
 
-    // Calls test(slot) for every primitive whose leaf box the ray may enter before `tLimit`,
-    // nearer boxes first; primitiveIds()[slot] is its id, and the caller may keep its data in
-    // slot order too, so a leaf's primitives are read from adjacent memory. `tLimit` is read again
-    // after each call, so the test shrinks it as it finds nearer hits and farther subtrees are
-    // skipped.
+    // Calls test(firstSlot, count) for every leaf whose box the ray may enter before `tLimit`,
+    // nearer boxes first. `tLimit` is read again after each call, so the test shrinks it as it
+    // finds nearer hits and farther subtrees are skipped.
     template <typename Test>
     void closest(const Ray& ray, const float& tLimit, Test test) const;
 
-    // True as soon as test(slot) is true for a candidate; false when none is.
+    // True as soon as test(firstSlot, count) is true for a leaf; false when none is.
     template <typename Test>
     bool any(const Ray& ray, Test test) const;
 
 private:
+    static constexpr std::uint32_t kNoRoot = BvhChild::kEmpty;
+
     std::vector<BvhNode> nodes_;
     std::vector<std::uint32_t> ids_;
+    std::uint32_t root_ = kNoRoot;
     BvhStats stats_;
 };
 
@@ -95,121 +129,148 @@ namespace bvh_detail {
 
 // gamma(3) = 3u / (1 - 3u), u = 2^-24: the slab test's far distance grown by 1 + 2 gamma(3)
 // never rejects a box the exact ray passes through (Ize 2013; pbrt-v4 Bounds3::IntersectP).
+// Folding it into the inverse direction keeps the count of roundings, so the bound still holds.
 inline constexpr float kFarPadding = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 // The closest-hit limit t is itself rounded, and a box's entry distance is computed by another
 // formula than a primitive's t; a box is skipped only when it starts clearly beyond the limit.
 inline constexpr float kLimitSlack = 1.0f + 0x1p-10f;
 
-struct RaySetup {
-    Vec3 origin;
-    Vec3 inverse;
-    int negative[3];
-    int nearIndex[3], farIndex[3];  // into a node's floats lo.x lo.y lo.z hi.x hi.y hi.z
-
-    explicit RaySetup(const Ray& ray) : origin(ray.origin), inverse(1.0f / ray.direction) {
-        // 1/±0 is ±inf; a zero component then yields ±inf (or NaN on a slab plane), handled below.
-        for (int a = 0; a < 3; ++a) {
-            negative[a] = std::signbit(ray.direction[a]) ? 1 : 0;
-            nearIndex[a] = negative[a] ? 3 + a : a;
-            farIndex[a] = negative[a] ? a : 3 + a;
-        }
-    }
-
-    // The entry distance into the node's box within [tMin, tMax], or +inf when the ray misses it.
-    // Written so a NaN slab distance (origin on a slab plane, direction parallel to it) leaves
-    // the interval unchanged: the comparisons are false for NaN.
-    float enter(const BvhNode& node, float tMin, float tMax) const {
-        const float* planes = &node.lo.x;
-        float t0 = tMin, t1 = tMax;
-        for (int a = 0; a < 3; ++a) {
-            const float tNear = (planes[nearIndex[a]] - origin[a]) * inverse[a];
-            const float tFar = (planes[farIndex[a]] - origin[a]) * inverse[a] * kFarPadding;
-            t0 = tNear > t0 ? tNear : t0;
-            t1 = tFar < t1 ? tFar : t1;
-        }
-        return t0 <= t1 ? t0 : std::numeric_limits<float>::infinity();
-    }
-};
-
-// The builder keeps the tree at most this deep (bvh.cpp), so traversal needs no heap.
-inline constexpr int kStackSize = 128;
+// The deepest binary tree the builder makes is 64 SAH levels and then halving of at most 2^32
+// primitives: 96 levels. A wide node spans at least one of them and pushes at most 3 children.
+inline constexpr int kStackSize = 3 * 96 + 1;
 
 struct Pending {
-    std::uint32_t node;
+    std::uint32_t child;
     float entry;
 };
 
+struct RaySetup {
+    simd::Float4 origin[3];
+    simd::Float4 inverse[3];
+    simd::Float4 farInverse[3];  // inverse grown by kFarPadding: the padding costs no multiply per node
+    simd::Float4 tMin;
+    int nearSide[3];  // which of a node's planes[side] a ray enters an axis' slab through
+
+    explicit RaySetup(const Ray& ray) : tMin(ray.tMin) {
+        // 1/±0 is ±inf; a zero component then yields ±inf (or NaN on a slab plane), handled below.
+        for (int a = 0; a < 3; ++a) {
+            origin[a] = simd::Float4(ray.origin[a]);
+            inverse[a] = simd::Float4(1.0f / ray.direction[a]);
+            farInverse[a] = simd::Float4(1.0f / ray.direction[a] * kFarPadding);
+            nearSide[a] = std::signbit(ray.direction[a]) ? 1 : 0;
+        }
+    }
+
+    // The lanes whose box the ray enters within [tMin, tMax], and their entry distances. A NaN
+    // slab distance (origin on a slab plane, direction parallel to it) leaves the interval as it
+    // is: maxKeepSecond / minKeepSecond keep the accumulated bound.
+    int enter(const BvhNode& node, simd::Float4 tMax, simd::Float4& entry) const {
+        simd::Float4 t0 = tMin, t1 = tMax;
+        for (int a = 0; a < 3; ++a) {
+            const simd::Float4 nearPlane = simd::Float4::load(node.planes[nearSide[a]][a]);
+            const simd::Float4 farPlane = simd::Float4::load(node.planes[1 - nearSide[a]][a]);
+            t0 = simd::maxKeepSecond((nearPlane - origin[a]) * inverse[a], t0);
+            t1 = simd::minKeepSecond((farPlane - origin[a]) * farInverse[a], t1);
+        }
+        entry = t0;
+        return simd::lessEqual(t0, t1);
+    }
+};
+
+// The lanes of `mask` (two or more) in out[], farthest entry first; returns how many. Two, the
+// common case, take one comparison.
+inline int sortFarToNear(const BvhNode& node, int mask, const simd::Float4& entry, Pending out[kBvhWidth]) {
+    alignas(16) float t[kBvhWidth];
+    entry.store(t);
+    const int a = simd::firstLane(mask);
+    mask &= mask - 1;
+    const int b = simd::firstLane(mask);
+    mask &= mask - 1;
+    if (t[a] >= t[b]) {
+        out[0] = {node.children[a], t[a]};
+        out[1] = {node.children[b], t[b]};
+    } else {
+        out[0] = {node.children[b], t[b]};
+        out[1] = {node.children[a], t[a]};
+    }
+    int n = 2;
+    for (; mask != 0; mask &= mask - 1) {
+        const int lane = simd::firstLane(mask);
+        const Pending p{node.children[lane], t[lane]};
+        int i = n++;
+        for (; i > 0 && out[i - 1].entry < p.entry; --i) out[i] = out[i - 1];
+        out[i] = p;
+    }
+    return n;
+}
+
 }  // namespace bvh_detail
 
-// Both children's boxes are tested at their parent: the nearer is visited first, the other is
-// pushed with its entry distance and skipped on pop when a hit found since is nearer.
+// All four children are tested at their parent; those entered are pushed farthest first with
+// their entry distances, the nearest is visited at once, and a popped child is skipped when a
+// hit found since is nearer than its entry.
 template <typename Test>
 void Bvh::closest(const Ray& ray, const float& tLimit, Test test) const {
-    if (nodes_.empty()) return;
+    if (root_ == kNoRoot) return;
     const bvh_detail::RaySetup setup(ray);
     const auto limit = [&] { return tLimit * bvh_detail::kLimitSlack; };
-    if (setup.enter(nodes_[0], ray.tMin, limit()) == std::numeric_limits<float>::infinity()) return;
     bvh_detail::Pending stack[bvh_detail::kStackSize];
     int top = 0;
-    std::uint32_t current = 0;
+    std::uint32_t current = root_;
+    const BvhNode* nodes = nodes_.data();
     for (;;) {
-        const BvhNode& node = nodes_[current];
-        if (node.count == 0) {
-            const float cut = limit();
-            const float tFirst = setup.enter(nodes_[current + 1], ray.tMin, cut);
-            const float tSecond = setup.enter(nodes_[node.offset], ray.tMin, cut);
-            const bool first = tFirst != std::numeric_limits<float>::infinity();
-            const bool second = tSecond != std::numeric_limits<float>::infinity();
-            if (first && second) {
-                if (tFirst <= tSecond) {
-                    stack[top++] = {node.offset, tSecond};
-                    current = current + 1;
-                } else {
-                    stack[top++] = {current + 1, tFirst};
-                    current = node.offset;
+        if (!BvhChild::isLeaf(current)) {
+            const BvhNode& node = nodes[current];
+            simd::Float4 entry;
+            const int mask = setup.enter(node, simd::Float4(limit()), entry);
+            if (mask != 0) {
+                if ((mask & (mask - 1)) == 0) {
+                    current = node.children[simd::firstLane(mask)];
+                    continue;
                 }
-                continue;
-            }
-            if (first || second) {
-                current = first ? current + 1 : node.offset;
+                bvh_detail::Pending sorted[kBvhWidth];
+                const int n = bvh_detail::sortFarToNear(node, mask, entry, sorted);
+                for (int i = 0; i < n - 1; ++i) stack[top++] = sorted[i];
+                current = sorted[n - 1].child;
                 continue;
             }
         } else {
-            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) test(i);
+            test(BvhChild::firstSlot(current), BvhChild::count(current));
         }
         for (;;) {
             if (top == 0) return;
             const bvh_detail::Pending next = stack[--top];
             if (next.entry <= limit()) {
-                current = next.node;
+                current = next.child;
                 break;
             }
         }
     }
 }
 
+// Any hit ends the search, and most shadow rays reach their light: their every candidate box is
+// visited whatever the order, so children go in lane order, without sorting.
 template <typename Test>
 bool Bvh::any(const Ray& ray, Test test) const {
-    if (nodes_.empty()) return false;
+    if (root_ == kNoRoot) return false;
     const bvh_detail::RaySetup setup(ray);
-    const float tMax = ray.tMax * bvh_detail::kLimitSlack;
-    if (setup.enter(nodes_[0], ray.tMin, tMax) == std::numeric_limits<float>::infinity()) return false;
+    const simd::Float4 tMax(ray.tMax * bvh_detail::kLimitSlack);
     std::uint32_t stack[bvh_detail::kStackSize];
     int top = 0;
-    std::uint32_t current = 0;
+    std::uint32_t current = root_;
+    const BvhNode* nodes = nodes_.data();
     for (;;) {
-        const BvhNode& node = nodes_[current];
-        if (node.count == 0) {
-            const bool first = setup.enter(nodes_[current + 1], ray.tMin, tMax) != std::numeric_limits<float>::infinity();
-            const bool second = setup.enter(nodes_[node.offset], ray.tMin, tMax) != std::numeric_limits<float>::infinity();
-            if (first && second) stack[top++] = node.offset;
-            if (first || second) {
-                current = first ? current + 1 : node.offset;
+        if (!BvhChild::isLeaf(current)) {
+            const BvhNode& node = nodes[current];
+            simd::Float4 entry;
+            int mask = setup.enter(node, tMax, entry);
+            if (mask != 0) {
+                current = node.children[simd::firstLane(mask)];
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) stack[top++] = node.children[simd::firstLane(mask)];
                 continue;
             }
-        } else {
-            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i)
-                if (test(i)) return true;
+        } else if (test(BvhChild::firstSlot(current), BvhChild::count(current))) {
+            return true;
         }
         if (top == 0) return false;
         current = stack[--top];

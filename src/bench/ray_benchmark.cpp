@@ -4,8 +4,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <thread>
 
+#include "bench/height_field.h"
 #include "bench/timing.h"
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
@@ -22,8 +24,33 @@ using Clock = std::chrono::steady_clock;
 
 struct BenchScene {
     std::string name;
-    std::string file;
+    std::string file;  // a shipped scene, or empty for the generated height field
 };
+
+// The memory test's height field (src/bench/height_field.h), 2 * 708^2 = 1,002,528 triangles
+// (quick: 2 * 224^2 = 100,352), seen from above at an angle and lit from one side.
+Scene heightFieldScene(std::size_t side) {
+    Scene scene;
+    std::vector<Vec3> vertices;
+    vertices.reserve((side + 1) * (side + 1));
+    for (std::size_t row = 0; row <= side; ++row) {
+        for (std::size_t column = 0; column <= side; ++column) {
+            const float x = height_field::coordinate(column, side), z = height_field::coordinate(row, side);
+            vertices.emplace_back(x, height_field::height(x, z), z);
+        }
+    }
+    scene.triangles.reserve(2 * side * side);
+    height_field::forEachTriangle(side, [&](std::size_t a, std::size_t b, std::size_t c) {
+        scene.triangles.push_back({vertices[a], vertices[b], vertices[c], 0});
+    });
+    scene.camera.eye = Vec3(0.0f, 1.2f, 2.2f);
+    scene.camera.lookAt = Vec3(0.0f, -0.1f, 0.0f);
+    scene.camera.verticalFovDegrees = 50.0f;
+    PointLight light;
+    light.position = Vec3(-2.0f, 1.5f, 1.0f);
+    scene.lights.push_back(light);
+    return scene;
+}
 
 // Rays handed out in chunks from an atomic counter: the same dynamic scheme as the renderer.
 double timeParallel(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& work) {
@@ -122,32 +149,47 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
     std::vector<int> threadCounts{1};
     if (result.allThreads > 1) threadCounts.push_back(result.allThreads);
 
+    const std::size_t gridSide = quick ? 224 : 708;
+    const std::string gridName = quick ? "grid-100k" : "grid-1M";
     const std::vector<BenchScene> scenes{{"CornellBox-Original", "cornell-original.toml"},
                                          {"CornellBox-Sphere", "cornell-sphere.toml"},
                                          {"bunny", "bunny.toml"},
+                                         {"dragon", "dragon.toml"},
+                                         {gridName, ""},
                                          {"CornellBox-Mirror", "cornell-mirror.toml"}};
     // Throughputs of the render scene (not tabled), to estimate the render's traversal time.
     std::vector<RayBenchmarkRow> renderSceneRows;
     for (const BenchScene& benchScene : scenes) {
         const bool renderSceneOnly = benchScene.name == "CornellBox-Mirror";
-        const Scene scene = loadScene(directory / benchScene.file);
+        const Scene scene =
+            benchScene.file.empty() ? heightFieldScene(gridSide) : loadScene(directory / benchScene.file);
         // Triangles only: the comparison with Embree is on exactly the same primitives.
         const std::vector<Triangle>& triangles = scene.triangles;
         const double triangleCount = static_cast<double>(triangles.size());
 
-        std::vector<SceneGeometry> geometries;
-        for (const std::string& accel : accels) {
-            std::vector<double> buildRates;
-            for (int r = 0; r < result.repetitions; ++r) {
-                SceneGeometry geometry({}, {}, triangles, {}, accel == "bvh" ? Accelerator::Bvh : Accelerator::Embree);
-                buildRates.push_back(triangleCount / geometry.acceleratorStats().buildSeconds * 1e-6);
-                if (r + 1 == result.repetitions) geometries.push_back(std::move(geometry));
+        // Our build on 1 thread and on all, Embree's (on all its threads), interleaved.
+        struct Build {
+            std::string accel;
+            int threads;
+            std::vector<double> rates;
+        };
+        std::vector<Build> builds;
+        for (int threads : threadCounts) builds.push_back({"bvh", threads, {}});
+        if (result.embree) builds.push_back({"embree", result.allThreads, {}});
+        std::vector<std::optional<SceneGeometry>> built(accels.size());
+        for (int r = 0; r < result.repetitions; ++r) {
+            for (Build& build : builds) {
+                SceneGeometry geometry({}, {}, triangles, {}, build.accel == "bvh" ? Accelerator::Bvh : Accelerator::Embree,
+                                       {}, static_cast<unsigned>(build.threads));
+                build.rates.push_back(triangleCount / geometry.acceleratorStats().buildSeconds * 1e-6);
+                if (r + 1 == result.repetitions) built[build.accel == "bvh" ? 0 : 1] = std::move(geometry);
             }
-            // Our build runs on one thread; Embree's builder uses all of them.
-            if (!renderSceneOnly)
-                result.rows.push_back({benchScene.name, "build", accel, accel == "bvh" ? 1 : result.allThreads,
-                                       median(buildRates)});
         }
+        if (!renderSceneOnly)
+            for (const Build& build : builds)
+                result.rows.push_back({benchScene.name, "build", build.accel, build.threads, median(build.rates)});
+        std::vector<SceneGeometry> geometries;
+        for (std::optional<SceneGeometry>& geometry : built) geometries.push_back(std::move(*geometry));
 
         const Bounds box = triangleBox(triangles);
         const std::vector<Ray> primary = primaryRays(scene, result.primarySide);

@@ -10,7 +10,7 @@
 namespace lightpath {
 
 struct RayBenchmarkRow {
-    std::string scene;   // "CornellBox-Original", "CornellBox-Sphere", "bunny"
+    std::string scene;   // "CornellBox-Original", "CornellBox-Sphere", "bunny", "dragon", "grid-1M"
     std::string rays;    // primary, random, shadow, build
     std::string accel;   // bvh, embree
     int threads = 1;
@@ -39,7 +39,7 @@ struct RayBenchmarkResult {
     std::vector<std::string> notes;  // e.g. how many closest hits Embree and we disagree on
 };
 
-// `sceneDirectory` holds the shipped scenes (cornell-*.toml, bunny.toml). `log` receives one line
+// `sceneDirectory` holds the shipped scenes (cornell-*.toml, bunny.toml, dragon.toml). `log` receives one line
 // per finished measurement, so a long run shows it is alive.
 RayBenchmarkResult runRayBenchmark(const std::filesystem::path& sceneDirectory, bool quick,
                                    const std::function<void(const std::string&)>& log);

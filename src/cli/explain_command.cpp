@@ -23,36 +23,23 @@ struct ExplainCommand {
 };
 
 // Identical paths (same events, labels and things touched) are one row: their contributions'
-// count and sum. Per-contribution values stay in `values`, where per-term factors will join them.
+// count and sum, each contribution's value and the factors it is the product of.
 struct PathGroup {
     lpe::Path path;
     std::string expression;  // toExpressionString: pasted into --lpe, it matches this path
     std::vector<std::string> touched;
     lpe::OutputMask accepted = 0;
     std::vector<Rgb> values;
+    std::vector<std::vector<TermFactor>> factors;  // per contribution, per sample
     Rgb sum{0.0f};
 };
 
-// What an event touched, as a student reads it: the object's or light's name.
-std::string subjectName(const Scene& scene, const PathEvent& event) {
-    switch (event.subject) {
-        case Subject::None:
-            if (event.type == lpe::EventType::Background) return "background";
-            // Radiosity's intermediate bounces: a sum over every patch, so no one object.
-            if (event.type != lpe::EventType::Camera) return "every patch (unlabelled bounce)";
-            return "camera";
-        case Subject::Ambient: return "ambient";
-        case Subject::PointLight: {
-            const std::string& name = scene.lights[event.index].name;
-            return name.empty() ? "light #" + std::to_string(event.index) : name;
-        }
-        case Subject::Object: {
-            const std::string& name = scene.objects[event.index].name;
-            return name.empty() ? "object #" + std::to_string(event.index) + " (" + scene.labelOf(event.index) + ")" : name;
-        }
-    }
-    return {};
-}
+// Terms that added nothing, grouped by path and reason.
+struct RejectionGroup {
+    std::string expression;
+    std::string reason;
+    std::size_t count = 0;
+};
 
 // The recorded path as the LPE engine's Path, labelled as the automaton saw it.
 lpe::Path toLpePath(const Scene& scene, const PathRecord& record) {
@@ -99,6 +86,7 @@ std::vector<PathGroup> groupPaths(const Scene& scene, const std::vector<LoggedCo
         }
         PathGroup& g = groups[at->second];
         g.values.push_back(c.value);
+        g.factors.emplace_back(c.factors.begin(), c.factors.begin() + static_cast<std::ptrdiff_t>(c.factorCount));
         g.sum += c.value;
     }
     const auto luminance = [](const Rgb& v) { return 0.2126 * v.r + 0.7152 * v.g + 0.0722 * v.b; };
@@ -106,6 +94,35 @@ std::vector<PathGroup> groupPaths(const Scene& scene, const std::vector<LoggedCo
                      [&](const PathGroup& a, const PathGroup& b) { return luminance(a.sum) > luminance(b.sum); });
     return groups;
 }
+
+std::vector<RejectionGroup> groupRejections(const Scene& scene, const std::vector<Rejection>& rejections) {
+    std::vector<RejectionGroup> groups;
+    std::map<std::string, std::size_t> index;
+    for (const Rejection& r : rejections) {
+        const std::string expression = lpe::toExpressionString(toLpePath(scene, r.path));
+        const auto [at, added] = index.emplace(expression + "\n" + r.reason, groups.size());
+        if (added) groups.push_back({expression, r.reason, 0});
+        ++groups[at->second].count;
+    }
+    return groups;
+}
+
+std::string formatFactor(const TermFactor& f) {
+    char buffer[96];
+    if (f.value.r == f.value.g && f.value.g == f.value.b) std::snprintf(buffer, sizeof buffer, "%s %.4g", f.name, f.value.g);
+    else std::snprintf(buffer, sizeof buffer, "%s (%.4g %.4g %.4g)", f.name, f.value.r, f.value.g, f.value.b);
+    return buffer;
+}
+
+std::string jsonFactor(const TermFactor& f) {
+    char buffer[128];
+    if (f.value.r == f.value.g && f.value.g == f.value.b) std::snprintf(buffer, sizeof buffer, "%.9g", f.value.g);
+    else std::snprintf(buffer, sizeof buffer, "[%.9g, %.9g, %.9g]", f.value.r, f.value.g, f.value.b);
+    return jsonString(f.name) + ": " + buffer;
+}
+
+// At most this many contributions of a row show their factors in the text form.
+constexpr std::size_t kFactorRows = 3;
 
 std::vector<std::string> aovNames(const AovSet& aovs, lpe::OutputMask accepted) {
     std::vector<std::string> names;
@@ -134,7 +151,8 @@ std::vector<Rgb> layerSums(const AovSet& aovs, const std::vector<PathGroup>& gro
 }
 
 void printText(const ExplainCommand& command, const RenderOptions& options, const AovSet& aovs, int x, int y,
-               std::size_t contributions, const std::vector<PathGroup>& groups) {
+               std::size_t contributions, const std::vector<PathGroup>& groups,
+               const std::vector<RejectionGroup>& rejections) {
     std::size_t shown = 0, zero = 0;
     for (const PathGroup& g : groups) (isBlack(g.sum) ? zero : shown) += 1;
     if (command.all) shown += zero;
@@ -148,9 +166,21 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
                     ++row, g.expression.c_str(), lpe::toCompactString(g.path).c_str(), g.values.size(),
                     joined(g.touched, ", ").c_str(), formatRgb(g.sum).c_str(), g.values.size() > 1 ? "  (sum)" : "",
                     joined(aovNames(aovs, g.accepted), ", ").c_str());
+        for (std::size_t v = 0; v < std::min(g.factors.size(), kFactorRows); ++v) {
+            if (g.factors[v].empty()) continue;
+            std::vector<std::string> words;
+            for (const TermFactor& f : g.factors[v]) words.push_back(formatFactor(f));
+            std::printf("     factors: %s\n", joined(words, " x ").c_str());
+        }
+        if (g.factors.size() > kFactorRows) std::printf("     (factors of the first %zu of %zu samples shown)\n", kFactorRows, g.factors.size());
     }
     if (zero > 0 && !command.all)
         std::printf("\n(%zu path%s whose contributions sum to zero hidden; --all shows them)\n", zero, zero == 1 ? "" : "s");
+    if (!rejections.empty()) {
+        std::printf("\ndid not contribute\n");
+        for (const RejectionGroup& r : rejections)
+            std::printf("  %s  x%zu: %s\n", r.expression.c_str(), r.count, r.reason.c_str());
+    }
     const auto layers = aovs.layerNames();
     const std::vector<Rgb> sums = layerSums(aovs, groups);
     std::printf("\nsums\n");
@@ -162,7 +192,7 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
 
 // The schema is documented in docs/lpe.md ("explain --json").
 void printJson(const ExplainCommand& command, const RenderOptions& options, const AovSet& aovs, int x, int y,
-               const std::vector<PathGroup>& groups) {
+               const std::vector<PathGroup>& groups, const std::vector<RejectionGroup>& rejections) {
     std::ostringstream json;
     json << "{\n  \"schema\": \"lightpath-explain-1\",\n  \"scene\": " << jsonString(command.setup.scenePath)
          << ",\n  \"integrator\": " << jsonString(options.integrator) << ",\n  \"spp\": " << options.samplesPerPixel
@@ -197,10 +227,18 @@ void printJson(const ExplainCommand& command, const RenderOptions& options, cons
         const auto names = aovNames(aovs, g.accepted);
         for (std::size_t n = 0; n < names.size(); ++n) json << (n ? ", " : "") << jsonString(names[n]);
         json << "],\n     \"contributions\": [";
-        for (std::size_t v = 0; v < g.values.size(); ++v) json << (v ? ", " : "") << "{\"rgb\": " << jsonRgb(g.values[v]) << "}";
+        for (std::size_t v = 0; v < g.values.size(); ++v) {
+            json << (v ? ", " : "") << "{\"rgb\": " << jsonRgb(g.values[v]) << ", \"factors\": {";
+            for (std::size_t f = 0; f < g.factors[v].size(); ++f) json << (f ? ", " : "") << jsonFactor(g.factors[v][f]);
+            json << "}}";
+        }
         json << "]}";
         first = false;
     }
+    json << "\n  ],\n  \"rejected\": [";
+    for (std::size_t r = 0; r < rejections.size(); ++r)
+        json << (r ? "," : "") << "\n    {\"path\": " << jsonString(rejections[r].expression)
+             << ", \"reason\": " << jsonString(rejections[r].reason) << ", \"count\": " << rejections[r].count << "}";
     json << "\n  ],\n  \"hidden_zero_paths\": " << hidden << "\n}\n";
     std::cout << json.str();
 }
@@ -214,16 +252,18 @@ void run(const ExplainCommand& command) {
     const AovSet aovs = command.setup.buildAovSet(scene);
     const RenderOptions options = command.setup.renderOptions();
     std::vector<LoggedContribution> log;
+    std::vector<Rejection> rejections;
     try {
-        log = Renderer(scene, aovs, options).explainPixel(x, y);
+        log = Renderer(scene, aovs, options).explainPixel(x, y, &rejections);
     } catch (const std::invalid_argument& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
     }
     const std::vector<PathGroup> groups = groupPaths(scene, log);
+    const std::vector<RejectionGroup> rejected = groupRejections(scene, rejections);
     if (command.json) {
-        printJson(command, options, aovs, x, y, groups);
+        printJson(command, options, aovs, x, y, groups, rejected);
     } else {
-        printText(command, options, aovs, x, y, log.size(), groups);
+        printText(command, options, aovs, x, y, log.size(), groups, rejected);
     }
 }
 

@@ -13,12 +13,6 @@ int maxDimension(const Vec3& v) {
 
 Vec3 permute(const Vec3& v, int x, int y, int z) { return {v[x], v[y], v[z]}; }
 
-// Higham's gamma_n = n u / (1 - n u), u = 2^-24: the relative error bound of n float operations.
-constexpr float gamma(int n) {
-    constexpr float u = 0x1p-24f;
-    return static_cast<float>(n) * u / (1.0f - static_cast<float>(n) * u);
-}
-
 }  // namespace
 
 bool sphereRoots(const Ray& ray, const Sphere& sphere, float& t0, float& t1) {
@@ -141,12 +135,12 @@ float intersectTriangle(const Ray& ray, const WatertightRay& sheared, const Tria
     const float maxZ = std::max({std::fabs(az), std::fabs(bz), std::fabs(cz)});
     const float maxX = std::max({std::fabs(ax), std::fabs(bx), std::fabs(cx)});
     const float maxY = std::max({std::fabs(ay), std::fabs(by), std::fabs(cy)});
-    const float deltaZ = gamma(3) * maxZ;
-    const float deltaX = gamma(5) * (maxX + maxZ);
-    const float deltaY = gamma(5) * (maxY + maxZ);
-    const float deltaE = 2.0f * (gamma(2) * maxX * maxY + deltaY * maxX + deltaX * maxY);
+    const float deltaZ = roundingGamma(3) * maxZ;
+    const float deltaX = roundingGamma(5) * (maxX + maxZ);
+    const float deltaY = roundingGamma(5) * (maxY + maxZ);
+    const float deltaE = 2.0f * (roundingGamma(2) * maxX * maxY + deltaY * maxX + deltaX * maxY);
     const float maxE = std::max({std::fabs(u), std::fabs(v), std::fabs(w)});
-    const float deltaT = 3.0f * (gamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) / std::fabs(det);
+    const float deltaT = 3.0f * (roundingGamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) / std::fabs(det);
     if (t <= deltaT) return kNoHit;
     if (barycentrics != nullptr) *barycentrics = Vec3{u, v, w} / det;
     return t;

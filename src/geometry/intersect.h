@@ -9,6 +9,12 @@ namespace lightpath {
 
 inline constexpr float kNoHit = -1.0f;
 
+// Higham's gamma_n = n u / (1 - n u), u = 2^-24: the relative error bound of n float operations.
+constexpr float roundingGamma(int n) {
+    constexpr float u = 0x1p-24f;
+    return static_cast<float>(n) * u / (1.0f - static_cast<float>(n) * u);
+}
+
 // Numerically careful ray/sphere: the discriminant from r^2 - |f - (f.d/d.d)d|^2 instead of
 // b^2 - 4ac, and the stable pair of roots q = -(b + sign(b) sqrt(disc)), t0 = q/a, t1 = c/q
 // (Haines et al., "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems 2019).

@@ -1,5 +1,6 @@
 #include "geometry/scene_geometry.h"
 
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -47,7 +48,7 @@ bool embreeAvailable() {
 
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
-                             std::vector<TriangleNormals> vertexNormals)
+                             std::vector<TriangleNormals> vertexNormals, unsigned buildThreads)
     : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
       vertexNormals_(std::move(vertexNormals)), numerics_(numerics), accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
@@ -64,11 +65,15 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         for (std::uint32_t i = 0; i < triangles_.size(); ++i)
             primitives.push_back({triangleBounds(triangles_[i]), firstTriangle + i});
     }
-    bvh_ = Bvh(std::move(primitives));
-    slotTriangles_.resize(bvh_.primitiveIds().size());
-    for (std::size_t slot = 0; slot < slotTriangles_.size(); ++slot) {
-        const std::uint32_t id = bvh_.primitiveIds()[slot];
-        if (id >= firstTriangle) slotTriangles_[slot] = triangles_[id - firstTriangle];
+    bvh_ = Bvh(std::move(primitives), buildThreads);
+    if (accelerator_ == Accelerator::Bvh) {
+        const auto ids = bvh_.slotIds();
+        leafTriangles_.resize(ids.size() / kBvhWidth);
+        for (std::size_t slot = 0; slot < ids.size(); ++slot) {
+            if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
+                leafTriangles_[slot / kBvhWidth].set(static_cast<int>(slot % kBvhWidth),
+                                                     triangles_[ids[slot] - firstTriangle]);
+        }
     }
 #ifdef LIGHTPATH_HAS_EMBREE
     if (accelerator_ == Accelerator::Embree && !triangles_.empty())
@@ -106,12 +111,42 @@ std::uint32_t SceneGeometry::ignoredTriangle(const Ray& ray) const {
                : kNoPrimitive;
 }
 
-float SceneGeometry::intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const {
-    const std::uint32_t id = bvh_.primitiveIds()[slot];
-    if (id < spheres_.size() || id == ray.ignoredPrimitive) return intersectPrimitive(ray, id);
-    const Triangle& t = slotTriangles_[slot];
-    return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, sheared, t, ray.tMin)
-                                                          : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
+template <typename Keep>
+void SceneGeometry::intersectLeaf(const Ray& ray, const PackedRay& packed, std::uint32_t firstSlot,
+                                  std::uint32_t count, Keep keep) const {
+    const std::uint32_t* ids = bvh_.slotIds().data() + firstSlot;
+    int triangleLanes = (1 << count) - 1;
+    if (!spheres_.empty() || leafTriangles_.empty()) {
+        // Spheres (and with Embree, only spheres) share the BVH: test them one by one.
+        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+        for (std::uint32_t lane = 0; lane < count; ++lane) {
+            if (ids[lane] >= firstTriangle && !leafTriangles_.empty()) continue;
+            triangleLanes &= ~(1 << lane);
+            keep(intersectPrimitive(ray, ids[lane]), ids[lane]);
+        }
+    }
+    if (ray.ignoredPrimitive != kNoPrimitive) {
+        for (std::uint32_t lane = 0; lane < count; ++lane)
+            if (ids[lane] == ray.ignoredPrimitive) triangleLanes &= ~(1 << lane);
+    }
+    if (triangleLanes == 0) return;
+    const TrianglePack& pack = leafTriangles_[firstSlot / kBvhWidth];
+    if (numerics_.triangle == TriangleTest::Watertight) {
+        const PackHits found = watertightHits(pack, triangleLanes, packed, ray.tMin, ray.tMax);
+        for (int lanes = found.hits; lanes != 0; lanes &= lanes - 1) {
+            const int lane = simd::firstLane(lanes);
+            keep(found.t[lane], ids[lane]);
+        }
+        for (int lanes = found.onEdge; lanes != 0; lanes &= lanes - 1) {
+            const int lane = simd::firstLane(lanes);
+            keep(intersectTriangle(ray, packed.sheared, pack.triangle(lane), ray.tMin), ids[lane]);
+        }
+    } else {
+        for (int lanes = triangleLanes; lanes != 0; lanes &= lanes - 1) {
+            const int lane = simd::firstLane(lanes);
+            keep(intersectTriangleMollerTrumbore(ray, pack.triangle(lane), ray.tMin), ids[lane]);
+        }
+    }
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
@@ -131,12 +166,14 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
         if (t == kNoHit) return;
         if (t < best.t || (t == best.t && id < best.primitive)) {
             best = {t, id};
-            probe.tMax = std::nextafter(t, std::numeric_limits<float>::infinity());
+            // The next float up: for a positive t, its bit pattern plus one.
+            probe.tMax = t > 0.0f ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u)
+                                  : std::nextafter(t, std::numeric_limits<float>::infinity());
         }
     };
-    const WatertightRay sheared(ray.direction);
+    const PackedRay packed(ray);
     bvh_.closest(ray, best.t,
-                 [&](std::uint32_t slot) { keep(intersectSlot(probe, sheared, slot), bvh_.primitiveIds()[slot]); });
+                 [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
     const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
     for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
@@ -178,8 +215,12 @@ bool SceneGeometry::occluded(const Ray& ray) const {
         if (embree_->occluded(ray, ignoredTriangle(ray))) return true;
     }
 #endif
-    const WatertightRay sheared(ray.direction);
-    return bvh_.any(ray, [&](std::uint32_t slot) { return intersectSlot(ray, sheared, slot) != kNoHit; });
+    const PackedRay packed(ray);
+    return bvh_.any(ray, [&](std::uint32_t first, std::uint32_t count) {
+        bool blocked = false;
+        intersectLeaf(ray, packed, first, count, [&](float t, std::uint32_t) { blocked = blocked || t != kNoHit; });
+        return blocked;
+    });
 }
 
 bool SceneGeometry::occludedBruteForce(const Ray& ray) const {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "accel/triangle_pack.h"
 #include "geometry/intersect.h"
 #include "geometry/numerics.h"
 #include "geometry/shapes.h"
@@ -44,8 +45,9 @@ class SceneGeometry {
 public:
     SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes, std::vector<Triangle> triangles,
                   NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
-                  std::vector<TriangleNormals> vertexNormals = {});
+                  std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0);
     // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
+    // buildThreads: how many threads build our BVH (0: all); the tree is the same for any count.
     ~SceneGeometry();
     SceneGeometry(SceneGeometry&&) noexcept = default;
     SceneGeometry& operator=(SceneGeometry&&) noexcept = default;
@@ -90,9 +92,12 @@ private:
     // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit.
     float intersectPrimitive(const Ray& ray, std::uint32_t id) const;
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id) const;
-    // intersectPrimitive for the primitive in BVH slot `slot`, reading a triangle from its
-    // leaf-ordered copy: the same test on the same numbers, from adjacent memory.
-    float intersectSlot(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot) const;
+    // Calls keep(t, id) for every primitive of the BVH leaf at `firstSlot` that `ray` hits, t as
+    // intersectPrimitive gives it; its triangles are read from their leaf-ordered copy and
+    // filtered four at once first: the same test on the same numbers, from adjacent memory.
+    template <typename Keep>
+    void intersectLeaf(const Ray& ray, const PackedRay& packed, std::uint32_t firstSlot, std::uint32_t count,
+                       Keep keep) const;
     // The ray's ignored primitive as an index among the triangles (what Embree knows), or kNoPrimitive.
     std::uint32_t ignoredTriangle(const Ray& ray) const;
 
@@ -103,7 +108,7 @@ private:
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // spheres and triangles (Bvh), spheres only (Embree)
-    std::vector<Triangle> slotTriangles_;  // the triangle in each BVH slot (unused for spheres)
+    std::vector<TrianglePack> leafTriangles_;  // the triangles of each BVH leaf block (Bvh only)
     std::shared_ptr<const EmbreeScene> embree_;
     AcceleratorStats stats_;
 };

@@ -3,9 +3,11 @@
 // expressions accepted its light path, and the path itself. The sink adds the value to the beauty
 // and to each accepting AOV, or to `rest` when none accepted (docs/design.md, "Recording paths").
 // Light tracing's contributions to other pixels go to the splat film, classified the same way.
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "film/splat_film.h"
@@ -15,21 +17,41 @@
 
 namespace lightpath {
 
+// One named factor of a contribution, for `explain`: kd, N.L, I, attenuation, a pdf, a MIS weight.
+struct TermFactor {
+    const char* name = "";
+    Rgb value{0.0f};
+};
+inline constexpr std::size_t kMaxTermFactors = 6;
+
 struct LoggedContribution {
     Rgb value{0.0f};
     lpe::OutputMask accepted = 0;
     PathRecord path;
     bool splatted = false;  // light tracing's: it landed on this pixel from the light's side
+    std::array<TermFactor, kMaxTermFactors> factors{};
+    std::size_t factorCount = 0;
+};
+
+// A term that added nothing, the path it would have had, and why (`explain`).
+struct Rejection {
+    PathRecord path;
+    std::string reason;
 };
 
 class ContributionSink {
 public:
     // `layers` holds one accumulator per image layer: [0] beauty, [1..n] the n outputs, [n+1] rest.
     explicit ContributionSink(std::span<Rgb> layers, SplatFilm* splats = nullptr,
-                              std::vector<LoggedContribution>* log = nullptr)
-        : layers_(layers), splats_(splats), log_(log) {}
+                              std::vector<LoggedContribution>* log = nullptr,
+                              std::vector<Rejection>* rejections = nullptr)
+        : layers_(layers), splats_(splats), log_(log), rejections_(rejections) {}
 
-    void add(const Rgb& value, lpe::OutputMask accepted, const PathRecord& path) {
+    // True while `explain` logs: integrators then also report factors and rejections.
+    bool explaining() const { return log_ != nullptr; }
+
+    void add(const Rgb& value, lpe::OutputMask accepted, const PathRecord& path,
+             std::span<const TermFactor> factors = {}) {
         layers_[0] += value;
         if (accepted == 0) {
             layers_.back() += value;
@@ -37,7 +59,14 @@ public:
             for (lpe::OutputMask m = accepted; m != 0; m &= m - 1)
                 layers_[1 + static_cast<std::size_t>(std::countr_zero(m))] += value;
         }
-        if (log_ != nullptr) log_->push_back({value, accepted, path});
+        if (log_ == nullptr) return;
+        LoggedContribution& logged = log_->emplace_back(LoggedContribution{value, accepted, path});
+        logged.factorCount = std::min(factors.size(), kMaxTermFactors);
+        std::copy_n(factors.begin(), logged.factorCount, logged.factors.begin());
+    }
+
+    void reject(const PathRecord& path, std::string reason) {
+        if (rejections_ != nullptr) rejections_->push_back({path, std::move(reason)});
     }
 
     // A contribution to pixel (x, y) of the whole image, wherever the current sample is.
@@ -66,6 +95,7 @@ private:
     std::span<Rgb> layers_;
     SplatFilm* splats_;
     std::vector<LoggedContribution>* log_;
+    std::vector<Rejection>* rejections_;
     int logX_ = -1, logY_ = -1;
 };
 

@@ -1,5 +1,8 @@
 #include "integrators/direct_light.h"
 
+#include <cmath>
+#include <cstdio>
+
 #include "geometry/spawn_ray.h"
 #include "integrators/integrator.h"
 
@@ -8,6 +11,54 @@ namespace {
 
 // Where the background's event is drawn: a point this far along the escaping ray.
 constexpr float kBackgroundDistance = 100.0f;
+
+std::string formatted(const char* format, double a, double b = 0.0) {
+    char text[160];
+    std::snprintf(text, sizeof text, format, a, b);
+    return text;
+}
+
+// `explain`: the factors of one term. Under a point light and without MIS they are Szymczak's
+// (kd, N.L, I, attenuation; ks, (H.N)^n, I, attenuation), whose product is the value; otherwise
+// the Monte Carlo estimate's (f |cos|, incident light over its density, the two densities, the
+// MIS weight).
+std::size_t termFactors(const ShadingPoint& p, Lobe lobe, const LightSample& sample, const Light& light,
+                        const Rgb& incident, float lightPdf, float weight, DirectLightWeighting weighting,
+                        const Rgb& throughput, std::array<TermFactor, kMaxTermFactors>& factors) {
+    std::size_t n = 0;
+    const float cosTheta = glm::dot(p.normal, sample.wi);
+    if (light.isDelta() && weighting == DirectLightWeighting::Alone) {
+        const float falloff = light.falloff(sample.distance);
+        if (lobe == Lobe::Diffuse) {
+            factors[n++] = {"kd", p.material.kd};
+            factors[n++] = {"N.L", Rgb{cosTheta}};
+        } else {
+            const Vec3 halfway = glm::normalize(p.wo + sample.wi);
+            factors[n++] = {"ks", p.material.ks};
+            factors[n++] = {"(H.N)^n", Rgb{std::pow(std::max(0.0f, glm::dot(p.normal, halfway)), p.material.n)}};
+        }
+        factors[n++] = {"I", incident / (kPi * falloff)};
+        factors[n++] = {"attenuation", Rgb{falloff}};
+    } else {
+        factors[n++] = {"f cos", p.bsdf.eval(lobe, p.wo, sample.wi)};
+        factors[n++] = {"Li/pdf", incident};
+        if (weighting == DirectLightWeighting::MultipleImportance) {
+            factors[n++] = {"light pdf", Rgb{lightPdf}};
+            factors[n++] = {"bsdf pdf", Rgb{p.bsdf.pdf(lobe, p.wo, sample.wi)}};
+            factors[n++] = {"mis weight", Rgb{weight}};
+        }
+    }
+    if (throughput != Rgb{1.0f} && n < kMaxTermFactors) factors[n++] = {"throughput", throughput};
+    return n;
+}
+
+// `explain`: why a light sample added nothing through either lobe.
+std::string zeroReason(const ShadingPoint& p, const LightSample& sample, bool litSide) {
+    if (!litSide) return formatted("the light is behind the surface (N.L = %.3f)", glm::dot(p.normal, sample.wi));
+    if (isBlack(sample.weight)) return "the light sends nothing this way (a one-sided emitter seen from behind, or dark)";
+    if (!p.terms.diffuse && !p.terms.highlight) return "the term is zero: kd = 0 and ks = 0";
+    return "the term is zero here";
+}
 
 // One light sample through both smooth lobes, with one shadow ray.
 void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSample& sample, float choiceProbability,
@@ -18,13 +69,14 @@ void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSam
     // The lecture's own-primitive test: p is in the shadow of its own surface iff N.(b - p) <= 0.
     const float cosTheta = glm::dot(p.normal, sample.wi);
     const bool litSide = cosTheta > 0.0f && sample.distance > 0.0f;
-    if (!litSide && skip) {
-        ++counters.shadowBehind;
-        return;
-    }
     PathEvent lightEvent = light.event();
     lightEvent.position = sample.point;
     const PathEvent events[2] = {p.eventOf(Lobe::Diffuse), p.eventOf(Lobe::Highlight)};
+    if (!litSide && skip) {
+        ++counters.shadowBehind;
+        if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, sample, litSide));
+        return;
+    }
     const bool wanted[2] = {path.wants(events[0], lightEvent), path.wants(events[1], lightEvent)};
     if (!wanted[0] && !wanted[1]) {
         ++counters.shadowDead;
@@ -34,6 +86,7 @@ void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSam
     const Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
     const float lightPdf = sample.pdf * choiceProbability;
     Rgb value[2] = {Rgb{0.0f}, Rgb{0.0f}};
+    float weights[2] = {1.0f, 1.0f};
     for (int l = 0; l < 2; ++l) {
         const Lobe lobe = kSmoothLobes[l];
         const bool present = lobe == Lobe::Diffuse ? p.terms.diffuse : p.terms.highlight;
@@ -42,20 +95,40 @@ void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSam
             continue;
         }
         if (lobe == Lobe::Highlight) ++counters.highlightEvaluated;
-        float weight = 1.0f;
         if (weighting == DirectLightWeighting::MultipleImportance && lightPdf > 0.0f)
-            weight = powerHeuristic(lightPdf, p.bsdf.pdf(lobe, p.wo, sample.wi));
-        value[l] = throughput * p.bsdf.eval(lobe, p.wo, sample.wi) * incident * weight;
+            weights[l] = powerHeuristic(lightPdf, p.bsdf.pdf(lobe, p.wo, sample.wi));
+        value[l] = throughput * p.bsdf.eval(lobe, p.wo, sample.wi) * incident * weights[l];
     }
     if (skip && isBlack(value[0]) && isBlack(value[1])) {
         ++counters.shadowZero;
+        if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, sample, litSide));
         return;
     }
 
     ++counters.shadow;
-    if (ctx.geometry.occluded(spawnShadowRay(p.hit, sample.point, ctx.geometry.numerics()))) return;
-    for (int l = 0; l < 2; ++l)
-        if (wanted[l] && !(skip && isBlack(value[l]))) path.emit(events[l], lightEvent, value[l]);
+    const Ray shadowRay = spawnShadowRay(p.hit, sample.point, ctx.geometry.numerics());
+    if (ctx.geometry.occluded(shadowRay)) {
+        if (path.explaining()) {
+            const auto blocker = ctx.geometry.intersect(shadowRay);
+            const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
+                                    blocker ? blocker->object : 0};
+            path.reject(events[0], lightEvent,
+                        "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
+                            (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
+                            formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
+        }
+        return;
+    }
+    for (int l = 0; l < 2; ++l) {
+        if (!wanted[l] || (skip && isBlack(value[l]))) continue;
+        std::array<TermFactor, kMaxTermFactors> factors;
+        const std::size_t count = path.explaining() ? termFactors(p, kSmoothLobes[l], sample, light, incident, lightPdf,
+                                                                  weights[l], weighting, throughput, factors)
+                                                    : 0;
+        path.emit(events[l], lightEvent, value[l], std::span(factors.data(), count));
+    }
+    if (path.explaining() && wanted[1] && !p.terms.highlight && p.terms.diffuse)
+        path.reject(events[1], lightEvent, "the highlight term is zero: ks = 0");
 }
 
 }  // namespace
@@ -84,7 +157,9 @@ void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& pat
     const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
     const PathEvent diffuse = point.eventOf(Lobe::Diffuse);
     if (!path.wants(diffuse, ambient)) return;
-    path.emit(diffuse, ambient, throughput * point.material.ka * ctx.scene.ambient);
+    const TermFactor factors[] = {{"ka", point.material.ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
+    path.emit(diffuse, ambient, throughput * point.material.ka * ctx.scene.ambient,
+              std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
 void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
@@ -103,7 +178,8 @@ void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, f
     if (isBlack(emitted)) return;
     PathEvent event = light->event();
     event.position = hit.point;
-    path.emit(event, throughput * emitted * weight);
+    const TermFactor factors[] = {{"Le", emitted}, {"mis weight", Rgb{weight}}, {"throughput", throughput}};
+    path.emit(event, throughput * emitted * weight, std::span(factors, 3));
 }
 
 void addBackground(const Ray& ray, const Rgb& throughput, PathState& path) {

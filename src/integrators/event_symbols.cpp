@@ -20,4 +20,20 @@ std::vector<std::string> sceneLabels(const Scene& scene) {
     return labels;
 }
 
+std::string subjectName(const Scene& scene, const PathEvent& event) {
+    switch (event.subject) {
+        case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
+        case Subject::Ambient: return kAmbientLabel;
+        case Subject::PointLight: {
+            const std::string& name = scene.lights[event.index].name;
+            return name.empty() ? "light #" + std::to_string(event.index) : name;
+        }
+        case Subject::Object: {
+            const std::string& name = scene.objects[event.index].name;
+            return name.empty() ? "object #" + std::to_string(event.index) + " (" + scene.labelOf(event.index) + ")" : name;
+        }
+    }
+    return {};
+}
+
 }  // namespace lightpath

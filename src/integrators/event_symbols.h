@@ -43,4 +43,8 @@ inline constexpr const char* kAmbientLabel = "ambient";
 // object's label (its name, else its material's; area lights are objects). Sorted, no repeats.
 std::vector<std::string> sceneLabels(const Scene& scene);
 
+// What an event touched, as a student reads it: the object's or light's name ("camera",
+// "background", "ambient" for those).
+std::string subjectName(const Scene& scene, const PathEvent& event);
+
 }  // namespace lightpath

@@ -39,20 +39,29 @@ bool PathState::finite(const Rgb& value) {
     return false;
 }
 
-void PathState::emit(const PathEvent& light, const Rgb& value) {
+void PathState::emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors) {
     if (!finite(value)) return;
     const lpe::OutputMask accepted = acceptsAfter(state(), light);
     events_.push(light);
-    sink_.add(value, accepted, events_);
+    sink_.add(value, accepted, events_, factors);
     events_.pop();
 }
 
-void PathState::emit(const PathEvent& surface, const PathEvent& light, const Rgb& value) {
+void PathState::emit(const PathEvent& surface, const PathEvent& light, const Rgb& value,
+                     std::span<const TermFactor> factors) {
     if (!finite(value)) return;
     const lpe::OutputMask accepted = acceptsAfter(step(state(), surface), light);
     events_.push(surface);
     events_.push(light);
-    sink_.add(value, accepted, events_);
+    sink_.add(value, accepted, events_, factors);
+    events_.pop();
+    events_.pop();
+}
+
+void PathState::reject(const PathEvent& surface, const PathEvent& light, std::string reason) {
+    events_.push(surface);
+    events_.push(light);
+    sink_.reject(events_, std::move(reason));
     events_.pop();
     events_.pop();
 }

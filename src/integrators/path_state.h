@@ -5,6 +5,8 @@
 // emit() classifies a finished path and hands it to the sink. It also carries what a worker needs
 // per path: its counters and its current sample's random numbers.
 #include <array>
+#include <span>
+#include <string>
 
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
@@ -39,8 +41,12 @@ public:
     }
     // Ends the path in `light` (after `surface`) with radiance `value`. Non-finite values are
     // counted and dropped, never stored.
-    void emit(const PathEvent& light, const Rgb& value);
-    void emit(const PathEvent& surface, const PathEvent& light, const Rgb& value);
+    void emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors = {});
+    void emit(const PathEvent& surface, const PathEvent& light, const Rgb& value,
+              std::span<const TermFactor> factors = {});
+    // `explain` only: the term through `surface` from `light` added nothing, for `reason`.
+    bool explaining() const { return sink_.explaining(); }
+    void reject(const PathEvent& surface, const PathEvent& light, std::string reason);
     // The same for light tracing: the finished path's value goes to pixel (x, y) of the image.
     void splat(int x, int y, const PathEvent& light, const Rgb& value);
 

@@ -180,14 +180,14 @@ RenderResult Renderer::render() const {
     return {std::move(film), stats, cancelled()};
 }
 
-std::vector<LoggedContribution> Renderer::explainPixel(int x, int y) const {
+std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector<Rejection>* rejections) const {
     if (x < 0 || y < 0 || x >= camera_.width() || y >= camera_.height())
         throw std::invalid_argument("pixel " + std::to_string(x) + "," + std::to_string(y) +
                                     " is outside the " + std::to_string(camera_.width()) + "x" +
                                     std::to_string(camera_.height()) + " image");
     std::vector<Rgb> layers(aovs_.layerCount());
     std::vector<LoggedContribution> log;
-    ContributionSink sink(layers, nullptr, &log);
+    ContributionSink sink(layers, nullptr, &log, rejections);
     RayCounters counters;
     PathState path(context_, sink, counters);
     renderPixel(x, y, layers, path);

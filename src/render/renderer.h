@@ -73,7 +73,8 @@ public:
     // The layers render() produces, in order.
     std::vector<std::string> layerNames() const;
     // Every contribution to pixel (x, y), in the order the integrator produced them.
-    std::vector<LoggedContribution> explainPixel(int x, int y) const;
+    // With `rejections`, also the terms that added nothing there, and why.
+    std::vector<LoggedContribution> explainPixel(int x, int y, std::vector<Rejection>* rejections = nullptr) const;
 
 private:
     // Samples one pixel into `layers` (their mean); returns the number of samples taken.

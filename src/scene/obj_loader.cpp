@@ -15,23 +15,41 @@ namespace {
 
 Rgb rgb(const float v[3]) { return {v[0], v[1], v[2]}; }
 
-// tinyobjloader reports a missing material library only as a warning; a scene that names one
-// must have it, so the warning becomes an error that names the file.
-void refuseMissingMaterialLibrary(const std::filesystem::path& file, const std::string& warnings) {
+// tinyobjloader reports a missing material library and a `usemtl` it cannot resolve only in its
+// warning text: "Material file [ NAME ] not found in a path : DIR" and
+// "material [ 'NAME' ] not found in .mtl". Each is read back from there.
+void readMaterialWarnings(const std::filesystem::path& file, const std::string& warnings, ObjMesh& mesh) {
     std::istringstream lines(warnings);
-    for (std::string line; std::getline(lines, line);) {
-        const std::string prefix = "Material file [ ";
-        const auto begin = line.find(prefix);
-        if (begin == std::string::npos) continue;
-        const auto nameBegin = begin + prefix.size();
-        const auto nameEnd = line.find(" ]", nameBegin);
-        const std::string library = line.substr(nameBegin, nameEnd - nameBegin);
-        throw SceneError(file.string() + ": cannot open material library \"" +
-                         (file.parent_path() / library).string() + "\" named by its mtllib line");
+    const auto between = [](const std::string& line, const std::string& open, const std::string& close,
+                            std::string& inside) {
+        const auto begin = line.find(open);
+        if (begin == std::string::npos) return false;
+        const auto end = line.find(close, begin + open.size());
+        if (end == std::string::npos) return false;
+        inside = line.substr(begin + open.size(), end - begin - open.size());
+        return true;
+    };
+    for (std::string line, name; std::getline(lines, line);) {
+        if (between(line, "Material file [ ", " ]", name)) {
+            const std::string path = (file.parent_path() / name).string();
+            if (std::find(mesh.missingLibraries.begin(), mesh.missingLibraries.end(), path) == mesh.missingLibraries.end())
+                mesh.missingLibraries.push_back(path);
+        } else if (between(line, "material [ '", "' ] not found", name)) {
+            if (std::find(mesh.unknownMaterials.begin(), mesh.unknownMaterials.end(), name) == mesh.unknownMaterials.end())
+                mesh.unknownMaterials.push_back(name);
+        }
     }
 }
 
 }  // namespace
+
+PhongMaterial defaultMeshMaterial() {
+    PhongMaterial grey;
+    grey.name = "obj-default-grey";
+    grey.ka = Rgb(0.5f);
+    grey.kd = Rgb(0.5f);
+    return grey;
+}
 
 PhongMaterial phongFromMtl(const std::string& name, const float ambient[3], const float diffuse[3],
                            const float specular[3], const float transmittance[3], const float emission[3],
@@ -188,14 +206,17 @@ ObjMesh loadObj(const std::filesystem::path& file) {
     config.mtl_search_path = file.parent_path().string();
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(file.string(), config)) failToRead(file, reader);
-    refuseMissingMaterialLibrary(file, reader.Warning());
-    return meshFrom(reader, file);
+    ObjMesh mesh = meshFrom(reader, file);
+    readMaterialWarnings(file, reader.Warning(), mesh);
+    return mesh;
 }
 
 ObjMesh loadObjFromText(const std::string& objText, const std::string& mtlText, const std::filesystem::path& file) {
     tinyobj::ObjReader reader;
     if (!reader.ParseFromString(objText, mtlText, readerConfig())) failToRead(file, reader);
-    return meshFrom(reader, file);
+    ObjMesh mesh = meshFrom(reader, file);
+    readMaterialWarnings(file, reader.Warning(), mesh);
+    return mesh;
 }
 
 }  // namespace lightpath

@@ -20,9 +20,18 @@ struct ObjMesh {
     // Empty when the file has no normals, else one per triangle (zero for faces without `vn`).
     std::vector<TriangleNormals> normals;
     std::size_t degenerateDropped = 0;  // faces without area: they have no normal to shade with
+    // Material libraries named by `mtllib` lines that could not be opened (paths as looked for),
+    // and `usemtl` names that no library read defines. Faces of either have no MTL material
+    // (kNoMeshMaterial): the scene loader warns and gives them the scene's material or a grey.
+    std::vector<std::string> missingLibraries;
+    std::vector<std::string> unknownMaterials;
 };
 
-// Throws SceneError naming the OBJ or MTL file that is missing or broken.
+// What faces without an MTL material get when the scene gives the mesh no `material`.
+PhongMaterial defaultMeshMaterial();
+
+// Throws SceneError naming the OBJ file, or an MTL file that is broken, when they cannot be read.
+// A missing MTL file is not an error (ObjMesh::missingLibraries).
 ObjMesh loadObj(const std::filesystem::path& file);
 // The same from memory (for fuzzing and tests): `mtlText` answers every mtllib line; `file` only
 // names the mesh in errors.

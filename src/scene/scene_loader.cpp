@@ -319,6 +319,19 @@ void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Sc
     std::optional<std::uint32_t> override;
     if (auto material = table.find("material")) override = findMaterial(*material, scene.materials);
     const MeshPlacement placement = readPlacement(table);
+    // A missing material library is only a warning (most tools go on); a face whose `usemtl`
+    // names a material no library defines is an error only when the scene gives no `material`.
+    for (const std::string& library : mesh.missingLibraries) {
+        scene.warnings.push_back(fileValue.located(
+            file.string() + ": cannot open material library \"" + library + "\" named by its mtllib line; " +
+            (override ? "the mesh's `material` is used" : "faces without a known material are grey")));
+    }
+    if (!override && !mesh.unknownMaterials.empty()) {
+        fileValue.fail(file.string() + ": usemtl \"" + mesh.unknownMaterials.front() +
+                       "\" names no material of its material libraries" +
+                       (mesh.missingLibraries.empty() ? "" : " (\"" + mesh.missingLibraries.front() + "\" is missing)") +
+                       "; give the mesh a `material`");
+    }
 
     // Scene object of each MTL material index, created on first use, in order of first use.
     std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
@@ -331,7 +344,7 @@ void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Sc
         if (override) {
             object.material = *override;
         } else if (mtlIndex == kNoMeshMaterial) {
-            fileValue.fail(file.string() + ": has faces without a material (no usemtl); give the mesh a `material`");
+            object.material = sceneMaterialFor(defaultMeshMaterial(), scene);
         } else {
             const PhongMaterial& mtl = mesh.materials[mtlIndex];
             if (!isValidName(mtl.name))

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "accel/bvh.h"
@@ -76,6 +77,33 @@ TEST_CASE("BVH = brute force on the bunny") {
     expectSameAnswers(brute, bvh, test::adversarialRays(bunny, 11, 150), "bunny, adversarial rays");
 }
 
+TEST_CASE("BVH = brute force on scenes of 1 to 12 primitives (a root that is a leaf, part-filled nodes)") {
+    // The soup's first triangles are degenerate (flat in two axes) and its second shares their
+    // edge: start after them, so that there is something to hit.
+    const Soup full = test::randomSoup(21, 14, 2);
+    for (std::size_t n = 1; n <= 12; ++n) {
+        // The first n of the triangles and then of the spheres.
+        Soup soup;
+        const std::size_t triangles = std::min<std::size_t>(n, 10);
+        soup.triangles.assign(full.triangles.begin() + 2, full.triangles.begin() + 2 + static_cast<std::ptrdiff_t>(triangles));
+        soup.spheres.assign(full.spheres.begin(), full.spheres.begin() + static_cast<std::ptrdiff_t>(n - triangles));
+        const SceneGeometry brute = geometryOf(soup, Accelerator::BruteForce);
+        const SceneGeometry bvh = geometryOf(soup, Accelerator::Bvh);
+        // Aimed at the primitives, so that most rays hit something even in a tiny scene.
+        Pcg32 rng(n, 3);
+        std::vector<Ray> rays;
+        for (int i = 0; i < 400; ++i) {
+            const Triangle& t = soup.triangles[rng.nextUint() % soup.triangles.size()];
+            Ray ray;
+            ray.origin = test::uniformIn(rng, Vec3(-12.0f), Vec3(12.0f));
+            const Vec3 target = i % 4 == 0 && !soup.spheres.empty() ? soup.spheres[0].center : (t.a + t.b + t.c) / 3.0f;
+            ray.direction = glm::normalize(target - ray.origin);
+            rays.push_back(ray);
+        }
+        expectSameAnswers(brute, bvh, rays, std::to_string(n) + " primitives");
+    }
+}
+
 TEST_CASE("equal t: the smaller primitive id wins, as in the loop") {
     // Two identical triangles and two identical spheres: every hit is a tie.
     const Triangle t{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}, 0};
@@ -94,8 +122,7 @@ TEST_CASE("equal t: the smaller primitive id wins, as in the loop") {
     }
 }
 
-TEST_CASE("BVH layout: 32-byte nodes, every primitive in exactly one leaf, boxes contain their children") {
-    const Soup soup = test::randomSoup(5, 2000, 100);
+std::vector<BvhPrimitive> soupPrimitives(const Soup& soup) {
     std::vector<BvhPrimitive> primitives;
     for (std::uint32_t i = 0; i < soup.triangles.size(); ++i) {
         Bounds b;
@@ -104,30 +131,82 @@ TEST_CASE("BVH layout: 32-byte nodes, every primitive in exactly one leaf, boxes
         b.grow(soup.triangles[i].c);
         primitives.push_back({b, i});
     }
+    return primitives;
+}
+
+TEST_CASE("BVH layout: 4-wide nodes, every primitive in exactly one leaf, boxes contain their children") {
+    const Soup soup = test::randomSoup(5, 2000, 100);
+    const std::vector<BvhPrimitive> primitives = soupPrimitives(soup);
     const Bvh bvh(primitives);
-    CHECK(bvh.stats().nodeBytes == 32 * bvh.stats().nodes);
-    std::vector<int> seen(primitives.size(), 0);
+    CHECK(bvh.stats().nodeBytes == 128 * bvh.stats().nodes);
+    CHECK(bvh.stats().primitives == primitives.size());
+    REQUIRE_FALSE(BvhChild::isLeaf(bvh.root()));
+    std::vector<int> seen(primitives.size(), 0), reached(bvh.nodes().size(), 0);
     const auto nodes = bvh.nodes();
-    const auto contains = [](const BvhNode& outer, const Vec3& lo, const Vec3& hi) {
-        return glm::all(glm::lessThanEqual(outer.lo, lo)) && glm::all(glm::greaterThanEqual(outer.hi, hi));
+    const auto contains = [](const Bounds& outer, const Bounds& inner) {
+        return glm::all(glm::lessThanEqual(outer.lo, inner.lo)) && glm::all(glm::greaterThanEqual(outer.hi, inner.hi));
     };
-    std::size_t bad = 0;
-    for (std::size_t n = 0; n < nodes.size(); ++n) {
-        const BvhNode& node = nodes[n];
-        if (node.count > 0) {
-            CHECK(node.count <= 4);
-            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) {
-                const std::uint32_t id = bvh.primitiveIds()[i];
-                ++seen[id];
-                bad += !contains(node, primitives[id].bounds.lo, primitives[id].bounds.hi);
+    std::size_t bad = 0, lanes = 0, usedLanes = 0;
+    // Walk from the root: each lane's box must contain its subtree's boxes, or its leaf's primitives.
+    std::vector<std::uint32_t> pending{bvh.root()};
+    while (!pending.empty()) {
+        const std::uint32_t index = pending.back();
+        pending.pop_back();
+        ++reached[index];
+        const BvhNode& node = nodes[index];
+        for (int lane = 0; lane < kBvhWidth; ++lane) {
+            ++lanes;
+            const std::uint32_t child = node.children[lane];
+            const Bounds box = node.childBounds(lane);
+            if (child == BvhChild::kEmpty) {
+                bad += !box.empty();
+                continue;
             }
-        } else {
-            bad += !contains(node, nodes[n + 1].lo, nodes[n + 1].hi);
-            bad += !contains(node, nodes[node.offset].lo, nodes[node.offset].hi);
+            ++usedLanes;
+            if (BvhChild::isLeaf(child)) {
+                CHECK(BvhChild::count(child) <= 4);
+                CHECK(BvhChild::firstSlot(child) % 4 == 0);
+                for (std::uint32_t i = 0; i < 4; ++i) {
+                    const std::uint32_t id = bvh.slotIds()[BvhChild::firstSlot(child) + i];
+                    if (i >= BvhChild::count(child)) {
+                        bad += id != kBvhEmptySlot;
+                        continue;
+                    }
+                    ++seen[id];
+                    bad += !contains(box, primitives[id].bounds);
+                }
+            } else {
+                const BvhNode& inner = nodes[child];
+                for (int l = 0; l < kBvhWidth; ++l)
+                    if (inner.children[l] != BvhChild::kEmpty) bad += !contains(box, inner.childBounds(l));
+                pending.push_back(child);
+            }
         }
     }
     CHECK(bad == 0);
     CHECK(std::count(seen.begin(), seen.end(), 1) == static_cast<std::ptrdiff_t>(seen.size()));
+    CHECK(std::count(reached.begin(), reached.end(), 1) == static_cast<std::ptrdiff_t>(reached.size()));
+    // The collapse fills nodes: far more than the two lanes of a binary tree on average.
+    INFO(usedLanes << " of " << lanes << " lanes used");
+    CHECK(usedLanes * 10 > lanes * 7);
+}
+
+TEST_CASE("the parallel build makes the same tree on 1, 2 and 5 threads") {
+    // Large enough that subtrees go to the shared queue (the builder's grain is 4096 primitives).
+    const Soup soup = test::randomSoup(8, 60000, 0);
+    const std::vector<BvhPrimitive> primitives = soupPrimitives(soup);
+    const Bvh one(primitives, 1);
+    const auto sameTree = [&](const Bvh& other) {
+        const auto a = one.nodes(), b = other.nodes();
+        return a.size() == b.size() && one.root() == other.root() &&
+               std::equal(one.slotIds().begin(), one.slotIds().end(), other.slotIds().begin(), other.slotIds().end()) &&
+               std::equal(a.begin(), a.end(), b.begin(), [](const BvhNode& x, const BvhNode& y) {
+                   return std::memcmp(&x, &y, sizeof(BvhNode)) == 0;
+               });
+    };
+    CHECK(one.nodes().size() > 60000 / 16);
+    CHECK(sameTree(Bvh(primitives, 2)));
+    CHECK(sameTree(Bvh(primitives, 5)));
 }
 
 TEST_CASE("coincident primitives (no centroid spread) still build a shallow, complete tree") {

@@ -14,33 +14,11 @@
 #include <cstring>
 #include <string>
 
+#include "bench/height_field.h"
+
 namespace {
 
-struct Wave {
-    float amplitude, kx, kz, phase;
-};
-// A few incommensurate waves: smooth everywhere, never periodic over the grid.
-constexpr Wave kWaves[] = {{0.12f, 3.1f, 1.7f, 0.3f}, {0.05f, -7.3f, 5.9f, 1.1f}, {0.02f, 13.7f, 17.9f, 2.0f}};
-
-float height(float x, float z) {
-    float y = 0.0f;
-    for (const Wave& w : kWaves) y += w.amplitude * std::sin(w.kx * x + w.kz * z + w.phase);
-    return y;
-}
-
-// The unit normal of y = height(x, z): (-dy/dx, 1, -dy/dz), normalised.
-void normalAt(float x, float z, float n[3]) {
-    float dx = 0.0f, dz = 0.0f;
-    for (const Wave& w : kWaves) {
-        const float c = w.amplitude * std::cos(w.kx * x + w.kz * z + w.phase);
-        dx += c * w.kx;
-        dz += c * w.kz;
-    }
-    const float length = std::sqrt(dx * dx + 1.0f + dz * dz);
-    n[0] = -dx / length;
-    n[1] = 1.0f / length;
-    n[2] = -dz / length;
-}
+using namespace lightpath::height_field;
 
 // Text goes through one buffer written in large blocks: with to_chars, a million-triangle file
 // takes about a second.
@@ -120,12 +98,9 @@ int main(int argc, char** argv) {
     out.endLine();
 
     const std::size_t columns = side + 1;
-    const auto coordinate = [&](std::size_t i) {
-        return -1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(side);
-    };
     for (std::size_t row = 0; row < columns; ++row) {
         for (std::size_t column = 0; column < columns; ++column) {
-            const float x = coordinate(column), z = coordinate(row);
+            const float x = coordinate(column, side), z = coordinate(row, side);
             out.text("v ");
             out.number(x);
             out.text(" ");
@@ -139,7 +114,7 @@ int main(int argc, char** argv) {
         for (std::size_t row = 0; row < columns; ++row) {
             for (std::size_t column = 0; column < columns; ++column) {
                 float n[3];
-                normalAt(coordinate(column), coordinate(row), n);
+                normalAt(coordinate(column, side), coordinate(row, side), n);
                 out.text("vn ");
                 out.number(n[0]);
                 out.text(" ");
@@ -150,31 +125,22 @@ int main(int argc, char** argv) {
             }
         }
     }
-    // Vertex k (1-based) is at row (k - 1) / columns; normal k belongs to vertex k.
-    const auto corner = [&](std::size_t row, std::size_t column) {
-        const std::size_t k = row * columns + column + 1;
+    // OBJ indices are 1-based; normal k belongs to vertex k.
+    const auto corner = [&](std::size_t vertex) {
         out.text(" ");
-        out.number(k);
+        out.number(vertex + 1);
         if (normals) {
             out.text("//");
-            out.number(k);
+            out.number(vertex + 1);
         }
     };
-    // Counter-clockwise seen from +y, so the geometric normals face up like the `vn`.
-    for (std::size_t row = 0; row < side; ++row) {
-        for (std::size_t column = 0; column < side; ++column) {
-            out.text("f");
-            corner(row, column);
-            corner(row + 1, column);
-            corner(row + 1, column + 1);
-            out.endLine();
-            out.text("f");
-            corner(row, column);
-            corner(row + 1, column + 1);
-            corner(row, column + 1);
-            out.endLine();
-        }
-    }
+    forEachTriangle(side, [&](std::size_t a, std::size_t b, std::size_t c) {
+        out.text("f");
+        corner(a);
+        corner(b);
+        corner(c);
+        out.endLine();
+    });
     if (!out.finish()) {
         std::perror(output);
         std::fclose(file);

@@ -121,7 +121,7 @@ TEST_CASE("path: a plane under a quad light matches Lambert's polygon irradiance
     scene.triangles.push_back({q0, q2, q3, lampObject});
     REQUIRE(glm::normalize(glm::cross(q1 - q0, q2 - q0)).y < 0.0f);
 
-    const Film film = renderPath(scene, {{"direct", "E D <L'quad'>"}}, 8, 3);
+    const Film film = renderPath(scene, {{"direct", "E D <O.'quad'>"}}, 8, 3);
     std::vector<double> differences, differencesWrong;
     const std::vector<glm::dvec3> polygon{glm::dvec3(q0), glm::dvec3(q1), glm::dvec3(q2), glm::dvec3(q3)};
     for (int j = 0; j < film.height(); ++j) {

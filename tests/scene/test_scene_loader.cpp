@@ -545,6 +545,52 @@ TEST_CASE_FIXTURE(SceneFiles, "a triangle without area is kept, with a located w
           "[[x,y,z], [x,y,z], [x,y,z]], got an array of 2 elements");
 }
 
+// The dragon's case: its OBJ names a material library that is not there. The warning is located
+// at the mesh's `file` and names both files; the mesh gets the scene's material, else a grey.
+TEST_CASE_FIXTURE(SceneFiles, "a missing material library is a located warning, and the mesh still loads") {
+    write("lost.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string expectedWarning =
+        "meshes[0].file: " + (dir() / "lost.obj").string() +
+        ": cannot open material library \"" + (dir() / "gone.mtl").string() + "\" named by its mtllib line; ";
+
+    const Scene given = load("[materials.clay]\nkd = 0.7\n[[meshes]]\nfile = \"lost.obj\"\nmaterial = \"clay\"\n");
+    REQUIRE(given.triangles.size() == 1);
+    CHECK(given.labelOf(given.triangles[0].object) == "clay");
+    REQUIRE(given.warnings.size() == 1);
+    CHECK(withoutFolder(given.warnings[0]) == "scene.toml:4:8: " + expectedWarning + "the mesh's `material` is used");
+
+    const Scene grey = load("[[meshes]]\nname = \"lost\"\nfile = \"lost.obj\"\n");
+    REQUIRE(grey.triangles.size() == 1);
+    const auto& material = grey.materials[grey.objects[grey.triangles[0].object].material];
+    CHECK(material.kd == Rgb(0.5f));
+    CHECK(material.ks == Rgb(0.0f));
+    REQUIRE(grey.warnings.size() == 1);
+    CHECK(withoutFolder(grey.warnings[0]) == "scene.toml:3:8: " + expectedWarning + "faces without a known material are grey");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is refused only when the scene gives none") {
+    write("lost.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    CHECK(errorOf("[[meshes]]\nfile = \"lost.obj\"\n") ==
+          "scene.toml:2:8: meshes[0].file: " + (dir() / "lost.obj").string() +
+              ": usemtl \"red\" names no material of its material libraries (\"" + (dir() / "gone.mtl").string() +
+              "\" is missing); give the mesh a `material`");
+    // The library is there but lacks the material: the same refusal, without the missing file.
+    write("m.mtl", "newmtl blue\nKd 0 0 1\n");
+    write("wrong.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    CHECK(errorOf("[[meshes]]\nfile = \"wrong.obj\"\n").ends_with(
+        "wrong.obj: usemtl \"red\" names no material of its material libraries; give the mesh a `material`"));
+    // With the scene's material, the unknown usemtl is not needed.
+    const Scene given = load("[materials.clay]\n[[meshes]]\nfile = \"lost.obj\"\nmaterial = \"clay\"\n");
+    REQUIRE(given.triangles.size() == 1);
+    CHECK(given.labelOf(given.triangles[0].object) == "clay");
+    // Faces without any usemtl, and no scene material: grey, and no warning (nothing is missing).
+    write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Scene plain = load("[[meshes]]\nfile = \"plain.obj\"\n");
+    REQUIRE(plain.triangles.size() == 1);
+    CHECK(plain.materials[plain.objects[plain.triangles[0].object].material].kd == Rgb(0.5f));
+    CHECK(plain.warnings.empty());
+}
+
 namespace lightpath {
 namespace {
 

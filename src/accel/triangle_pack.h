@@ -1,0 +1,106 @@
+#pragma once
+// The triangles of one BVH leaf block, laid out for four-at-once tests, and the SIMD half of the
+// watertight test (Woop, Benthin and Wald, JCGT 2013) over them. The SIMD part only filters: it
+// evaluates the same float expressions as intersectTriangle (geometry/intersect.cpp) in the
+// same order, lane by lane, so a lane it drops is one the scalar test rejects too; the lanes it
+// keeps go to the scalar test, whose answer is final. Hence results stay bit for bit those of
+// testing each triangle alone.
+#include "accel/bvh.h"
+#include "accel/simd.h"
+#include "geometry/intersect.h"
+#include "geometry/shapes.h"
+#include "math/ray.h"
+
+namespace lightpath {
+
+// Coordinates as corners[vertex][axis][lane]: vertex 0, 1, 2 are a triangle's a, b, c.
+struct alignas(16) TrianglePack {
+    float corners[3][3][kBvhWidth]{};
+
+    void set(int lane, const Triangle& t) {
+        const Vec3* vertices[3] = {&t.a, &t.b, &t.c};
+        for (int v = 0; v < 3; ++v)
+            for (int a = 0; a < 3; ++a) corners[v][a][lane] = (*vertices[v])[a];
+    }
+    Triangle triangle(int lane) const {
+        Triangle t;
+        Vec3* vertices[3] = {&t.a, &t.b, &t.c};
+        for (int v = 0; v < 3; ++v)
+            for (int a = 0; a < 3; ++a) (*vertices[v])[a] = corners[v][a][lane];
+        return t;
+    }
+};
+static_assert(sizeof(TrianglePack) == 144);
+
+// The per-ray part of the test, computed once per ray: the watertight shear, and the origin
+// permuted like the vertices and broadcast to four lanes.
+struct PackedRay {
+    WatertightRay sheared;
+    int k[3];
+    simd::Float4 origin[3];
+    simd::Float4 sx, sy, sz;
+
+    explicit PackedRay(const Ray& ray)
+        : sheared(ray.direction), k{sheared.kx, sheared.ky, sheared.kz}, sx(sheared.sx), sy(sheared.sy),
+          sz(sheared.sz) {
+        for (int i = 0; i < 3; ++i) origin[i] = simd::Float4(ray.origin[k[i]]);
+    }
+};
+
+// What the four-at-once watertight test found among the lanes it was given.
+struct PackHits {
+    int hits = 0;    // lanes hit at t[lane], exactly as intersectTriangle finds them
+    int onEdge = 0;  // lanes with an edge function of exactly zero: intersectTriangle decides them
+    alignas(16) float t[kBvhWidth];
+};
+
+// intersectTriangle (geometry/intersect.cpp) on the lanes of `lanes`: the same float expressions
+// in the same order, so a lane's t and verdict are bit for bit the scalar test's. Only the rare
+// lane where an edge function rounds to exactly zero, which the scalar test recomputes in double,
+// is left to it.
+inline PackHits watertightHits(const TrianglePack& pack, int lanes, const PackedRay& ray, float tMin, float tMax) {
+    using simd::Float4;
+    Float4 x[3], y[3], z[3];
+    for (int v = 0; v < 3; ++v) {
+        // permute(corner - origin) then the shear.
+        const Float4 px = Float4::load(pack.corners[v][ray.k[0]]) - ray.origin[0];
+        const Float4 py = Float4::load(pack.corners[v][ray.k[1]]) - ray.origin[1];
+        const Float4 pz = Float4::load(pack.corners[v][ray.k[2]]) - ray.origin[2];
+        x[v] = px + ray.sx * pz;
+        y[v] = py + ray.sy * pz;
+        z[v] = ray.sz * pz;
+    }
+    // a, b, c = vertex 0, 1, 2.
+    const Float4 u = x[2] * y[1] - y[2] * x[1];
+    const Float4 v = x[0] * y[2] - y[0] * x[2];
+    const Float4 w = x[1] * y[0] - y[1] * x[0];
+    const Float4 zero(0.0f);
+    PackHits result;
+    result.onEdge = lanes & (simd::equal(u, zero) | simd::equal(v, zero) | simd::equal(w, zero));
+    const int negative = simd::less(u, zero) | simd::less(v, zero) | simd::less(w, zero);
+    const int positive = simd::less(zero, u) | simd::less(zero, v) | simd::less(zero, w);
+    const Float4 det = u + v + w;
+    const Float4 t = (u * z[0] + v * z[1] + w * z[2]) / det;
+    int hits = lanes & ~result.onEdge & ~(negative & positive) & ~simd::equal(det, zero) &
+               simd::less(Float4(tMin), t) & simd::less(t, Float4(tMax));
+    if (hits == 0) return result;
+    // The bound of t's rounding error (pbrt-v4, section 6.8.4), as intersectTriangle computes it.
+    const auto max3 = [](Float4 a, Float4 b, Float4 c) {
+        return simd::maxKeepSecond(simd::maxKeepSecond(simd::abs(a), simd::abs(b)), simd::abs(c));
+    };
+    const Float4 maxZ = max3(z[0], z[1], z[2]);
+    const Float4 maxX = max3(x[0], x[1], x[2]);
+    const Float4 maxY = max3(y[0], y[1], y[2]);
+    const Float4 deltaZ = Float4(roundingGamma(3)) * maxZ;
+    const Float4 deltaX = Float4(roundingGamma(5)) * (maxX + maxZ);
+    const Float4 deltaY = Float4(roundingGamma(5)) * (maxY + maxZ);
+    const Float4 deltaE = Float4(2.0f) * (Float4(roundingGamma(2)) * maxX * maxY + deltaY * maxX + deltaX * maxY);
+    const Float4 maxE = max3(u, v, w);
+    const Float4 deltaT =
+        Float4(3.0f) * (Float4(roundingGamma(3)) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) / simd::abs(det);
+    result.hits = hits & ~simd::lessEqual(t, deltaT);
+    t.store(result.t);
+    return result;
+}
+
+}  // namespace lightpath
