@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <numeric>
 #include <optional>
 
@@ -407,6 +409,55 @@ TEST_CASE("radiosity on the shipped scenes with planes and spheres: the classes 
         CHECK(result.stats.radiosity->patches <= 512);
         CHECK(layerTotal(result.film, 0) > 0.0);
     }
+}
+
+}  // namespace
+}  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+// tests/render/data/cornell-lamp.reference: the path tracer's converged CornellBox-Original under
+// its own lamp (32768 spp, max depth 64), frozen before radiosity existed. One R G B line per pixel.
+Film frozenCornellReference(int width, int height) {
+    std::ifstream in(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.reference");
+    REQUIRE(in);
+    Film film(width, height, {"beauty"});
+    std::string line;
+    int pixel = 0;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        if (pixel == width * height) FAIL("more pixels than ", width, "x", height);
+        std::istringstream values(line);
+        Rgb& v = film.pixel(pixel % width, pixel / width)[0];
+        values >> v.r >> v.g >> v.b;
+        ++pixel;
+    }
+    CHECK(pixel == width * height);
+    return film;
+}
+
+TEST_CASE("the Cornell box under its lamp alone: radiosity with every bounce matches the frozen path-traced reference") {
+    const Scene lamp = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.toml");
+    const Film reference = frozenCornellReference(lamp.camera.width, lamp.camera.height);
+    const auto render = [](const Scene& scene) {
+        RenderOptions options;
+        options.integrator = "radiosity";
+        options.maxDepth = kMaxDepth;
+        options.threads = 2;
+        // Pixels average their footprint, as the reference's do: the lamp covers some in part.
+        options.samplesPerPixel = 64;
+        options.sampler = SamplerKind::Sobol;
+        return Renderer(scene, AovSet(std::vector<lpe::NamedExpression>{}), options).render().film;
+    };
+    const double error = blockError(render(lamp), reference, 4);
+    Scene darker = lamp;
+    for (PhongMaterial& m : darker.materials) m.kd *= 0.9f;
+    const double control = blockError(render(darker), reference, 4);
+    CAPTURE(error);
+    CAPTURE(control);
+    CHECK(error < kCornellTolerance);
+    CHECK(control > kCornellTolerance);
 }
 
 }  // namespace
