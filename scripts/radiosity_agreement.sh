@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Radiosity against the path tracer on the diffuse Cornell box (README "Radiosity"): the ED*L AOV
 # of both at 64x64, the path tracer at 4096 spp (Sobol), radiosity at patch budgets 4x apart in
-# both displays. Prints the solve's wall time on 2 threads (from --stats), the process's CPU time
+# both displays and 16 spp (camera rays only: pixels average their footprint like the reference's). Prints the solve's wall time on 2 threads (from --stats), the process's CPU time
 # (both threads), and the mean absolute difference relative to the reference's mean, over 8x8-pixel
 # blocks (box averages, so the path tracer's noise averages out) and over single pixels.
 # Usage: scripts/radiosity_agreement.sh [BUILD_DIR] [OUT_DIR]
@@ -27,7 +27,7 @@ for patches in 256 1024 4096 16384; do
     image="$out/radiosity-$patches-$display.exr"
     TIMEFORMAT=%U
     { cpu=$( { time "$lightpath" render "$scene" --integrator radiosity --patches "$patches" --radiosity-display "$display" \
-        "${common[@]}" --stats -o "$image" >"$out/stats.txt"; } 2>&1 ); }
+        --spp 16 --sampler sobol "${common[@]}" --stats -o "$image" >"$out/stats.txt"; } 2>&1 ); }
     solve=$(sed -n 's/.*solved in \([0-9.]*\) s.*/\1/p' "$out/stats.txt")
     blocks=$(mean "$image" --resize:filter=box 8x8 "$out/path-blocks.exr" --absdiff)
     pixels=$(mean "$image" "$out/path.exr" --absdiff)
