@@ -251,8 +251,12 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& 
             options.integrator = "radiosity";
             options.threads = 1;
             options.radiosity.patchBudget = budget;
+            // Camera rays only: pixels average their footprint, like the reference's.
+            options.samplesPerPixel = 16;
+            options.sampler = SamplerKind::Sobol;
             const Measurement m = measure(bench.scene, bench.reference, options);
-            curve.push_back({bench.name, "radiosity", "radiosity", 1, m.patches, m.seconds, m.rmse, m.relmse});
+            curve.push_back({bench.name, "radiosity", "radiosity", options.samplesPerPixel, m.patches, m.seconds, m.rmse,
+                             m.relmse});
         }
         result.rows.insert(result.rows.end(), curve.begin(), curve.end());
         // Radiosity's error is the mesh's, not noise: when its coarsest mesh is already below the
