@@ -150,9 +150,11 @@ Scene mirrorCausticScene(int size, Reference& caustic) {
 
 struct Measurement {
     double seconds, rmse, relmse;
+    std::size_t patches = 0;
 };
 
-// The error of the beauty, or of the one AOV `expression` when it is given.
+// The error of the beauty, or of the one AOV `expression` when it is given. CPU seconds include
+// the Renderer's construction, where radiosity meshes and solves.
 Measurement measure(const Scene& scene, const Reference& reference, const RenderOptions& options,
                     const std::string& expression = "") {
     std::vector<lpe::NamedExpression> set;
@@ -161,8 +163,9 @@ Measurement measure(const Scene& scene, const Reference& reference, const Render
     const std::size_t layer = expression.empty() ? 0 : 1;
     Film film(1, 1, {});
     const double start = processCpuSeconds();
-    film = Renderer(scene, aovs, options).render().film;
+    const RenderResult result = Renderer(scene, aovs, options).render();
     const double seconds = processCpuSeconds() - start;
+    film = result.film;
     double squared = 0.0, relative = 0.0;
     std::size_t n = 0;
     for (int y = 0; y < film.height(); ++y) {
@@ -177,7 +180,7 @@ Measurement measure(const Scene& scene, const Reference& reference, const Render
             }
         }
     }
-    return {seconds, std::sqrt(squared / n), relative / n};
+    return {seconds, std::sqrt(squared / n), relative / n, result.stats.radiosity ? result.stats.radiosity->patches : 0};
 }
 
 // Least-squares slope of log(rmse) against log(seconds).
@@ -260,7 +263,7 @@ void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory
                 options.samplesPerPixel = 1 << k;
                 options.seed = 1;
                 const Measurement m = measure(c.scene, c.reference, options, c.expression);
-                curve.push_back({c.name, integrator, "independent", options.samplesPerPixel, m.seconds, m.rmse, m.relmse});
+                curve.push_back({c.name, integrator, "independent", options.samplesPerPixel, 0, m.seconds, m.rmse, m.relmse});
             }
             result.rows.insert(result.rows.end(), curve.begin(), curve.end());
             curves.push_back(std::move(curve));
@@ -299,6 +302,10 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& 
         taxonomy.camera.height = 54;
         Reference reference = cachedReference(taxonomy, cacheDirectory / "taxonomy-96x54-reference.exr", 4096);
         scenes.push_back({"taxonomy", std::move(taxonomy), std::move(reference)});
+        Scene cornell = loadScene(scenesDirectory / "cornell-original.toml");
+        cornell.camera.width = cornell.camera.height = size;
+        reference = cachedReference(cornell, cacheDirectory / "cornell-original-64x64-reference.exr", 4096);
+        scenes.push_back({"cornell", std::move(cornell), std::move(reference)});
     }
 
     const int maxLog2 = quick ? 5 : 8;
@@ -322,7 +329,7 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& 
                     options.targetError = strategy.targetError / std::sqrt(double(1 << k));
                 }
                 const Measurement m = measure(bench.scene, bench.reference, options);
-                curve.push_back({bench.name, "path", strategy.name, options.samplesPerPixel, m.seconds, m.rmse, m.relmse});
+                curve.push_back({bench.name, "path", strategy.name, options.samplesPerPixel, 0, m.seconds, m.rmse, m.relmse});
             }
             result.rows.insert(result.rows.end(), curve.begin(), curve.end());
             curves.push_back(std::move(curve));
@@ -333,6 +340,28 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& 
         for (std::size_t s = 0; s < kStrategies.size(); ++s)
             result.summaries.push_back({bench.name, kStrategies[s].name, fitSlope(curves[s]),
                                         secondsToReach(curves[s], error) / independentSeconds});
+
+        // Radiosity where all light is diffuse (the area-light plane has an infinite floor, which
+        // radiosity clips): patch budgets 4x apart, the solve's time included.
+        if (bench.name != "furnace" && bench.name != "cornell") continue;
+        std::vector<ErrorBenchmarkRow> curve;
+        for (std::size_t budget = 64; budget <= (quick ? std::size_t{1024} : std::size_t{16384}); budget *= 4) {
+            RenderOptions options;
+            options.integrator = "radiosity";
+            options.threads = 1;
+            options.radiosity.patchBudget = budget;
+            // Camera rays only: pixels average their footprint, like the reference's.
+            options.samplesPerPixel = 16;
+            options.sampler = SamplerKind::Sobol;
+            const Measurement m = measure(bench.scene, bench.reference, options);
+            curve.push_back({bench.name, "radiosity", "radiosity", options.samplesPerPixel, m.patches, m.seconds, m.rmse,
+                             m.relmse});
+        }
+        result.rows.insert(result.rows.end(), curve.begin(), curve.end());
+        // Radiosity's error is the mesh's, not noise: when its coarsest mesh is already below the
+        // common error, that mesh's time is the time to reach it.
+        const double seconds = curve.front().rmse <= error ? curve.front().seconds : secondsToReach(curve, error);
+        result.summaries.push_back({bench.name, "radiosity", fitSlope(curve), seconds / independentSeconds});
     }
     compareIntegrators(quick, scenesDirectory, cacheDirectory, result);
     return result;

@@ -10,6 +10,8 @@
 //   mirror-caustic    the light a mirror throws on a floor (E(D|G)S+L) under a point light: the
 //                     light's mirror image in closed form; only bdpt's light tracing finds it
 //   cornell-lamp      the Cornell box under its area light, against a cached high-sample render
+//   cornell           the diffuse Cornell box, against the path tracer's cached high-sample render
+// Radiosity gets its own rows on the furnace and the Cornell box, one per patch budget.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -19,6 +21,7 @@ namespace lightpath {
 struct ErrorBenchmarkRow {
     std::string scene, integrator, sampler;
     int spp = 0;              // samples per pixel (the most a pixel may take, for adaptive)
+    std::size_t patches = 0;  // radiosity's patch count (0 for the path tracer)
     double seconds = 0.0;     // CPU seconds of the render, one thread
     double rmse = 0.0;        // root mean squared error over pixels and channels
     double relmse = 0.0;      // mean of squared error / (reference^2 + 1e-2)

@@ -24,10 +24,10 @@ struct ErrorOptions {
 
 std::string toCsv(const ErrorBenchmarkResult& r) {
     std::ostringstream csv;
-    csv << "scene,integrator,sampler,spp,seconds,rmse,relmse\n";
+    csv << "scene,integrator,sampler,spp,patches,seconds,rmse,relmse\n";
     for (const auto& row : r.rows)
-        csv << row.scene << ',' << row.integrator << ',' << row.sampler << ',' << row.spp << ',' << row.seconds << ','
-            << row.rmse << ',' << row.relmse << '\n';
+        csv << row.scene << ',' << row.integrator << ',' << row.sampler << ',' << row.spp << ',' << row.patches << ','
+            << row.seconds << ',' << row.rmse << ',' << row.relmse << '\n';
     return csv.str();
 }
 
@@ -37,7 +37,8 @@ std::string toJson(const ErrorBenchmarkResult& r) {
     for (std::size_t i = 0; i < r.rows.size(); ++i) {
         const auto& row = r.rows[i];
         json << (i ? ",\n " : "") << "{\"scene\": " << jsonString(row.scene) << ", \"integrator\": " << jsonString(row.integrator)
-             << ", \"sampler\": " << jsonString(row.sampler) << ", \"spp\": " << row.spp << ", \"seconds\": " << row.seconds
+             << ", \"sampler\": " << jsonString(row.sampler) << ", \"spp\": " << row.spp << ", \"patches\": " << row.patches
+             << ", \"seconds\": " << row.seconds
              << ", \"rmse\": " << row.rmse << ", \"relmse\": " << row.relmse << "}";
     }
     json << "]\n";
@@ -45,15 +46,17 @@ std::string toJson(const ErrorBenchmarkResult& r) {
 }
 
 void run(const ErrorOptions& options) {
-    std::printf("bench error: path tracer, CPU seconds on 1 thread, error against closed forms or a cached reference\n"
+    std::printf("bench error: path tracer and radiosity, CPU seconds on 1 thread, error against closed forms or a cached "
+                "path-traced reference\n"
                 "machine: %s\n\n", describeMachine().c_str());
     const ErrorBenchmarkResult r = runErrorBenchmark(options.quick, shippedScenesDirectory(), options.cache);
-    std::printf("%-18s %-8s %-12s %6s %10s %12s %12s\n", "scene", "method", "sampler", "spp", "seconds", "rmse", "relmse");
+    std::printf("%-18s %-9s %-12s %6s %8s %10s %12s %12s\n", "scene", "method", "sampler", "spp", "patches", "seconds",
+                "rmse", "relmse");
     for (const auto& row : r.rows)
-        std::printf("%-18s %-8s %-12s %6d %10.4f %12.6f %12.6f\n", row.scene.c_str(), row.integrator.c_str(),
-                    row.sampler.c_str(), row.spp, row.seconds, row.rmse, row.relmse);
+        std::printf("%-18s %-9s %-12s %6d %8zu %10.4f %12.6f %12.6f\n", row.scene.c_str(), row.integrator.c_str(),
+                    row.sampler.c_str(), row.spp, row.patches, row.seconds, row.rmse, row.relmse);
     std::printf("\n%-18s %-12s %10s %26s\n", "scene", "sampler", "slope", "time to reference error");
-    std::printf("(samplers: independent's error at its largest budget; path/bdpt: the path tracer's)\n");
+    std::printf("(samplers and radiosity: independent's error at its largest budget; path/bdpt: the path tracer's)\n");
     for (const auto& s : r.summaries)
         std::printf("%-18s %-12s %10.3f %25.2fx\n", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
     std::printf("\ntargets: independent slope -0.5 +- 0.05; on area-light-plane sobol <= 0.5x and adaptive <= 0.33x of "
@@ -81,8 +84,10 @@ void run(const ErrorOptions& options) {
 void addBenchErrorCommand(CLI::App& bench) {
     auto options = std::make_shared<ErrorOptions>();
     CLI::App* sub = bench.add_subcommand("error", "Run time against error for each sampler and adaptive sampling");
-    sub->add_flag("--quick", options->quick, "Small images, budgets up to 32 spp, closed-form scenes only");
-    sub->add_option("--json", options->json, "Also write rows {scene, integrator, sampler, spp, seconds, rmse, relmse}");
+    sub->add_flag("--quick", options->quick,
+                  "Small images, budgets up to 32 spp (radiosity: 1024 patches), closed-form scenes only");
+    sub->add_option("--json", options->json,
+                    "Also write rows {scene, integrator, sampler, spp, patches, seconds, rmse, relmse}");
     sub->add_option("--csv", options->csv, "Where the CSV goes")->capture_default_str();
     sub->add_option("--plot", options->plot, "Where the log-log plot goes (empty: none)")->capture_default_str();
     sub->add_option("--cache", options->cache, "Folder for the cached high-sample reference of the lecture scene")

@@ -64,6 +64,14 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
     std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
 }
 
+void printRadiosityStats(const RadiosityStats& r) {
+    std::printf("radiosity     %zu patches (size %.4g), %llu form-factor rays, %llu shadow rays\n", r.patches,
+                double(r.patchSize), static_cast<unsigned long long>(r.formFactorRays),
+                static_cast<unsigned long long>(r.shadowRays));
+    std::printf("              %d iterations (%d light-bounces over %d lights solved), residual %.3g, solved in %.3f s\n",
+                r.iterations, r.lightBouncesSolved, r.lightsSolved, r.residual, r.seconds);
+}
+
 void printAcceleratorStats(const std::string& accel, const AcceleratorStats& a) {
     if (accel == "none") {
         std::printf("accelerator   none: every ray tests every primitive\n");
@@ -136,6 +144,7 @@ void run(const RenderCommand& command) {
     if (command.stats) {
         printStats(result.stats, write);
         printAcceleratorStats(command.setup.accel, result.stats.accelerator);
+        if (result.stats.radiosity) printRadiosityStats(*result.stats.radiosity);
     }
 }
 

@@ -54,7 +54,7 @@ void RenderSetup::addOptions(CLI::App& command) {
                        "Adaptive sampling: stop a pixel once the standard error of its mean is below this "
                        "fraction of it (e.g. 0.02); --spp is then the most a pixel may take")
         ->check(CLI::Range(0.0, 1.0));
-    command.add_option("--max-depth", maxDepth, "Most specular bounces (whitted) or scattering events (path)")
+    command.add_option("--max-depth", maxDepth, "Most specular bounces (whitted), scattering events (path) or bounces (radiosity)")
         ->check(CLI::Range(0, kMaxDepth))
         ->capture_default_str();
     command.add_option("--resolution", resolution,
@@ -86,6 +86,24 @@ void RenderSetup::addOptions(CLI::App& command) {
         ->check(oneOf({"robust", "wachter-binder", "epsilon", "none", "own-primitive"}));
     command.add_option("--epsilon", epsilon, "t_min of --ray-offset epsilon")
         ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    CLI::Option* size = command.add_option("--patch-size", patchSize,
+                                           "radiosity: target patch edge in scene units (default: from --patches)")
+                            ->check(CLI::PositiveNumber);
+    command.add_option("--patches", patchBudget, "radiosity: the most patches; the finest patch size within it")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 18))
+        ->capture_default_str()
+        ->excludes(size);
+    command.add_option("--form-factor-rays", formFactorRays,
+                       "radiosity: hemisphere rays per side of each patch (a square number, stratified)")
+        ->check(CLI::Range(1, 1 << 16))
+        ->capture_default_str();
+    command.add_option("--light-samples", lightSamples, "radiosity: shadow rays per side of each patch and light")
+        ->check(CLI::Range(1, 1 << 16))
+        ->capture_default_str();
+    command.add_option("--radiosity-display", radiosityDisplay,
+                       "radiosity: smooth (vertex radiosities interpolated, Gouraud) or flat (one value per patch)")
+        ->check(CLI::IsMember({"smooth", "flat"}))
         ->capture_default_str();
     command.add_flag("--no-skip", noSkip,
                      "Trace every ray and evaluate every term, even those that cannot contribute (for comparison)");
@@ -236,6 +254,11 @@ RenderOptions RenderSetup::renderOptions() const {
                                   : rayOffset == "none"           ? RayOffset::None
                                                                   : RayOffset::OwnPrimitive;
     options.numerics.epsilon = epsilon;
+    options.radiosity.patchSize = patchSize;
+    options.radiosity.patchBudget = patchBudget;
+    options.radiosity.formFactorRays = formFactorRays;
+    options.radiosity.lightSamples = lightSamples;
+    options.radiosity.display = radiosityDisplay == "flat" ? RadiosityDisplay::Flat : RadiosityDisplay::Smooth;
     return options;
 }
 

@@ -37,6 +37,12 @@ struct RenderSetup {
     std::string robust = "on";       // on: robust numerics (default); off: the lecture's naive ones
     std::string sphereTest, triangleTest, rayOffset;  // per-method choices; empty: as --robust says
     float epsilon = 1e-4f;           // t_min of --ray-offset epsilon
+    // --integrator radiosity: patch size (0: from the budget), patch budget, rays, display.
+    float patchSize = 0.0f;
+    std::size_t patchBudget = RadiosityOptions{}.patchBudget;
+    int formFactorRays = RadiosityOptions{}.formFactorRays;
+    int lightSamples = RadiosityOptions{}.lightSamples;
+    std::string radiosityDisplay = "smooth";
 
     void addOptions(CLI::App& command);
 

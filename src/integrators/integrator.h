@@ -3,12 +3,14 @@
 // scene's materials through Bsdf (materials/bsdf.h), its lights through Light (lights/light.h),
 // and meets the LPE automaton only through PathState. A new integrator is one file implementing
 // this, plus its row in the registry.
+#include <atomic>
 #include <memory>
 #include <string_view>
 
 #include "geometry/scene_geometry.h"
 #include "integrators/event_symbols.h"
 #include "integrators/path_state.h"
+#include "integrators/radiosity_options.h"
 #include "lights/light_set.h"
 #include "lpe/automaton.h"
 #include "math/ray.h"
@@ -36,6 +38,12 @@ struct RenderContext {
     // Off (`--no-skip`): evaluate every term and trace every ray, even those that cannot add
     // anything, so tests and lectures can compare against the work skipping saves.
     bool skipEnabled = true;
+    // For preprocess(): radiosity's meshing and solve, the worker threads it may use (0: all
+    // cores), a progress bar on stderr, and a flag that asks it to stop early (Ctrl-C).
+    RadiosityOptions radiosity{};
+    int threads = 0;
+    bool progress = false;
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 class Integrator {
@@ -50,7 +58,7 @@ public:
     virtual bool splats() const { return false; }
 };
 
-// "raycast", "whitted" or "path"; nullptr for an unknown name.
+// "raycast", "whitted", "path" or "radiosity"; nullptr for an unknown name.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 
 }  // namespace lightpath

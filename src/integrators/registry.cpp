@@ -2,6 +2,7 @@
 
 #include "integrators/bdpt.h"
 #include "integrators/path.h"
+#include "integrators/radiosity.h"
 #include "integrators/raycast.h"
 #include "integrators/whitted.h"
 
@@ -10,7 +11,8 @@ namespace lightpath {
 // The languages are read off the integrators: raycast.cpp shades the first hit with
 // local_illumination.cpp's diffuse and highlight terms towards each light and the ambient light
 // (E(D|G)L), and adds emission and the background seen directly (EL); whitted.cpp adds mirror and
-// refraction rays before that (S*); path.cpp samples every lobe at every bounce.
+// refraction rays before that (S*); path.cpp samples every lobe at every bounce; radiosity.cpp
+// shows its patches' diffuse bounces (ED+L), emitters and the background seen directly (EL).
 const std::vector<IntegratorInfo>& integrators() {
     static const std::vector<IntegratorInfo> table = {
         {"raycast", "first hit only: Szymczak's formula, emitters and the background seen directly",
@@ -22,6 +24,9 @@ const std::vector<IntegratorInfo>& integrators() {
         {"path", "path tracing with global illumination (physically based reading)", "E.*L",
          "path tracing follows every bounce",
          [] { return std::unique_ptr<Integrator>(std::make_unique<PathIntegrator>()); }},
+        {"radiosity", "diffuse patches, form factors by ray casting, solved bounce by bounce (Jacobi)", "ED*L",
+         "radiosity follows diffuse bounces only: no highlight, mirror or refraction",
+         [] { return std::unique_ptr<Integrator>(std::make_unique<RadiosityIntegrator>()); }},
         {"bdpt", "bidirectional path tracing: also light from the light's side, caustics under point lights", "E.*L",
          "bidirectional path tracing follows every bounce, from the eye and from the lights",
          [] { return std::unique_ptr<Integrator>(std::make_unique<BdptIntegrator>()); }},

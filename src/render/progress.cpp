@@ -26,8 +26,8 @@ std::string formatSeconds(double seconds) {
 
 }  // namespace
 
-ProgressBar::ProgressBar(int totalTiles, bool enabled)
-    : total_(std::max(totalTiles, 1)), started_(std::chrono::steady_clock::now()) {
+ProgressBar::ProgressBar(int totalTiles, bool enabled, const char* unit)
+    : total_(std::max(totalTiles, 1)), unit_(unit), started_(std::chrono::steady_clock::now()) {
     if (enabled && isatty(STDERR_FILENO)) thread_ = std::thread([this] { run(); });
 }
 
@@ -60,7 +60,7 @@ void ProgressBar::draw(double elapsed) const {
                             std::string(static_cast<std::size_t>(kBarWidth - filled), '.');
     // The estimate assumes the remaining tiles cost what the finished ones did on average.
     const std::string eta = done > 0 ? formatSeconds(elapsed * (1.0 - fraction) / fraction) : "?";
-    std::fprintf(stderr, "\r\033[K[%s] %d/%d tiles  %s elapsed  ETA %s", bar.c_str(), done, total_,
+    std::fprintf(stderr, "\r\033[K[%s] %d/%d %s  %s elapsed  ETA %s", bar.c_str(), done, total_, unit_,
                  formatSeconds(elapsed).c_str(), eta.c_str());
     std::fflush(stderr);
 }

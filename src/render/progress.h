@@ -12,8 +12,9 @@ namespace lightpath {
 
 class ProgressBar {
 public:
-    // `enabled` false (e.g. --quiet) or stderr not a terminal: does nothing at all.
-    ProgressBar(int totalTiles, bool enabled);
+    // `enabled` false (e.g. --quiet) or stderr not a terminal: does nothing at all. `unit` names
+    // what is counted ("tiles" of a render, "radiosity steps" of a solve).
+    ProgressBar(int totalTiles, bool enabled, const char* unit = "tiles");
     ~ProgressBar();
     ProgressBar(const ProgressBar&) = delete;
     ProgressBar& operator=(const ProgressBar&) = delete;
@@ -25,6 +26,7 @@ private:
     void draw(double elapsedSeconds) const;
 
     const int total_;
+    const char* unit_;
     alignas(64) std::atomic<int> done_{0};  // bumped by every worker: a cache line of its own
     std::chrono::steady_clock::time_point started_;
     std::mutex mutex_;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "integrators/registry.h"
 #include "render/progress.h"
 #include "sampling/sampler.h"
 
@@ -36,8 +37,13 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       camera_(scene.camera),
       integrator_(makeIntegrator(options.integrator)),
       context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
-               aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip} {
-    if (!integrator_) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected raycast, whitted, path or bdpt");
+               aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip, options.radiosity,
+               options.threads, options.progress, options.cancel} {
+    if (!integrator_) {
+        std::string names;
+        for (const std::string& name : integratorNames()) names += (names.empty() ? "" : ", ") + name;
+        throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected one of " + names);
+    }
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
@@ -182,6 +188,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     stats.samples = stats.rays.camera + stats.rays.cameraDead;  // adaptive sampling takes fewer
     stats.threads = threadCount;
     stats.accelerator = geometry_.acceleratorStats();
+    if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return {std::move(film), stats, cancelled()};
 }

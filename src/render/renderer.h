@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
+#include "integrators/radiosity.h"
 #include "integrators/ray_counters.h"
 #include "lights/light_set.h"
 #include "scene/camera.h"
@@ -44,6 +46,7 @@ struct RenderOptions {
     const std::atomic<bool>* cancel = nullptr;
     Accelerator accelerator = Accelerator::Bvh;
     bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
+    RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity
 };
 
 struct RenderStats {
@@ -52,6 +55,7 @@ struct RenderStats {
     std::uint64_t samples = 0;
     int threads = 1;
     AcceleratorStats accelerator;  // what building the BVH (or Embree's) cost, before the render
+    std::optional<RadiosityStats> radiosity;  // its mesh and solve, before the render
 };
 
 struct RenderResult {

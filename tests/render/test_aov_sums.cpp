@@ -12,19 +12,14 @@
 
 #include "film/aov_set.h"
 #include "render/renderer.h"
+#include "shipped_scenes.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"
 
 namespace lightpath {
 namespace {
 
-std::vector<std::filesystem::path> shippedScenes() {
-    std::vector<std::filesystem::path> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes"))
-        if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
-    std::sort(scenes.begin(), scenes.end());
-    return scenes;
-}
+using test::shippedScenes;
 
 Film renderSmall(const std::filesystem::path& file, const AovSet& aovs, const std::string& integrator,
                  int threads = 0) {

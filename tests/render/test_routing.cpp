@@ -138,5 +138,44 @@ TEST_CASE("routing: Whitted's mirror ray adds <RS'mirror'> before the floor's ev
     CHECK(film.at(layerIndex(aovs, "direct"), 4, 4).g == 0.0f);  // the mirror has no D or G of its own
 }
 
+TEST_CASE("explain: Szymczak's factors multiply to the term, and a blocked light says what blocks it") {
+    const glm::dvec3 eye{0, 2, 3}, light{1, 3, 1};
+    Scene scene = floorScene(Vec3(eye), {0, 0, 0}, Vec3(light));
+    // A second light straight above the origin, hidden behind a ball named "blocker" at height 1.
+    scene.lights.push_back({"top", {0, 4, 0}, Rgb{1.0f}, {1, 0, 0}});
+    PhongMaterial grey;
+    grey.name = "grey";
+    grey.kd = Rgb{0.5f};
+    test::addSphere(scene, "blocker", test::addMaterial(scene, grey), {0, 1, 0}, 0.25f);
+    const AovSet aovs(std::vector<lpe::NamedExpression>{});
+    RenderOptions options;
+    options.integrator = "raycast";
+    std::vector<Rejection> rejections;
+    const auto log = Renderer(scene, aovs, options).explainPixel(4, 4, &rejections);
+
+    const ExpectedEvent rd{EventType::Reflection, Scatter::Diffuse, Subject::Object, 0};
+    int checked = 0;
+    for (const LoggedContribution& c : log) {
+        if (!sameEvents(c.path, {kEye, rd, kKey})) continue;
+        REQUIRE(c.factorCount == 4);
+        const char* names[] = {"kd", "N.L", "I", "attenuation"};
+        Rgb product{1.0f};
+        for (std::size_t f = 0; f < 4; ++f) {
+            CHECK(std::string(c.factors[f].name) == names[f]);
+            product *= c.factors[f].value;
+        }
+        CHECK(c.factors[1].value.g == doctest::Approx(glm::normalize(light).y).epsilon(1e-5));
+        CHECK(c.factors[2].value.g == doctest::Approx(kIntensity).epsilon(1e-5));
+        CHECK(product.g == doctest::Approx(c.value.g).epsilon(1e-5));
+        ++checked;
+    }
+    CHECK(checked == 1);
+    // The shadow ray from the origin to (0, 4, 0) meets the ball's bottom at t = 0.75.
+    bool blocked = false;
+    for (const Rejection& r : rejections)
+        blocked |= r.reason.find("towards top is blocked by blocker at t = 0.750") != std::string::npos;
+    CHECK(blocked);
+}
+
 }  // namespace
 }  // namespace lightpath

@@ -16,6 +16,7 @@
 
 #include "film/aov_set.h"
 #include "render/renderer.h"
+#include "shipped_scenes.h"
 #include "scene/scene_loader.h"
 #include "statistics.h"
 
@@ -99,13 +100,7 @@ Scene brighter(Scene scene) {
     return scene;
 }
 
-std::vector<std::filesystem::path> shippedScenes() {
-    std::vector<std::filesystem::path> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes"))
-        if (entry.path().extension() == ".toml") scenes.push_back(entry.path());
-    std::sort(scenes.begin(), scenes.end());
-    return scenes;
-}
+using test::shippedScenes;
 
 bool allZero(const PixelEstimates& e) {
     return std::all_of(e.mean.begin(), e.mean.end(), [](double v) { return v == 0.0; });

@@ -1,0 +1,396 @@
+#include "integrators/radiosity.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "geometry/spawn_ray.h"
+#include "integrators/direct_light.h"
+#include "math/random.h"
+#include "render/progress.h"
+#include "sampling/warp.h"
+
+namespace lightpath {
+namespace {
+
+// More patches than this would need gigabytes of form factors: refused with a clear message.
+constexpr std::size_t kMaxPatches = std::size_t{1} << 18;
+// Elements handed to a worker at a time, and one progress step.
+constexpr std::uint32_t kChunk = 256;
+
+float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// Runs work(begin, end) over [0, count) in chunks on `threads` workers; stops handing out chunks
+// once `cancel` is set.
+template <class Work>
+void parallelChunks(std::uint32_t count, int threads, const std::atomic<bool>* cancel, ProgressBar& progress, Work work) {
+    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<std::uint32_t> next{0};
+    const auto worker = [&] {
+        for (std::uint32_t begin = next.fetch_add(kChunk); begin < count; begin = next.fetch_add(kChunk)) {
+            if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return;
+            work(begin, std::min(count, begin + kChunk));
+            progress.tileDone();
+        }
+    };
+    std::vector<std::jthread> helpers;
+    for (int t = 1; t < threads; ++t) helpers.emplace_back(worker);
+    worker();
+}
+
+std::uint32_t chunkCount(std::uint32_t count) { return (count + kChunk - 1) / kChunk; }
+
+// A stratified pattern of `side` x `side` points in [0,1)^2, one jittered point per cell: cell k.
+Vec2 stratum(std::uint32_t k, std::uint32_t side, Pcg32& rng) {
+    return {(float(k % side) + rng.nextFloat()) / float(side), (float(k / side) + rng.nextFloat()) / float(side)};
+}
+
+// A random permutation of 0..n-1 (Fisher-Yates), pairing two stratified patterns without
+// correlating them.
+void shuffle(std::vector<std::uint32_t>& order, Pcg32& rng) {
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.nextUint() % i]);
+}
+
+std::uint32_t strataPerSide(int samples) {
+    return std::max(1u, static_cast<std::uint32_t>(std::lround(std::sqrt(double(std::max(samples, 1))))));
+}
+
+// A surface point of a patch as the ray-spawning code expects it.
+SurfaceHit surfacePoint(const RadiosityPatch& patch, const PatchPoint& p) {
+    SurfaceHit hit;
+    hit.point = p.point;
+    hit.normal = p.normal;
+    hit.shadingNormal = p.normal;
+    hit.object = patch.object;
+    hit.shape = patch.shape;
+    hit.primitive = patch.primitive;
+    return hit;
+}
+
+// 0 when a ray travelling along `direction` meets the front side (the side the normal faces).
+int sideFacing(const Vec3& normal, const Vec3& direction) { return glm::dot(normal, direction) < 0.0f ? 0 : 1; }
+
+PathEvent unlabelledDiffuse(const Vec3& position) {
+    return {lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::None, 0, position};
+}
+
+}  // namespace
+
+void RadiosityIntegrator::preprocess(const RenderContext& context) {
+    const auto started = std::chrono::steady_clock::now();
+    const RadiosityOptions& options = context.radiosity;
+    display_ = options.display;
+    stats_ = {};
+    const float patchSize = options.patchSize > 0.0f
+                                ? options.patchSize
+                                : RadiosityMesh::patchSizeForBudget(context.scene, context.geometry, options.patchBudget);
+    const std::size_t count = RadiosityMesh::countPatches(context.scene, context.geometry, patchSize);
+    if (count > kMaxPatches)
+        throw std::invalid_argument("radiosity: patch size " + std::to_string(patchSize) + " makes " +
+                                    std::to_string(count) + " patches, more than the " + std::to_string(kMaxPatches) +
+                                    " radiosity can hold; choose a larger --patch-size or a smaller --patches");
+    mesh_.emplace(context.scene, context.geometry, patchSize);
+    stats_.patches = mesh_->patches().size();
+    stats_.patchSize = patchSize;
+    reflectance_.clear();
+    for (const RadiosityPatch& p : mesh_->patches())
+        reflectance_.push_back(context.scene.materials[context.scene.objects[p.object].material].kd);
+
+    const std::vector<int> wanted = wantedBounces(context);
+    bounces_ = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());
+    solvedBounces_.assign(wanted.size(), 0);
+    const int lightsWanted = static_cast<int>(std::count_if(wanted.begin(), wanted.end(), [](int b) { return b > 0; }));
+    stats_.lightsSolved = lightsWanted;
+
+    // Progress steps: chunks of form factors, of each light's direct light, and of each later
+    // (light, bounce); the tolerance may stop the solve before the last.
+    int passes = (bounces_ > 1 ? 1 : 0) + lightsWanted;
+    for (int b : wanted) passes += std::max(b - 1, 0);
+    const int steps = static_cast<int>(chunkCount(elementCount())) * passes;
+    ProgressBar progress(steps, context.progress, "radiosity steps");
+    values_.assign(wanted.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
+    rowStart_.assign(std::size_t(elementCount()) + 1, 0);
+    targets_.clear();
+    factors_.clear();
+    if (bounces_ > 0) {
+        // Direct light alone (every wanted path is E D L) needs no form factors.
+        if (bounces_ > 1) computeFormFactors(context, progress);
+        gatherDirectLight(context, wanted, progress);
+        solve(context, wanted, progress);
+        computeVertexValues();
+    }
+    stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context) const {
+    const auto lights = context.lights.all();
+    std::vector<int> wanted(lights.size(), 0);
+    if (context.maxDepth == 0) return wanted;
+    // Probe the automaton along E D_object D{k-1} L for every object that reflects: the paths
+    // radiosity can show. A light no requested output accepts after any of them is not solved,
+    // and neither is any bounce beyond the last one some output accepts.
+    ContributionSink sink({});
+    RayCounters counters;
+    PathState path(context, sink, counters);
+    if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, Vec3{0.0f}})) return wanted;
+    // Objects with a patch that reflects: radiosity shows light only on those.
+    std::vector<bool> reflects(context.scene.objects.size(), false);
+    for (std::size_t p = 0; p < mesh_->patches().size(); ++p)
+        if (!isBlack(reflectance_[p])) reflects[mesh_->patches()[p].object] = true;
+    for (std::uint32_t object = 0; object < reflects.size(); ++object) {
+        if (!reflects[object]) continue;
+        if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, object, Vec3{0.0f}})) continue;
+        for (int k = 1; k <= context.maxDepth; ++k) {
+            for (std::size_t l = 0; l < lights.size(); ++l)
+                if (path.wants(lights[l]->event())) wanted[l] = std::max(wanted[l], k);
+            if (k == context.maxDepth || !path.push(unlabelledDiffuse(Vec3{0.0f}))) break;
+        }
+        while (path.size() > 1) path.pop();
+    }
+    return wanted;
+}
+
+void RadiosityIntegrator::computeFormFactors(const RenderContext& context, ProgressBar& progress) {
+    const std::uint32_t side = strataPerSide(context.radiosity.formFactorRays);
+    const std::uint32_t rays = side * side;
+    const std::uint32_t elements = elementCount();
+    const auto& patches = mesh_->patches();
+    // Each chunk writes its own rows; they are joined in element order afterwards.
+    struct ChunkRows {
+        std::vector<std::uint32_t> lengths, targets;
+        std::vector<float> factors;
+        std::uint64_t rays = 0;
+    };
+    std::vector<ChunkRows> rows(chunkCount(elements));
+    parallelChunks(elements, context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
+        ChunkRows& out = rows[begin / kChunk];
+        std::vector<std::uint32_t> order(rays), hits;
+        hits.reserve(rays);
+        for (std::uint32_t e = begin; e < end; ++e) {
+            const std::uint32_t p = e / 2;
+            hits.clear();
+            if (!isBlack(reflectance_[p])) {
+                Pcg32 rng(mixBits(e), 0xf0f0u);
+                shuffle(order, rng);
+                for (std::uint32_t k = 0; k < rays; ++k) {
+                    const PatchPoint point = mesh_->samplePoint(p, stratum(order[k], side, rng));
+                    const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
+                    const Vec3 direction = Frame(normal).toWorld(sampleCosineHemisphere(stratum(k, side, rng)));
+                    const auto hit = context.geometry.intersect(
+                        spawnRay(surfacePoint(patches[p], point), direction, context.geometry.numerics()));
+                    if (!hit) continue;
+                    const auto found = mesh_->lookup(*hit);
+                    if (found) hits.push_back(2 * found->patch + std::uint32_t(sideFacing(hit->normal, direction)));
+                }
+                out.rays += rays;
+            }
+            std::sort(hits.begin(), hits.end());
+            std::uint32_t length = 0;
+            for (std::size_t i = 0; i < hits.size();) {
+                std::size_t j = i;
+                while (j < hits.size() && hits[j] == hits[i]) ++j;
+                out.targets.push_back(hits[i]);
+                out.factors.push_back(float(j - i) / float(rays));
+                ++length;
+                i = j;
+            }
+            out.lengths.push_back(length);
+        }
+    });
+    rowStart_.assign(1, 0);
+    targets_.clear();
+    factors_.clear();
+    for (const ChunkRows& chunk : rows) {
+        for (std::uint32_t length : chunk.lengths) rowStart_.push_back(rowStart_.back() + length);
+        targets_.insert(targets_.end(), chunk.targets.begin(), chunk.targets.end());
+        factors_.insert(factors_.end(), chunk.factors.begin(), chunk.factors.end());
+        stats_.formFactorRays += chunk.rays;
+    }
+    rowStart_.resize(std::size_t(elements) + 1, rowStart_.back());  // rows of a cancelled solve stay empty
+}
+
+void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted,
+                                            ProgressBar& progress) {
+    const std::uint32_t side = strataPerSide(context.radiosity.lightSamples);
+    const std::uint32_t samples = side * side;
+    const auto lights = context.lights.all();
+    const auto& patches = mesh_->patches();
+    std::atomic<std::uint64_t> shadowRays{0};
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        if (wanted[l] == 0) continue;
+        const Light& light = *lights[l];
+        parallelChunks(elementCount(), context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
+            std::vector<std::uint32_t> order(samples);
+            std::uint64_t cast = 0;
+            for (std::uint32_t e = begin; e < end; ++e) {
+                const std::uint32_t p = e / 2;
+                if (isBlack(reflectance_[p])) continue;
+                Pcg32 rng(mixBits(e ^ (std::uint64_t(l) << 40)), 0x1165u);
+                shuffle(order, rng);
+                // Radiance reflected by a Lambertian patch, over kd: (1/pi) cos(theta) times each
+                // light sample's weight, plus, for an area light, the emitter's radiance met by a
+                // cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
+                // heuristic, so neither the 1/d^2 of points near the emitter nor small bright
+                // emitters make the patch noisy.
+                Rgb sum{0.0f};
+                for (std::uint32_t k = 0; k < samples; ++k) {
+                    const PatchPoint point = mesh_->samplePoint(p, stratum(k, side, rng));
+                    const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
+                    const SurfaceHit from = surfacePoint(patches[p], point);
+                    const LightSample s = light.sample(point.point, stratum(order[k], side, rng));
+                    const float cosTheta = glm::dot(normal, s.wi);
+                    if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
+                        ++cast;
+                        if (!context.geometry.occluded(spawnShadowRay(from, s.point, context.geometry.numerics()))) {
+                            const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
+                            sum += (weight * cosTheta / kPi) * s.weight;
+                        }
+                    }
+                    if (light.isDelta()) continue;
+                    const Vec3 local = sampleCosineHemisphere(Vec2{rng.nextFloat(), rng.nextFloat()});
+                    const Vec3 direction = Frame(normal).toWorld(local);
+                    ++cast;
+                    const auto hit = context.geometry.intersect(spawnRay(from, direction, context.geometry.numerics()));
+                    if (!hit || context.lights.lightOfObject(hit->object) != &light) continue;
+                    const Rgb emitted = light.radiance(*hit, -direction);
+                    if (isBlack(emitted)) continue;
+                    const float lightPdf = light.pdf(point.point, hit->point, hit->normal);
+                    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
+                }
+                values_[valueIndex(l, 1, e)] = reflectance_[p] * sum / float(samples);
+            }
+            shadowRays += cast;
+        });
+        solvedBounces_[l] = 1;
+    }
+    stats_.shadowRays = shadowRays.load();
+    stats_.iterations = 1;
+    stats_.lightBouncesSolved = static_cast<int>(std::count_if(wanted.begin(), wanted.end(), [](int b) { return b > 0; }));
+}
+
+void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress) {
+    const auto& patches = mesh_->patches();
+    // Flux leaving all elements in one bounce, summed over lights (luminance, per unit pi).
+    const auto flux = [&](int bounce) {
+        double total = 0.0;
+        for (std::size_t l = 0; l < wanted.size(); ++l) {
+            if (wanted[l] < bounce) continue;
+            for (std::uint32_t e = 0; e < elementCount(); ++e)
+                total += double(patches[e / 2].area) * luminance(values_[valueIndex(l, bounce, e)]);
+        }
+        return total;
+    };
+    double solution = flux(1);
+    stats_.residual = solution > 0.0 ? 1.0 : 0.0;
+    for (int k = 2; k <= bounces_; ++k) {
+        if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) return;
+        // Jacobi: bounce k = rho F (bounce k-1), per light (Cohen and Wallace 1993, 5.3).
+        for (std::size_t l = 0; l < wanted.size(); ++l) {
+            if (wanted[l] < k) continue;
+            const Rgb* previous = &values_[valueIndex(l, k - 1, 0)];
+            Rgb* next = &values_[valueIndex(l, k, 0)];
+            parallelChunks(elementCount(), context.threads, context.cancel, progress,
+                           [&](std::uint32_t begin, std::uint32_t end) {
+                               for (std::uint32_t e = begin; e < end; ++e) {
+                                   Rgb gathered{0.0f};
+                                   for (std::uint64_t i = rowStart_[e]; i < rowStart_[e + 1]; ++i)
+                                       gathered += factors_[i] * previous[targets_[i]];
+                                   next[e] = reflectance_[e / 2] * gathered;
+                               }
+                           });
+            solvedBounces_[l] = k;
+            ++stats_.lightBouncesSolved;
+        }
+        stats_.iterations = k;
+        const double added = flux(k);
+        solution += added;
+        stats_.residual = solution > 0.0 ? added / solution : 0.0;
+        if (stats_.residual < context.radiosity.tolerance) break;
+    }
+}
+
+void RadiosityIntegrator::computeVertexValues() {
+    // A vertex's radiosity is the area-weighted mean of the patches around it (Cohen and Wallace
+    // 1993, 9.3): what Gouraud shading interpolates.
+    const auto& patches = mesh_->patches();
+    std::vector<float> vertexArea(mesh_->vertexCount(), 0.0f);
+    for (const RadiosityPatch& p : patches)
+        for (int v = 0; v < p.vertexCount; ++v) vertexArea[p.vertices[v]] += p.area;
+    vertexValues_.assign(solvedBounces_.size() * std::size_t(bounces_) * 2 * mesh_->vertexCount(), Rgb{0.0f});
+    for (std::size_t l = 0; l < solvedBounces_.size(); ++l) {
+        for (int k = 1; k <= solvedBounces_[l]; ++k) {
+            for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
+                const RadiosityPatch& p = patches[patch];
+                for (int side = 0; side < 2; ++side) {
+                    const Rgb weighted = p.area * values_[valueIndex(l, k, 2 * patch + std::uint32_t(side))];
+                    for (int v = 0; v < p.vertexCount; ++v) vertexValues_[vertexValueIndex(l, k, p.vertices[v], side)] += weighted;
+                }
+            }
+            for (std::size_t v = 0; v < vertexArea.size(); ++v)
+                for (int side = 0; side < 2; ++side)
+                    if (vertexArea[v] > 0.0f) vertexValues_[vertexValueIndex(l, k, v, side)] /= vertexArea[v];
+        }
+    }
+}
+
+Rgb RadiosityIntegrator::patchRadiance(std::size_t light, int bounce, std::uint32_t patch, int side) const {
+    if (light >= solvedBounces_.size() || bounce < 1 || bounce > solvedBounces_[light]) return Rgb{0.0f};
+    return values_[valueIndex(light, bounce, 2 * patch + std::uint32_t(side))];
+}
+
+RadiosityIntegrator::FormFactorRow RadiosityIntegrator::formFactors(std::uint32_t patch, int side) const {
+    const std::uint32_t e = 2 * patch + std::uint32_t(side);
+    if (std::size_t(e) + 1 >= rowStart_.size()) return {};
+    const std::size_t begin = rowStart_[e], length = rowStart_[e + 1] - begin;
+    return {std::span(targets_).subspan(begin, length), std::span(factors_).subspan(begin, length)};
+}
+
+void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
+    const RenderContext& ctx = path.context;
+    const auto hit = ctx.geometry.intersect(ray);
+    if (!hit) {
+        addBackground(ray, Rgb{1.0f}, path);
+        return;
+    }
+    // Bounce 0: an emitter's own radiance, exactly as every other integrator shows it.
+    addEmission(*hit, ray, Rgb{1.0f}, 1.0f, path);
+    if (bounces_ == 0) return;
+    const auto found = mesh_->lookup(*hit);
+    if (!found) return;  // a clipped plane beyond its rectangle: no patch, no radiosity
+    const RadiosityPatch& patch = mesh_->patches()[found->patch];
+    const int side = sideFacing(hit->normal, ray.direction);
+    const std::size_t start = path.size();
+    if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, hit->object, hit->point})) {
+        ++path.counters.reflectionDead;
+        return;
+    }
+    const auto lights = ctx.lights.all();
+    for (int k = 1; k <= bounces_; ++k) {
+        for (std::size_t l = 0; l < lights.size(); ++l) {
+            if (k > solvedBounces_[l]) continue;
+            const PathEvent& light = lights[l]->event();
+            if (!path.wants(light)) continue;
+            Rgb value{0.0f};
+            if (display_ == RadiosityDisplay::Flat) {
+                value = values_[valueIndex(l, k, 2 * found->patch + std::uint32_t(side))];
+            } else {
+                for (int v = 0; v < patch.vertexCount; ++v)
+                    value += found->weights[v] * vertexValues_[vertexValueIndex(l, k, patch.vertices[v], side)];
+            }
+            if (!isBlack(value) || !ctx.skipEnabled) path.emit(light, value);
+        }
+        if (k == bounces_) break;
+        // The intermediate reflections are a sum over every patch: unlabelled D events.
+        if (!path.push(unlabelledDiffuse(hit->point))) {
+            ++path.counters.reflectionDead;
+            break;
+        }
+    }
+    while (path.size() > start) path.pop();
+}
+
+}  // namespace lightpath

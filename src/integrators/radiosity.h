@@ -1,0 +1,90 @@
+#pragma once
+// Classic diffuse radiosity (Goral et al. 1984; Cohen and Wallace 1993), the lecture's fourth
+// method, whose light paths are exactly E D* L.
+//
+// preprocess() meshes the scene (RadiosityMesh), estimates form factors by casting stratified
+// cosine-weighted hemisphere rays from every side of every patch through the scene's BVH (so
+// F_ij is the fraction of patch i's rays that land on patch j's facing side, and visibility is the
+// tracer's own), gathers every light's direct light at sample points of each patch with shadow rays
+// (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k). Iteration k holds
+// exactly the light that has been reflected k times, kept per bounce and per light, so a camera ray
+// can hand each to the automaton as its own path E D{k} L.
+//
+// A patch's reflectance is its material's diffuse kd (the Lambert lobe of the shared Bsdf). Glossy
+// (ks), mirror (kr) and glass (kt) parts take no part, as in classic radiosity, and neither does
+// the ambient term ka Ia. Emitters' own radiance is what the other integrators show for E L / E O.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "integrators/integrator.h"
+#include "integrators/radiosity_mesh.h"
+
+namespace lightpath {
+
+class ProgressBar;
+
+struct RadiosityStats {
+    std::size_t patches = 0;
+    float patchSize = 0.0f;
+    std::uint64_t formFactorRays = 0;
+    std::uint64_t shadowRays = 0;      // direct light: shadow rays and, for area lights, rays towards them
+    int iterations = 0;                // bounces solved (Jacobi iterations, the first one direct)
+    int lightsSolved = 0;              // lights some requested output accepts
+    int lightBouncesSolved = 0;        // (light, bounce) solutions computed, summed over lights
+    double residual = 0.0;             // the last iteration's flux over the solution's
+    double seconds = 0.0;              // meshing, form factors, direct light and the solve
+};
+
+class RadiosityIntegrator final : public Integrator {
+public:
+    void preprocess(const RenderContext& context) override;
+    void traceCameraRay(const Ray& ray, PathState& path) const override;
+
+    const RadiosityStats& stats() const { return stats_; }
+    const RadiosityMesh& mesh() const { return *mesh_; }
+    // The solved radiance leaving side `side` (0: front, along the patch's normal) of `patch` after
+    // exactly `bounce` reflections of light `light` (LightSet::all() order); zero if not solved.
+    Rgb patchRadiance(std::size_t light, int bounce, std::uint32_t patch, int side) const;
+    // The form factors from one side of a patch (the ray estimates): to element 2 * patch + side of
+    // each patch its rays reached.
+    struct FormFactorRow {
+        std::span<const std::uint32_t> targets;
+        std::span<const float> factors;
+    };
+    FormFactorRow formFactors(std::uint32_t patch, int side) const;
+
+private:
+    // An element is one side of one patch: 2 * patch + side.
+    std::uint32_t elementCount() const { return static_cast<std::uint32_t>(2 * mesh_->patches().size()); }
+    // Bounces 1..bounces_ of each light, one after the other.
+    std::size_t slot(std::size_t light, int bounce) const { return light * std::size_t(bounces_) + std::size_t(bounce - 1); }
+    std::size_t valueIndex(std::size_t light, int bounce, std::size_t element) const {
+        return slot(light, bounce) * elementCount() + element;
+    }
+    std::size_t vertexValueIndex(std::size_t light, int bounce, std::size_t vertex, int side) const {
+        return slot(light, bounce) * 2 * mesh_->vertexCount() + 2 * vertex + std::size_t(side);
+    }
+    // The highest bounce of each light that a requested output can accept (0: none).
+    std::vector<int> wantedBounces(const RenderContext& context) const;
+    void computeFormFactors(const RenderContext& context, ProgressBar& progress);
+    void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
+    void solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
+    void computeVertexValues();
+
+    std::optional<RadiosityMesh> mesh_;
+    RadiosityDisplay display_ = RadiosityDisplay::Smooth;
+    std::vector<Rgb> reflectance_;  // per patch: the material's kd
+    // Form factors, one sparse row per element: targets_[rowStart_[e] .. rowStart_[e+1]).
+    std::vector<std::uint64_t> rowStart_;
+    std::vector<std::uint32_t> targets_;
+    std::vector<float> factors_;
+    int bounces_ = 0;                 // bounces kept (1..bounces_), the same for every light
+    std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
+    std::vector<Rgb> values_;         // valueIndex(light, bounce, element)
+    std::vector<Rgb> vertexValues_;   // vertexValueIndex(light, bounce, vertex, side)
+    RadiosityStats stats_;
+};
+
+}  // namespace lightpath

@@ -1,0 +1,26 @@
+#pragma once
+// What `--integrator radiosity` is asked for on the command line (README "Radiosity").
+#include <cstddef>
+#include <cstdint>
+
+namespace lightpath {
+
+enum class RadiosityDisplay : std::uint8_t {
+    Smooth,  // vertex radiosities interpolated across each patch (Gouraud)
+    Flat,    // each patch's own radiosity: the mesh is visible
+};
+
+struct RadiosityOptions {
+    // Target patch edge in scene units; 0: the finest size within `patchBudget`.
+    float patchSize = 0.0f;
+    std::size_t patchBudget = 4096;
+    // Hemisphere rays cast from each side of each patch to estimate its form factors (rounded to a
+    // square number, for stratification), and light samples per side of a patch and light.
+    int formFactorRays = 256;
+    int lightSamples = 64;
+    // Jacobi stops once a bounce adds less than this fraction of the light so far (or at --max-depth).
+    double tolerance = 1e-4;
+    RadiosityDisplay display = RadiosityDisplay::Smooth;
+};
+
+}  // namespace lightpath
