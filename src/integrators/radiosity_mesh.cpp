@@ -202,7 +202,10 @@ void RadiosityMesh::addTriangle(ShapeKind shape, std::uint32_t primitive, std::u
 
 void RadiosityMesh::addSphere(std::uint32_t sphereIndex) {
     const Sphere& sphere = geometry_.spheres()[sphereIndex];
-    const auto [bands, sectors] = sphereCells(sphere.radius, patchSize_);
+    // Named variables, not a structured binding: the lambdas below capture them (C++20 allows
+    // capturing bindings, clang 14 does not).
+    const std::pair<std::uint32_t, std::uint32_t> cells = sphereCells(sphere.radius, patchSize_);
+    const std::uint32_t bands = cells.first, sectors = cells.second;
     sources_.push_back({ShapeKind::Sphere, geometry_.sphereId(sphereIndex), static_cast<std::uint32_t>(patches_.size()),
                         0, bands, sectors, Vec3{0.0f}, Vec3{0.0f}, Vec3{0.0f}});
     // Vertices: the two poles, then rings 1..bands-1 of `sectors` each (phi wraps around).
