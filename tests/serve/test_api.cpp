@@ -113,7 +113,9 @@ TEST_CASE("serve: the page's files and the scene description") {
 
 TEST_CASE("serve: the bounce preset is a partition, so its AOVs sum to the beauty") {
     const Scene scene = loadScene(scenePath("mirror-sphere.toml"));
-    for (const auto& [name, set] : presets(scene)) {
+    for (const auto& preset : presets(scene)) {
+        const auto& name = preset.first;
+        const auto& set = preset.second;
         if (name != "bounces" && name != "classes") continue;
         CAPTURE(name);
         CHECK(lpe::analyse(set, name == "classes" ? "E(D|G|S)*L" : "E.*L").partition());
@@ -341,7 +343,9 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
         {"/api/explain?x=1", 400},                {"/api/explain?x=1.5&y=2", 400},
         {"/api/progress?wait=100", 400},          {"/api/scene?verbose=1", 400},
     };
-    for (const auto& [path, status] : gets) {
+    for (const auto& get : gets) {
+        const auto& path = get.first;
+        const auto status = get.second;
         CAPTURE(path);
         const auto r = c->Get(path.c_str());
         REQUIRE(r);
