@@ -13,8 +13,11 @@
 #include "cli/render_command.h"
 #include "cli/serve_command.h"
 #include "cli/stress_command.h"
+#include "io/image_module.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
     CLI::App app{"lightpath: a ray tracer that records every contribution's light path (Heckbert's E(S*)(D|G)L)\n"
                  "and splits the image into AOVs by light path expressions."};
     app.require_subcommand(1);
@@ -57,4 +60,13 @@ int main(int argc, char** argv) {
         return lightpath::kExitFailure;
     }
     return lightpath::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int code = run(argc, argv);
+    // An interrupted or refused render may return while the image module still loads.
+    lightpath::awaitImageModule();
+    return code;
 }

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <chrono>
 #include <future>
 #include <mutex>
 #include <string>
@@ -70,6 +71,16 @@ public:
         }
     }
 
+    void await() {
+        std::shared_future<LoadResult> started;
+        {
+            const std::lock_guard lock(mutex_);
+            started = result_;
+        }
+        // Only a load running on its thread is waited for; waiting on a deferred one would run it.
+        if (started.valid() && started.wait_for(std::chrono::seconds(0)) != std::future_status::deferred) started.wait();
+    }
+
     const LoadResult& result() {
         std::shared_future<LoadResult> result;
         {
@@ -106,6 +117,8 @@ fs::path locateImageModule() {
 }
 
 void preloadImageModule() { loader().startInBackground(); }
+
+void awaitImageModule() { loader().await(); }
 
 const ImageCodec& imageCodec() {
     const LoadResult& loaded = loader().result();

@@ -25,6 +25,10 @@ std::filesystem::path locateImageModule();
 
 // Starts loading the module on a background thread and returns at once. Idempotent.
 void preloadImageModule();
+// Waits until a load started by preloadImageModule() has finished. Call it before the process
+// exits: exit() runs the destructors of every loaded library, and a loader thread still running
+// OpenImageIO's dependencies' constructors would read what they have torn down.
+void awaitImageModule();
 
 // The loaded module's codec, loading it (or waiting for the background load) if need be. Throws
 // ImageModuleError with the loader's reason when it cannot.
