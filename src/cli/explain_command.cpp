@@ -5,6 +5,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cli/exit_codes.h"
@@ -31,6 +32,9 @@ struct PathGroup {
     lpe::OutputMask accepted = 0;
     std::vector<Rgb> values;
     std::vector<std::vector<TermFactor>> factors;  // per contribution, per sample
+    // Per contribution, each event's world position; none for the ambient term, which comes from
+    // nowhere.
+    std::vector<std::vector<std::optional<Vec3>>> positions;
     Rgb sum{0.0f};
     std::vector<std::string> strategies;  // bdpt: the strategies (s, t) that made it, in order found
 };
@@ -88,6 +92,10 @@ std::vector<PathGroup> groupPaths(const Scene& scene, const std::vector<LoggedCo
         PathGroup& g = groups[at->second];
         g.values.push_back(c.value);
         g.factors.emplace_back(c.factors.begin(), c.factors.begin() + static_cast<std::ptrdiff_t>(c.factorCount));
+        std::vector<std::optional<Vec3>>& positions = g.positions.emplace_back();
+        for (std::size_t e = 0; e < c.path.size(); ++e)
+            positions.push_back(c.path[e].subject == Subject::Ambient ? std::nullopt
+                                                                      : std::optional<Vec3>(c.path[e].position));
         g.sum += c.value;
         if (c.lightVertices >= 0) {
             const std::string strategy = "s=" + std::to_string(c.lightVertices) + " t=" + std::to_string(c.eyeVertices) +
@@ -199,8 +207,32 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
 }
 
 // The schema is documented in docs/lpe.md ("explain --json").
-void printJson(const ExplainCommand& command, const RenderOptions& options, const AovSet& aovs, int x, int y,
-               const std::vector<PathGroup>& groups, const std::vector<RejectionGroup>& rejections) {
+// A contribution's path for drawing: each vertex in world space, and each segment between two
+// vertices projected onto the image (the part in front of the eye), null where there is none.
+std::string jsonGeometry(const PinholeCamera& camera, const std::vector<std::optional<Vec3>>& positions) {
+    char buffer[160];
+    std::string json = "\"vertices\": [";
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        const auto& p = positions[v];
+        if (p) std::snprintf(buffer, sizeof buffer, "[%.7g, %.7g, %.7g]", p->x, p->y, p->z);
+        json += (v ? ", " : "") + std::string(p ? buffer : "null");
+    }
+    json += "], \"segments\": [";
+    for (std::size_t v = 0; v + 1 < positions.size(); ++v) {
+        const auto& a = positions[v];
+        const auto& b = positions[v + 1];
+        const auto ends = a && b ? camera.filmSegment(*a, *b) : std::nullopt;
+        if (ends)
+            std::snprintf(buffer, sizeof buffer, "[%.7g, %.7g, %.7g, %.7g]", (*ends)[0].x, (*ends)[0].y, (*ends)[1].x,
+                          (*ends)[1].y);
+        json += (v ? ", " : "") + std::string(ends ? buffer : "null");
+    }
+    return json + "]";
+}
+
+void printJson(const ExplainCommand& command, const Scene& scene, const RenderOptions& options, const AovSet& aovs,
+               int x, int y, const std::vector<PathGroup>& groups, const std::vector<RejectionGroup>& rejections) {
+    const PinholeCamera camera(scene.camera);
     std::ostringstream json;
     json << "{\n  \"schema\": \"lightpath-explain-1\",\n  \"scene\": " << jsonString(command.setup.scenePath)
          << ",\n  \"integrator\": " << jsonString(options.integrator) << ",\n  \"spp\": " << options.samplesPerPixel
@@ -238,7 +270,7 @@ void printJson(const ExplainCommand& command, const RenderOptions& options, cons
         for (std::size_t v = 0; v < g.values.size(); ++v) {
             json << (v ? ", " : "") << "{\"rgb\": " << jsonRgb(g.values[v]) << ", \"factors\": {";
             for (std::size_t f = 0; f < g.factors[v].size(); ++f) json << (f ? ", " : "") << jsonFactor(g.factors[v][f]);
-            json << "}}";
+            json << "}, " << jsonGeometry(camera, g.positions[v]) << "}";
         }
         json << "]}";
         first = false;
@@ -269,7 +301,7 @@ void run(const ExplainCommand& command) {
     const std::vector<PathGroup> groups = groupPaths(scene, log);
     const std::vector<RejectionGroup> rejected = groupRejections(scene, rejections);
     if (command.json) {
-        printJson(command, options, aovs, x, y, groups, rejected);
+        printJson(command, scene, options, aovs, x, y, groups, rejected);
     } else {
         printText(command, options, aovs, x, y, log.size(), groups, rejected);
     }

@@ -65,20 +65,58 @@ std::string readingNote(const std::string& expression, const Warnings& warn, con
 }
 
 struct MatchOptions {
-    std::string expression;
-    std::vector<std::string> paths;
+    std::vector<std::string> arguments;  // EXPRESSION PATH..., or PATH... with --set
+    std::string set;
+    bool trace = false;
     bool quiet = false;
 };
 
+// The states a path passes through: the start, then the state after each event, numbered as
+// `lpe dot` numbers them for the same expressions; "dead" where nothing can accept any more.
+std::string stateTrace(const lpe::Automaton& automaton, const lpe::Path& path) {
+    lpe::Automaton::State state = automaton.start();
+    std::string trace = "states: " + std::to_string(state);
+    for (const lpe::Event& event : path) {
+        state = automaton.step(state, automaton.symbol(event));
+        trace += " " + std::to_string(state);
+        if (automaton.isDead(state, automaton.allOutputs())) return trace + " (dead)";
+    }
+    return trace;
+}
+
 void runMatch(const MatchOptions& options) {
-    const lpe::Automaton automaton = lpe::Automaton::compile({{"lpe", options.expression}});
+    std::vector<lpe::NamedExpression> expressions;
+    std::vector<std::string> pathTexts = options.arguments;
+    if (const auto preset = findAovPreset(options.set)) {
+        expressions = preset->expressions();
+    } else if (!pathTexts.empty()) {
+        expressions.push_back({"lpe", pathTexts.front()});
+        pathTexts.erase(pathTexts.begin());
+    }
+    if (pathTexts.empty())
+        throw CLI::RuntimeError("lpe match: expected an expression (or --set NAME) and at least one path", kExitBadInput);
+    const lpe::Automaton automaton = lpe::Automaton::compile(expressions);
     // Read every path first: a typo in the last one should not leave half a report.
     std::vector<lpe::Path> paths;
-    for (const std::string& text : options.paths) paths.push_back(lpe::parsePath(text));
-    const std::string note = readingNote(options.expression, Warnings(options.quiet), "");
-    if (!note.empty()) std::cout << options.expression << note << '\n';
+    for (const std::string& text : pathTexts) paths.push_back(lpe::parsePath(text));
+    if (options.set.empty()) {
+        const std::string note = readingNote(expressions.front().expression, Warnings(options.quiet), "");
+        if (!note.empty()) std::cout << expressions.front().expression << note << '\n';
+    }
+    std::size_t width = std::string("no match").size();
+    for (const auto& e : expressions) width = std::max(width, e.name.size());
     for (std::size_t i = 0; i < paths.size(); ++i) {
-        std::cout << (automaton.matches(paths[i], 0) ? "match     " : "no match  ") << options.paths[i] << '\n';
+        const lpe::OutputMask accepted = automaton.run(paths[i]);
+        std::string verdict;
+        if (options.set.empty()) {
+            verdict = accepted != 0 ? "match" : "no match";
+        } else {
+            for (std::size_t o = 0; o < automaton.outputCount(); ++o)
+                if ((accepted >> o) & 1u) verdict += (verdict.empty() ? "" : ",") + automaton.outputName(o);
+            if (verdict.empty()) verdict = "no match";
+        }
+        std::cout << verdict << std::string(width + 2 - std::min(width + 1, verdict.size()), ' ') << pathTexts[i] << '\n';
+        if (options.trace) std::cout << std::string(width + 2, ' ') << stateTrace(automaton, paths[i]) << '\n';
     }
 }
 
@@ -233,20 +271,27 @@ void addLpeCommand(CLI::App& app) {
 
     auto match = std::make_shared<MatchOptions>();
     CLI::App* matchCommand = lpe->add_subcommand("match", "Does each path match the expression?");
-    matchCommand->add_option("expression", match->expression, "the light path expression")->required();
-    matchCommand->add_option("paths", match->paths,
-                             "paths, compact (ESDL), tuples (\"E RS RD'floor' L'key'\") or as explain prints them "
-                             "(\"E <RS> <RD'floor'> <L.'key'>\")")
-        ->required();
+    matchCommand->add_option("expression-and-paths", match->arguments,
+                             "the light path expression (unless --set), then paths: compact (ESDL), tuples "
+                             "(\"E RS RD'floor' L'key'\") or as explain prints them (\"E <RS> <RD'floor'> <L.'key'>\")");
+    std::vector<std::string> presets;
+    for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
+    matchCommand->add_option("--set", match->set, "match against a predefined set's expressions (every argument is a path)")
+        ->check(oneOf(presets));
+    matchCommand->add_flag("--trace", match->trace,
+                           "also print the automaton states each path passes through, numbered as lpe dot draws them");
     matchCommand->add_flag("--quiet", match->quiet, "no warnings");
     matchCommand->footer(
         "Prints `match` or `no match` and the path, one line per path; first, when lightpath reads the\n"
         "expression otherwise than it is written (Heckbert's [ ] = optional, <L'key'> = <L.'key'>), the\n"
-        "reading it used.\n\n"
+        "reading it used. With --set, the names of the expressions that accept each path instead.\n"
+        "With --trace, a second line per path: `states:` the start state, then the state after each\n"
+        "event, as `lpe dot` numbers them for the same expressions (`(dead)`: nothing can accept any more).\n\n"
         "Examples:\n"
         "  lightpath lpe match 'E(D|G)L' EDL ESDL        match EDL, no match ESDL\n"
         "  lightpath lpe match 'ES*<L.'\\''key'\\''>' \"E RS L'key'\" \"E L'fill'\"\n"
-        "  lightpath lpe match '<TS>+L' \"TS TS L\" \"RS L\"   refraction only");
+        "  lightpath lpe match '<TS>+L' \"TS TS L\" \"RS L\"   refraction only\n"
+        "  lightpath lpe match --set classes --trace EDL ESDL   raycast, raytrace, and their states");
     matchCommand->callback([match] { reportingErrors([&] { runMatch(*match); }); });
 
     auto check = std::make_shared<SetOptions>();

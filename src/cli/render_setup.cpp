@@ -105,6 +105,10 @@ void RenderSetup::addOptions(CLI::App& command) {
                        "radiosity: smooth (vertex radiosities interpolated, Gouraud) or flat (one value per patch)")
         ->check(CLI::IsMember({"smooth", "flat"}))
         ->capture_default_str();
+    command.add_option("--shadows", shadows,
+                       "Shadow rays of raycast and whitted: on (default) or off (every light counts as visible: "
+                       "Szymczak's formula with S_i = 1, what the raster integrator shows)")
+        ->check(oneOf({"on", "off"}));
     command.add_flag("--no-skip", noSkip,
                      "Trace every ray and evaluate every term, even those that cannot contribute (for comparison)");
 }
@@ -239,6 +243,7 @@ RenderOptions RenderSetup::renderOptions() const {
     options.targetError = targetError;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;
+    if (!shadows.empty()) options.shadows = shadows == "on";
     options.accelerator = accel == "embree" ? Accelerator::Embree
                           : accel == "none" ? Accelerator::BruteForce
                                             : Accelerator::Bvh;

@@ -29,6 +29,7 @@ struct RenderSetup {
     double targetError = 0.0;
     bool noBeauty = false;
     bool noSkip = false;
+    std::string shadows;             // "on", "off" or empty (the integrator's own)
     std::string accel = "bvh";       // bvh, embree or none (brute force)
     bool quiet = false;              // no progress bar, no warnings
     // `serve`: an --lpe that no path of the integrator can fill is a warning (its tile stays black

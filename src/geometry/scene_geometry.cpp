@@ -230,7 +230,7 @@ bool SceneGeometry::occludedBruteForce(const Ray& ray) const {
     return false;
 }
 
-SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id) const {
+SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {
     SurfaceHit hit;
     hit.t = t;
     hit.point = ray.at(t);
@@ -259,8 +259,11 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id)
     hit.normal = triangleNormal(tri);
     hit.shadingNormal = hit.normal;
     hit.object = tri.object;
-    Vec3 weights;
-    if (intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit) {
+    Vec3 weights{0.0f};
+    bool weighted = true;
+    if (barycentrics != nullptr) weights = *barycentrics;
+    else weighted = intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit;
+    if (weighted) {
         hit.point = weights.x * tri.a + weights.y * tri.b + weights.z * tri.c;
         if (!vertexNormals_.empty()) {
             const TriangleNormals& n = vertexNormals_[id];

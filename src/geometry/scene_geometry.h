@@ -61,6 +61,15 @@ public:
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
 
+    // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit, with this
+    // geometry's numerics.
+    float intersectPrimitive(const Ray& ray, std::uint32_t id) const;
+    // The hit of `ray` at `t` on primitive `id`: the one description of a surface point every
+    // visibility method shares. A triangle's point and smooth normal come from `barycentrics`
+    // (weights of a, b, c) when given — a rasteriser's interpolated coordinates — else from
+    // intersecting the triangle again.
+    SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics = nullptr) const;
+
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }
     const AcceleratorStats& acceleratorStats() const { return stats_; }
@@ -89,9 +98,6 @@ public:
 private:
     std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
     bool occludedBruteForce(const Ray& ray) const;
-    // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit.
-    float intersectPrimitive(const Ray& ray, std::uint32_t id) const;
-    SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id) const;
     // Calls keep(t, id) for every primitive of the BVH leaf at `firstSlot` that `ray` hits, t as
     // intersectPrimitive gives it; its triangles are read from their leaf-ordered copy and
     // filtered four at once first: the same test on the same numbers, from adjacent memory.

@@ -105,19 +105,21 @@ void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSam
         return;
     }
 
-    ++counters.shadow;
-    const Ray shadowRay = spawnShadowRay(p.hit, sample.point, ctx.geometry.numerics());
-    if (ctx.geometry.occluded(shadowRay)) {
-        if (path.explaining()) {
-            const auto blocker = ctx.geometry.intersect(shadowRay);
-            const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
-                                    blocker ? blocker->object : 0};
-            path.reject(events[0], lightEvent,
-                        "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
-                            (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
-                            formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
+    if (ctx.shadows) {
+        ++counters.shadow;
+        const Ray shadowRay = spawnShadowRay(p.hit, sample.point, ctx.geometry.numerics());
+        if (ctx.geometry.occluded(shadowRay)) {
+            if (path.explaining()) {
+                const auto blocker = ctx.geometry.intersect(shadowRay);
+                const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
+                                        blocker ? blocker->object : 0};
+                path.reject(events[0], lightEvent,
+                            "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
+                                (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
+                                formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
+            }
+            return;
         }
-        return;
     }
     for (int l = 0; l < 2; ++l) {
         if (!wanted[l] || (skip && isBlack(value[l]))) continue;

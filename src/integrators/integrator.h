@@ -44,6 +44,10 @@ struct RenderContext {
     int threads = 0;
     bool progress = false;
     const std::atomic<bool>* cancel = nullptr;
+    // Off (`--shadows off`): direct light counts every light as visible and casts no shadow ray,
+    // Szymczak's formula with its shadow term S_i = 1 (raycast and whitted; the rasteriser has no
+    // rays, so it is always off there).
+    bool shadows = true;
 };
 
 class Integrator {
@@ -56,9 +60,12 @@ public:
     virtual void traceCameraRay(const Ray& ray, PathState& path) const = 0;
     // True when the integrator splats (PathState::splat) into pixels other than the one sampled.
     virtual bool splats() const { return false; }
+    // True when the integrator sees each pixel only at its centre (the rasteriser's fixed sample
+    // grid): the renderer then takes exactly one sample per pixel.
+    virtual bool samplesPixelCentres() const { return false; }
 };
 
-// "raycast", "whitted", "path" or "radiosity"; nullptr for an unknown name.
+// A name of the registry (registry.h); nullptr for an unknown name.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 
 }  // namespace lightpath

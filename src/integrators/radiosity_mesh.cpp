@@ -20,13 +20,6 @@ std::uint32_t triangleSubdivisions(const Vec3& a, const Vec3& b, const Vec3& c, 
     return static_cast<std::uint32_t>(std::clamp(std::ceil(longest / patchSize), 1.0, kMaxSubdivisions));
 }
 
-// Bands of equal height (so equal area) and sectors of about one patch size at the equator.
-std::pair<std::uint32_t, std::uint32_t> sphereCells(float radius, float patchSize) {
-    const double bands = std::clamp(std::ceil(2.0 * radius / patchSize), 2.0, kMaxSubdivisions);
-    const double sectors = std::clamp(std::ceil(2.0 * kPi * radius / patchSize), 4.0, kMaxSubdivisions);
-    return {static_cast<std::uint32_t>(bands), static_cast<std::uint32_t>(sectors)};
-}
-
 bool hasArea(const Vec3& a, const Vec3& b, const Vec3& c) {
     const float area2 = glm::length(glm::cross(b - a, c - a));
     return std::isfinite(area2) && area2 > 0.0f;
@@ -37,6 +30,17 @@ bool hasArea(const Vec3& a, const Vec3& b, const Vec3& c) {
 std::uint32_t rowStart(std::uint32_t n, std::uint32_t j) { return j * (2 * n - j); }
 
 }  // namespace
+
+SphereCells sphereCells(float radius, float patchSize) {
+    const double bands = std::clamp(std::ceil(2.0 * radius / patchSize), 2.0, kMaxSubdivisions);
+    const double sectors = std::clamp(std::ceil(2.0 * kPi * radius / patchSize), 4.0, kMaxSubdivisions);
+    return {static_cast<std::uint32_t>(bands), static_cast<std::uint32_t>(sectors)};
+}
+
+Vec3 sphereDirection(float z, float phi) {
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
 
 // Joins the grid vertices that neighbouring triangles of one object and orientation share, so
 // a vertex's radiosity averages the patches around it across triangle edges (a quad's diagonal).
@@ -110,8 +114,8 @@ std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane) {
 std::size_t RadiosityMesh::countPatches(const Scene& scene, const SceneGeometry& geometry, float patchSize) {
     std::size_t count = 0;
     for (const Sphere& s : geometry.spheres()) {
-        const auto [bands, sectors] = sphereCells(s.radius, patchSize);
-        count += std::size_t{bands} * sectors;
+        const SphereCells cells = sphereCells(s.radius, patchSize);
+        count += std::size_t{cells.bands} * cells.sectors;
     }
     const auto addTriangle = [&](const Triangle& t) {
         if (!hasArea(t.a, t.b, t.c)) return;
@@ -202,10 +206,8 @@ void RadiosityMesh::addTriangle(ShapeKind shape, std::uint32_t primitive, std::u
 
 void RadiosityMesh::addSphere(std::uint32_t sphereIndex) {
     const Sphere& sphere = geometry_.spheres()[sphereIndex];
-    // Named variables, not a structured binding: the lambdas below capture them (C++20 allows
-    // capturing bindings, clang 14 does not).
-    const std::pair<std::uint32_t, std::uint32_t> cells = sphereCells(sphere.radius, patchSize_);
-    const std::uint32_t bands = cells.first, sectors = cells.second;
+    const SphereCells cells = sphereCells(sphere.radius, patchSize_);
+    const std::uint32_t bands = cells.bands, sectors = cells.sectors;
     sources_.push_back({ShapeKind::Sphere, geometry_.sphereId(sphereIndex), static_cast<std::uint32_t>(patches_.size()),
                         0, bands, sectors, Vec3{0.0f}, Vec3{0.0f}, Vec3{0.0f}});
     // Vertices: the two poles, then rings 1..bands-1 of `sectors` each (phi wraps around).
@@ -246,8 +248,7 @@ PatchPoint RadiosityMesh::samplePoint(std::uint32_t patch, Vec2 u) const {
     const Sphere& sphere = geometry_.spheres()[geometry_.decodePrimitive(p.primitive).index];
     const float z = p.z0 + (p.z1 - p.z0) * u.x;
     const float phi = p.phi0 + (p.phi1 - p.phi0) * u.y;
-    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
+    const Vec3 n = sphereDirection(z, phi);
     return {sphere.center + sphere.radius * n, n};
 }
 

@@ -92,6 +92,17 @@ private:
     std::size_t vertexCount_ = 0;
 };
 
+// How a sphere is cut into cells: `bands` bands of equal height (so of equal area, Archimedes),
+// each of `sectors` sectors, about one patch size wide at the equator. Cell (ring, sector) spans
+// z = cos(theta) from 1 - 2 ring/bands down to 1 - 2 (ring+1)/bands and phi from
+// 2 pi sector/sectors to 2 pi (sector+1)/sectors, in the frame of the world's axes.
+struct SphereCells {
+    std::uint32_t bands = 0, sectors = 0;
+};
+SphereCells sphereCells(float radius, float patchSize);
+// The unit normal of a sphere at z = cos(theta) and azimuth phi (its point is centre + radius n).
+Vec3 sphereDirection(float z, float phi);
+
 // The rectangle an infinite plane is clipped to: two triangles over the scene's bounds (every
 // sphere, triangle, point light and the eye), grown by half their diagonal on every side.
 std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane);

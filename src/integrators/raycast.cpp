@@ -5,8 +5,11 @@
 namespace lightpath {
 
 void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
+    shadeFirstHit(path.context.geometry.intersect(ray), ray, path);
+}
+
+void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
-    const auto hit = ctx.geometry.intersect(ray);
     if (!hit) {
         addBackground(ray, Rgb{1.0f}, path);
         return;

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "integrators/integrator.h"
 
 namespace lightpath {
@@ -10,5 +12,10 @@ class RaycastIntegrator final : public Integrator {
 public:
     void traceCameraRay(const Ray& ray, PathState& path) const override;
 };
+
+// What ray casting adds for a camera ray whose first visible surface is `hit` (none: the ray
+// escapes): the emitter or background seen, and the local illumination there. The one shading of
+// the first hit, whichever visibility method found it (ray casting or the rasteriser, raster.h).
+void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path);
 
 }  // namespace lightpath

@@ -3,6 +3,7 @@
 // path language, an LPE). The command line's --integrator choices, their did-you-mean and
 // makeIntegrator read this table; `lpe check --integrator` and the refusal of AOVs no integrator
 // path can reach read the languages.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -12,6 +13,14 @@
 
 namespace lightpath {
 
+// Whether an integrator's direct light may skip its shadow rays (`--shadows off`).
+enum class ShadowRays : std::uint8_t {
+    Always,    // light its scattered rays find is blocked like any ray: without shadow rays it would
+               // be counted unblocked once and blocked once (path, bdpt, radiosity)
+    Optional,  // Szymczak's formula, whose shadow term can be set to 1 (raycast, whitted)
+    Never,     // no rays to cast (the rasteriser)
+};
+
 struct IntegratorInfo {
     const char* name;
     const char* summary;       // one line for --help
@@ -19,6 +28,7 @@ struct IntegratorInfo {
     // Why a path outside pathLanguage is out of reach, for messages: "ray casting follows ...".
     const char* limitation;
     std::unique_ptr<Integrator> (*make)();
+    ShadowRays shadowRays = ShadowRays::Always;
 };
 
 const std::vector<IntegratorInfo>& integrators();

@@ -44,6 +44,19 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
         for (const std::string& name : integratorNames()) names += (names.empty() ? "" : ", ") + name;
         throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"; expected one of " + names);
     }
+    const IntegratorInfo& info = *findIntegrator(options.integrator);
+    if (options.shadows == false && info.shadowRays == ShadowRays::Always)
+        throw std::invalid_argument("shadow rays cannot be switched off under the " + options.integrator +
+                                    " integrator: the light its scattered rays find is blocked like any ray, so "
+                                    "unblocked direct light would count some light twice (raycast and whitted "
+                                    "can: Szymczak's formula with its shadow term set to 1)");
+    if (options.shadows == true && info.shadowRays == ShadowRays::Never)
+        throw std::invalid_argument("the " + options.integrator + " integrator casts no rays, so it has no shadows; "
+                                    "compare it with --integrator raycast --shadows off");
+    context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
+    if (integrator_->samplesPixelCentres() && (options.samplesPerPixel != 1 || options.targetError > 0.0))
+        throw std::invalid_argument("the " + options.integrator + " integrator samples each pixel once, at its centre: "
+                                    "use --spp 1 and no --target-error");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");

@@ -37,6 +37,9 @@ struct RenderOptions {
     // computed, and every path none of them can accept is skipped.
     bool writeBeauty = true;
     bool skip = true;  // false: `--no-skip`, trace and evaluate everything
+    // `--shadows on|off`; unset: the integrator's own (on; the rasteriser has none). Off is refused
+    // for integrators whose scattered rays meet light (registry.h, ShadowRays).
+    std::optional<bool> shadows;
     NumericsOptions numerics;
     SamplerKind sampler = SamplerKind::Independent;
     // Adaptive sampling when > 0: a pixel stops once the standard error of its mean luminance is

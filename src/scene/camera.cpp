@@ -12,15 +12,19 @@ PinholeCamera::PinholeCamera(const CameraDescription& d)
     halfHeight_ = std::tan(glm::radians(d.verticalFovDegrees) * 0.5f);
 }
 
-Ray PinholeCamera::generateRay(float x, float y) const {
+Vec3 PinholeCamera::filmDirection(float x, float y) const {
     // Map the film position to [-aspect, aspect] x [-1, 1] (times tan(fov/2)) on the image plane
     // at distance 1.
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     const float u = (2.0f * x / static_cast<float>(width_) - 1.0f) * aspect * halfHeight_;
     const float v = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
+    return forward_ + u * right_ + v * up_;
+}
+
+Ray PinholeCamera::generateRay(float x, float y) const {
     Ray ray;
     ray.origin = eye_;
-    ray.direction = glm::normalize(forward_ + u * right_ + v * up_);
+    ray.direction = glm::normalize(filmDirection(x, y));
     return ray;
 }
 
@@ -35,6 +39,17 @@ std::optional<Vec2> PinholeCamera::filmPosition(const Vec3& point) const {
     const float u = glm::dot(d, right_) / depth, v = glm::dot(d, up_) / depth;
     return Vec2{(u / (aspect * halfHeight_) + 1.0f) * 0.5f * static_cast<float>(width_),
                 (1.0f - v / halfHeight_) * 0.5f * static_cast<float>(height_)};
+}
+
+std::optional<std::array<Vec2, 2>> PinholeCamera::filmSegment(Vec3 a, Vec3 b) const {
+    constexpr float kNear = 1e-4f;
+    const float da = depth(a), db = depth(b);
+    if (da < kNear && db < kNear) return std::nullopt;
+    if (da < kNear) a = a + (b - a) * ((kNear - da) / (db - da));
+    if (db < kNear) b = b + (a - b) * ((kNear - db) / (da - db));
+    const auto pa = filmPosition(a), pb = filmPosition(b);
+    if (!pa || !pb) return std::nullopt;
+    return std::array<Vec2, 2>{*pa, *pb};
 }
 
 std::optional<Vec2> PinholeCamera::project(const Vec3& point) const {

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <optional>
 
 #include "math/ray.h"
@@ -24,6 +25,10 @@ public:
     // Ray through the film position (x, y) in pixels, (0,0) the top-left corner of the image;
     // the centre of pixel (i, j) is (i + 0.5, j + 0.5).
     Ray generateRay(float x, float y) const;
+    // The unnormalised direction of that ray: the film position's point on the image plane at
+    // distance 1 (forward + u right + v up). Linear in (x, y), which is what a rasteriser's edge
+    // functions and perspective-correct depth need.
+    Vec3 filmDirection(float x, float y) const;
 
     // The film position (pixels, (0,0) top-left, as generateRay takes it) whose ray passes through
     // `point`; nullopt when the point is behind the camera or outside the image.
@@ -33,6 +38,10 @@ public:
     std::optional<Vec2> filmPosition(const Vec3& point) const;
     // Distance of `point` in front of the eye along the viewing direction (negative: behind).
     float depth(const Vec3& point) const;
+    // The film positions of the ends of the part of segment a-b in front of the eye (for drawing
+    // a path over the image); nullopt when all of it is behind. Clipped in 3D first, since
+    // projecting a point behind the eye flips it.
+    std::optional<std::array<Vec2, 2>> filmSegment(Vec3 a, Vec3 b) const;
 
     // The pinhole's importance We and directional density for a unit direction leaving the eye
     // (Veach 1997, 10.3.4.3; pbrt-v4 5.2.3), both 0 outside the image. With A the image's area on

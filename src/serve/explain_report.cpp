@@ -30,16 +30,11 @@ std::optional<Vec3> positionOf(const PathEvent& event) {
 json point(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
 
 // The part of segment a-b in front of the eye, projected: [x0, y0, x1, y1] in pixels, or null
-// when all of it is behind. Clipped in 3D first, since projecting a point behind the eye flips it.
+// when all of it is behind.
 json projectedSegment(const PinholeCamera& camera, Vec3 a, Vec3 b) {
-    constexpr float kNear = 1e-4f;
-    const float da = camera.depth(a), db = camera.depth(b);
-    if (da < kNear && db < kNear) return nullptr;
-    if (da < kNear) a = a + (b - a) * ((kNear - da) / (db - da));
-    if (db < kNear) b = b + (a - b) * ((kNear - db) / (da - db));
-    const auto pa = camera.filmPosition(a), pb = camera.filmPosition(b);
-    if (!pa || !pb) return nullptr;
-    return json::array({pa->x, pa->y, pb->x, pb->y});
+    const auto ends = camera.filmSegment(a, b);
+    if (!ends) return nullptr;
+    return json::array({(*ends)[0].x, (*ends)[0].y, (*ends)[1].x, (*ends)[1].y});
 }
 
 }  // namespace

@@ -1,0 +1,147 @@
+#include "integrators/raster.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/intersect.h"
+#include "integrators/radiosity_mesh.h"
+#include "integrators/raycast.h"
+
+namespace lightpath {
+
+ZBuffer::ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera)
+    : geometry_(geometry),
+      camera_(camera),
+      width_(camera.width()),
+      height_(camera.height()),
+      fragments_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_)) {
+    // The lecture's loops, in the rasteriser's order: for each primitive, for each pixel it covers.
+    for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i) rasteriseSphere(i);
+    for (std::uint32_t i = 0; i < geometry.planes().size(); ++i) rasterisePlane(i);
+    for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) rasteriseTriangle(i);
+}
+
+Vec3 ZBuffer::pixelDirection(int x, int y) const {
+    return camera_.filmDirection(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+}
+
+void ZBuffer::test(int x, int y, float t, std::uint32_t primitive, const Vec3& barycentrics) {
+    RasterFragment& kept = fragments_[index(x, y)];
+    if (t < kept.t) kept = {t, primitive, barycentrics};
+}
+
+template <typename Fragment>
+void ZBuffer::coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const {
+    // In double: for a small triangle far away, vb x vc is the difference of nearly equal
+    // products, and in float its rounding moves depths by 1e-3 relative, enough to change which
+    // of two nearby surfaces is nearer.
+    const glm::dvec3 eye(camera_.eye());
+    const glm::dvec3 va = glm::dvec3(a) - eye, vb = glm::dvec3(b) - eye, vc = glm::dvec3(c) - eye;
+    // Edge function of the edge opposite a: (vb x vc).D, zero on the plane through the eye and
+    // that edge. For D = s^-1 X, X = sum_i beta_i v_i on the triangle, e_i(D) = beta_i det / s.
+    const glm::dvec3 na = glm::cross(vb, vc), nb = glm::cross(vc, va), nc = glm::cross(va, vb);
+    const double det = glm::dot(va, na);  // 6 x the signed volume of the tetrahedron (eye, a, b, c)
+    if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return;  // edge-on: no area on the film
+    const double orientation = det > 0.0 ? 1.0 : -1.0;
+    const double volume = std::fabs(det);
+
+    // The pixels to test: the projected triangle's bounding box (one pixel of slack for the
+    // projection's rounding), or the whole film when a corner is not in front of the eye.
+    int x0 = 0, y0 = 0, x1 = width_ - 1, y1 = height_ - 1;
+    const auto pa = camera_.filmPosition(a), pb = camera_.filmPosition(b), pc = camera_.filmPosition(c);
+    if (pa && pb && pc) {
+        const auto low = [](float v) { return static_cast<int>(std::floor(v)) - 1; };
+        const auto high = [](float v) { return static_cast<int>(std::ceil(v)) + 1; };
+        x0 = std::max(x0, low(std::min({pa->x, pb->x, pc->x})));
+        y0 = std::max(y0, low(std::min({pa->y, pb->y, pc->y})));
+        x1 = std::min(x1, high(std::max({pa->x, pb->x, pc->x})));
+        y1 = std::min(y1, high(std::max({pa->y, pb->y, pc->y})));
+    }
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const glm::dvec3 d(pixelDirection(x, y));
+            // Inclusive on every edge: a pixel centre on an edge two triangles share is covered by
+            // both (the edge functions are exact negatives), never by neither.
+            const double ea = orientation * glm::dot(na, d), eb = orientation * glm::dot(nb, d),
+                         ec = orientation * glm::dot(nc, d);
+            if (ea < 0.0 || eb < 0.0 || ec < 0.0) continue;
+            const double sum = ea + eb + ec;
+            if (!(sum > 0.0)) continue;
+            // Perspective-correct: the film direction meets the triangle at s d, s = det / sum.
+            const auto t = static_cast<float>(volume / sum * glm::length(d));
+            fragment(x, y, t, Vec3(glm::dvec3{ea, eb, ec} / sum));
+        }
+    }
+}
+
+void ZBuffer::rasteriseTriangle(std::uint32_t index) {
+    const Triangle& triangle = geometry_.triangles()[index];
+    const std::uint32_t id = geometry_.triangleId(index);
+    coverTriangle(triangle.a, triangle.b, triangle.c,
+                  [&](int x, int y, float t, const Vec3& barycentrics) { test(x, y, t, id, barycentrics); });
+}
+
+void ZBuffer::rasterisePlane(std::uint32_t index) {
+    const Plane& plane = geometry_.planes()[index];
+    const std::uint32_t id = geometry_.planeId(index);
+    // n.(s D - (p - eye)) = 0 at depth s = offset / n.D: in front of the eye where n.D has the
+    // sign of the offset; the horizon n.D = 0 is the one edge.
+    const float offset = glm::dot(plane.normal, plane.point - camera_.eye());
+    if (!(std::fabs(offset) > 0.0f)) return;  // the eye lies in the plane: seen edge-on
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const Vec3 d = pixelDirection(x, y);
+            const float s = offset / glm::dot(plane.normal, d);
+            if (!(s > 0.0f) || !std::isfinite(s)) continue;
+            test(x, y, s * glm::length(d), id, Vec3{0.0f});
+        }
+    }
+}
+
+void ZBuffer::rasteriseSphere(std::uint32_t index) {
+    const Sphere& sphere = geometry_.spheres()[index];
+    const std::uint32_t id = geometry_.sphereId(index);
+    const SphereCells cells = sphereCells(sphere.radius, 2.0f * kPi * sphere.radius / kSphereSectors);
+    const auto corner = [&](std::uint32_t ring, std::uint32_t sector) {
+        const float z = 1.0f - 2.0f * float(ring) / float(cells.bands);
+        const float phi = 2.0f * kPi * float(sector) / float(cells.sectors);
+        return sphere.center + sphere.radius * sphereDirection(z, phi);
+    };
+    // The impostor's fragment: the true sphere's nearest point under the pixel centre, once per
+    // pixel (the facets in front and behind cover it alike).
+    const auto fragment = [&](int x, int y, float, const Vec3&) {
+        if (fragments_[this->index(x, y)].primitive == id) return;
+        const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+        const float t = geometry_.intersectPrimitive(ray, id);
+        if (t != kNoHit) test(x, y, t, id, Vec3{0.0f});
+    };
+    for (std::uint32_t ring = 0; ring < cells.bands; ++ring) {
+        for (std::uint32_t sector = 0; sector < cells.sectors; ++sector) {
+            const Vec3 p00 = corner(ring, sector), p01 = corner(ring, sector + 1);
+            const Vec3 p10 = corner(ring + 1, sector), p11 = corner(ring + 1, sector + 1);
+            coverTriangle(p00, p10, p11, fragment);
+            coverTriangle(p00, p11, p01, fragment);
+        }
+    }
+}
+
+std::optional<SurfaceHit> ZBuffer::surfaceAt(int x, int y) const {
+    const RasterFragment& kept = at(x, y);
+    if (kept.primitive == kNoPrimitive) return std::nullopt;
+    const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    const bool triangle = geometry_.decodePrimitive(kept.primitive).shape == ShapeKind::Triangle;
+    return geometry_.describeHit(ray, kept.t, kept.primitive, triangle ? &kept.barycentrics : nullptr);
+}
+
+void RasterIntegrator::preprocess(const RenderContext& context) { zBuffer_.emplace(context.geometry, context.camera); }
+
+void RasterIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
+    // The renderer samples each pixel once, at its centre (samplesPixelCentres): the ray names its pixel.
+    const std::optional<Vec2> film = path.context.camera.filmPosition(ray.origin + ray.direction);
+    if (!film) return;
+    const int x = std::clamp(static_cast<int>(std::floor(film->x)), 0, zBuffer_->width() - 1);
+    const int y = std::clamp(static_cast<int>(std::floor(film->y)), 0, zBuffer_->height() - 1);
+    shadeFirstHit(zBuffer_->surfaceAt(x, y), ray, path);
+}
+
+}  // namespace lightpath

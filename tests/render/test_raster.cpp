@@ -1,0 +1,159 @@
+// The rasteriser (issue "Slides a lecturer uses", figure 1): "ray casting is just rasterisation
+// with a different order of the for loops". On every shipped scene, the z-buffer's image and ray
+// casting's without shadow rays agree in every layer (beauty and AOVs) on every pixel whose
+// neighbours see the same object; they may differ only on edge pixels, where the two visibility
+// methods sample a silhouette differently. The edge pixels come from the ray caster's own hits
+// (SceneGeometry::intersect through each pixel centre), not from the rasteriser. A control must
+// fail: with shadow rays on, ray casting differs from the rasteriser off the edges.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "shipped_scenes.h"
+
+namespace lightpath {
+namespace {
+
+// An interior pixel's layers agree to this fraction of the pixel's brightest channel (or of 1 in
+// the dark): the two methods compute the same surface point from different formulas (perspective-
+// correct barycentrics and edge functions, against Woop et al.'s watertight test), so they differ
+// by rounding, about 1e-6; half a pixel's shift in the rasteriser's sample positions is about 1e-3.
+constexpr double kInteriorTolerance = 1e-4;
+
+struct Comparison {
+    int interiorPixels = 0;
+    int edgePixels = 0;        // pixels a neighbour of which (or which itself) sees another object
+    int interiorDiffering = 0;  // interior pixels over the tolerance
+    int edgeDiffering = 0;
+    double maxInterior = 0.0;  // largest relative difference of an interior pixel
+};
+
+// The object each pixel centre sees, by the ray caster's closest hit; -1 for the background.
+std::vector<std::int64_t> objectsSeen(const Scene& scene) {
+    const SceneGeometry geometry(scene.spheres, scene.planes, scene.triangles, NumericsOptions{}, Accelerator::Bvh,
+                                 scene.triangleNormals);
+    const PinholeCamera camera(scene.camera);
+    std::vector<std::int64_t> objects;
+    for (int y = 0; y < camera.height(); ++y) {
+        for (int x = 0; x < camera.width(); ++x) {
+            const auto hit = geometry.intersect(camera.generateRay(float(x) + 0.5f, float(y) + 0.5f));
+            objects.push_back(hit ? std::int64_t{hit->object} : -1);
+        }
+    }
+    return objects;
+}
+
+Film renderWith(const Scene& scene, const AovSet& aovs, const std::string& integrator, std::optional<bool> shadows) {
+    RenderOptions options;
+    options.integrator = integrator;
+    options.shadows = shadows;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+Comparison compare(const Scene& scene, const Film& a, const Film& b) {
+    const std::vector<std::int64_t> objects = objectsSeen(scene);
+    const int w = a.width(), h = a.height();
+    const auto seen = [&](int x, int y) { return objects[static_cast<std::size_t>(y) * w + x]; };
+    Comparison c;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            bool edge = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = std::clamp(x + dx, 0, w - 1), ny = std::clamp(y + dy, 0, h - 1);
+                    edge = edge || seen(nx, ny) != seen(x, y);
+                }
+            double difference = 0.0, scale = 1.0;
+            for (std::size_t l = 0; l < a.layerCount(); ++l) {
+                const Rgb p = a.at(l, x, y), q = b.at(l, x, y);
+                difference = std::max({difference, double(std::fabs(p.r - q.r)), double(std::fabs(p.g - q.g)),
+                                       double(std::fabs(p.b - q.b))});
+                scale = std::max({scale, double(p.r), double(p.g), double(p.b)});
+            }
+            const double relative = difference / scale;
+            if (edge) {
+                ++c.edgePixels;
+                c.edgeDiffering += relative > kInteriorTolerance;
+            } else {
+                ++c.interiorPixels;
+                c.interiorDiffering += relative > kInteriorTolerance;
+                c.maxInterior = std::max(c.maxInterior, relative);
+            }
+        }
+    }
+    return c;
+}
+
+TEST_CASE("the rasteriser and ray casting without shadows agree off the edges, on every shipped scene") {
+    const AovSet aovs(classesSet());
+    double worstInterior = 0.0;
+    int edgeDiffering = 0, edgePixels = 0, pixels = 0;
+    for (const std::filesystem::path& path : test::shippedScenes()) {
+        CAPTURE(path.filename().string());
+        const Scene scene = loadScene(path.string());
+        const Comparison c =
+            compare(scene, renderWith(scene, aovs, "raster", std::nullopt), renderWith(scene, aovs, "raycast", false));
+        MESSAGE(path.filename().string() << ": " << c.interiorPixels << " interior pixels, largest relative difference "
+                                         << c.maxInterior << "; " << c.edgeDiffering << " of " << c.edgePixels
+                                         << " edge pixels differ");
+        CHECK(c.interiorDiffering == 0);
+        CHECK(c.interiorPixels > 10 * c.edgePixels);  // the edges are silhouettes, not the whole image
+        worstInterior = std::max(worstInterior, c.maxInterior);
+        edgeDiffering += c.edgeDiffering;
+        edgePixels += c.edgePixels;
+        pixels += c.interiorPixels + c.edgePixels;
+    }
+    MESSAGE("all scenes: " << pixels << " pixels, largest interior relative difference " << worstInterior << ", "
+                           << edgeDiffering << " of " << edgePixels << " edge pixels differ");
+    CHECK(worstInterior <= kInteriorTolerance);
+}
+
+TEST_CASE("the control: with shadow rays, ray casting differs from the rasteriser off the edges") {
+    const AovSet aovs(classesSet());
+    for (const char* name : {"lecture-room.toml", "cornell-sphere.toml"}) {
+        CAPTURE(name);
+        const Scene scene = loadScene(std::string(LIGHTPATH_SOURCE_DIR "/scenes/") + name);
+        const Comparison c =
+            compare(scene, renderWith(scene, aovs, "raster", std::nullopt), renderWith(scene, aovs, "raycast", true));
+        MESSAGE(std::string(name) << " with shadow rays: " << c.interiorDiffering << " of " << c.interiorPixels
+                     << " interior pixels differ");
+        CHECK(c.interiorDiffering > c.interiorPixels / 20);
+    }
+}
+
+TEST_CASE("the rasteriser refuses what it cannot do, and shadow rays stay on where they must") {
+    const Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/cornell-sphere.toml");
+    const AovSet aovs(classesSet());
+    RenderOptions options;
+    options.integrator = "raster";
+    options.samplesPerPixel = 4;
+    CHECK_THROWS_WITH_AS(Renderer(scene, aovs, options), doctest::Contains("once, at its centre"), std::invalid_argument);
+    options.samplesPerPixel = 1;
+    options.shadows = true;
+    CHECK_THROWS_WITH_AS(Renderer(scene, aovs, options), doctest::Contains("no shadows"), std::invalid_argument);
+    for (const char* integrator : {"path", "bdpt", "radiosity"}) {
+        CAPTURE(integrator);
+        options.integrator = integrator;
+        options.shadows = false;
+        CHECK_THROWS_WITH_AS(Renderer(scene, aovs, options), doctest::Contains("cannot be switched off"),
+                             std::invalid_argument);
+    }
+    for (const char* integrator : {"raycast", "whitted"}) {
+        options.integrator = integrator;
+        options.shadows = false;
+        CHECK_NOTHROW(Renderer(scene, aovs, options));
+    }
+}
+
+}  // namespace
+}  // namespace lightpath
