@@ -2,13 +2,27 @@
 
 Each check raises FigureError, which stops the generator: a slide that would lie is not drawn."""
 
+from pathlib import Path
+
 import numpy as np
 
 from steps import FigureError
 
 
+_layers_cache = {}
+
+
 def read_layers(exr):
-    """{layer name: float64 array (h, w, 3)} of an EXR; the beauty is ''."""
+    """{layer name: float64 array (h, w, 3)} of an EXR; the beauty is ''.
+
+    Cached by path and modification time: several checks and figures read one render."""
+    key = (str(exr), Path(exr).stat().st_mtime_ns)
+    if key not in _layers_cache:
+        _layers_cache[key] = _read_layers(exr)
+    return _layers_cache[key]
+
+
+def _read_layers(exr):
     import OpenImageIO as oiio
     buf = oiio.ImageBuf(str(exr))
     if buf.has_error:

@@ -68,9 +68,10 @@ class Figure:
         """A step that is no command (a plot drawn in Python), listed in the gallery."""
         self.run.commands.append(text)
 
-    def compose(self, panels, cols=None, aspect=None):
-        """This figure's slide: its title over the panels."""
-        slide.compose(self.run, self.png, self.title, panels, cols=cols, aspect=aspect)
+    def compose(self, panels, cols=None, aspect=None, side=None, grid_w=None):
+        """This figure's slide: its title over the panels (slide.compose)."""
+        slide.compose(self.run, self.png, self.title, panels, cols=cols, aspect=aspect,
+                      side=side, grid_w=grid_w)
 
     def make(self):
         self.dir.mkdir(parents=True, exist_ok=True)
@@ -126,6 +127,8 @@ def main():
         slide.write_pdf([f.png for f in made], pdf)
         print(f"slides  {pdf}  ({len(made)} pages)")
     gallery.write_gallery(run.out / "index.html", made, run.quick, PDF_NAME)
+    print("time in tools: " + ", ".join(f"{tool} {s:.1f} s" for tool, s in
+                                        sorted(run.seconds.items(), key=lambda kv: -kv[1])))
     print(f"gallery {run.out / 'index.html'}  ({time.monotonic() - start:.1f} s in all)")
 
 

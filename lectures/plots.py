@@ -62,3 +62,43 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
                  ha="center", fontsize=28)
         fig.savefig(png)
         plt.close(fig)
+
+
+def bench_error_plot(csv_path, png, width_px, height_px):
+    """`lightpath bench error`'s CSV as the slide shows it: RMSE against CPU seconds, log-log,
+    one panel per scene, one line per integrator and sampler (radiosity: per patch budget)."""
+    import csv
+    series = {}
+    with open(csv_path, newline="") as f:
+        for row in csv.DictReader(f):
+            name = (f"{row['integrator']} {row['sampler']}"
+                    if row["integrator"] in ("path", "bdpt") else row["integrator"])
+            key = (row["scene"], name)
+            series.setdefault(key, []).append((float(row["seconds"]), float(row["rmse"])))
+    scenes = sorted({s for s, _ in series})
+    if not scenes:
+        raise ValueError(f"{csv_path}: no rows")
+    cols = min(len(scenes), 2)
+    rows = math.ceil(len(scenes) / cols)
+    style = dict(SLIDE_STYLE, **{"font.size": 20, "lines.linewidth": 3})
+    with plt.rc_context(style):
+        fig, axes = plt.subplots(rows, cols, figsize=(width_px / DPI, height_px / DPI), dpi=DPI,
+                                 squeeze=False)
+        for ax, scene in zip(axes.flat, scenes):
+            for (s, name), points in sorted(series.items()):
+                if s == scene:
+                    points.sort()
+                    ax.loglog([p[0] for p in points], [p[1] for p in points], "o-", ms=5,
+                              label=name)
+            ax.set_title(scene)
+            ax.grid(alpha=0.3, which="both")
+            ax.legend(fontsize=16, ncol=2)
+        for ax in axes[-1]:
+            ax.set_xlabel("CPU seconds (one thread)")
+        for ax in axes[:, 0]:
+            ax.set_ylabel("RMSE")
+        for ax in list(axes.flat)[len(scenes):]:
+            ax.axis("off")
+        fig.tight_layout()
+        fig.savefig(png)
+        plt.close(fig)

@@ -12,6 +12,7 @@ import numpy as np
 
 import checks
 import plots
+import slide
 from slide import Panel, SLIDE_H, SLIDE_W, MARGIN, TOP, LABEL_H, BELOW_H
 from steps import FigureError, explain, render, scene_variant, sh
 
@@ -150,11 +151,13 @@ def exponent(fig):
         exr = render(run, fig.id, f"n{n}", scene, "--integrator", "raycast",
                      "--resolution", run.res(400, 300), "--spp", run.spp_direct)
         panels.append(Panel(exr, f"n = {n}", "E(D|G)L"))
+    # the four balls 2x2 on the left, the plot as tall as the slide on the right
+    grid_w = 2 * 462 + slide.GAP
     plot = fig.dir / "plot.png"
-    plots.exponent_plot(plot, exponents, 1200, 900)
+    plots.exponent_plot(plot, exponents, *slide.side_size(grid_w))
     fig.note_command("python3 lectures/plots.py: exponent_plot, cos(angle)^n for each n")
-    panels.append(Panel(plot, "(H.N)^n by angle", "the plot"))
-    fig.compose(panels, cols=3)
+    fig.compose(panels, cols=2, side=Panel(plot, "(H.N)^n against the angle", "ks (H.N)^n = ks cos^n"),
+                grid_w=grid_w)
 
 
 def attenuation(fig):
@@ -263,9 +266,10 @@ def run_time_error(fig):
     csv, png = fig.dir / "bench-error.csv", fig.dir / "bench-error.png"
     # The full benchmark renders a 4096-spp reference; both modes use --quick (closed-form
     # scenes, budgets up to 32 spp) so that the figures stay within minutes.
-    sh(run, [run.lightpath, "bench", "error", "--quick", "--csv", csv, "--plot", png,
-             "--cache", fig.dir / "cache"])
-    fig.compose([Panel(png, "RMSE against CPU seconds (log-log)", "lightpath bench error --quick")])
+    sh(run, [run.lightpath, "bench", "error", "--quick", "--csv", csv, "--cache", fig.dir / "cache"])
+    plots.bench_error_plot(csv, png, *full_slide_px())
+    fig.note_command("python3 lectures/plots.py: bench_error_plot of bench-error.csv")
+    fig.compose([Panel(png, "RMSE against CPU seconds, log-log", "lightpath bench error --quick")])
 
 
 def light_groups(fig):

@@ -6,6 +6,8 @@ import re
 import shlex
 import string
 import subprocess
+import time
+from collections import defaultdict
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -42,6 +44,7 @@ class Run:
         self.commands = []                       # commands of the figure being made
         self.dirs = []                           # folders holding the figure's EXRs
         self.rendered = {}                       # argv -> EXR, so figures share renders
+        self.seconds = defaultdict(float)        # wall seconds per tool ("lightpath render", ...)
 
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
@@ -69,7 +72,10 @@ def sh(run, argv, record=True, capture=False):
     argv = [str(a) for a in argv]
     if record:
         run.commands.append(run.shown(argv))
+    t0 = time.monotonic()
     proc = subprocess.run(argv, capture_output=True, text=True)
+    tool = Path(argv[0]).name + (" " + argv[1] if argv[0] == run.lightpath else "")
+    run.seconds[tool] += time.monotonic() - t0
     if proc.returncode != 0:
         raise FigureError(f"command failed (exit {proc.returncode}): {shlex.join(argv)}\n"
                           f"{proc.stdout[-2000:]}{proc.stderr[-2000:]}")
