@@ -93,7 +93,7 @@ def main():
     ap.add_argument("--only", nargs="*", help="figure ids to make (default: all; no PDF then)")
     a = ap.parse_args()
 
-    for tool in ("oiiotool", "dot"):
+    for tool in ("dot",):
         if shutil.which(tool) is None:
             sys.exit(f"make_figures: '{tool}' not found; run scripts/setup (it installs the packages)")
     if not Path(a.lightpath).is_file():
