@@ -114,5 +114,5 @@ def check_close(a, b, rtol, what, scale=None):
     scale = max(float(luminance(b).mean()) if scale is None else scale, 1e-6)
     diff = np.abs(a.reshape(-1, 3).mean(axis=0) - b.reshape(-1, 3).mean(axis=0)).max() / scale
     if not diff <= rtol:
-        raise FigureError(f"{what}: the means differ by {diff:.3g} of {scale:.3g} > {rtol}")
+        raise FigureError(f"{what}: the means differ by {diff:.3g} of {scale:.3g} (relative) > {rtol}")
     return float(diff)

@@ -316,13 +316,14 @@ def bounce_by_bounce(fig):
         worst = checks.check_sum(exr, names)
         notes.append(f"{integ}: EL + the four bounces = beauty (worst pixel {worst:.2g})")
     r, p = checks.read_layers(rad), checks.read_layers(path)
-    rtol = 0.15 if run.quick else 0.08
+    # Each bounce's mean against the path tracer's (of that bounce): radiosity's discretisation
+    # error at these budgets is about 1-2% (README, "Radiosity"), the path tracer's noise less.
+    rtol = 0.05
     for n, e in BOUNCES:
         checks.check_nonzero(rad, n, f"radiosity's {e}")
-        diff = checks.check_close(r[n], p[n], rtol, f"{e}: radiosity against the path tracer",
-                                  scale=float(checks.luminance(p[""]).mean()))
-        notes.append(f"{e}: radiosity and path tracing means differ by {diff:.3g} of the "
-                     f"beauty (bound {rtol})")
+        diff = checks.check_close(r[n], p[n], rtol, f"{e}: radiosity against the path tracer")
+        notes.append(f"{e}: radiosity's mean differs from the path tracer's by {diff:.3g} of it "
+                     f"(bound {rtol})")
     panels = []
     for method, exr in (("radiosity", rad), ("path", path)):
         panels += [Panel(exr, f"{method} {k}", e, layer=n)

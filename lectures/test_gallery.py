@@ -97,7 +97,8 @@ def main():
     if errors:
         problems.append("console errors:\n  " + "\n  ".join(errors))
     # The commands must paste as they are: no quote-splicing that shlex.join makes of a quote
-    if "'\"'\"'" in page.read_text():
+    # (read from the DOM Chromium built, where the page's &quot; entities are characters again)
+    if "'\"'\"'" in dom:
         problems.append("the page's commands contain '\"'\"' quoting")
     if not shot.is_file() or shot.stat().st_size == 0:
         problems.append(f"no screenshot written at {shot}")
