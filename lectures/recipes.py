@@ -48,7 +48,9 @@ def method_renders(fig):
     for integ, spp, extra in (("raycast", run.spp_direct, [AMBIENT]),
                               ("whitted", run.spp_direct, [AMBIENT]),
                               ("path", run.spp_path, [BOUNCED, CAUSTIC]),
-                              ("bdpt", run.spp_path, [CAUSTIC]),
+                              # a quarter of the path tracer's samples: each bdpt sample also
+                              # traces and joins a light walk, and only its caustics are shown
+                              ("bdpt", max(run.spp_path // 4, 1), [CAUSTIC]),
                               ("radiosity", run.spp_direct, [])):
         opts = ["--integrator", integ, "--spp", spp, *common]
         if integ == "radiosity":

@@ -51,20 +51,18 @@ class Run:
         return f"{int(w * self.scale)}x{int(h * self.scale)}"
 
     def rel(self, path):
-        """A path as the gallery shows it: relative to the repository or the output folder."""
+        """A path as the gallery shows it: relative to the repository's root when inside it."""
         p = Path(path).resolve()
-        for base in (REPO, self.out):
-            try:
-                return str(p.relative_to(base))
-            except ValueError:
-                pass
-        return str(p)
+        try:
+            return str(p.relative_to(REPO))
+        except ValueError:
+            return str(p)
 
     def shown(self, argv):
-        """A command line as the gallery prints it: `lightpath`, relative paths, pasteable."""
-        words = ["lightpath" if a == self.lightpath else self.rel(a) if a.startswith("/") else a
-                 for a in argv]
-        return " ".join(shell_word(w) for w in words)
+        """A command line as the gallery prints it: paths relative to the repository's root
+        (build/lightpath, scenes/..., build/lectures/...), each word quoted to paste as it is
+        in a shell at the root."""
+        return " ".join(shell_word(self.rel(a) if a.startswith("/") else a) for a in argv)
 
 
 def sh(run, argv, record=True, capture=False):

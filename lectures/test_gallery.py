@@ -13,6 +13,7 @@ beside the page. Exit code 0 on success, 1 with the reason otherwise.
 """
 
 import argparse
+import html
 import re
 import shutil
 import subprocess
@@ -22,6 +23,21 @@ import tomllib
 from pathlib import Path
 
 FIGURES_TOML = Path(__file__).resolve().parent / "figures.toml"
+REPO = Path(__file__).resolve().parent.parent
+
+
+def pasted_commands_fail(dom):
+    """Paste the page's explain and lpe commands (quick, and quoted like every other: LPEs with
+    <, >, quotes and braces) into bash at the repository's root: the ones that fail, with why."""
+    commands = [html.unescape(line) for pre in re.findall(r"<pre>(.*?)</pre>", dom, re.DOTALL)
+                for line in pre.splitlines()
+                if re.match(r"\S*lightpath (explain|lpe) ", line)]
+    failed = []
+    for command in commands[:8]:
+        proc = subprocess.run(["bash", "-c", command], cwd=REPO, capture_output=True, text=True)
+        if proc.returncode != 0:
+            failed.append(f"{command}\n    exit {proc.returncode}: {proc.stderr.strip()[-300:]}")
+    return commands, failed
 
 
 def figure_count():
@@ -100,6 +116,11 @@ def main():
     # (read from the DOM Chromium built, where the page's &quot; entities are characters again)
     if "'\"'\"'" in dom:
         problems.append("the page's commands contain '\"'\"' quoting")
+    pasted, failed = pasted_commands_fail(dom)
+    if not pasted:
+        problems.append("the page lists no explain or lpe command to paste")
+    if failed:
+        problems.append("pasted into bash, these commands fail:\n  " + "\n  ".join(failed))
     if not shot.is_file() or shot.stat().st_size == 0:
         problems.append(f"no screenshot written at {shot}")
     if problems:
