@@ -102,3 +102,98 @@ def bench_error_plot(csv_path, png, width_px, height_px):
         fig.tight_layout()
         fig.savefig(png)
         plt.close(fig)
+
+
+# One colour per path, in the order `explain` lists them (largest contribution first).
+PATH_COLOURS = ["#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6",
+                "#bfef45", "#fabed4", "#469990"]
+
+
+def _segments_2d(vertices, drop=None):
+    """Consecutive pairs of a path's vertices in (x, z), skipping vertices with no position."""
+    pts = [(v[0], v[2]) for v in vertices if v is not None]
+    return list(zip(pts, pts[1:]))
+
+
+def _scene_top_view(ax, scene, bunny_points):
+    """The scene seen from above (x right, z down the page, as serve's top view): walls and
+    triangles as lines, balls as circles, meshes as their vertices, lights and the eye."""
+    for t in scene.get("triangles", []):
+        v = t["vertices"] + [t["vertices"][0]]
+        ax.plot([p[0] for p in v], [p[2] for p in v], color="#888", lw=3, zorder=1)
+    for s in scene.get("spheres", []):
+        ax.add_patch(plt.Circle((s["center"][0], s["center"][2]), s["radius"], fill=False,
+                                color="#aaa", lw=3, zorder=1))
+        ax.text(s["center"][0], s["center"][2], s["name"], ha="center", va="center",
+                fontsize=16, color="#555")
+    for pts in bunny_points:
+        ax.plot(pts[:, 0], pts[:, 2], ",", color="#bbb", zorder=0)
+    for light in scene.get("lights", []):
+        ax.plot(light["position"][0], light["position"][2], "*", ms=28, color="#f5c518",
+                mec="k", zorder=4)
+        ax.text(light["position"][0] + 0.15, light["position"][2], light["name"], fontsize=18,
+                va="center")
+    eye = scene["camera"]["eye"]
+    ax.plot(eye[0], eye[2], "s", ms=16, color="k", zorder=4)
+    ax.text(eye[0] + 0.15, eye[2], "eye", fontsize=18, va="center")
+
+
+def pixel_paths_plot(png, image, pixel, paths, scene, bunny_points, width_px, height_px):
+    """Left: the rendered image with every path's segments drawn over it (projected with the
+    scene's camera by `explain --json`); right: the same paths seen from above. Each path in its
+    colour, labelled with its LPE in the legend below.
+
+    paths: [(lpe, vertices [[x, y, z] | None], segments [[x0, y0, x1, y1] | None])]."""
+    h, w = image.shape[:2]
+    with plt.rc_context(SLIDE_STYLE):
+        fig = plt.figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
+        legend_h = 0.07 * len(paths) / 2 + 0.04
+        image_ax = fig.add_axes((0.01, legend_h + 0.02, 0.56, 0.97 - legend_h))
+        top_ax = fig.add_axes((0.60, legend_h + 0.06, 0.39, 0.86 - legend_h))
+        image_ax.imshow(image, extent=(0, w, h, 0), interpolation="nearest")
+        image_ax.set_xlim(0, w)
+        image_ax.set_ylim(h, 0)
+        image_ax.axis("off")
+        _scene_top_view(top_ax, scene, bunny_points)
+        handles = []
+        for i, (lpe, vertices, segments) in enumerate(paths):
+            colour = PATH_COLOURS[i % len(PATH_COLOURS)]
+            offset = (i - (len(paths) - 1) / 2) * 0.6  # a fan of parallel lines, each visible
+            for s in segments:
+                if s is not None:
+                    image_ax.plot([s[0] + offset, s[2] + offset], [s[1], s[3]], color=colour,
+                                  lw=4, solid_capstyle="round")
+                    image_ax.plot([s[2] + offset], [s[3]], "o", ms=9, color=colour)
+            for a, b in _segments_2d(vertices):
+                top_ax.plot([a[0], b[0]], [a[1], b[1]], color=colour, lw=3, zorder=3)
+                top_ax.plot([b[0]], [b[1]], "o", ms=8, color=colour, zorder=3)
+            handles.append(plt.Line2D([], [], color=colour, lw=6, label=lpe))
+        image_ax.add_patch(plt.Circle((pixel[0] + 0.5, pixel[1] + 0.5), w / 40, fill=False,
+                                      ec="white", lw=3))
+        top_ax.set_aspect("equal")
+        top_ax.invert_yaxis()  # z grows down the page, toward the eye
+        top_ax.set_xlabel("x")
+        top_ax.set_ylabel("z")
+        top_ax.set_title("from above", fontsize=26)
+        fig.legend(handles=handles, loc="lower center", ncol=2, fontsize=22, frameon=False,
+                   bbox_to_anchor=(0.5, 0.0))
+        fig.savefig(png, facecolor="white")
+        plt.close(fig)
+
+
+def state_list_plot(png, rows, width_px, height_px):
+    """The paths of one pixel and the automaton states each passes through, one line each:
+    rows [(lpe, states, aovs)]."""
+    with plt.rc_context(SLIDE_STYLE):
+        fig = plt.figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
+        fig.text(0.02, 0.97, "path: states it passes through", fontsize=24, va="top",
+                 weight="bold")
+        step = min(0.9 / max(len(rows), 1), 0.12)
+        for i, (lpe, states, aovs) in enumerate(rows):
+            y = 0.88 - i * step
+            colour = PATH_COLOURS[i % len(PATH_COLOURS)]
+            fig.text(0.02, y, lpe, fontsize=18, color=colour, va="top", family="DejaVu Sans Mono")
+            fig.text(0.06, y - step * 0.42, " -> ".join(str(s) for s in states) + f"   {aovs}",
+                     fontsize=20, va="top")
+        fig.savefig(png, facecolor="white")
+        plt.close(fig)

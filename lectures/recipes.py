@@ -8,6 +8,9 @@ returns notes for the gallery: what the checks measured.
 One LPE spelling everywhere, the README's: no spaces, `<L.'name'>` for a light's label.
 """
 
+import re
+import tomllib
+
 import numpy as np
 
 import checks
@@ -374,3 +377,231 @@ def caustics(fig):
     fig.compose(panels, cols=3)
     return [f"bdpt's caustic: mean luminance {mean:.3g}; the path tracer's: exactly 0",
             "both: classes sum to the beauty"]
+
+
+def fill_caption(fig, **values):
+    """The caption of figures.toml with the values the recipe measured put into its {names}:
+    a number stated on the slide is computed, never typed in."""
+    try:
+        fig.caption = fig.caption.format(**values)
+    except (KeyError, IndexError, ValueError) as e:
+        raise FigureError(f"caption of {fig.id}: cannot fill in {e}") from e
+
+
+# Materials of the object-id render: object k (in file order) reflects ka = k / ID_SCALE of the
+# ambient light, red only; a power of two, so ka Ia (Ia = 1) is exact in the EXR.
+ID_SCALE = 1024
+OBJECT_SECTIONS = ("[[spheres]]", "[[planes]]", "[[triangles]]", "[[meshes]]")
+
+
+def object_id_scene(src, dst):
+    """A copy of scene src whose render by ray casting shows, in every pixel, which object the
+    pixel centre's ray hits first: the lights off, the ambient light 1, the background 0, and
+    object k in its own material ka = [k / ID_SCALE, 0, 0]. Returns (path, number of objects)."""
+    out, section, count = [], None, 0
+    for line in src.read_text().splitlines():
+        s = line.strip()
+        if s.startswith("["):
+            section = s.split("#")[0].strip()
+        key = s.split("=")[0].strip() if "=" in s and not s.startswith("#") else None
+        if section in OBJECT_SECTIONS and key == "material":
+            count += 1
+            line = f'material = "object-id-{count}"'
+        elif section == "[world]" and key in ("ambient", "background"):
+            continue
+        elif section == "[[lights]]" and key == "intensity":
+            line = "intensity = 0"
+        elif section == "[[meshes]]" and key == "file":
+            # relative to the scene file, which the copy is not beside
+            mesh = (src.parent / s.split("=", 1)[1].split("#")[0].strip().strip('"')).resolve()
+            line = f'file = "{mesh}"'
+        out.append(line)
+        if section == "[world]" and s == "[world]":
+            out += ["ambient = 1", "background = 0"]
+    if "[world]" not in (l.strip() for l in out):
+        out += ["[world]", "ambient = 1", "background = 0"]
+    for k in range(1, count + 1):
+        out += [f"[materials.object-id-{k}]", f"ka = [{k / ID_SCALE!r}, 0, 0]"]
+    dst.write_text("\n".join(out) + "\n")
+    return dst, count
+
+
+def edge_pixels(ids):
+    """Pixels one of whose 8 neighbours (or which itself, at the border) sees another object."""
+    h, w = ids.shape
+    padded = np.pad(ids, 1, mode="edge")
+    edge = np.zeros((h, w), bool)
+    for dy in (-1, 0, 1):
+        for dx in (-1, 0, 1):
+            edge |= padded[1 + dy:1 + dy + h, 1 + dx:1 + dx + w] != ids
+    return edge
+
+
+RASTER_TOLERANCE = 1e-4  # relative: rounding of two formulas for one point (tests/render/test_raster.cpp)
+
+
+def raster_vs_raycast(fig):
+    run = fig.run
+    scene = fig.scene(0)
+    common = ["--resolution", run.res(640, 480), "--spp", 1, "--aovs", "classes"]
+    raster = render(run, fig.id, "raster", scene, "--integrator", "raster", *common)
+    rays = render(run, fig.id, "raycast-no-shadows", scene, "--integrator", "raycast",
+                  "--shadows", "off", *common)
+    shadowed = render(run, fig.id, "raycast", scene, "--integrator", "raycast", *common)
+    id_scene, objects = object_id_scene(scene, fig.dir / "object-ids.toml")
+    ids_exr = render(run, fig.id, "object-ids", id_scene, "--integrator", "raycast",
+                     "--resolution", run.res(640, 480), "--spp", 1, "--aovs", "none")
+    ids = np.rint(checks.layer(ids_exr, "")[..., 0] * ID_SCALE).astype(int)
+    if not 1 < len(np.unique(ids)) <= objects + 1:
+        raise FigureError(f"{ids_exr}: {len(np.unique(ids))} object ids for {objects} objects")
+    edge = edge_pixels(ids)
+
+    a, b, s = (checks.read_layers(e) for e in (raster, rays, shadowed))
+    names = sorted(set(a) & set(b))
+    diff = np.max([np.abs(a[n] - b[n]).max(axis=2) for n in names], axis=0)
+    scale = np.maximum(1.0, np.max([np.abs(a[n]).max(axis=2) for n in names], axis=0))
+    relative = diff / scale
+    worst = float(relative[~edge].max())
+    edge_differing = int((relative[edge] > RASTER_TOLERANCE).sum())
+    if not worst <= RASTER_TOLERANCE:
+        raise FigureError(f"rasteriser against ray casting without shadows: {worst:.3g} (relative) "
+                          f"off the edges > {RASTER_TOLERANCE}: 'the same image' would lie")
+    shadow_gain = s[""] - b[""]
+    shadow_relative = np.abs(shadow_gain).max(axis=2) / np.maximum(1.0, np.abs(b[""]).max(axis=2))
+    shadowed_share = float((shadow_relative[~edge] > RASTER_TOLERANCE).mean())
+    if not shadowed_share > 0.01:
+        raise FigureError(f"shadow rays change only {shadowed_share:.2%} of the interior pixels: "
+                          "'what shadow rays add' would be empty")
+    d = fig.dir
+    diff_exr = checks.write_exr(np.repeat((10 * diff)[..., None], 3, axis=2), d / "difference.exr")
+    # edge pixels grey, those that differ red (with their neighbours, to be seen on a slide)
+    differing = edge & (relative > RASTER_TOLERANCE)
+    shown = np.pad(differing, 1)
+    shown = np.max([shown[1 + dy:1 + dy + edge.shape[0], 1 + dx:1 + dx + edge.shape[1]]
+                    for dy in (-1, 0, 1) for dx in (-1, 0, 1)], axis=0)
+    edge_rgb = np.repeat(edge[..., None].astype(float) * 0.3, 3, axis=2)
+    edge_rgb[shown] = (1.0, 0.05, 0.02)
+    edge_exr = checks.write_exr(edge_rgb, d / "edges.exr")
+    panels = [Panel(raster, "rasteriser", "--integrator raster"),
+              Panel(rays, "ray casting", "--shadows off"),
+              Panel(diff_exr, "|difference| x 10", f"off the edges: {worst:.1e}"),
+              Panel(edge_exr, "edge pixels", f"{edge_differing} of {int(edge.sum())} differ (red)"),
+              Panel(shadowed, "ray casting", "with shadow rays"),
+              Panel(checks.signed_exr(shadow_gain, d / "shadows-add.exr"),
+                    "what shadow rays add", "blue: light they remove")]
+    fig.compose(panels, cols=3)
+    fill_caption(fig, max_interior=f"{worst:.1e}", edge_differing=edge_differing,
+                 edge_pixels=int(edge.sum()), pixels=edge.size,
+                 shadowed=f"{shadowed_share:.1%}")
+    return [f"largest relative difference off the edges: {worst:.3g} (bound {RASTER_TOLERANCE})",
+            f"{edge_differing} of {int(edge.sum())} edge pixels differ (of {edge.size} pixels)",
+            f"shadow rays change {shadowed_share:.1%} of the interior pixels"]
+
+
+# The pixel figures 'pixel-paths' and 'automaton-at-work' explain: on the lower half of the
+# lecture room's mirror ball, which shows the floor (as a fraction of the image, so that --quick's
+# half resolution explains the same spot).
+PIXEL_AT = (310.5 / 640, 285.5 / 480)
+PIXEL_OPTIONS = ["--integrator", "whitted", "--spp", 1]
+
+
+def explained_pixel(fig):
+    """The lecture room rendered by Whitted, the explained pixel and its `explain --json`."""
+    run = fig.run
+    res = run.res(640, 480)
+    w, h = (int(v) for v in res.split("x"))
+    x, y = int(PIXEL_AT[0] * w), int(PIXEL_AT[1] * h)
+    exr = render(run, "pixel-paths", "whitted", fig.scene(0), *PIXEL_OPTIONS, "--resolution", res)
+    doc = explain(run, fig.scene(0), x, y, *PIXEL_OPTIONS, "--resolution", res, "--quiet")
+    # explain's contributions are the render's: their sum is the rendered pixel
+    beauty = checks.layer(exr, "")[y, x]
+    total = np.sum([p["rgb"] for p in doc["paths"]], axis=0)
+    if not np.allclose(total, beauty, rtol=1e-4, atol=1e-6):
+        raise FigureError(f"pixel {x},{y}: explain's paths sum to {total}, the render has {beauty}")
+    return exr, (x, y), doc
+
+
+def pixel_paths(fig):
+    exr, (x, y), doc = explained_pixel(fig)
+    paths = []
+    for p in doc["paths"]:
+        c = p["contributions"][0]  # Whitted at 1 spp: one contribution per path
+        if len(c["vertices"]) != len(p["events"]) or len(c["segments"]) != len(p["events"]) - 1:
+            raise FigureError(f"{p['path']}: {len(c['vertices'])} vertices and {len(c['segments'])} "
+                              f"segments for {len(p['events'])} events")
+        # the camera ray's segment ends where the eye sees: the pixel's centre
+        end = c["segments"][0]
+        if end is None or abs(end[2] - (x + 0.5)) > 0.01 or abs(end[3] - (y + 0.5)) > 0.01:
+            raise FigureError(f"{p['path']}: the camera ray ends at {end}, not at the centre of "
+                              f"pixel {x},{y}")
+        paths.append((p["path"], c["vertices"], c["segments"]))
+    if len(paths) < 3 or not any("<RS" in p for p, _, _ in paths):
+        raise FigureError(f"pixel {x},{y}: {len(paths)} paths, expected several, one through "
+                          "the mirror")
+    scene = tomllib.loads(fig.scene(0).read_text())
+    image = slide.Panel(exr).display()
+    w, h = full_slide_px()
+    png = fig.dir / "paths.png"
+    plots.pixel_paths_plot(png, image, (x, y), paths, scene, mesh_points(fig.scene(0), scene), w, h)
+    fig.note_command("python3 lectures/plots.py: pixel_paths_plot of explain's vertices and segments")
+    fig.compose([Panel(png, f"pixel {x},{y}: every path explain finds",
+                       "over the image (projected) and from above")])
+    return [f"pixel {x},{y}: {len(paths)} paths; their sum is the rendered pixel",
+            "each camera ray's segment ends at the pixel's centre"]
+
+
+def mesh_points(scene_path, scene):
+    """Every mesh's vertices, placed as the loader places them (scenes/README.md: scale, then
+    rotate_y with x towards -z, then translate), for the top view: [(n, 3) arrays]."""
+    meshes = []
+    for m in scene.get("meshes", []):
+        v = np.array([[float(t) for t in line.split()[1:4]]
+                      for line in (scene_path.parent / m["file"]).read_text().splitlines()
+                      if line.startswith("v ")])
+        v = v * np.asarray(m.get("scale", 1.0), dtype=float)
+        a = np.radians(m.get("rotate_y", 0.0))
+        x, z = v[:, 0] * np.cos(a) + v[:, 2] * np.sin(a), -v[:, 0] * np.sin(a) + v[:, 2] * np.cos(a)
+        v = np.stack([x, v[:, 1], z], axis=1) + np.asarray(m.get("translate", [0, 0, 0]), dtype=float)
+        meshes.append(v[::7])
+    return meshes
+
+
+def automaton_at_work(fig):
+    run = fig.run
+    _, (x, y), doc = explained_pixel(fig)
+    dot_text = sh(run, [run.lightpath, "lpe", "dot", "--set", "classes"], capture=True)
+    nodes = {int(n) for n in re.findall(r"^  (\d+)[ ;]", dot_text, re.M)}
+    lpes = [p["path"] for p in doc["paths"]]
+    out = sh(run, [run.lightpath, "lpe", "match", "--set", "classes", "--trace", *lpes],
+             capture=True).splitlines()
+    rows, visited, edges = [], set(), set()
+    for p, verdict, trace in zip(doc["paths"], out[0::2], out[1::2]):
+        aovs = verdict.split()[0]
+        states = [int(s) for s in trace.split(":", 1)[1].split()]
+        # the states lpe match names are the renderer's verdict: the same AOVs
+        if aovs.split(",") != p["aovs"]:
+            raise FigureError(f"{p['path']}: lpe match says {aovs}, the render put it in {p['aovs']}")
+        if not set(states) <= nodes:
+            raise FigureError(f"{p['path']}: states {states}, the graph has {sorted(nodes)}")
+        visited |= set(states)
+        edges |= set(zip(states, states[1:]))
+        rows.append((p["path"], states, aovs))
+    if len(rows) != len(lpes):
+        raise FigureError(f"lpe match answered {len(rows)} of {len(lpes)} paths")
+    highlight = "".join(f'  {s} [style=filled, fillcolor="#ffd34d"];\n' for s in sorted(visited))
+    highlight += "".join(f'  {a} -> {b} [color="#d62728", penwidth=4];\n' for a, b in sorted(edges))
+    # strict: a repeated edge statement adds attributes to the edge instead of drawing another
+    marked = "strict " + dot_text.rstrip().rstrip("}") + highlight + "}\n"
+    dot, png = fig.dir / "automaton.dot", fig.dir / "automaton.png"
+    dot.write_text(marked)
+    fig.note_command("python3 lectures/recipes.py: the visited states filled, their edges red")
+    sh(run, ["dot", "-Tpng", "-Gdpi=150", "-Gfontname=DejaVu Sans", "-Nfontname=DejaVu Sans",
+             "-Efontname=DejaVu Sans", "-o", png, dot])
+    grid_w = 1180
+    side = fig.dir / "states.png"
+    plots.state_list_plot(side, rows, *slide.side_size(grid_w))
+    fig.note_command("python3 lectures/plots.py: state_list_plot of lpe match --trace")
+    fig.compose([Panel(png, "the classes automaton", "lpe dot --set classes")], cols=1,
+                side=Panel(side, f"pixel {x},{y}'s paths", "lpe match --trace"), grid_w=grid_w)
+    return [f"pixel {x},{y}: {len(rows)} paths through states {sorted(visited)}; "
+            "lpe match's AOVs are the render's for every path"]
