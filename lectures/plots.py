@@ -104,6 +104,7 @@ def bench_error_plot(csv_path, png, width_px, height_px):
         plt.close(fig)
 
 
+LPE_PT = 27  # 37.5 px at 100 dpi: the issue's 36 px for LPE captions at 1080p
 # One colour per path, in the order `explain` lists them (largest contribution first).
 PATH_COLOURS = ["#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6",
                 "#bfef45", "#fabed4", "#469990"]
@@ -147,7 +148,7 @@ def pixel_paths_plot(png, image, pixel, paths, scene, bunny_points, width_px, he
     h, w = image.shape[:2]
     with plt.rc_context(SLIDE_STYLE):
         fig = plt.figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
-        legend_h = 0.07 * len(paths) / 2 + 0.04
+        legend_h = (LPE_PT * 1.45 / 72 * DPI) * len(paths) / height_px + 0.02
         image_ax = fig.add_axes((0.01, legend_h + 0.02, 0.56, 0.97 - legend_h))
         top_ax = fig.add_axes((0.60, legend_h + 0.06, 0.39, 0.86 - legend_h))
         image_ax.imshow(image, extent=(0, w, h, 0), interpolation="nearest")
@@ -175,25 +176,28 @@ def pixel_paths_plot(png, image, pixel, paths, scene, bunny_points, width_px, he
         top_ax.set_xlabel("x")
         top_ax.set_ylabel("z")
         top_ax.set_title("from above", fontsize=26)
-        fig.legend(handles=handles, loc="lower center", ncol=2, fontsize=22, frameon=False,
-                   bbox_to_anchor=(0.5, 0.0))
+        fig.legend(handles=handles, loc="lower center", ncol=1, fontsize=LPE_PT, frameon=False,
+                   bbox_to_anchor=(0.5, 0.0), handlelength=1.5, borderpad=0.1, labelspacing=0.25)
         fig.savefig(png, facecolor="white")
         plt.close(fig)
 
 
-def state_list_plot(png, rows, width_px, height_px):
-    """The paths of one pixel and the automaton states each passes through, one line each:
-    rows [(lpe, states, aovs)]."""
+def automaton_with_states(png, automaton_png, rows, width_px, height_px):
+    """The automaton drawn by Graphviz above the paths of one pixel, each with the states it
+    passes through and the AOV it ends in: rows [(lpe, states, aovs)], LPEs at caption size."""
+    import matplotlib.image as mpimg
+    line = LPE_PT * 1.45 / 72 * DPI / height_px  # one text line, as a fraction of the figure
+    list_h = line * len(rows) + 0.02
     with plt.rc_context(SLIDE_STYLE):
         fig = plt.figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
-        fig.text(0.02, 0.97, "path: states it passes through", fontsize=24, va="top",
-                 weight="bold")
-        step = min(0.9 / max(len(rows), 1), 0.12)
+        ax = fig.add_axes((0.0, list_h + 0.01, 1.0, 0.99 - list_h))
+        ax.imshow(mpimg.imread(automaton_png), interpolation="antialiased")
+        ax.axis("off")
         for i, (lpe, states, aovs) in enumerate(rows):
-            y = 0.88 - i * step
+            y = list_h - 0.01 - i * line
             colour = PATH_COLOURS[i % len(PATH_COLOURS)]
-            fig.text(0.02, y, lpe, fontsize=18, color=colour, va="top", family="DejaVu Sans Mono")
-            fig.text(0.06, y - step * 0.42, " -> ".join(str(s) for s in states) + f"   {aovs}",
-                     fontsize=20, va="top")
+            fig.text(0.01, y, lpe, fontsize=LPE_PT, color=colour, va="top")
+            fig.text(0.66, y, " \u2192 ".join(str(s) for s in states) + f"  {aovs}",
+                     fontsize=LPE_PT, va="top")
         fig.savefig(png, facecolor="white")
         plt.close(fig)

@@ -597,11 +597,10 @@ def automaton_at_work(fig):
     fig.note_command("python3 lectures/recipes.py: the visited states filled, their edges red")
     sh(run, ["dot", "-Tpng", "-Gdpi=150", "-Gfontname=DejaVu Sans", "-Nfontname=DejaVu Sans",
              "-Efontname=DejaVu Sans", "-o", png, dot])
-    grid_w = 1180
-    side = fig.dir / "states.png"
-    plots.state_list_plot(side, rows, *slide.side_size(grid_w))
-    fig.note_command("python3 lectures/plots.py: state_list_plot of lpe match --trace")
-    fig.compose([Panel(png, "the classes automaton", "lpe dot --set classes")], cols=1,
-                side=Panel(side, f"pixel {x},{y}'s paths", "lpe match --trace"), grid_w=grid_w)
+    slide_png = fig.dir / "automaton-states.png"
+    plots.automaton_with_states(slide_png, png, rows, *full_slide_px())
+    fig.note_command("python3 lectures/plots.py: automaton_with_states, the graph over lpe match --trace")
+    fig.compose([Panel(slide_png, f"the classes automaton and pixel {x},{y}'s paths",
+                       "lpe dot --set classes, lpe match --set classes --trace")])
     return [f"pixel {x},{y}: {len(rows)} paths through states {sorted(visited)}; "
             "lpe match's AOVs are the render's for every path"]
