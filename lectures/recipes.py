@@ -370,7 +370,8 @@ def caustics(fig):
     checks.check_zero(exrs["path"], "caustic", "the path tracer's caustic under a point light")
     panels = [Panel(exrs["path"], "path tracing", "caustic: E(D|G)S+<L.> = 0"),
               Panel(exrs["bdpt"], "bidirectional (bdpt)", "the same light transport"),
-              Panel(exrs["bdpt"], "bdpt: the caustic alone", "E(D|G)S+<L.>", layer="caustic")]
+              Panel(exrs["bdpt"], "bdpt: the caustic, x4", "E(D|G)S+<L.>", layer="caustic",
+                    exposure=4.0)]
     fig.compose(panels, cols=3)
     return [f"bdpt's caustic: mean luminance {mean:.3g}; the path tracer's: exactly 0",
             "both: classes sum to the beauty"]
