@@ -122,6 +122,8 @@ def decomposition(fig):
     for integ in ("whitted", "path"):
         worst = checks.check_sum(exrs[integ], CLASS_NAMES)
         notes.append(f"{integ}: max relative |sum - beauty| = {worst:.2g}")
+    checks.check_zero(exrs["whitted"], "indirect", "Whitted's indirect light")
+    notes.append("whitted: indirect is exactly zero")
     panels = [Panel(exrs["path"], "beauty", "= the sum of the five")]
     panels += [Panel(exrs["path"], n, lpe, layer=n) for n, lpe in CLASSES]
     fig.compose(panels, cols=3)
