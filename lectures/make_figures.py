@@ -70,7 +70,7 @@ class Figure:
 
     def compose(self, panels, cols=None, aspect=None, side=None, grid_w=None):
         """This figure's slide: its title over the panels (slide.compose)."""
-        slide.compose(self.run, self.png, self.title, panels, cols=cols, aspect=aspect,
+        slide.compose(self.png, self.title, panels, cols=cols, aspect=aspect,
                       side=side, grid_w=grid_w)
 
     def make(self):

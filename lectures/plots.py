@@ -37,8 +37,11 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
 
     cases: [(name, centre, radius, hit, t)] with t the renderer's first-hit distance or None."""
     with plt.rc_context(SLIDE_STYLE):
-        fig, axes = plt.subplots(1, len(cases), figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
-        for ax, (name, c, r, hit, t) in zip(axes, cases):
+        cols = math.ceil(len(cases) / 2)  # two rows: each diagram as large as the slide allows
+        fig, axes = plt.subplots(2, cols, figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
+        for ax in axes.flat[len(cases):]:
+            ax.axis("off")
+        for ax, (name, c, r, hit, t) in zip(axes.flat, cases):
             ax.set_aspect("equal")
             ax.set_xlim(-3.7, 5.2)
             ax.set_ylim(-2.4, 2.6)
@@ -57,9 +60,11 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
                 ax.plot([t], [0], "o", ms=18, color="tab:red")
             verdict = f"t = {t:.3f}" if (hit and t is not None) else ("hit" if hit else "miss")
             ax.set_title(f"{name}\n{verdict}", fontsize=30)
-        fig.tight_layout(rect=(0, 0.1, 1, 1))
-        fig.text(0.5, 0.03, "red: the first hit lightpath reports   grey ring: the other root",
-                 ha="center", fontsize=28)
+        fig.tight_layout()
+        if len(cases) < axes.size:  # the key in the free cell
+            axes.flat[-1].text(0.5, 0.5, "red: the first hit\nlightpath reports\n\ngrey ring:\nthe other root",
+                               ha="center", va="center", fontsize=28,
+                               transform=axes.flat[-1].transAxes)
         fig.savefig(png)
         plt.close(fig)
 

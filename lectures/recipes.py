@@ -125,6 +125,8 @@ def decomposition(fig):
     for integ in ("whitted", "path"):
         worst = checks.check_sum(exrs[integ], CLASS_NAMES)
         notes.append(f"{integ}: max relative |sum - beauty| = {worst:.2g}")
+    checks.check_zero(exrs["whitted"], "indirect", "Whitted's indirect light")
+    notes.append("whitted: indirect is exactly zero")
     panels = [Panel(exrs["path"], "beauty", "= the sum of the five")]
     panels += [Panel(exrs["path"], n, lpe, layer=n) for n, lpe in CLASSES]
     fig.compose(panels, cols=3)
@@ -373,7 +375,8 @@ def caustics(fig):
     checks.check_zero(exrs["path"], "caustic", "the path tracer's caustic under a point light")
     panels = [Panel(exrs["path"], "path tracing", "caustic: E(D|G)S+<L.> = 0"),
               Panel(exrs["bdpt"], "bidirectional (bdpt)", "the same light transport"),
-              Panel(exrs["bdpt"], "bdpt: the caustic alone", "E(D|G)S+<L.>", layer="caustic")]
+              Panel(exrs["bdpt"], "bdpt: the caustic, x4", "E(D|G)S+<L.>", layer="caustic",
+                    exposure=4.0)]
     fig.compose(panels, cols=3)
     return [f"bdpt's caustic: mean luminance {mean:.3g}; the path tracer's: exactly 0",
             "both: classes sum to the beauty"]

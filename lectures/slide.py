@@ -3,7 +3,8 @@ label above and an LPE (or a note) below, drawn with OpenImageIO's Python bindin
 all slides.
 
 The grid is chosen to make the panels as large as the frame allows (every column count is tried),
-and every text is at least kMinTextPx tall so that it can be read from the back of a hall.
+and every text is set at MIN_TEXT_PX or more (font size in px; an LPE's parentheses and bars fill
+it) so that it can be read from the back of a hall.
 """
 
 import math
@@ -122,7 +123,7 @@ def side_size(grid_w):
             SLIDE_H - TOP - MARGIN - LABEL_H - BELOW_H)
 
 
-def compose(run, out_png, title, panels, cols=None, aspect=None, side=None, grid_w=None):
+def compose(out_png, title, panels, cols=None, aspect=None, side=None, grid_w=None):
     """Draw the title and the grid of panels into a 1920x1080 PNG; return the panel size.
 
     side: one more panel (a plot) right of a grid grid_w wide, as tall as the slide allows;
