@@ -15,7 +15,7 @@ namespace lightpath {
 
 // Coordinates as corners[vertex][axis][lane]: vertex 0, 1, 2 are a triangle's a, b, c.
 struct alignas(16) TrianglePack {
-    float corners[3][3][kBvhWidth]{};
+    float corners[3][3][kBvhLeafSize]{};
 
     void set(int lane, const Triangle& t) {
         const Vec3* vertices[3] = {&t.a, &t.b, &t.c};
@@ -51,7 +51,7 @@ struct PackedRay {
 struct PackHits {
     int hits = 0;    // lanes hit at t[lane], exactly as intersectTriangle finds them
     int onEdge = 0;  // lanes with an edge function of exactly zero: intersectTriangle decides them
-    alignas(16) float t[kBvhWidth];
+    alignas(16) float t[kBvhLeafSize];
 };
 
 // intersectTriangle (geometry/intersect.cpp) on the lanes of `lanes`: the same float expressions

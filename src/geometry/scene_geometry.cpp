@@ -68,10 +68,10 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
     bvh_ = Bvh(std::move(primitives), buildThreads);
     if (accelerator_ == Accelerator::Bvh) {
         const auto ids = bvh_.slotIds();
-        leafTriangles_.resize(ids.size() / kBvhWidth);
+        leafTriangles_.resize(ids.size() / kBvhLeafSize);
         for (std::size_t slot = 0; slot < ids.size(); ++slot) {
             if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
-                leafTriangles_[slot / kBvhWidth].set(static_cast<int>(slot % kBvhWidth),
+                leafTriangles_[slot / kBvhLeafSize].set(static_cast<int>(slot % kBvhLeafSize),
                                                      triangles_[ids[slot] - firstTriangle]);
         }
     }
@@ -130,7 +130,7 @@ void SceneGeometry::intersectLeaf(const Ray& ray, const PackedRay& packed, std::
             if (ids[lane] == ray.ignoredPrimitive) triangleLanes &= ~(1 << lane);
     }
     if (triangleLanes == 0) return;
-    const TrianglePack& pack = leafTriangles_[firstSlot / kBvhWidth];
+    const TrianglePack& pack = leafTriangles_[firstSlot / kBvhLeafSize];
     if (numerics_.triangle == TriangleTest::Watertight) {
         const PackHits found = watertightHits(pack, triangleLanes, packed, ray.tMin, ray.tMax);
         for (int lanes = found.hits; lanes != 0; lanes &= lanes - 1) {
