@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "accel/simd_path.h"
 #include "bench/ray_sets.h"
 #include "bench/timing.h"
 #include "film/aov_set.h"
@@ -53,12 +54,18 @@ struct Measured {
 
 }  // namespace
 
-RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool quick,
+std::vector<std::string> rayBenchmarkScenes() {
+    return {"CornellBox-Original", "CornellBox-Sphere", "bunny", "dragon", "grid"};
+}
+
+RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, const RayBenchmarkOptions& options,
                                    const std::function<void(const std::string&)>& log) {
+    const bool quick = options.quick;
     RayBenchmarkResult result;
     result.primarySide = quick ? 256 : 1024;
     result.randomRays = quick ? 1 << 16 : 1 << 20;
-    result.repetitions = quick ? 1 : 3;
+    result.repetitions = options.repetitions > 0 ? options.repetitions : quick ? 1 : 3;
+    result.simdPath = std::string(simd::pathName(simd::activePath()));
     result.allThreads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     result.embree = embreeAvailable();
 
@@ -69,12 +76,18 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
 
     const std::size_t gridSide = quick ? 224 : 708;
     const std::string gridName = quick ? "grid-100k" : "grid-1M";
-    const std::vector<BenchScene> scenes{{"CornellBox-Original", "cornell-original.toml"},
-                                         {"CornellBox-Sphere", "cornell-sphere.toml"},
-                                         {"bunny", "bunny.toml"},
-                                         {"dragon", "dragon.toml"},
-                                         {gridName, ""},
-                                         {"CornellBox-Mirror", "cornell-mirror.toml"}};
+    const bool all = options.scenes.empty();
+    const auto chosen = [&](const std::string& name) {
+        return all || std::find(options.scenes.begin(), options.scenes.end(), name) != options.scenes.end();
+    };
+    std::vector<BenchScene> scenes;
+    for (const BenchScene& scene : std::vector<BenchScene>{{"CornellBox-Original", "cornell-original.toml"},
+                                                           {"CornellBox-Sphere", "cornell-sphere.toml"},
+                                                           {"bunny", "bunny.toml"},
+                                                           {"dragon", "dragon.toml"},
+                                                           {gridName, ""}})
+        if (chosen(scene.file.empty() ? "grid" : scene.name)) scenes.push_back(scene);
+    if (all) scenes.push_back({"CornellBox-Mirror", "cornell-mirror.toml"});
     // Throughputs of the render scene (not tabled), to estimate the render's traversal time.
     std::vector<RayBenchmarkRow> renderSceneRows;
     for (const BenchScene& benchScene : scenes) {
@@ -155,6 +168,7 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
     }
 
     // End to end: the Whitted render of CornellBox-Mirror, every ray it casts per second.
+    if (!all) return result;
     Scene scene = loadScene(directory / "cornell-mirror.toml");
     scene.camera.width = scene.camera.height = quick ? 256 : 1024;
     const AovSet aovs(classesSet());
