@@ -111,6 +111,8 @@ public:
     // the same order, so a leaf's primitives are read from one block of adjacent memory.
     std::span<const std::uint32_t> slotIds() const { return ids_; }
 
+    // Defined in accel/bvh_traversal.h, which the one caller includes (it is compiled twice, once
+    // for AVX2).
     // Calls test(firstSlot, count) for every leaf whose box the ray may enter before `tLimit`,
     // nearer boxes first. `tLimit` is read again after each call, so the test shrinks it as it
     // finds nearer hits and farther subtrees are skipped.
@@ -151,37 +153,4 @@ struct Pending {
 };
 
 }  // namespace bvh_detail
-}  // namespace lightpath
-
-#define LIGHTPATH_BVH_AVX2 0
-#include "accel/bvh_traversal-inl.h"
-#undef LIGHTPATH_BVH_AVX2
-#ifdef LIGHTPATH_AVX2_PATH
-LIGHTPATH_BEGIN_AVX2
-#define LIGHTPATH_BVH_AVX2 1
-#include "accel/bvh_traversal-inl.h"
-#undef LIGHTPATH_BVH_AVX2
-LIGHTPATH_END_AVX2
-#endif
-
-namespace lightpath {
-
-template <typename Test>
-void Bvh::closest(const Ray& ray, const float& tLimit, Test test) const {
-    if (root_ == kNoRoot) return;
-#ifdef LIGHTPATH_AVX2_PATH
-    if (path_ == simd::Path::Avx2) return bvh_avx2::closest(*this, ray, tLimit, test);
-#endif
-    bvh_baseline::closest(*this, ray, tLimit, test);
-}
-
-template <typename Test>
-bool Bvh::any(const Ray& ray, Test test) const {
-    if (root_ == kNoRoot) return false;
-#ifdef LIGHTPATH_AVX2_PATH
-    if (path_ == simd::Path::Avx2) return bvh_avx2::any(*this, ray, test);
-#endif
-    return bvh_baseline::any(*this, ray, test);
-}
-
 }  // namespace lightpath

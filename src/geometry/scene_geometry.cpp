@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "accel/bvh_traversal.h"
 #include "geometry/intersect.h"
 #ifdef LIGHTPATH_HAS_EMBREE
 #include "accel/embree_accelerator.h"
