@@ -185,7 +185,11 @@ bool any(const Bvh& bvh, const Ray& ray, Test& test) {
             int mask = setup.enter(node, tMax, entry);
             if (mask != 0) {
                 current = node.children[simd::firstLane(mask)];
-                for (mask &= mask - 1; mask != 0; mask &= mask - 1) stack[top++] = node.children[simd::firstLane(mask)];
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                    const std::uint32_t child = node.children[simd::firstLane(mask)];
+                    prefetchNode(nodes, child);
+                    stack[top++] = child;
+                }
                 continue;
             }
         } else if (test(BvhChild::firstSlot(current), BvhChild::count(current))) {
