@@ -12,6 +12,7 @@
 #include "bench/timing.h"
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
+#include "lights/point_light.h"
 #include "math/random.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
@@ -125,7 +126,7 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, const
         const Bounds box = triangleBox(triangles);
         const std::vector<Ray> primary = primaryRays(scene, result.primarySide);
         const std::vector<Ray> random = randomRays(box, result.randomRays);
-        const Vec3 light = scene.lights.empty() ? box.hi : scene.lights.front().position;
+        const Vec3 light = scene.lights.empty() ? box.hi : scene.lights.front()->position();
         const float lift = 1e-4f * glm::length(box.hi - box.lo);
         const std::vector<Ray> shadow = shadowRays(geometries.front(), primary, light, lift);
 

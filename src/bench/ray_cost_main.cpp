@@ -57,7 +57,7 @@ int run(const std::string& sceneName, const std::string& kind, const std::string
     } else {
         rays = primaryRays(scene, kPrimarySide);
         if (kind == "shadow") {
-            const Vec3 light = scene.lights.empty() ? box.hi : scene.lights.front().position;
+            const Vec3 light = scene.lights.empty() ? box.hi : scene.lights.front()->position();
             rays = shadowRays(geometry, rays, light, 1e-4f * glm::length(box.hi - box.lo));
         }
     }

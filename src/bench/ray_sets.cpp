@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bench/height_field.h"
+#include "lights/point_light.h"
 #include "math/random.h"
 #include "scene/camera.h"
 
@@ -27,7 +28,7 @@ Scene heightFieldScene(std::size_t side) {
     scene.camera.lookAt = Vec3(0.0f, -0.1f, 0.0f);
     scene.camera.verticalFovDegrees = 50.0f;
     PointLight light;
-    light.position = Vec3(-2.0f, 1.5f, 1.0f);
+    light.location = Vec3(-2.0f, 1.5f, 1.0f);
     scene.lights.push_back(light);
     return scene;
 }

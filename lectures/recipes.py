@@ -1,0 +1,379 @@
+"""The figure recipes: one function per figure of lectures/figures.toml (its `recipe` key).
+
+A recipe gets a Figure (the run's settings, the figure's folder, title and scenes from
+figures.toml), renders with the lightpath CLI, checks on the EXRs what the slide will claim
+(checks.py: each failing check stops the generator), and composes the slide (slide.py). It
+returns notes for the gallery: what the checks measured.
+
+One LPE spelling everywhere, the README's: no spaces, `<L.'name'>` for a light's label.
+"""
+
+import numpy as np
+
+import checks
+import plots
+import slide
+from slide import Panel, SLIDE_H, SLIDE_W, MARGIN, TOP, LABEL_H, BELOW_H
+from steps import FigureError, explain, render, scene_variant, sh
+
+# The `classes` AOVs (docs/lpe.md): every path of every integrator is in exactly one.
+CLASSES = [("raycast", "E(D|G)L"), ("raytrace", "ES+(D|G)L"), ("mirror", "ES+L"),
+           ("emission", "EL"), ("indirect", "ES*(D|G)(D|G|S)+L")]
+CLASS_NAMES = [n for n, _ in CLASSES]
+AMBIENT = "ambient=E.*<L.'ambient'>"      # the classic methods' ka Ia, all of it
+BOUNCED = "bounced=ES*D(D|G|S)+L"          # what ambient stands in for, in the path tracer
+CAUSTIC = "caustic=E(D|G)S+<L.>"           # light from lights through S onto D or G (no sky)
+# The taxonomy as the lecture's slide prints it (Magnusson), one expression per method.
+METHODS = [("raycast", "ray casting", "E(D|G)L"),
+           ("whitted", "Whitted ray tracing", "E[S*](D|G)L"),
+           ("path", "path tracing", "E[(D|G|S)+(D|G)]L"),
+           ("radiosity", "radiosity", "ED*L")]
+
+
+def full_slide_px():
+    """The size of the one cell of a one-panel slide, for plots drawn to fill it."""
+    return SLIDE_W - 2 * MARGIN, SLIDE_H - TOP - MARGIN - LABEL_H - BELOW_H
+
+
+def method_renders(fig):
+    """The taxonomy scene under raycast, Whitted, path tracing, radiosity and bdpt.
+
+    Shared by the four-methods, nest, decomposition and ambient figures (each lists the same
+    commands; the EXRs are made once, in taxonomy/). Every render has the classes AOVs; the
+    classic methods add their ambient term, the path tracer what ambient stands for and its
+    caustics, bdpt only the caustics (its beauty is not shown)."""
+    run, scene = fig.run, fig.scene(0)
+    common = ["--resolution", run.res(640, 360), "--sampler", "sobol", "--aovs", "classes"]
+    exrs = {}
+    for integ, spp, extra in (("raycast", run.spp_direct, [AMBIENT]),
+                              ("whitted", run.spp_direct, [AMBIENT]),
+                              ("path", run.spp_path, [BOUNCED, CAUSTIC]),
+                              # a quarter of the path tracer's samples: each bdpt sample also
+                              # traces and joins a light walk, and only its caustics are shown
+                              ("bdpt", max(run.spp_path // 4, 1), [CAUSTIC]),
+                              ("radiosity", run.spp_direct, [])):
+        opts = ["--integrator", integ, "--spp", spp, *common]
+        if integ == "radiosity":
+            opts += ["--patches", run.patches]
+        for e in extra:
+            opts += ["--lpe", e]
+        exrs[integ] = render(run, "taxonomy", integ, scene, *opts)
+    return exrs
+
+
+def four_methods(fig):
+    exrs = method_renders(fig)
+    notes = []
+    for integ in ("raycast", "whitted", "path", "radiosity", "bdpt"):
+        worst = checks.check_sum(exrs[integ], CLASS_NAMES)
+        notes.append(f"{integ}: classes sum to the beauty (worst pixel {worst:.2g})")
+    for integ, name, what in (("radiosity", "", "radiosity's image"),
+                              ("path", "indirect", "the path tracer's indirect light"),
+                              ("bdpt", "caustic", "bdpt's caustics")):
+        mean = checks.check_nonzero(exrs[integ], name, what)
+        notes.append(f"{what}: mean luminance {mean:.3g} (non-zero)")
+    # radiosity follows ED*L only: nothing in the classes that need S
+    for name in ("raytrace", "mirror"):
+        checks.check_zero(exrs["radiosity"], name, "radiosity's specular paths")
+    notes.append("radiosity's raytrace and mirror AOVs are exactly zero")
+    panels = [Panel(exrs[integ], label, lpe) for integ, label, lpe in METHODS[:3]]
+    panels += [Panel(exrs["radiosity"], "radiosity", "ED*L"),
+               Panel(exrs["path"], "path tracing: indirect", "ES*(D|G)(D|G|S)+L", layer="indirect"),
+               Panel(exrs["bdpt"], "bdpt: caustics", "E(D|G)S+<L.>", layer="caustic")]
+    fig.compose(panels, cols=3)
+    return notes
+
+
+def nest(fig):
+    exrs = method_renders(fig)
+    ray, whitted, path = (checks.read_layers(exrs[i]) for i in ("raycast", "whitted", "path"))
+    # What Whitted adds, from the two beauties, against Whitted's own AOVs: the same sampler
+    # and seed give both integrators the same direct-light samples, so this holds per pixel.
+    whitted_adds = whitted[""] - ray[""]
+    from_aovs = whitted["raytrace"] + whitted["mirror"]
+    worst = float((np.abs(whitted_adds - from_aovs) / np.maximum(np.abs(whitted[""]), 1.0)).max())
+    if not worst <= 1e-4:
+        raise FigureError(f"whitted - raycast differs from ES+(D|G)L + ES+L by {worst:.3g} "
+                          "(relative, worst pixel): 'what Whitted adds' would lie")
+    # What path tracing adds: its estimate has its own samples, so the means agree, not pixels.
+    path_adds = path[""] - whitted[""]
+    path_from_aovs = path["indirect"] - whitted["ambient"]
+    rtol = 0.05 if fig.run.quick else 0.02
+    diff = checks.check_close(path_adds, path_from_aovs, rtol,
+                              "path - whitted against indirect - ambient",
+                              scale=float(checks.luminance(path[""]).mean()))
+    d = fig.dir
+    panels = [Panel(exrs[i], label, lpe) for i, label, lpe in METHODS[:3]]
+    panels += [Panel(checks.write_exr(whitted_adds, d / "whitted-adds.exr"),
+                     "what Whitted adds", "ES+(D|G)L + ES+L"),
+               Panel(checks.signed_exr(path_adds, d / "path-adds.exr"),
+                     "what path tracing adds", "indirect - ambient"),
+               Panel(checks.signed_exr(path_from_aovs, d / "path-adds-aovs.exr"),
+                     "the same from its AOVs", "orange +, blue -")]
+    fig.compose(panels, cols=3)
+    return [f"whitted - raycast = raytrace + mirror in every pixel (worst {worst:.2g})",
+            f"path - whitted against indirect - ambient: means differ by {diff:.3g} of the "
+            f"beauty's mean (bound {rtol})"]
+
+
+def decomposition(fig):
+    exrs = method_renders(fig)
+    notes = []
+    for integ in ("whitted", "path"):
+        worst = checks.check_sum(exrs[integ], CLASS_NAMES)
+        notes.append(f"{integ}: max relative |sum - beauty| = {worst:.2g}")
+    checks.check_zero(exrs["whitted"], "indirect", "Whitted's indirect light")
+    notes.append("whitted: indirect is exactly zero")
+    panels = [Panel(exrs["path"], "beauty", "= the sum of the five")]
+    panels += [Panel(exrs["path"], n, lpe, layer=n) for n, lpe in CLASSES]
+    fig.compose(panels, cols=3)
+    return notes
+
+
+def szymczak(fig):
+    run = fig.run
+    exr = render(run, fig.id, "szymczak", fig.scene(0), "--integrator", "raycast",
+                 "--resolution", run.res(640, 480), "--spp", run.spp_direct,
+                 "--lpe", "ambient=ED<L.'ambient'>", "--lpe", "diffuse=ED<L.'lamp'>",
+                 "--lpe", "specular=EG<L.'lamp'>", "--lpe", "background=EB")
+    worst = checks.check_sum(exr, ["ambient", "diffuse", "specular", "background"])
+    panels = [Panel(exr, "ambient ka Ia", "ED<L.'ambient'>", layer="ambient"),
+              Panel(exr, "diffuse kd N.L I/att", "ED<L.'lamp'>", layer="diffuse"),
+              Panel(exr, "specular ks (H.N)^n", "EG<L.'lamp'>", layer="specular"),
+              Panel(exr, "background", "EB", layer="background"),
+              Panel(exr, "total: the beauty", "= the sum of the four")]
+    fig.compose(panels)
+    return [f"ambient + diffuse + specular + background = beauty (worst pixel {worst:.2g})"]
+
+
+def exponent(fig):
+    run = fig.run
+    exponents = [1, 10, 100, 1000]
+    panels = []
+    for n in exponents:
+        scene = scene_variant(fig.dir, fig.scene(0).name, f"exponent-n{n}", n=n)
+        exr = render(run, fig.id, f"n{n}", scene, "--integrator", "raycast",
+                     "--resolution", run.res(400, 300), "--spp", run.spp_direct)
+        panels.append(Panel(exr, f"n = {n}", "E(D|G)L"))
+    # the four balls 2x2 on the left, the plot as tall as the slide on the right
+    grid_w = 2 * 462 + slide.GAP
+    plot = fig.dir / "plot.png"
+    plots.exponent_plot(plot, exponents, *slide.side_size(grid_w))
+    fig.note_command("python3 lectures/plots.py: exponent_plot, cos(angle)^n for each n")
+    fig.compose(panels, cols=2, side=Panel(plot, "(H.N)^n against the angle", "ks (H.N)^n = ks cos^n"),
+                grid_w=grid_w)
+
+
+def attenuation(fig):
+    run = fig.run
+    # The nearest ball is about 2.5 from the lamp: intensities make it receive about 1.
+    cases = [("1/d^2", "[0, 0, 1]", 6.0, "c2 = 1: physical"),
+             ("1/(c1 d)", "[0, 1, 0]", 2.5, "c1 = 1: the compromise"),
+             ("constant", "[1, 0, 0]", 1.0, "c0 = 1: none")]
+    panels = []
+    for i, (label, att, intensity, note) in enumerate(cases):
+        scene = scene_variant(fig.dir, fig.scene(0).name, f"attenuation-{i}",
+                              intensity=intensity, attenuation=att)
+        exr = render(run, fig.id, f"attenuation-{i}", scene, "--integrator", "raycast",
+                     "--resolution", run.res(640, 360), "--spp", run.spp_direct)
+        panels.append(Panel(exr, f"{label}  [c0,c1,c2] = {att}", note))
+    fig.compose(panels)
+
+
+def shadow_scene(fig, s):
+    """The shadow scene with every length multiplied by s."""
+    return scene_variant(fig.dir, fig.scene(0).name, f"shadow-scale-{s:g}", s=f"{s:g}",
+                         eye_y=1.2 * s, eye_z=4.0 * s, look_y=0.3 * s, r=0.5 * s,
+                         light_x=-6.0 * s, light_y=1.2 * s)
+
+
+def shadow_acne(fig):
+    run = fig.run
+    cases = [(1.0, ["--ray-offset", "none"], "no offset, scale 1", "acne"),
+             (1e3, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "epsilon 1e-4, scale 1e3",
+              "too small here: acne"),
+             (2e-4, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "epsilon 1e-4, scale 2e-4",
+              "too large: the shadow detaches"),
+             (1e3, [], "robust offset, scale 1e3", "the hit's error bound")]
+    panels = []
+    for i, (s, opts, label, note) in enumerate(cases):
+        exr = render(run, fig.id, f"shadow-{i}", shadow_scene(fig, s), *opts,
+                     "--resolution", run.res(640, 360), "--spp", run.spp_direct)
+        panels.append(Panel(exr, label, note))
+    fig.compose(panels)
+
+
+RAY_SPHERE_CASES = [
+    # name, sphere centre, radius; the ray starts at the origin along +x
+    ("no hit", (3, 1.6, 0), 1.0),
+    ("tangent", (3, 1.0, 0), 1.0),
+    ("two hits", (3, 0.0, 0), 1.0),
+    ("origin inside", (0.5, 0.0, 0), 1.5),
+    ("sphere behind", (-2.5, 0.0, 0), 1.0),
+]
+
+
+def first_hit(fig, i, centre, r):
+    """The renderer's answer for one ray: does it hit the ball, and the first hit's t.
+
+    From `explain --json` of the 1x1 image whose one ray is the drawn ray: a hit is a path
+    touching 'ball'; the diffuse layer (eye lamp, attenuation 1/d, kd = 1, N.L = 1 on a ray
+    through the centre) is 1/t."""
+    scene = scene_variant(fig.dir, fig.scene(0).name, f"case-{i}", dir_x=1, dir_y=0, dir_z=0,
+                          cx=centre[0], cy=centre[1], cz=centre[2], r=r)
+    doc = explain(fig.run, scene, 0, 0, "--integrator", "raycast",
+                  "--lpe", "diffuse=ED<L.'eye-lamp'>", "--lpe", "ambient=ED<L.'ambient'>")
+    hit = any(e.get("touched") == "ball" or e.get("label") == "ball"
+              for p in doc["paths"] for e in p["events"])
+    diffuse = next(l["rgb"][0] for l in doc["layers"] if l["name"] == "diffuse")
+    t = 1.0 / diffuse if diffuse > 0 else None
+    return hit, t
+
+
+def ray_sphere(fig):
+    results = []
+    for i, (name, c, r) in enumerate(RAY_SPHERE_CASES):
+        hit, t = first_hit(fig, i, c, r)
+        results.append((name, c, r, hit, t))
+    # Against the closed form: t = c.x - sqrt(r^2 - c.y^2) for a ball in front (the origin
+    # outside), c.x + sqrt(...) from inside; no hit when the ray misses or the ball is behind.
+    for name, c, r, hit, t in results:
+        h2 = r * r - c[1] ** 2
+        roots = [] if h2 < 0 else [c[0] - h2 ** 0.5, c[0] + h2 ** 0.5]
+        ahead = [x for x in roots if x > 1e-9]
+        expected = min(ahead) if ahead and h2 > 1e-12 else None
+        if expected is not None and (t is None or abs(t - expected) > 1e-3 * expected):
+            raise FigureError(f"ray-sphere '{name}': lightpath's t = {t}, the formula's {expected}")
+        if expected is None and name != "tangent" and hit:
+            raise FigureError(f"ray-sphere '{name}': lightpath reports a hit, the formula none")
+    png = fig.dir / "diagram.png"
+    w, h = full_slide_px()
+    plots.ray_sphere_diagram(png, results, w, h)
+    fig.note_command("python3 lectures/plots.py: ray_sphere_diagram, the cases and the hits")
+    fig.compose([Panel(png, "one ray per case, from the dot to the right",
+                       "hit or miss and t: lightpath explain --json")])
+    return [f"{n}: {'hit' if hit else 'miss'}" + (f", t = {t:.4f}" if t else "")
+            for n, _, _, hit, t in results]
+
+
+def automaton(fig):
+    run = fig.run
+    dot, png = fig.dir / "automaton.dot", fig.dir / "automaton.png"
+    dot.write_text(sh(run, [run.lightpath, "lpe", "dot", "E[S*](D|G)L"], capture=True))
+    sh(run, ["dot", "-Tpng", "-Gdpi=200", "-Gfontname=DejaVu Sans", "-Nfontname=DejaVu Sans",
+             "-Efontname=DejaVu Sans", "-o", png, dot])
+    fig.compose([Panel(png, "E[S*](D|G)L, minimised", "lightpath lpe dot | dot -Tpng")])
+
+
+def run_time_error(fig):
+    run = fig.run
+    csv, png = fig.dir / "bench-error.csv", fig.dir / "bench-error.png"
+    # The full benchmark renders a 4096-spp reference; both modes use --quick (closed-form
+    # scenes, budgets up to 32 spp) so that the figures stay within minutes.
+    sh(run, [run.lightpath, "bench", "error", "--quick", "--csv", csv, "--cache", fig.dir / "cache"])
+    plots.bench_error_plot(csv, png, *full_slide_px())
+    fig.note_command("python3 lectures/plots.py: bench_error_plot of bench-error.csv")
+    fig.compose([Panel(png, "RMSE against CPU seconds, log-log", "lightpath bench error --quick")])
+
+
+def light_groups(fig):
+    run = fig.run
+    groups = [("red", "red-lamp"), ("green", "green-lamp"), ("blue", "blue-lamp"),
+              ("ambient", "ambient")]
+    exr = render(run, fig.id, "groups", fig.scene(0), "--resolution", run.res(640, 480),
+                 "--spp", run.spp_direct,
+                 *sum((["--lpe", f"{n}=E.*<L.'{l}'>"] for n, l in groups), []),
+                 "--lpe", "background=E.*B")
+    worst = checks.check_sum(exr, [n for n, _ in groups] + ["background"])
+    panels = [Panel(exr, n, f"E.*<L.'{l}'>", layer=n) for n, l in groups]
+    panels += [Panel(exr, "background", "E.*B", layer="background"),
+               Panel(exr, "beauty", "= the sum of the five")]
+    fig.compose(panels, cols=3)
+    return [f"four groups + background = beauty (worst pixel {worst:.2g})"]
+
+
+def ambient(fig):
+    exrs = method_renders(fig)
+    w, p = exrs["whitted"], exrs["path"]
+    checks.check_nonzero(p, "bounced", "what ambient stands for")
+    panels = [Panel(w, "Whitted: beauty", "E[S*](D|G)L"),
+              Panel(p, "path tracer: beauty", "E[(D|G|S)+(D|G)]L"),
+              Panel(w, "ambient term ka Ia", "E.*<L.'ambient'>", layer="ambient"),
+              Panel(p, "what it stands for", "ES*D(D|G|S)+L", layer="bounced")]
+    fig.compose(panels, cols=2)
+
+
+BOUNCES = [("b1", "EDL"), ("b2", "EDDL"), ("b3", "EDDDL"), ("b4", "ED{4,}L")]
+
+
+def bounce_by_bounce(fig):
+    run = fig.run
+    lpes = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
+    common = ["--resolution", run.res(512, 512), "--aovs", "none", *lpes]
+    rad = render(run, fig.id, "radiosity", fig.scene(0), "--integrator", "radiosity",
+                 "--patches", run.patches, "--spp", 16 if not run.quick else 4, *common)
+    path = render(run, fig.id, "path", fig.scene(0), "--integrator", "path", "--sampler", "sobol",
+                  "--spp", run.spp_path, *common)
+    names = [n for n, _ in BOUNCES] + ["e"]
+    notes = []
+    for integ, exr in (("radiosity", rad), ("path", path)):
+        worst = checks.check_sum(exr, names)
+        notes.append(f"{integ}: EL + the four bounces = beauty (worst pixel {worst:.2g})")
+    r, p = checks.read_layers(rad), checks.read_layers(path)
+    # Each bounce's mean against the path tracer's (of that bounce): radiosity's discretisation
+    # error at these budgets is about 1-2% (README, "Radiosity"), the path tracer's noise less.
+    rtol = 0.05
+    for n, e in BOUNCES:
+        checks.check_nonzero(rad, n, f"radiosity's {e}")
+        diff = checks.check_close(r[n], p[n], rtol, f"{e}: radiosity against the path tracer")
+        notes.append(f"{e}: radiosity's mean differs from the path tracer's by {diff:.3g} of it "
+                     f"(bound {rtol})")
+    panels = []
+    for method, exr in (("radiosity", rad), ("path", path)):
+        panels += [Panel(exr, f"{method} {k}", e, layer=n)
+                   for k, (n, e) in zip(("1", "2", "3", "4+"), BOUNCES)]
+        panels.append(Panel(exr, f"{method}: sum", "EL + the four"))
+    fig.compose(panels, cols=5)
+    return notes
+
+
+def patch_mesh(fig):
+    run = fig.run
+    budgets = [256, run.patches]
+    panels, notes = [], []
+    for budget in budgets:
+        exrs = {}
+        for display in ("flat", "smooth"):
+            exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
+                                   "--integrator", "radiosity", "--patches", budget,
+                                   "--radiosity-display", display,
+                                   "--resolution", run.res(512, 512), "--spp", run.spp_direct,
+                                   "--aovs", "none")
+            checks.check_nonzero(exrs[display], "", f"radiosity, {display}, {budget} patches")
+        flat, smooth = (checks.layer(exrs[k], "") for k in ("flat", "smooth"))
+        diff = checks.check_close(smooth, flat, 0.1, f"{budget} patches: smooth against flat")
+        notes.append(f"{budget} patches: smooth and flat means differ by {diff:.3g}")
+        panels += [Panel(exrs["flat"], f"{budget} patches, flat", "--radiosity-display flat"),
+                   Panel(exrs["smooth"], f"{budget}, smooth", "vertex radiosities")]
+    fig.compose(panels)
+    return notes
+
+
+def caustics(fig):
+    run = fig.run
+    exrs = {}
+    for integ in ("path", "bdpt"):
+        exrs[integ] = render(run, fig.id, integ, fig.scene(0), "--integrator", integ,
+                             "--spp", run.spp_path, "--resolution", run.res(640, 480),
+                             "--aovs", "classes", "--lpe", CAUSTIC)
+        checks.check_sum(exrs[integ], CLASS_NAMES)
+    # a small bright spot: its image mean is small, so the bar is low (but far above zero)
+    mean = checks.check_nonzero(exrs["bdpt"], "caustic", "bdpt's caustic", min_mean=1e-4)
+    checks.check_zero(exrs["path"], "caustic", "the path tracer's caustic under a point light")
+    panels = [Panel(exrs["path"], "path tracing", "caustic: E(D|G)S+<L.> = 0"),
+              Panel(exrs["bdpt"], "bidirectional (bdpt)", "the same light transport"),
+              Panel(exrs["bdpt"], "bdpt: the caustic, x4", "E(D|G)S+<L.>", layer="caustic",
+                    exposure=4.0)]
+    fig.compose(panels, cols=3)
+    return [f"bdpt's caustic: mean luminance {mean:.3g}; the path tracer's: exactly 0",
+            "both: classes sum to the beauty"]
