@@ -15,12 +15,12 @@ namespace {
 
 constexpr int kBins = 16;
 // Relative costs of one node visit and one leaf block test. A block's primitives are tested four
-// at once, so the SAH counts blocks of kBvhMaxLeafSize, not primitives (as Embree's builders do
+// at once, so the SAH counts blocks of kBvhLeafSize, not primitives (as Embree's builders do
 // for their 4-triangle leaves): a range that fits one block is always a leaf.
 constexpr float kTraversalCost = 1.0f;
 
 float blocks(std::size_t count) {
-    return static_cast<float>((count + kBvhMaxLeafSize - 1) / kBvhMaxLeafSize);
+    return static_cast<float>((count + kBvhLeafSize - 1) / kBvhLeafSize);
 }
 // Below this depth splits follow the SAH; deeper (only in pathological inputs) they halve the
 // range, so the depth stays within what bvh_detail::kStackSize allows.
@@ -158,7 +158,7 @@ private:
             const Split best = findSplit(begin, end, centroids);
             const float leafCost = blocks(count);
             const float splitCost = kTraversalCost + best.cost / bounds.halfArea();
-            if (count <= kBvhMaxLeafSize && !(splitCost < leafCost)) return makeLeaf();
+            if (count <= kBvhLeafSize && !(splitCost < leafCost)) return makeLeaf();
             if (best.axis >= 0) {
                 const int axis = best.axis;
                 const float lo = centroids.lo[axis];
@@ -172,7 +172,7 @@ private:
                 if (middle > begin && middle < end) return middle;
             }
         }
-        if (count <= kBvhMaxLeafSize) return makeLeaf();
+        if (count <= kBvhLeafSize) return makeLeaf();
         // Coincident centroids, or too deep: halve the range along the widest axis by centroid
         // (ties in id order, so the build is deterministic).
         const std::size_t middle = begin + count / 2;
@@ -238,7 +238,7 @@ private:
     std::size_t outstanding_ = 0;
 };
 
-// Turns the binary tree into 4-wide nodes, depth first: a wide node takes its binary node's
+// Turns the binary tree into 8-wide nodes, depth first: a wide node takes its binary node's
 // children and, while it has room, opens the interior child of largest surface area (the one a
 // ray most likely enters) in place. Leaves get one block of slots each.
 class Collapser {
@@ -289,8 +289,8 @@ public:
 
 private:
     std::uint32_t leaf(const BinaryNode& b) {
-        const auto block = static_cast<std::uint32_t>(ids_.size() / kBvhWidth);
-        for (std::uint32_t i = 0; i < kBvhWidth; ++i)
+        const auto block = static_cast<std::uint32_t>(ids_.size() / kBvhLeafSize);
+        for (std::uint32_t i = 0; i < kBvhLeafSize; ++i)
             ids_.push_back(i < b.count ? binary_.items()[b.first + i].id : kBvhEmptySlot);
         return BvhChild::leaf(block, b.count);
     }
@@ -302,9 +302,9 @@ private:
 
 }  // namespace
 
-Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) {
+Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) : path_(simd::activePath()) {
     const auto started = std::chrono::steady_clock::now();
-    // Each leaf takes a block of kBvhWidth slots, and a block index has 29 bits.
+    // Each leaf takes a block of kBvhLeafSize slots, and a block index has 29 bits.
     if (primitives.size() > (std::size_t{BvhChild::kBlockMask} + 1) / 2)
         throw std::length_error("too many primitives for a BVH with 29-bit block indices");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -315,7 +315,7 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) {
         primitives = {};  // the builder works on its own copy: free this one before the build's peak
         binary.build(threads);
         // A wide node replaces at least one binary interior node; a leaf takes at most
-        // kBvhWidth slots per primitive, usually far fewer.
+        // kBvhLeafSize slots per primitive, usually far fewer.
         nodes_.reserve(binary.items().size() / 2 + 1);
         ids_.reserve(binary.items().size() * 2);
         Collapser collapser(binary, nodes_, ids_);
@@ -324,7 +324,7 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) {
     stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     stats_.nodes = nodes_.size();
     stats_.nodeBytes = nodes_.size() * sizeof(BvhNode);
-    stats_.leaves = ids_.size() / kBvhWidth;
+    stats_.leaves = ids_.size() / kBvhLeafSize;
     stats_.primitives = static_cast<std::size_t>(std::count_if(ids_.begin(), ids_.end(), [](std::uint32_t id) {
         return id != kBvhEmptySlot;
     }));

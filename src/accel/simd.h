@@ -1,13 +1,28 @@
 #pragma once
-// Four floats in one register: the lanes of a 4-wide BVH node or of four triangles. SSE2, which
-// every x86-64 processor has (no -march flags, no runtime dispatch); a plain loop elsewhere.
-// Each operation is one IEEE operation per lane, so a lane's result is bit-identical to the
-// same scalar expression (no fused multiply-add: x86-64's baseline has none).
+// Four floats in one register: the lanes of four triangles, or half of an 8-wide BVH node. SSE2,
+// which every x86-64 processor has (no -march flags); a plain loop elsewhere. Each operation is
+// one IEEE operation per lane, so a lane's result is bit-identical to the same scalar expression
+// (no fused multiply-add: x86-64's baseline has none, and AVX2 code is compiled without FMA).
+// The AVX2 path (bvh_traversal-inl.h) is compiled for AVX2 function by function, between
+// LIGHTPATH_BEGIN_AVX2 and LIGHTPATH_END_AVX2, and chosen at run time (simd_path.h).
 #include <cstdint>
 
 #if defined(__SSE2__) || defined(_M_X64)
 #include <emmintrin.h>
 #define LIGHTPATH_SSE2 1
+#endif
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define LIGHTPATH_AVX2_PATH 1
+#if defined(__clang__)
+#define LIGHTPATH_BEGIN_AVX2 \
+    _Pragma("clang attribute push(__attribute__((target(\"avx2\"))), apply_to = function)")
+#define LIGHTPATH_END_AVX2 _Pragma("clang attribute pop")
+#else
+#define LIGHTPATH_BEGIN_AVX2 _Pragma("GCC push_options") _Pragma("GCC target(\"avx2\")")
+#define LIGHTPATH_END_AVX2 _Pragma("GCC pop_options")
+#endif
 #endif
 
 namespace lightpath::simd {

@@ -15,7 +15,7 @@ namespace lightpath {
 
 // Coordinates as corners[vertex][axis][lane]: vertex 0, 1, 2 are a triangle's a, b, c.
 struct alignas(16) TrianglePack {
-    float corners[3][3][kBvhWidth]{};
+    float corners[3][3][kBvhLeafSize]{};
 
     void set(int lane, const Triangle& t) {
         const Vec3* vertices[3] = {&t.a, &t.b, &t.c};
@@ -51,7 +51,7 @@ struct PackedRay {
 struct PackHits {
     int hits = 0;    // lanes hit at t[lane], exactly as intersectTriangle finds them
     int onEdge = 0;  // lanes with an edge function of exactly zero: intersectTriangle decides them
-    alignas(16) float t[kBvhWidth];
+    alignas(16) float t[kBvhLeafSize];
 };
 
 // intersectTriangle (geometry/intersect.cpp) on the lanes of `lanes`: the same float expressions
@@ -77,12 +77,15 @@ inline PackHits watertightHits(const TrianglePack& pack, int lanes, const Packed
     const Float4 zero(0.0f);
     PackHits result;
     result.onEdge = lanes & (simd::equal(u, zero) | simd::equal(v, zero) | simd::equal(w, zero));
-    const int negative = simd::less(u, zero) | simd::less(v, zero) | simd::less(w, zero);
-    const int positive = simd::less(zero, u) | simd::less(zero, v) | simd::less(zero, w);
+    // Some edge function negative and some positive: min < 0 < max. A NaN one makes det and t
+    // NaN, so its lane is no hit whatever these say, as in the scalar test.
+    const Float4 lowest = simd::minKeepSecond(u, simd::minKeepSecond(v, w));
+    const Float4 highest = simd::maxKeepSecond(u, simd::maxKeepSecond(v, w));
+    const int inside = lanes & ~result.onEdge & ~(simd::less(lowest, zero) & simd::less(zero, highest));
+    if (inside == 0) return result;  // most leaves a ray enters: no division needed
     const Float4 det = u + v + w;
     const Float4 t = (u * z[0] + v * z[1] + w * z[2]) / det;
-    int hits = lanes & ~result.onEdge & ~(negative & positive) & ~simd::equal(det, zero) &
-               simd::less(Float4(tMin), t) & simd::less(t, Float4(tMax));
+    const int hits = inside & ~simd::equal(det, zero) & simd::less(Float4(tMin), t) & simd::less(t, Float4(tMax));
     if (hits == 0) return result;
     // The bound of t's rounding error (pbrt-v4, section 6.8.4), as intersectTriangle computes it.
     const auto max3 = [](Float4 a, Float4 b, Float4 c) {

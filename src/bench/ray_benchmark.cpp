@@ -7,7 +7,8 @@
 #include <optional>
 #include <thread>
 
-#include "bench/height_field.h"
+#include "accel/simd_path.h"
+#include "bench/ray_sets.h"
 #include "bench/timing.h"
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
@@ -28,31 +29,6 @@ struct BenchScene {
     std::string file;  // a shipped scene, or empty for the generated height field
 };
 
-// The memory test's height field (src/bench/height_field.h), 2 * 708^2 = 1,002,528 triangles
-// (quick: 2 * 224^2 = 100,352), seen from above at an angle and lit from one side.
-Scene heightFieldScene(std::size_t side) {
-    Scene scene;
-    std::vector<Vec3> vertices;
-    vertices.reserve((side + 1) * (side + 1));
-    for (std::size_t row = 0; row <= side; ++row) {
-        for (std::size_t column = 0; column <= side; ++column) {
-            const float x = height_field::coordinate(column, side), z = height_field::coordinate(row, side);
-            vertices.emplace_back(x, height_field::height(x, z), z);
-        }
-    }
-    scene.triangles.reserve(2 * side * side);
-    height_field::forEachTriangle(side, [&](std::size_t a, std::size_t b, std::size_t c) {
-        scene.triangles.push_back({vertices[a], vertices[b], vertices[c], 0});
-    });
-    scene.camera.eye = Vec3(0.0f, 1.2f, 2.2f);
-    scene.camera.lookAt = Vec3(0.0f, -0.1f, 0.0f);
-    scene.camera.verticalFovDegrees = 50.0f;
-    PointLight light;
-    light.location = Vec3(-2.0f, 1.5f, 1.0f);
-    scene.lights.push_back(light);
-    return scene;
-}
-
 // Rays handed out in chunks from an atomic counter: the same dynamic scheme as the renderer.
 double timeParallel(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& work) {
     constexpr std::size_t kChunk = 4096;
@@ -70,63 +46,6 @@ double timeParallel(std::size_t count, int threads, const std::function<void(std
     return std::chrono::duration<double>(Clock::now() - started).count();
 }
 
-Bounds triangleBox(const std::vector<Triangle>& triangles) {
-    Bounds box;
-    for (const Triangle& t : triangles) {
-        box.grow(t.a);
-        box.grow(t.b);
-        box.grow(t.c);
-    }
-    return box;
-}
-
-std::vector<Ray> primaryRays(const Scene& scene, int side) {
-    CameraDescription description = scene.camera;
-    description.width = side;
-    description.height = side;
-    const PinholeCamera camera(description);
-    std::vector<Ray> rays;
-    rays.reserve(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
-    for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x)
-            rays.push_back(camera.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
-    return rays;
-}
-
-// Origins uniform in the box, directions uniform on the sphere (z = 1 - 2u, phi = 2 pi v).
-std::vector<Ray> randomRays(const Bounds& box, int count) {
-    Pcg32 rng(0x5eed, 7);
-    std::vector<Ray> rays(static_cast<std::size_t>(count));
-    for (Ray& ray : rays) {
-        ray.origin = box.lo + (box.hi - box.lo) * Vec3(rng.nextFloat(), rng.nextFloat(), rng.nextFloat());
-        const float z = 1.0f - 2.0f * rng.nextFloat();
-        const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-        const float phi = 2.0f * kPi * rng.nextFloat();
-        ray.direction = Vec3(r * std::cos(phi), r * std::sin(phi), z);
-    }
-    return rays;
-}
-
-// From every primary hit towards the light. The origin is lifted off the surface by a small
-// fraction of the scene size, so both accelerators answer the same question without a filter.
-std::vector<Ray> shadowRays(const SceneGeometry& geometry, const std::vector<Ray>& primary, const Vec3& light,
-                            float lift) {
-    std::vector<Ray> rays;
-    for (const Ray& ray : primary) {
-        const auto hit = geometry.intersect(ray);
-        if (!hit) continue;
-        const Vec3 side = glm::dot(hit->normal, light - hit->point) >= 0.0f ? hit->normal : -hit->normal;
-        Ray shadow;
-        shadow.origin = hit->point + lift * side;
-        const Vec3 toLight = light - shadow.origin;
-        const float distance = glm::length(toLight);
-        shadow.direction = toLight / distance;
-        shadow.tMax = distance;
-        rays.push_back(shadow);
-    }
-    return rays;
-}
-
 struct Measured {
     std::string rays;
     std::string accel;
@@ -136,12 +55,18 @@ struct Measured {
 
 }  // namespace
 
-RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool quick,
+std::vector<std::string> rayBenchmarkScenes() {
+    return {"CornellBox-Original", "CornellBox-Sphere", "bunny", "dragon", "grid"};
+}
+
+RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, const RayBenchmarkOptions& options,
                                    const std::function<void(const std::string&)>& log) {
+    const bool quick = options.quick;
     RayBenchmarkResult result;
     result.primarySide = quick ? 256 : 1024;
     result.randomRays = quick ? 1 << 16 : 1 << 20;
-    result.repetitions = quick ? 1 : 3;
+    result.repetitions = options.repetitions > 0 ? options.repetitions : quick ? 1 : 3;
+    result.simdPath = std::string(simd::pathName(simd::activePath()));
     result.allThreads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     result.embree = embreeAvailable();
 
@@ -152,12 +77,18 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
 
     const std::size_t gridSide = quick ? 224 : 708;
     const std::string gridName = quick ? "grid-100k" : "grid-1M";
-    const std::vector<BenchScene> scenes{{"CornellBox-Original", "cornell-original.toml"},
-                                         {"CornellBox-Sphere", "cornell-sphere.toml"},
-                                         {"bunny", "bunny.toml"},
-                                         {"dragon", "dragon.toml"},
-                                         {gridName, ""},
-                                         {"CornellBox-Mirror", "cornell-mirror.toml"}};
+    const bool all = options.scenes.empty();
+    const auto chosen = [&](const std::string& name) {
+        return all || std::find(options.scenes.begin(), options.scenes.end(), name) != options.scenes.end();
+    };
+    std::vector<BenchScene> scenes;
+    for (const BenchScene& scene : std::vector<BenchScene>{{"CornellBox-Original", "cornell-original.toml"},
+                                                           {"CornellBox-Sphere", "cornell-sphere.toml"},
+                                                           {"bunny", "bunny.toml"},
+                                                           {"dragon", "dragon.toml"},
+                                                           {gridName, ""}})
+        if (chosen(scene.file.empty() ? "grid" : scene.name)) scenes.push_back(scene);
+    if (all) scenes.push_back({"CornellBox-Mirror", "cornell-mirror.toml"});
     // Throughputs of the render scene (not tabled), to estimate the render's traversal time.
     std::vector<RayBenchmarkRow> renderSceneRows;
     for (const BenchScene& benchScene : scenes) {
@@ -238,6 +169,7 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
     }
 
     // End to end: the Whitted render of CornellBox-Mirror, every ray it casts per second.
+    if (!all) return result;
     Scene scene = loadScene(directory / "cornell-mirror.toml");
     scene.camera.width = scene.camera.height = quick ? 256 : 1024;
     const AovSet aovs(classesSet());

@@ -34,14 +34,26 @@ struct RayBenchmarkResult {
     int repetitions = 0;
     int allThreads = 1;
     bool embree = false;  // whether this build could compare against Embree
+    std::string simdPath;  // our BVH's traversal: "avx2", "sse2" or "portable"
     std::vector<RayBenchmarkRow> rows;
     std::vector<RenderThroughput> renders;
     std::vector<std::string> notes;  // e.g. how many closest hits Embree and we disagree on
 };
 
+struct RayBenchmarkOptions {
+    bool quick = false;
+    // Scene names to run (see RayBenchmarkRow::scene; "grid" for the height field); empty: all,
+    // and then the render of CornellBox-Mirror too.
+    std::vector<std::string> scenes;
+    int repetitions = 0;  // 0: 3 (quick: 1)
+};
+
+// The scene names `scenes` may hold.
+std::vector<std::string> rayBenchmarkScenes();
+
 // `sceneDirectory` holds the shipped scenes (cornell-*.toml, bunny.toml, dragon.toml). `log` receives one line
 // per finished measurement, so a long run shows it is alive.
-RayBenchmarkResult runRayBenchmark(const std::filesystem::path& sceneDirectory, bool quick,
+RayBenchmarkResult runRayBenchmark(const std::filesystem::path& sceneDirectory, const RayBenchmarkOptions& options,
                                    const std::function<void(const std::string&)>& log);
 
 }  // namespace lightpath

@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "accel/simd_path.h"
 #include "bench/machine.h"
 #include "bench/ray_benchmark.h"
 #include "bench/skip_benchmark.h"
@@ -55,7 +56,8 @@ void runSkip(const SkipOptions& options) {
 
 struct RaysOptions {
     std::string json;
-    bool quick = false;
+    RayBenchmarkOptions benchmark;
+    std::string simd;
 };
 
 // The figure of `accel` for the same scene, kind and thread count as `row`, or 0.
@@ -91,8 +93,9 @@ void printRaysTable(const RayBenchmarkResult& r) {
 
 void runRays(const RaysOptions& options) {
     RayBenchmarkResult r;
+    if (!options.simd.empty()) simd::setPath(options.simd == "avx2" ? simd::Path::Avx2 : simd::Path::Baseline);
     try {
-        r = runRayBenchmark(std::filesystem::path(shippedScene("bunny.toml")).parent_path(), options.quick,
+        r = runRayBenchmark(std::filesystem::path(shippedScene("bunny.toml")).parent_path(), options.benchmark,
                             [](const std::string& line) { std::fprintf(stderr, "bench rays: %s\n", line.c_str()); });
     } catch (const SceneError& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
@@ -101,10 +104,10 @@ void runRays(const RaysOptions& options) {
                 "median of %d interleaved runs; primary %dx%d pinhole, %d random rays, shadow rays from the\n"
                 "primary hits to the first light. Triangles only, the same rays for every accelerator.\n"
                 "Builds: ours on 1 thread and on %d (the same tree), Embree's on %d (its device creation not\n"
-                "counted).%s\nmachine: %s\n\n",
+                "counted).%s\nmachine: %s; our BVH traverses with %s\n\n",
                 r.repetitions, r.primarySide, r.primarySide, r.randomRays, r.allThreads, r.allThreads,
                 r.embree ? "" : " This build has no Embree (LIGHTPATH_EMBREE=OFF): no comparison.",
-                describeMachine().c_str());
+                describeMachine().c_str(), r.simdPath.c_str());
     printRaysTable(r);
     std::printf("\n");
     for (const RenderThroughput& t : r.renders)
@@ -163,8 +166,17 @@ void addBenchCommand(CLI::App& app) {
         bench->add_subcommand("rays", "Ray throughput of our BVH and of Embree on the same rays, 1 thread and all");
     raysCommand->add_option("--json", rays->json,
                             "Also write the rows [{\"scene\", \"rays\", \"accel\", \"threads\", \"mrays_per_s\"}, ...]");
-    raysCommand->add_flag("--quick", rays->quick,
+    raysCommand->add_flag("--quick", rays->benchmark.quick,
                           "256x256 primary rays, 65536 random rays, a 100k-triangle height field, 1 run: for CI");
+    raysCommand->add_option("--scenes", rays->benchmark.scenes, "Only these scenes (no render line)")
+        ->delimiter(',')
+        ->check(CLI::IsMember(rayBenchmarkScenes()));
+    raysCommand->add_option("--runs", rays->benchmark.repetitions, "Interleaved runs whose median is printed (default 3)")
+        ->check(CLI::Range(1, 99));
+    std::vector<std::string> paths{"baseline"};
+    if (simd::supported(simd::Path::Avx2)) paths.push_back("avx2");
+    raysCommand->add_option("--simd", rays->simd, "Our BVH's SIMD path (default: the widest this processor has)")
+        ->check(CLI::IsMember(paths));
     raysCommand->footer(
         "Primary (pinhole), random (origins in the bounding box, uniform directions) and shadow rays, and\n"
         "the build, on CornellBox-Original, CornellBox-Sphere, the bunny (69k triangles), the dragon\n"
@@ -172,6 +184,7 @@ void addBenchCommand(CLI::App& app) {
         "CornellBox-Mirror. Prints M rays/s, ours/Embree and the 1 -> 2 thread scaling.\n\n"
         "Examples:\n"
         "  lightpath bench rays\n"
+        "  lightpath bench rays --scenes bunny,dragon --runs 5\n"
         "  lightpath bench rays --quick --json out/rays.json");
     raysCommand->callback([rays] { runRays(*rays); });
 
