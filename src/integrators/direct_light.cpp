@@ -26,17 +26,11 @@ std::size_t termFactors(const ShadingPoint& p, Lobe lobe, const LightSample& sam
                         const Rgb& incident, float lightPdf, float weight, DirectLightWeighting weighting,
                         const Rgb& throughput, std::array<TermFactor, kMaxTermFactors>& factors) {
     std::size_t n = 0;
-    const float cosTheta = glm::dot(p.normal, sample.wi);
     if (light.isDelta() && weighting == DirectLightWeighting::Alone) {
         const float falloff = light.falloff(sample.distance);
-        if (lobe == Lobe::Diffuse) {
-            factors[n++] = {"kd", p.material.kd};
-            factors[n++] = {"N.L", Rgb{cosTheta}};
-        } else {
-            const Vec3 halfway = glm::normalize(p.wo + sample.wi);
-            factors[n++] = {"ks", p.material.ks};
-            factors[n++] = {"(H.N)^n", Rgb{std::pow(std::max(0.0f, glm::dot(p.normal, halfway)), p.material.n)}};
-        }
+        NamedFactors named;
+        const int count = p.bsdf.factors(lobe, p.wo, sample.wi, named);
+        for (int i = 0; i < count; ++i) factors[n++] = {named[i].name, named[i].value};
         factors[n++] = {"I", incident / (kPi * falloff)};
         factors[n++] = {"attenuation", Rgb{falloff}};
     } else {
@@ -166,12 +160,13 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
     const lpe::OutputMask accepted = path.acceptsAfter(lobes.after[0], ambient);
     if (!path.wanted(accepted)) return;
-    const Rgb value = throughput * point.material.ka * ctx.scene.ambient;
+    const Rgb ka = point.material.ambientReflectance();
+    const Rgb value = throughput * ka * ctx.scene.ambient;
     if (!path.explaining()) {
         path.emitAccepted(lobes.events[0], ambient, value, accepted);
         return;
     }
-    const TermFactor factors[] = {{"ka", point.material.ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
+    const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
     path.emitAccepted(lobes.events[0], ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
