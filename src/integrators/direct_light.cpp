@@ -193,10 +193,12 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
     const SmoothLobeEvents lobes(point, path);
     addAmbient(point, lobes, throughput, path);
     if (path.sampler == nullptr) return;
-    // Only area lights read these numbers (a point light is one point): without any, the
-    // vertex's sampler is not made. It is keyed by the path, so no other sample depends on it.
+    // Only area lights read these numbers (the one delta light, PointLightSource, is one point and
+    // ignores them; a delta light that sampled would have to be counted here): without any area
+    // light the vertex's sampler is not made. It is keyed by the path, so no other sample depends on it.
     LightChoiceSample u{0.0f, Vec2{0.0f}};
-    if (path.context.lights.hasAreaLights()) {
+    const LightSet& lights = path.context.lights;
+    if (lights.all().size() > lights.deltaLights().size()) {  // some light is an area light
         Sampler vertex = path.sampler->forVertex(path.key());
         u.uChoice = vertex.next1D();
         u.uPoint = vertex.next2D();
