@@ -174,38 +174,42 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, const
     scene.camera.width = scene.camera.height = quick ? 256 : 1024;
     const AovSet aovs(classesSet());
     for (const std::string& accel : accels) {
-        RenderOptions options;
-        options.integrator = "whitted";
-        options.threads = result.allThreads;
-        options.accelerator = accel == "bvh" ? Accelerator::Bvh : Accelerator::Embree;
-        const Renderer renderer(scene, aovs, options);
-        std::vector<double> seconds;
-        RenderStats stats;
-        for (int r = 0; r < result.repetitions; ++r) {
-            stats = renderer.render().stats;
-            seconds.push_back(stats.seconds);
+        for (int threads : threadCounts) {
+            RenderOptions options;
+            options.integrator = "whitted";
+            options.threads = threads;
+            options.accelerator = accel == "bvh" ? Accelerator::Bvh : Accelerator::Embree;
+            const Renderer renderer(scene, aovs, options);
+            std::vector<double> seconds, cpuEstimates;
+            RenderStats stats;
+            for (int r = 0; r < result.repetitions; ++r) {
+                stats = renderer.render().stats;
+                seconds.push_back(stats.seconds);
+                cpuEstimates.push_back(stats.serialCpuSeconds +
+                                       *std::max_element(stats.workerCpuSeconds.begin(), stats.workerCpuSeconds.end()));
+            }
+            RenderThroughput t;
+            t.accel = accel;
+            t.threads = threads;
+            t.seconds = median(seconds);
+            t.cpuEstimateSeconds = median(cpuEstimates);
+            t.rays = stats.rays.total();
+            t.millionRaysPerSecond = static_cast<double>(t.rays) / t.seconds * 1e-6;
+            const auto rate = [&](const char* kind) {
+                for (const RayBenchmarkRow& row : renderSceneRows)
+                    if (row.rays == kind && row.accel == accel && row.threads == threads) return row.millionsPerSecond * 1e6;
+                return 0.0;
+            };
+            const RayCounters& c = stats.rays;
+            // Camera rays are coherent like the primary set, mirror and glass rays incoherent like
+            // the random set, shadow rays like the shadow set.
+            t.traversalSeconds = static_cast<double>(c.camera) / rate("primary") +
+                                 static_cast<double>(c.reflection + c.refraction) / rate("random") +
+                                 static_cast<double>(c.shadow) / rate("shadow");
+            t.shadingOverhead = (t.seconds - t.traversalSeconds) / t.traversalSeconds;
+            result.renders.push_back(t);
+            log("render with " + accel + " on " + std::to_string(threads) + " thread(s) done");
         }
-        RenderThroughput t;
-        t.accel = accel;
-        t.threads = result.allThreads;
-        t.seconds = median(seconds);
-        t.rays = stats.rays.total();
-        t.millionRaysPerSecond = static_cast<double>(t.rays) / t.seconds * 1e-6;
-        const auto rate = [&](const char* kind) {
-            for (const RayBenchmarkRow& row : renderSceneRows)
-                if (row.rays == kind && row.accel == accel && row.threads == result.allThreads)
-                    return row.millionsPerSecond * 1e6;
-            return 0.0;
-        };
-        const RayCounters& c = stats.rays;
-        // Camera rays are coherent like the primary set, mirror and glass rays incoherent like the
-        // random set, shadow rays like the shadow set.
-        t.traversalSeconds = static_cast<double>(c.camera) / rate("primary") +
-                             static_cast<double>(c.reflection + c.refraction) / rate("random") +
-                             static_cast<double>(c.shadow) / rate("shadow");
-        t.shadingOverhead = (t.seconds - t.traversalSeconds) / t.traversalSeconds;
-        result.renders.push_back(t);
-        log("render with " + accel + " done");
     }
     return result;
 }

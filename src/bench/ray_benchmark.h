@@ -22,6 +22,7 @@ struct RenderThroughput {
     std::string accel;
     int threads = 1;
     double seconds = 0.0;
+    double cpuEstimateSeconds = 0.0;  // serial + busiest worker CPU time: the idle-machine time
     unsigned long long rays = 0;
     double millionRaysPerSecond = 0.0;
     double traversalSeconds = 0.0;  // its rays at the throughputs measured for that scene

@@ -4,6 +4,8 @@
 //                         (beauty + classes) on a mirror-heavy scene; target <= 1/1.5
 //   aovs_over_beauty      time of beauty + the five classes AOVs / time of the beauty alone;
 //                         target <= 1.05
+// and every integrator's scaling from 1 thread to all (target >= 1.85x on 2 threads), with the
+// classes AOVs' cost on 1 thread and on all (target <= 5% on each).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,5 +27,29 @@ struct SkipBenchmarkResult {
 };
 
 SkipBenchmarkResult runSkipBenchmark(const std::filesystem::path& scene, bool quick);
+
+// One configuration's render on 1 thread and on every hardware thread, medians of interleaved runs.
+// Wall seconds are what a user waits for, and what load from other processes stretches; the CPU
+// estimate (the render's serial CPU time plus its busiest worker's, RenderStats) is what the
+// render would take on an idle machine, and grows with the thread count only through the render
+// itself (serial parts, idle workers at the end, cache lines passed between cores).
+struct ThreadScalingRow {
+    std::string configuration;  // "whitted", ..., "whitted, --aovs none"
+    double wall[2] = {0.0, 0.0};         // 1 thread, all threads
+    double cpuEstimate[2] = {0.0, 0.0};  // 1 thread, all threads
+    double wallScaling() const { return wall[0] / wall[1]; }
+    double cpuScaling() const { return cpuEstimate[0] / cpuEstimate[1]; }
+};
+
+struct ThreadScalingResult {
+    std::string scene;
+    int width = 0, height = 0, samplesPerPixel = 0, repetitions = 0, threads = 1;
+    // raycast, whitted, path, bdpt, radiosity (its solve included in the wall time), then Whitted
+    // with the beauty alone (--aovs none) for the cost of the classes AOVs.
+    std::vector<ThreadScalingRow> rows;
+};
+
+// Every integrator's scaling from 1 thread to all, and the classes AOVs' cost on each.
+ThreadScalingResult runThreadScalingBenchmark(const std::filesystem::path& scene, bool quick);
 
 }  // namespace lightpath

@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -60,6 +61,20 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);
     std::printf("wall time     rendering %.3f s, writing %.3f s (%zu file%s; %.3f s of it waiting for the image module)\n",
                 stats.seconds, write.seconds, write.files, write.files == 1 ? "" : "s", write.moduleWaitSeconds);
+    if (!stats.workerCpuSeconds.empty()) {
+        // CPU time is what load on the machine does not stretch: serial + the busiest worker is
+        // the render's time on an idle machine.
+        std::string workers;
+        double busiest = 0.0;
+        for (double s : stats.workerCpuSeconds) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%s%.3f", workers.empty() ? "" : " + ", s);
+            workers += text;
+            busiest = std::max(busiest, s);
+        }
+        std::printf("cpu time      workers %s s, serial %.3f s: %.3f s on an idle machine\n", workers.c_str(),
+                    stats.serialCpuSeconds, stats.serialCpuSeconds + busiest);
+    }
     std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
     std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
 }
@@ -93,6 +108,7 @@ void run(const RenderCommand& command) {
     const AovSet aovs = command.setup.buildAovSet(scene);
     RenderOptions options = command.setup.renderOptions();
     options.cancel = &interrupted;
+    options.onWorkersStarted = preloadImageModule;
     std::unique_ptr<Renderer> renderer;
     try {
         renderer = std::make_unique<Renderer>(scene, aovs, options);
@@ -108,7 +124,8 @@ void run(const RenderCommand& command) {
     }
 
     // Every input is accepted: an image will be written. Fail now if it could not be, and have
-    // the image module (OpenImageIO) loaded in the background while the scene renders.
+    // the image module (OpenImageIO) loaded in the background while the scene renders, from
+    // once the render's workers exist (RenderOptions::onWorkersStarted says why).
     try {
         locateImageModule();
     } catch (const ImageModuleError& e) {
@@ -116,7 +133,6 @@ void run(const RenderCommand& command) {
     }
     if (!command.readyFile.empty() && !std::ofstream(command.readyFile))
         throw CLI::RuntimeError("--ready-file: cannot create " + command.readyFile, kExitFailure);
-    preloadImageModule();
 
     const RenderResult result = renderer->render();
     if (result.cancelled) throw CLI::RuntimeError("interrupted: no image written", kExitInterrupted);

@@ -13,7 +13,12 @@ namespace lightpath {
 
 class Film {
 public:
+    // Every pixel black.
     Film(int width, int height, std::vector<std::string> layerNames);
+    // Pixels left unset, for a writer that sets every one (the renderer's workers, which so touch
+    // the memory first, in parallel).
+    struct Unset {};
+    Film(int width, int height, std::vector<std::string> layerNames, Unset);
 
     int width() const { return width_; }
     int height() const { return height_; }

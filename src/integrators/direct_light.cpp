@@ -54,9 +54,21 @@ std::string zeroReason(const ShadingPoint& p, const LightSample& sample, bool li
     return "the term is zero here";
 }
 
+// A shading point's two smooth-lobe events and the automaton state after each, stepped once and
+// shared by its ambient term and every light sample (each term then costs one step, not four).
+struct SmoothLobeEvents {
+    PathEvent events[2];
+    lpe::Automaton::State after[2];
+
+    SmoothLobeEvents(const ShadingPoint& p, const PathState& path)
+        : events{p.eventOf(Lobe::Diffuse), p.eventOf(Lobe::Highlight)},
+          after{path.stateAfter(events[0]), path.stateAfter(events[1])} {}
+};
+
 // One light sample through both smooth lobes, with one shadow ray.
-void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSample& sample, float choiceProbability,
-                    const Light& light, DirectLightWeighting weighting, PathState& path) {
+void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, const Rgb& throughput,
+                    const LightSample& sample, float choiceProbability, const Light& light,
+                    DirectLightWeighting weighting, PathState& path) {
     const RenderContext& ctx = path.context;
     const bool skip = ctx.skipEnabled;
     RayCounters& counters = path.counters;
@@ -65,13 +77,15 @@ void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSam
     const bool litSide = cosTheta > 0.0f && sample.distance > 0.0f;
     PathEvent lightEvent = light.event();
     lightEvent.position = sample.point;
-    const PathEvent events[2] = {p.eventOf(Lobe::Diffuse), p.eventOf(Lobe::Highlight)};
+    const PathEvent(&events)[2] = lobes.events;
     if (!litSide && skip) {
         ++counters.shadowBehind;
         if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, sample, litSide));
         return;
     }
-    const bool wanted[2] = {path.wants(events[0], lightEvent), path.wants(events[1], lightEvent)};
+    const lpe::OutputMask accepted[2] = {path.acceptsAfter(lobes.after[0], lightEvent),
+                                         path.acceptsAfter(lobes.after[1], lightEvent)};
+    const bool wanted[2] = {path.wanted(accepted[0]), path.wanted(accepted[1])};
     if (!wanted[0] && !wanted[1]) {
         ++counters.shadowDead;
         return;
@@ -117,14 +131,45 @@ void addLightSample(const ShadingPoint& p, const Rgb& throughput, const LightSam
     }
     for (int l = 0; l < 2; ++l) {
         if (!wanted[l] || (skip && isBlack(value[l]))) continue;
+        if (!path.explaining()) {
+            path.emitAccepted(events[l], lightEvent, value[l], accepted[l]);
+            continue;
+        }
         std::array<TermFactor, kMaxTermFactors> factors;
-        const std::size_t count = path.explaining() ? termFactors(p, kSmoothLobes[l], sample, light, incident, lightPdf,
-                                                                  weights[l], weighting, throughput, factors)
-                                                    : 0;
-        path.emit(events[l], lightEvent, value[l], std::span(factors.data(), count));
+        const std::size_t count =
+            termFactors(p, kSmoothLobes[l], sample, light, incident, lightPdf, weights[l], weighting, throughput, factors);
+        path.emitAccepted(events[l], lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
     if (path.explaining() && wanted[1] && !p.terms.highlight && p.terms.diffuse)
         path.reject(events[1], lightEvent, "the highlight term is zero: ks = 0");
+}
+
+void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
+                    const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path) {
+    const LightSet& lights = path.context.lights;
+    for (const Light* light : lights.deltaLights())
+        addLightSample(point, lobes, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light, weighting,
+                       path);
+    const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
+    if (chosen.light == nullptr) return;
+    addLightSample(point, lobes, throughput, chosen.light->sample(point.hit.point, u.uPoint), chosen.probability,
+                   *chosen.light, weighting, path);
+}
+
+void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput, PathState& path) {
+    const RenderContext& ctx = path.context;
+    if (!point.terms.ambient && ctx.skipEnabled) return;
+    const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
+    const lpe::OutputMask accepted = path.acceptsAfter(lobes.after[0], ambient);
+    if (!path.wanted(accepted)) return;
+    const Rgb ka = point.material.ambientReflectance();
+    const Rgb value = throughput * ka * ctx.scene.ambient;
+    if (!path.explaining()) {
+        path.emitAccepted(lobes.events[0], ambient, value, accepted);
+        return;
+    }
+    const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
+    path.emitAccepted(lobes.events[0], ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
 }  // namespace
@@ -138,34 +183,29 @@ float powerHeuristic(float pdf, float otherPdf) {
 
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
                     DirectLightWeighting weighting, PathState& path) {
-    const LightSet& lights = path.context.lights;
-    for (const Light* light : lights.deltaLights())
-        addLightSample(point, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light, weighting, path);
-    const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
-    if (chosen.light == nullptr) return;
-    addLightSample(point, throughput, chosen.light->sample(point.hit.point, u.uPoint), chosen.probability,
-                   *chosen.light, weighting, path);
+    addDirectLight(point, SmoothLobeEvents(point, path), throughput, u, weighting, path);
 }
 
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
-    const RenderContext& ctx = path.context;
-    if (!point.terms.ambient && ctx.skipEnabled) return;
-    const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
-    const PathEvent diffuse = point.eventOf(Lobe::Diffuse);
-    if (!path.wants(diffuse, ambient)) return;
-    const Rgb ka = point.material.ambientReflectance();
-    const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
-    path.emit(diffuse, ambient, throughput * ka * ctx.scene.ambient,
-              std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
+    if (!point.terms.ambient && path.context.skipEnabled) return;
+    addAmbient(point, SmoothLobeEvents(point, path), throughput, path);
 }
 
 void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
-    addAmbient(point, throughput, path);
+    const SmoothLobeEvents lobes(point, path);
+    addAmbient(point, lobes, throughput, path);
     if (path.sampler == nullptr) return;
-    Sampler vertex = path.sampler->forVertex(path.key());
-    const float uChoice = vertex.next1D();
-    const Vec2 uPoint = vertex.next2D();
-    addDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::Alone, path);
+    // Only area lights read these numbers (the one delta light, PointLightSource, is one point and
+    // ignores them; a delta light that sampled would have to be counted here): without any area
+    // light the vertex's sampler is not made. It is keyed by the path, so no other sample depends on it.
+    LightChoiceSample u{0.0f, Vec2{0.0f}};
+    const LightSet& lights = path.context.lights;
+    if (lights.all().size() > lights.deltaLights().size()) {  // some light is an area light
+        Sampler vertex = path.sampler->forVertex(path.key());
+        u.uChoice = vertex.next1D();
+        u.uPoint = vertex.next2D();
+    }
+    addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path);
 }
 
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path) {
@@ -175,6 +215,10 @@ void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, f
     if (isBlack(emitted)) return;
     PathEvent event = light->event();
     event.position = hit.point;
+    if (!path.explaining()) {
+        path.emit(event, throughput * emitted * weight);
+        return;
+    }
     const TermFactor factors[] = {{"Le", emitted}, {"mis weight", Rgb{weight}}, {"throughput", throughput}};
     path.emit(event, throughput * emitted * weight, std::span(factors, 3));
 }

@@ -42,6 +42,10 @@ bool PathState::finite(const Rgb& value) {
 void PathState::emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors) {
     if (!finite(value)) return;
     const lpe::OutputMask accepted = acceptsAfter(state(), light);
+    if (!sink_.explaining()) {  // only `explain`'s log reads the finished path
+        sink_.add(value, accepted, events_);
+        return;
+    }
     events_.push(light);
     sink_.add(value, accepted, events_, factors);
     events_.pop();
@@ -49,8 +53,17 @@ void PathState::emit(const PathEvent& light, const Rgb& value, std::span<const T
 
 void PathState::emit(const PathEvent& surface, const PathEvent& light, const Rgb& value,
                      std::span<const TermFactor> factors) {
+    emitAccepted(surface, light, value, acceptsAfter(step(state(), surface), light), factors);
+}
+
+void PathState::emitAccepted(const PathEvent& surface, const PathEvent& light, const Rgb& value,
+                             lpe::OutputMask accepted, std::span<const TermFactor> factors) {
     if (!finite(value)) return;
-    const lpe::OutputMask accepted = acceptsAfter(step(state(), surface), light);
+    // Only `explain`'s log reads the finished path: the events are recorded for it alone.
+    if (!sink_.explaining()) {
+        sink_.add(value, accepted, events_);
+        return;
+    }
     events_.push(surface);
     events_.push(light);
     sink_.add(value, accepted, events_, factors);

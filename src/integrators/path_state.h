@@ -39,11 +39,20 @@ public:
     bool wants(const PathEvent& surface, const PathEvent& light) const {
         return wanted(acceptsAfter(step(state(), surface), light));
     }
+    // The same in two steps, for terms that share their surface event (one shading point's
+    // ambient term and its light samples): the state after `surface`, stepped once, then the
+    // outputs accepting a path that ends from there in `light`, and whether any is requested.
+    lpe::Automaton::State stateAfter(const PathEvent& surface) const { return step(state(), surface); }
+    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const;
+    bool wanted(lpe::OutputMask accepted) const;
     // Ends the path in `light` (after `surface`) with radiance `value`. Non-finite values are
     // counted and dropped, never stored.
     void emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors = {});
     void emit(const PathEvent& surface, const PathEvent& light, const Rgb& value,
               std::span<const TermFactor> factors = {});
+    // With `accepted` = acceptsAfter(stateAfter(surface), light), already known to the caller.
+    void emitAccepted(const PathEvent& surface, const PathEvent& light, const Rgb& value, lpe::OutputMask accepted,
+                      std::span<const TermFactor> factors = {});
     // `explain` only: the term through `surface` from `light` added nothing, for `reason`.
     bool explaining() const { return sink_.explaining(); }
     void reject(const PathEvent& surface, const PathEvent& light, std::string reason);
@@ -58,8 +67,6 @@ public:
 
 private:
     lpe::Automaton::State step(lpe::Automaton::State state, const PathEvent& event) const;
-    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const;
-    bool wanted(lpe::OutputMask accepted) const;
     bool finite(const Rgb& value);
 
     ContributionSink& sink_;

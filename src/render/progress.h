@@ -28,7 +28,7 @@ private:
     const int total_;
     const char* unit_;
     alignas(64) std::atomic<int> done_{0};  // bumped by every worker: a cache line of its own
-    std::chrono::steady_clock::time_point started_;
+    alignas(64) std::chrono::steady_clock::time_point started_;  // (the drawing thread's data from here)
     std::mutex mutex_;
     std::condition_variable wake_;
     bool stopping_ = false;

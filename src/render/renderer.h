@@ -4,6 +4,7 @@
 // bit-identical for any number of threads.
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -50,6 +51,11 @@ struct RenderOptions {
     Accelerator accelerator = Accelerator::Bvh;
     bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
     RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity
+    // Called on the calling thread once every worker thread of render() exists. Creating a thread
+    // waits for a dlopen() in progress on another thread (glibc's loader lock): a library loaded in
+    // the background during the render (the image module) must start loading here, or the second
+    // worker may wait for all of it (seen: 1.5 s of a 0.15 s render).
+    std::function<void()> onWorkersStarted;
 };
 
 struct RenderStats {
@@ -59,6 +65,12 @@ struct RenderStats {
     int threads = 1;
     AcceleratorStats accelerator;  // what building the BVH (or Embree's) cost, before the render
     std::optional<RadiosityStats> radiosity;  // its mesh and solve, before the render
+    // CPU seconds of each worker in the render loop, and of the render's serial parts on the
+    // calling thread (the film, the splats): load on the machine stretches wall time but not
+    // these, so serial + the busiest worker is what the render would take on an idle machine, and
+    // a worker's time growing with the thread count shows cache lines passed between cores.
+    std::vector<double> workerCpuSeconds;
+    double serialCpuSeconds = 0.0;
 };
 
 struct RenderResult {
