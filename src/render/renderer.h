@@ -21,6 +21,7 @@
 #include "integrators/ray_counters.h"
 #include "lights/light_set.h"
 #include "scene/camera.h"
+#include "sampling/pixel_filter.h"
 #include "sampling/sampler.h"
 #include "scene/scene_analysis.h"
 #include "scene/scene.h"
@@ -39,6 +40,9 @@ struct RenderOptions {
     bool skip = true;  // false: `--no-skip`, trace and evaluate everything
     NumericsOptions numerics;
     SamplerKind sampler = SamplerKind::Independent;
+    // Where a pixel's camera rays go around its centre (filter importance sampling); one sample
+    // per pixel always goes through the centre.
+    PixelFilterKind filter = PixelFilterKind::Box;
     // Adaptive sampling when > 0: a pixel stops once the standard error of its mean luminance is
     // below this fraction of the mean; samplesPerPixel is then the most it may take.
     double targetError = 0.0;
@@ -96,6 +100,7 @@ private:
     SceneAnalysis analysis_;
     LightSet lights_;
     PinholeCamera camera_;
+    PixelFilter filter_;
     std::vector<std::size_t> writtenLayers_;  // indices into AovSet::layerNames()
     std::unique_ptr<Integrator> integrator_;
     RenderContext context_;
