@@ -9,6 +9,8 @@ pixels and with the lamp's pixels (and a one-pixel ring around them) left out.
 
 Times are each renderer's own render time: Cycles' bpy.ops.render.render() after a warm-up render
 in the same process, lightpath's `--stats` rendering time; start-up and image writing excluded.
+Both the CPU time (Blender's whole process during the render; lightpath's worker threads) and
+the wall time are reported; on a machine other processes load, CPU time is the steadier clock.
 Runs alternate between the renderers; times are medians over runs, squared errors are averaged
 over runs (each run has its own seed). The machine is named in the output.
 
@@ -67,8 +69,8 @@ def run_cycles(blender, out, size, threads, seed, spps):
            OBJ, out, str(size), str(threads), str(seed)] + [str(s) for s in spps]
     log = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     results = {}
-    for m in re.finditer(r"^cycles spp (\d+) seconds ([0-9.]+) file (\S+)$", log, re.M):
-        results[int(m.group(1))] = (float(m.group(2)), m.group(3))
+    for m in re.finditer(r"^cycles spp (\d+) seconds ([0-9.]+) cpu ([0-9.]+) file (\S+)$", log, re.M):
+        results[int(m.group(1))] = (float(m.group(2)), float(m.group(3)), m.group(4))
     if len(results) != len(spps):
         sys.exit("vs_cycles: Blender did not render every budget:\n" + log)
     return results
@@ -82,10 +84,10 @@ def run_lightpath(lightpath, out, size, threads, seed, spp, sampler, pixel_filte
     if pixel_filter != "default":
         cmd += ["--filter", pixel_filter]
     log = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
-    m = re.search(r"^wall time\s+rendering ([0-9.]+) s", log, re.M)
+    m = re.search(r"^time\s+([0-9.]+) s on \d+ threads? \(([0-9.]+) s CPU\)", log, re.M)
     if not m:
         sys.exit("vs_cycles: no rendering time in lightpath's --stats:\n" + log)
-    return float(m.group(1)), path
+    return float(m.group(1)), float(m.group(2)), path
 
 
 def seconds_to_reach(curve, error):
@@ -163,6 +165,7 @@ def main():
     ring[:, :-1] |= lamp[:, 1:]
     keep = ~ring
 
+    # Per budget, every run's (wall seconds, CPU seconds) and (squared error, without the lamp).
     cycles_times = {s: [] for s in CYCLES_SPP}
     cycles_sq = {s: [] for s in CYCLES_SPP}
     lp_times = {(v, s): [] for v in variants for s in lp_spps}
@@ -174,46 +177,53 @@ def main():
 
     for run in range(args.runs):
         seed = 1000 + run
-        for spp, (seconds, path) in run_cycles(blender, work, args.size, args.threads, seed, CYCLES_SPP).items():
-            cycles_times[spp].append(seconds)
+        for spp, (seconds, cpu, path) in run_cycles(blender, work, args.size, args.threads, seed, CYCLES_SPP).items():
+            cycles_times[spp].append((seconds, cpu))
             cycles_sq[spp].append(squared(read_rgb(path), cycles_ref, cycles_ref_sq))
         for v in variants:
             for spp in lp_spps:
-                seconds, path = run_lightpath(lightpath, work, args.size, args.threads, seed, spp, *v)
-                lp_times[(v, spp)].append(seconds)
+                seconds, cpu, path = run_lightpath(lightpath, work, args.size, args.threads, seed, spp, *v)
+                lp_times[(v, spp)].append((seconds, cpu))
                 lp_sq[(v, spp)].append(squared(read_rgb(path), lp_refs[v[1]], lp_refs_sq[v[1]]))
         print(f"run {run + 1}/{args.runs} done", file=sys.stderr, flush=True)
 
     print(f"machine: {machine()}")
     print(f"scene: {os.path.relpath(SCENE, ROOT)} at {args.size}x{args.size}, {args.threads} threads, "
-          f"{args.runs} runs; references 2 x {args.reference_spp} spp, their own error subtracted; lamp and its ring: {int(ring.sum())} of {ring.size} pixels")
+          f"{args.runs} runs; references 2 x {args.reference_spp} spp, their own error subtracted; "
+          f"lamp and its ring: {int(ring.sum())} of {ring.size} pixels")
     for pixel_filter, ref in lp_refs.items():
         region = lambda img: img[keep].mean(axis=0)
         print(f"converged means without the lamp, lightpath ({pixel_filter}) / Cycles: "
               + " ".join(f"{a / b:.4f}" for a, b in zip(region(ref), region(cycles_ref))))
 
     def rmse(samples, which):
-        return float(np.sqrt(np.mean([s[which] for s in samples])))
+        return float(np.sqrt(max(0.0, np.mean([s[which] for s in samples]))))
 
-    print(f"\n{'renderer':<28}{'spp':>6}{'seconds':>10}{'rmse':>10}{'rmse no lamp':>14}")
+    def median(times, clock):
+        return statistics.median(t[clock] for t in times)
+
+    print(f"\n{'renderer':<30}{'spp':>6}{'wall s':>9}{'CPU s':>9}{'rmse':>10}{'rmse no lamp':>14}")
     for spp in CYCLES_SPP:
-        print(f"{'cycles':<28}{spp:>6}{statistics.median(cycles_times[spp]):>10.3f}"
+        print(f"{'cycles':<30}{spp:>6}{median(cycles_times[spp], 0):>9.3f}{median(cycles_times[spp], 1):>9.3f}"
               f"{rmse(cycles_sq[spp], 0):>10.5f}{rmse(cycles_sq[spp], 1):>14.5f}")
     for v in variants:
         for spp in lp_spps:
-            print(f"{'lightpath ' + ':'.join(v):<28}{spp:>6}{statistics.median(lp_times[(v, spp)]):>10.3f}"
+            t = lp_times[(v, spp)]
+            print(f"{'lightpath ' + ':'.join(v):<30}{spp:>6}{median(t, 0):>9.3f}{median(t, 1):>9.3f}"
                   f"{rmse(lp_sq[(v, spp)], 0):>10.5f}{rmse(lp_sq[(v, spp)], 1):>14.5f}")
 
-    print("\nlightpath's time to Cycles' RMSE / Cycles' time (≤ 1: lightpath is faster)")
-    print(f"{'variant':<28}" + "".join(f"{f'{s} spp':>12}" for s in CYCLES_SPP) + "".join(f"{f'{s} no lamp':>12}" for s in CYCLES_SPP))
-    for v in variants:
-        ratios = []
-        for which in (0, 1):
-            curve = [(statistics.median(lp_times[(v, s)]), rmse(lp_sq[(v, s)], which)) for s in lp_spps]
-            for spp in CYCLES_SPP:
-                target = rmse(cycles_sq[spp], which)
-                ratios.append(seconds_to_reach(curve, target) / statistics.median(cycles_times[spp]))
-        print(f"{':'.join(v):<28}" + "".join(f"{r:>12.2f}" for r in ratios))
+    for clock, name in ((1, "CPU"), (0, "wall")):
+        print(f"\nlightpath's {name} time to Cycles' RMSE / Cycles' {name} time (at most 1: lightpath is faster)")
+        print(f"{'variant':<30}" + "".join(f"{f'{s} spp':>12}" for s in CYCLES_SPP)
+              + "".join(f"{f'{s} no lamp':>12}" for s in CYCLES_SPP))
+        for v in variants:
+            ratios = []
+            for which in (0, 1):
+                curve = [(median(lp_times[(v, s)], clock), rmse(lp_sq[(v, s)], which)) for s in lp_spps]
+                for spp in CYCLES_SPP:
+                    target = rmse(cycles_sq[spp], which)
+                    ratios.append(seconds_to_reach(curve, target) / median(cycles_times[spp], clock))
+            print(f"{':'.join(v):<30}" + "".join(f"{r:>12.2f}" for r in ratios))
     return 0
 
 

@@ -11,8 +11,9 @@
 #     bounces is direct light alone); both use Russian roulette;
 #   - no clamping (Cycles' default clamps indirect light at 10), no denoising, no adaptive
 #     sampling, Cycles' default pixel filter (Blackman-Harris, 1.5 px) and sampling pattern.
-# Arguments: OBJ OUT_DIR SIZE THREADS SEED SPP [SPP ...]. Prints one line per render:
-#   cycles spp N seconds T file PATH
+# Arguments: OBJ OUT_DIR SIZE THREADS SEED SPP [SPP ...]. Prints one line per render, its wall
+# time and the process's CPU time during it:
+#   cycles spp N seconds T cpu C file PATH
 import math
 import os
 import sys
@@ -157,12 +158,12 @@ def main():
     bpy.ops.render.render()  # warm-up: loads the kernels
     for spp in spps:
         scene.cycles.samples = spp
-        start = time.perf_counter()
+        start, cpu_start = time.perf_counter(), time.process_time()
         bpy.ops.render.render()
-        seconds = time.perf_counter() - start
+        seconds, cpu = time.perf_counter() - start, time.process_time() - cpu_start
         path = os.path.join(out_dir, f"cycles-{spp}-seed{seed}.exr")
         bpy.data.images["Render Result"].save_render(path)
-        print(f"cycles spp {spp} seconds {seconds:.4f} file {path}", flush=True)
+        print(f"cycles spp {spp} seconds {seconds:.4f} cpu {cpu:.4f} file {path}", flush=True)
 
 
 main()

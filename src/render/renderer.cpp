@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "bench/timing.h"
 #include "integrators/registry.h"
 #include "render/progress.h"
 #include "sampling/sampler.h"
@@ -152,9 +153,11 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     ProgressBar progress(tileCount, options_.progress);
     CacheLinePadded<std::atomic<int>> nextTile;  // bumped per tile, away from the locals the workers read
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
+    std::vector<CacheLinePadded<double>> cpuSeconds(static_cast<std::size_t>(threadCount));
     std::optional<SplatFilm> splats;
     if (integrator_->splats()) splats.emplace(width, height, aovs_.layerCount());
     auto work = [&](int worker) {
+        const double cpuStart = threadCpuSeconds();
         // A cache line of padding on each side of the worker's accumulators: the heap may have put
         // another worker's data next to them.
         constexpr std::size_t kPad = (kCacheLine + sizeof(Rgb) - 1) / sizeof(Rgb);
@@ -178,6 +181,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
             }
             progress.tileDone();
         }
+        cpuSeconds[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - cpuStart;
     };
     std::vector<std::jthread> workers;
     for (int w = 1; w < threadCount; ++w) workers.emplace_back(work, w);
@@ -187,6 +191,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
 
     RenderStats stats;
     for (const RayCounters& c : counters) stats.rays += c;
+    for (const auto& c : cpuSeconds) stats.cpuSeconds += c.value;
     stats.samples = stats.rays.camera + stats.rays.cameraDead;  // adaptive sampling takes fewer
     stats.threads = threadCount;
     stats.accelerator = geometry_.acceleratorStats();

@@ -56,6 +56,9 @@ struct RenderOptions {
 struct RenderStats {
     RayCounters rays;
     double seconds = 0.0;
+    // CPU seconds of the workers alone (no image module loading beside them): what benchmarks
+    // against other renderers compare on a machine other processes load.
+    double cpuSeconds = 0.0;
     std::uint64_t samples = 0;
     int threads = 1;
     AcceleratorStats accelerator;  // what building the BVH (or Embree's) cost, before the render
