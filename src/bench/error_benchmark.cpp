@@ -227,7 +227,7 @@ Reference cachedReference(const Scene& scene, const std::filesystem::path& cache
     return film.layer(0);
 }
 
-// Path tracing against bidirectional path tracing (independent sampling, 1 thread): error against
+// Path tracing against bidirectional path tracing (the default sampler, 1 thread): error against
 // time on a caustic only light tracing finds, and on the Cornell box with its area light, where
 // both converge; bdpt's time to reach the path tracer's error at its largest budget, over path's.
 void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory,
@@ -274,7 +274,8 @@ void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory
                     const Measurement m = measure(c.scene, c.reference, options, c.expression);
                     seconds[i][static_cast<std::size_t>(k)].push_back(m.seconds);
                     if (rep > 0) continue;
-                    curves[i].push_back({c.name, integrators[i], "independent", options.samplesPerPixel, 0, 0.0, m.rmse, m.relmse});
+                    curves[i].push_back({c.name, integrators[i], samplerName(options.sampler), options.samplesPerPixel, 0,
+                                         0.0, m.rmse, m.relmse});
                     raysPerSample[i] = m.raysPerSample;
                 }
             }

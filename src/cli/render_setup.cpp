@@ -47,7 +47,7 @@ void RenderSetup::addOptions(CLI::App& command) {
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
         ->capture_default_str();
     command.add_option("--sampler", sampler,
-                       "Pixel sample sequence: independent, stratified, or sobol (Owen-scrambled, low discrepancy)")
+                       "Pixel sample sequence: sobol (Owen-scrambled, low discrepancy), stratified, or independent")
         ->check(oneOf({"independent", "stratified", "sobol"}))
         ->capture_default_str();
     command.add_option("--filter", filter,

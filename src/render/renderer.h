@@ -39,7 +39,9 @@ struct RenderOptions {
     bool writeBeauty = true;
     bool skip = true;  // false: `--no-skip`, trace and evaluate everything
     NumericsOptions numerics;
-    SamplerKind sampler = SamplerKind::Independent;
+    // Owen-scrambled Sobol by default: on the Cornell box it reaches independent sampling's error
+    // in about a third of the time (README, Performance).
+    SamplerKind sampler = SamplerKind::Sobol;
     // Where a pixel's camera rays go around its centre (filter importance sampling); one sample
     // per pixel always goes through the centre.
     PixelFilterKind filter = PixelFilterKind::Box;
