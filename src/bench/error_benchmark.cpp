@@ -8,6 +8,7 @@
 #include "film/aov_set.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"
+#include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 

@@ -116,7 +116,7 @@ lpe::LabelPlacement labelPlacement(const Scene& scene) {
         std::vector<EventType> events = {EventType::Reflection, EventType::Transmission};
         // A [[lights]] quad or sphere emits as L; another emitting surface as O (path_record.h).
         if (object.declaredLight) events.push_back(EventType::Emitter);
-        else if (!isBlack(scene.materials[object.material].emission)) events.push_back(EventType::ObjectEmission);
+        else if (!isBlack(scene.materials[object.material]->emission)) events.push_back(EventType::ObjectEmission);
         add(scene.labelOf(i), events);
     }
     return placement;

@@ -26,17 +26,11 @@ std::size_t termFactors(const ShadingPoint& p, Lobe lobe, const LightSample& sam
                         const Rgb& incident, float lightPdf, float weight, DirectLightWeighting weighting,
                         const Rgb& throughput, std::array<TermFactor, kMaxTermFactors>& factors) {
     std::size_t n = 0;
-    const float cosTheta = glm::dot(p.normal, sample.wi);
     if (light.isDelta() && weighting == DirectLightWeighting::Alone) {
         const float falloff = light.falloff(sample.distance);
-        if (lobe == Lobe::Diffuse) {
-            factors[n++] = {"kd", p.material.kd};
-            factors[n++] = {"N.L", Rgb{cosTheta}};
-        } else {
-            const Vec3 halfway = glm::normalize(p.wo + sample.wi);
-            factors[n++] = {"ks", p.material.ks};
-            factors[n++] = {"(H.N)^n", Rgb{std::pow(std::max(0.0f, glm::dot(p.normal, halfway)), p.material.n)}};
-        }
+        NamedFactors named;
+        const int count = p.bsdf.factors(lobe, p.wo, sample.wi, named);
+        for (int i = 0; i < count; ++i) factors[n++] = {named[i].name, named[i].value};
         factors[n++] = {"I", incident / (kPi * falloff)};
         factors[n++] = {"attenuation", Rgb{falloff}};
     } else {
@@ -157,8 +151,9 @@ void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& pat
     const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
     const PathEvent diffuse = point.eventOf(Lobe::Diffuse);
     if (!path.wants(diffuse, ambient)) return;
-    const TermFactor factors[] = {{"ka", point.material.ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
-    path.emit(diffuse, ambient, throughput * point.material.ka * ctx.scene.ambient,
+    const Rgb ka = point.material.ambientReflectance();
+    const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
+    path.emit(diffuse, ambient, throughput * ka * ctx.scene.ambient,
               std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 

@@ -98,7 +98,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     stats_.patchSize = patchSize;
     reflectance_.clear();
     for (const RadiosityPatch& p : mesh_->patches())
-        reflectance_.push_back(context.scene.materials[context.scene.objects[p.object].material].kd);
+        reflectance_.push_back(context.scene.materials[context.scene.objects[p.object].material]->diffuseReflectance());
 
     const std::vector<int> wanted = wantedBounces(context);
     bounces_ = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());

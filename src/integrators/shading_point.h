@@ -6,7 +6,6 @@
 #include "integrators/path_record.h"
 #include "materials/bsdf.h"
 #include "math/ray.h"
-#include "scene/material.h"
 #include "scene/scene_analysis.h"
 
 namespace lightpath {
@@ -19,7 +18,7 @@ struct ShadingPoint {
     Vec3 normal;    // unit shading normal on the side of wo (Szymczak: "N should point to the side
                     // containing the viewpoint")
     bool entering;  // wo is outside the material
-    const PhongMaterial& material;
+    const Material& material;
     const MaterialTerms& terms;  // which of the material's terms are non-zero
     Bsdf bsdf;
 

@@ -13,7 +13,7 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
 
     // The emissive primitives of each object, by scene-wide id.
     std::vector<std::vector<std::uint32_t>> primitives(scene.objects.size());
-    auto emits = [&](std::uint32_t object) { return !isBlack(scene.materials[scene.objects[object].material].emission); };
+    auto emits = [&](std::uint32_t object) { return !isBlack(scene.materials[scene.objects[object].material]->emission); };
     for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i)
         if (emits(geometry.spheres()[i].object)) primitives[geometry.spheres()[i].object].push_back(geometry.sphereId(i));
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i)
@@ -23,7 +23,7 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
         // A [[lights]] quad or sphere is a light (L); any other emitting surface is object emission (O).
         const lpe::EventType type = scene.objects[object].declaredLight ? lpe::EventType::Emitter : lpe::EventType::ObjectEmission;
         auto light = std::make_unique<AreaLightSource>(PathEvent{type, lpe::Scatter::None, Subject::Object, object},
-                                                       scene.materials[scene.objects[object].material].emission,
+                                                       scene.materials[scene.objects[object].material]->emission,
                                                        geometry, primitives[object]);
         if (light->empty()) continue;
         ofObject_[object] = light.get();

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/shapes.h"
-#include "scene/material.h"
+#include "materials/phong_material.h"
 
 namespace lightpath {
 

@@ -8,7 +8,7 @@
 #include "math/types.h"
 #include "scene/camera.h"
 #include "scene/light.h"
-#include "scene/material.h"
+#include "materials/material.h"
 
 namespace lightpath {
 
@@ -29,7 +29,7 @@ struct Scene {
     Rgb background{0.0f};  // radiance of rays that escape (a `B` event)
     Rgb ambient{0.0f};     // Ia of the illumination formula (an `L'ambient'` event)
 
-    std::vector<PhongMaterial> materials;
+    std::vector<MaterialSlot> materials;
     std::vector<PointLight> lights;
     std::vector<SceneObject> objects;
 
@@ -45,7 +45,7 @@ struct Scene {
 
     const std::string& labelOf(std::uint32_t object) const {
         const SceneObject& o = objects[object];
-        return o.name.empty() ? materials[o.material].name : o.name;
+        return o.name.empty() ? materials[o.material]->name : o.name;
     }
 };
 

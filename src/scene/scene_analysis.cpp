@@ -3,16 +3,11 @@
 namespace lightpath {
 
 SceneAnalysis::SceneAnalysis(const Scene& scene) {
-    for (const PhongMaterial& m : scene.materials) {
+    for (const MaterialSlot& m : scene.materials) {
         MaterialTerms terms;
-        terms.ambient = !isBlack(m.ka * scene.ambient);
-        terms.diffuse = !isBlack(m.kd);
-        terms.highlight = !isBlack(m.ks);
-        terms.mirror = !isBlack(m.kr);
-        terms.refraction = !isBlack(m.kt);
-        anyHighlight |= terms.highlight;
-        anyMirror |= terms.mirror;
-        anyRefraction |= terms.refraction;
+        terms.ambient = !isBlack(m->ambientReflectance() * scene.ambient);
+        terms.diffuse = m->has(Lobe::Diffuse);
+        terms.highlight = m->has(Lobe::Highlight);
         materials.push_back(terms);
     }
 }

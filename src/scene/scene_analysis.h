@@ -9,18 +9,13 @@
 namespace lightpath {
 
 struct MaterialTerms {
-    bool ambient = false;     // ka Ia != 0
-    bool diffuse = false;     // kd != 0
-    bool highlight = false;   // ks != 0
-    bool mirror = false;      // kr != 0
-    bool refraction = false;  // kt != 0
+    bool ambient = false;    // ka Ia != 0
+    bool diffuse = false;    // a diffuse lobe
+    bool highlight = false;  // a glossy (highlight) lobe
 };
 
 struct SceneAnalysis {
     std::vector<MaterialTerms> materials;  // per material
-    bool anyHighlight = false;
-    bool anyMirror = false;
-    bool anyRefraction = false;
 
     explicit SceneAnalysis(const Scene& scene);
 };

@@ -82,11 +82,10 @@ void readWorld(const TomlTable& table, Scene& scene) {
     if (auto ambient = table.find("ambient")) scene.ambient = ambient->rgb();
 }
 
-// Keys the file leaves out keep the defaults of PhongMaterial (material.h).
-PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
-    table.allowOnly({"ka", "kd", "ks", "n", "kr", "kt", "ior", "fresnel", "emission"});
+// Keys the file leaves out keep the defaults of PhongMaterial (materials/phong_material.h).
+MaterialSlot readPhongMaterial(const TomlTable& table) {
+    table.allowOnly({"type", "ka", "kd", "ks", "n", "kr", "kt", "ior", "fresnel", "emission"});
     PhongMaterial material;
-    material.name = name;
     if (auto ka = table.find("ka")) material.ka = ka->rgb();
     if (auto kd = table.find("kd")) material.kd = kd->rgb();
     if (auto ks = table.find("ks")) material.ks = ks->rgb();
@@ -99,9 +98,35 @@ PhongMaterial readMaterial(const std::string& name, const TomlTable& table) {
     return material;
 }
 
+// The material types a scene names with `type = "..."`: a new material is its own file plus its
+// row here. The first is the default.
+struct MaterialType {
+    std::string_view name;
+    MaterialSlot (*read)(const TomlTable& table);
+};
+constexpr MaterialType kMaterialTypes[] = {{"phong", readPhongMaterial}};
+
+MaterialSlot readMaterial(const std::string& name, const TomlTable& table) {
+    const MaterialType* type = &kMaterialTypes[0];
+    if (auto value = table.find("type")) {
+        const std::string typeName = value->string();
+        const auto known = std::find_if(std::begin(kMaterialTypes), std::end(kMaterialTypes),
+                                        [&](const MaterialType& t) { return t.name == typeName; });
+        if (known == std::end(kMaterialTypes)) {
+            std::vector<std::string> names;
+            for (const MaterialType& t : kMaterialTypes) names.emplace_back(t.name);
+            value->fail(unknownNameMessage("material type", typeName, names, ListKnown::always));
+        }
+        type = known;
+    }
+    MaterialSlot material = type->read(table);
+    material->name = name;
+    return material;
+}
+
 // Materials keep the order in which the file defines them.
-std::vector<PhongMaterial> readMaterials(const TomlTable& table) {
-    std::vector<PhongMaterial> materials;
+std::vector<MaterialSlot> readMaterials(const TomlTable& table) {
+    std::vector<MaterialSlot> materials;
     for (const auto& [name, value] : table.entries()) {
         if (!isValidName(name)) {
             value.fail("expected a material name of " + std::string(kNameCharacters) + ", got \"" +
@@ -203,12 +228,12 @@ void readLight(const TomlTable& table, Scene& scene) {
 }
 
 std::uint32_t findMaterial(const TomlValue& reference,
-                           const std::vector<PhongMaterial>& materials) {
+                           const std::vector<MaterialSlot>& materials) {
     const std::string name = reference.string();
     std::vector<std::string> known;
     for (std::uint32_t i = 0; i < materials.size(); ++i) {
-        if (materials[i].name == name) return i;
-        known.push_back(materials[i].name);
+        if (materials[i]->name == name) return i;
+        known.push_back(materials[i]->name);
     }
     std::sort(known.begin(), known.end());
     reference.fail(unknownNameMessage("material", name, known, ListKnown::always));
@@ -297,7 +322,7 @@ MeshPlacement readPlacement(const TomlTable& table) {
 // [materials] or an earlier mesh) already has one of that name, which then wins.
 std::uint32_t sceneMaterialFor(const PhongMaterial& mtl, Scene& scene) {
     for (std::uint32_t i = 0; i < scene.materials.size(); ++i)
-        if (scene.materials[i].name == mtl.name) return i;
+        if (scene.materials[i]->name == mtl.name) return i;
     scene.materials.push_back(mtl);
     return static_cast<std::uint32_t>(scene.materials.size() - 1);
 }

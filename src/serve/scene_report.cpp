@@ -45,7 +45,7 @@ std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
         if (!light.name.empty()) add('L', light.name);
     std::vector<std::string> emissive;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
-        if (!isBlackRgb(scene.materials[scene.objects[i].material].emission)) emissive.push_back(scene.labelOf(i));
+        if (!isBlackRgb(scene.materials[scene.objects[i].material]->emission)) emissive.push_back(scene.labelOf(i));
     std::sort(emissive.begin(), emissive.end());
     emissive.erase(std::unique(emissive.begin(), emissive.end()), emissive.end());
     for (const std::string& label : emissive) add('O', label);
@@ -82,7 +82,7 @@ json describeScene(const Scene& scene, const std::string& scenePath) {
     json objects = json::array();
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         json object = {{"name", scene.objects[i].name}, {"label", scene.labelOf(i)},
-                       {"emissive", !isBlackRgb(scene.materials[scene.objects[i].material].emission)}};
+                       {"emissive", !isBlackRgb(scene.materials[scene.objects[i].material]->emission)}};
         if (low[i].x <= high[i].x) object["bounds"] = {point(low[i]), point(high[i])};
         objects.push_back(object);
     }

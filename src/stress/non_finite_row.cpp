@@ -6,6 +6,7 @@
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/spawn_ray.h"
+#include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "stress/sampling.h"
 #include "film/aov_presets.h"

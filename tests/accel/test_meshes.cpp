@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "materials/phong_material.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
 
@@ -67,7 +68,7 @@ TEST_CASE("the Cornell boxes load with the right triangle and material counts") 
         const Scene scene = loadScene(writeScene("count.toml", meshScene(obj)));
         CHECK(scene.triangles.size() == expected.triangles);
         CHECK(scene.materials.size() == expected.materials.size());
-        for (const PhongMaterial& m : scene.materials) CHECK(expected.materials.count(m.name) == 1);
+        for (const MaterialSlot& m : scene.materials) CHECK(expected.materials.count(m->name) == 1);
     }
     CHECK(countObj(kMeshes / "CornellBox-Original.obj").triangles == 36);
 }
@@ -75,10 +76,10 @@ TEST_CASE("the Cornell boxes load with the right triangle and material counts") 
 TEST_CASE("MTL materials map to the Phong material") {
     const Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/cornell-sphere.toml");
     const auto find = [&](const std::string& name) -> const PhongMaterial& {
-        for (const PhongMaterial& m : scene.materials)
-            if (m.name == name) return m;
+        for (const MaterialSlot& m : scene.materials)
+            if (m->name == name) return phongOf(m);
         FAIL("no material " << name);
-        return scene.materials.front();
+        return phongOf(scene.materials.front());
     };
     const PhongMaterial& mirror = find("leftSphere");  // illum 5, Ks 0.95
     CHECK(mirror.kr == Rgb(0.95f));

@@ -14,6 +14,7 @@
 
 #include "film/aov_set.h"
 #include "fuzz_support.h"
+#include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"
@@ -55,7 +56,8 @@ void checkScene(const Scene& scene) {
     if (c.width < 1 || c.width > 16384 || c.height < 1 || c.height > 16384) broken("resolution accepted outside 1..16384");
     if (!colour(scene.background) || !colour(scene.ambient)) broken("world colour accepted outside 0..1e6");
 
-    for (const PhongMaterial& m : scene.materials) {
+    for (const MaterialSlot& slot : scene.materials) {
+        const PhongMaterial& m = phongOf(slot);  // the only type a scene file can name today
         if (!isName(m.name)) broken("material name \"" + m.name + "\" is not a label");
         for (const Rgb& c : {m.ka, m.kd, m.ks, m.kr, m.kt, m.emission})
             if (!colour(c)) broken("material " + m.name + " accepted with a colour outside 0..1e6");

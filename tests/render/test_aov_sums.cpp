@@ -110,7 +110,7 @@ TEST_CASE("every shipped scene: a point light's group AOV is the scene lit by th
             Scene alone = full;
             for (std::size_t i = 0; i < alone.lights.size(); ++i)
                 if (i != k) alone.lights[i].intensity = Rgb{0.0f};
-            for (PhongMaterial& m : alone.materials) m.emission = Rgb{0.0f};
+            for (MaterialSlot& m : alone.materials) m->emission = Rgb{0.0f};
             alone.ambient = alone.background = Rgb{0.0f};
             const std::string name = full.lights[k].name;
             const AovSet group({{"group", "E.*<L'" + name + "'>"}});

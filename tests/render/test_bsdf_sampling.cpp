@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "materials/bsdf.h"
+#include "materials/phong_material.h"
 #include "sampling/warp.h"
 #include "statistics.h"
 

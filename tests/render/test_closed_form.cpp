@@ -65,7 +65,7 @@ TEST_CASE("floor under a point light: ambient, diffuse and highlight terms by th
         const Rgb diffuse = centrePixel(scene, kDiffuse);
         const Rgb highlight = centrePixel(scene, kHighlight);
         const Rgb beauty = centrePixel(scene, kBeauty);
-        const auto& m = scene.materials[0];
+        const auto& m = phongOf(scene.materials[0]);
         for (int c = 0; c < 3; ++c) {
             const double expectAmbient = double(m.ka[c]) * double(scene.ambient[c]);
             const double expectDiffuse = intensity[c] * att * double(m.kd[c]) * nDotL;
@@ -116,7 +116,7 @@ TEST_CASE("a point in shadow gets only the ambient term") {
     // A small sphere on the segment from the origin to the light at (3,4,0).
     addSphere(scene, "blocker", addMaterial(scene, blocker), {1.5f, 2.0f, 0.0f}, 0.5f);
     const Rgb beauty = centrePixel(scene, kBeauty);
-    const auto& m = scene.materials[0];
+    const auto& m = phongOf(scene.materials[0]);
     for (int c = 0; c < 3; ++c) CHECK(beauty[c] == doctest::Approx(double(m.ka[c]) * double(scene.ambient[c])));
 }
 

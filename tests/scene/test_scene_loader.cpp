@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "materials/phong_material.h"
 #include "scene/scene_loader.h"
 
 namespace fs = std::filesystem;
@@ -70,14 +71,14 @@ private:
 
 bool hasMirrorMaterial(const Scene& scene) {
     for (const auto& m : scene.materials) {
-        if (!lightpath::isBlack(m.kr)) return true;
+        if (!lightpath::isBlack(lightpath::phongOf(m).kr)) return true;
     }
     return false;
 }
 
 bool hasGlassMaterial(const Scene& scene) {
     for (const auto& m : scene.materials) {
-        if (!lightpath::isBlack(m.kt)) return true;
+        if (!lightpath::isBlack(lightpath::phongOf(m).kt)) return true;
     }
     return false;
 }
@@ -97,7 +98,7 @@ TEST_CASE("every shipped scene loads and names its lights, point or area") {
         // Area lights are emissive objects; a shipped scene has some light, and names it.
         bool hasAreaLight = false;
         for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-            if (lightpath::isBlack(scene.materials[scene.objects[i].material].emission)) continue;
+            if (lightpath::isBlack(scene.materials[scene.objects[i].material]->emission)) continue;
             hasAreaLight = true;
             CHECK_FALSE(scene.labelOf(i).rfind("area-light-", 0) == 0);
         }
@@ -204,7 +205,7 @@ material = "red"
     }
     SUBCASE("materials, per channel and in file order") {
         REQUIRE(scene.materials.size() == 2);
-        const auto& red = scene.materials[0];
+        const auto& red = phongOf(scene.materials[0]);
         CHECK(red.name == "red");
         CHECK(red.ka == Rgb(0.1f, 0, 0));
         CHECK(red.kd == Rgb(0.7f, 0.25f, 0.5f));
@@ -213,7 +214,7 @@ material = "red"
         CHECK(red.kr == Rgb(0.125f));
         CHECK(red.kt == Rgb(0, 0.5f, 1));
         CHECK(red.ior == 1.25f);
-        CHECK(scene.materials[1].name == "plain");
+        CHECK(scene.materials[1]->name == "plain");
     }
     SUBCASE("lights") {
         REQUIRE(scene.lights.size() == 2);
@@ -276,7 +277,7 @@ material = "plain"
     CHECK(scene.ambient == Rgb(0));
 
     REQUIRE(scene.materials.size() == 1);
-    const auto& plain = scene.materials[0];
+    const auto& plain = phongOf(scene.materials[0]);
     CHECK(plain.ka == Rgb(0));
     CHECK(plain.kd == Rgb(0));
     CHECK(plain.ks == Rgb(0));
@@ -561,7 +562,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a missing material library is a located warning, 
 
     const Scene grey = load("[[meshes]]\nname = \"lost\"\nfile = \"lost.obj\"\n");
     REQUIRE(grey.triangles.size() == 1);
-    const auto& material = grey.materials[grey.objects[grey.triangles[0].object].material];
+    const auto& material = phongOf(grey.materials[grey.objects[grey.triangles[0].object].material]);
     CHECK(material.kd == Rgb(0.5f));
     CHECK(material.ks == Rgb(0.0f));
     REQUIRE(grey.warnings.size() == 1);
@@ -587,7 +588,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is refused o
     write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const Scene plain = load("[[meshes]]\nfile = \"plain.obj\"\n");
     REQUIRE(plain.triangles.size() == 1);
-    CHECK(plain.materials[plain.objects[plain.triangles[0].object].material].kd == Rgb(0.5f));
+    CHECK(phongOf(plain.materials[plain.objects[plain.triangles[0].object].material]).kd == Rgb(0.5f));
     CHECK(plain.warnings.empty());
 }
 
@@ -608,7 +609,7 @@ TEST_CASE("area lights become emissive objects labelled by the light's name") {
     REQUIRE(scene.spheres.size() == 1);
     CHECK(scene.lights.empty());
     CHECK(scene.labelOf(scene.triangles[0].object) == "panel");
-    CHECK(scene.materials[scene.objects[scene.triangles[0].object].material].emission == Rgb{4, 3, 2});
+    CHECK(scene.materials[scene.objects[scene.triangles[0].object].material]->emission == Rgb{4, 3, 2});
     // The quad emits on the side of edge1 x edge2 = (0, 0, 1) x ... : here (1,0,0) x (0,0,1) = (0,-1,0).
     const Triangle& t = scene.triangles[0];
     CHECK(glm::cross(t.b - t.a, t.c - t.a).y < 0.0f);
@@ -616,7 +617,7 @@ TEST_CASE("area lights become emissive objects labelled by the light's name") {
     CHECK(t.c == Vec3{1, 2, 1});
     // An unnamed area light is labelled by its generated material name.
     CHECK(scene.labelOf(scene.spheres[0].object).rfind("area-light-", 0) == 0);
-    CHECK(scene.materials[scene.objects[scene.spheres[0].object].material].emission == Rgb{10.0f});
+    CHECK(scene.materials[scene.objects[scene.spheres[0].object].material]->emission == Rgb{10.0f});
 }
 
 }  // namespace

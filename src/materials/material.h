@@ -1,0 +1,76 @@
+#pragma once
+// What a surface does with light: the interface every material implements (Nori's BSDF
+// sample/eval/pdf, one material per file). A material is a set of lobes (materials/lobe.h); the
+// per-hit Bsdf chooses among them and weighs the choice, so a material only describes each lobe.
+// Adding a material is its own file plus its entry in the scene loader's table of material types.
+#include <concepts>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "materials/lobe.h"
+#include "math/types.h"
+
+namespace lightpath {
+
+class Material {
+public:
+    virtual ~Material() = default;
+
+    std::string name;
+    Rgb emission{0.0f};  // emitted radiance: makes the surface an emitter (`O`, or `L` when declared a light)
+
+    virtual std::unique_ptr<Material> clone() const = 0;
+
+    virtual bool has(Lobe lobe) const = 0;
+    // f(wo, wi) |cos theta_i| of a smooth lobe; zero when either direction is below the surface.
+    virtual Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const = 0;
+    // The density of sampleLobe returning wi, within the lobe.
+    virtual float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const = 0;
+    // A direction within a smooth lobe; nullopt when it falls below the surface.
+    virtual std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const = 0;
+    // A smooth lobe's (estimated) albedo from wo: lobes are chosen in proportion to it.
+    virtual float albedo(Lobe lobe, const SurfaceSide& side, const Vec3& wo) const = 0;
+    // The delta lobes' branches from wo, mirror ray first. Returns how many were written.
+    virtual int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
+        (void)side, (void)wo, (void)branches;
+        return 0;
+    }
+    // eval's value split into named factors (`explain`); returns how many.
+    virtual int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+                        NamedFactors& factors) const = 0;
+
+    // The reflectance of the constant diffuse part, for radiosity; black when there is none.
+    virtual Rgb diffuseReflectance() const = 0;
+    // ka of the illumination formula's ambient term, which only the classic integrators add.
+    virtual Rgb ambientReflectance() const { return Rgb{0.0f}; }
+
+protected:
+    Material() = default;
+    Material(const Material&) = default;
+    Material& operator=(const Material&) = default;
+};
+
+// A scene's material: owned, polymorphic, and copied with the scene (a copy is a deep copy, so a
+// test can brighten a copy without touching the original).
+class MaterialSlot {
+public:
+    template <typename M>
+        requires std::derived_from<M, Material>
+    MaterialSlot(M material) : material_(std::make_unique<M>(std::move(material))) {}
+    MaterialSlot(const MaterialSlot& other) : material_(other.material_->clone()) {}
+    MaterialSlot& operator=(const MaterialSlot& other) {
+        if (this != &other) material_ = other.material_->clone();
+        return *this;
+    }
+    MaterialSlot(MaterialSlot&&) noexcept = default;
+    MaterialSlot& operator=(MaterialSlot&&) noexcept = default;
+
+    Material& operator*() const { return *material_; }
+    Material* operator->() const { return material_.get(); }
+
+private:
+    std::unique_ptr<Material> material_;
+};
+
+}  // namespace lightpath

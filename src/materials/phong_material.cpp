@@ -1,0 +1,137 @@
+#include "materials/phong_material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/optics.h"
+#include "sampling/warp.h"
+
+namespace lightpath {
+namespace {
+
+// The halfway vector between wo and wi; nullopt when they are opposite.
+std::optional<Vec3> halfwayOf(const Vec3& wo, const Vec3& wi) {
+    const Vec3 sum = wo + wi;
+    const float length = glm::length(sum);
+    if (length == 0.0f) return std::nullopt;
+    return sum / length;
+}
+
+// Blinn's form of Phong's highlight: the halfway vector's cosine with the normal, raised to n.
+float blinnTerm(const Vec3& normal, const Vec3& wo, const Vec3& wi, float exponent) {
+    const std::optional<Vec3> halfway = halfwayOf(wo, wi);
+    return halfway ? std::pow(std::max(0.0f, glm::dot(normal, *halfway)), exponent) : 0.0f;
+}
+
+bool bothAbove(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
+    return glm::dot(wi, side.normal) > 0.0f && glm::dot(wo, side.normal) > 0.0f;
+}
+
+}  // namespace
+
+bool PhongMaterial::has(Lobe lobe) const {
+    switch (lobe) {
+        case Lobe::Diffuse: return !isBlack(kd);
+        case Lobe::Highlight: return !isBlack(ks);
+        case Lobe::Mirror: return !isBlack(kr) || !isBlack(kt);  // kt: total internal reflection
+        case Lobe::Refraction: return !isBlack(kt);
+    }
+    return false;
+}
+
+Rgb PhongMaterial::eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    if (!bothAbove(side, wo, wi)) return Rgb{0.0f};
+    if (lobe == Lobe::Diffuse) return kd * (glm::dot(wi, side.normal) / kPi);
+    if (lobe == Lobe::Highlight) return ks * (blinnTerm(side.normal, wo, wi, n) / kPi);
+    return Rgb{0.0f};  // a delta lobe has no value to evaluate
+}
+
+float PhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    if (!bothAbove(side, wo, wi)) return 0.0f;
+    if (lobe == Lobe::Diffuse) return cosineHemispherePdf(glm::dot(wi, side.normal));
+    if (lobe == Lobe::Highlight) {
+        const std::optional<Vec3> halfway = halfwayOf(wo, wi);
+        if (!halfway) return 0.0f;
+        const float cosHalf = glm::dot(*halfway, side.normal), woDotHalf = glm::dot(wo, *halfway);
+        if (cosHalf <= 0.0f || woDotHalf <= 0.0f) return 0.0f;
+        // The half vector's density, (n+1)/(2 pi) cos^n, times the Jacobian dH/dwi = 1/(4 wo.H).
+        return phongLobePdf(cosHalf, n) / (4.0f * woDotHalf);
+    }
+    return 0.0f;
+}
+
+std::optional<LobeSample> PhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
+    LobeSample s;
+    if (lobe == Lobe::Diffuse) {
+        s.wi = Frame(side.normal).toWorld(sampleCosineHemisphere(u));
+        const float cosIn = glm::dot(s.wi, side.normal);
+        if (cosIn <= 0.0f) return std::nullopt;
+        s.pdf = cosineHemispherePdf(cosIn);
+        s.weight = kd;  // (kd/pi) cos / (cos/pi)
+        return s;
+    }
+    if (lobe == Lobe::Highlight) {
+        const Vec3 halfway = Frame(side.normal).toWorld(samplePhongLobe(u, n));
+        const float woDotHalf = glm::dot(wo, halfway);
+        if (woDotHalf <= 0.0f) return std::nullopt;
+        s.wi = reflectAbout(wo, halfway);
+        if (glm::dot(s.wi, side.normal) <= 0.0f) return std::nullopt;
+        s.pdf = pdf(lobe, side, wo, s.wi);
+        // (ks (H.N)^n / pi) / ((n+1)/(2 pi) (H.N)^n / (4 wo.H)): the lobe's power cancels.
+        s.weight = ks * (8.0f * woDotHalf / (n + 1.0f));
+        return s;
+    }
+    return std::nullopt;
+}
+
+float PhongMaterial::albedo(Lobe lobe, const SurfaceSide&, const Vec3&) const {
+    // A rough albedo of the highlight lobe, only to choose lobes in proportion to what they
+    // reflect: ks (H.N)^n / pi integrates to 2 ks for n = 0 and to about 8 ks / (n + 1) for a sharp lobe.
+    if (lobe == Lobe::Diffuse) return maxComponent(kd);
+    if (lobe == Lobe::Highlight) return maxComponent(ks) * std::min(2.0f, 8.0f / (n + 1.0f));
+    return 0.0f;
+}
+
+int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
+    if (isBlack(kr) && isBlack(kt)) return 0;
+    const float cosOut = glm::dot(wo, side.normal);
+    if (cosOut <= 0.0f) return 0;
+    // n_incident / n_transmitted for light arriving from the side of the normal.
+    const float eta = side.entering ? 1.0f / ior : ior;
+    const Vec3 mirror = reflectAbout(wo, side.normal);
+    const std::optional<Vec3> refracted = isBlack(kt) ? std::nullopt : refractThrough(wo, side.normal, eta);
+    if (!refracted) {
+        // Total internal reflection: the transmitted share is reflected too.
+        const Rgb weight = kr + kt;
+        branches[0] = {mirror, weight, Lobe::Mirror, maxComponent(weight)};
+        return isBlack(weight) ? 0 : 1;
+    }
+    Rgb reflected = kr, transmitted = kt;
+    float compression = 1.0f;
+    if (fresnel) {
+        const float reflectance = fresnelDielectric(cosOut, eta);
+        reflected += kt * reflectance;
+        transmitted *= 1.0f - reflectance;
+        // Radiance is compressed by (n_i / n_t)^2 as it crosses (pbrt-v4 9.5.2); importance is not.
+        if (side.mode == TransportMode::Radiance) compression = eta * eta;
+    }
+    int count = 0;
+    if (!isBlack(reflected)) branches[count++] = {mirror, reflected, Lobe::Mirror, maxComponent(reflected)};
+    branches[count++] = {*refracted, transmitted * compression, Lobe::Refraction, maxComponent(transmitted)};
+    return count;
+}
+
+int PhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+                           NamedFactors& factors) const {
+    if (lobe == Lobe::Diffuse) {
+        factors = {{{"kd", kd}, {"N.L", Rgb{glm::dot(side.normal, wi)}}}};
+        return 2;
+    }
+    if (lobe == Lobe::Highlight) {
+        factors = {{{"ks", ks}, {"(H.N)^n", Rgb{blinnTerm(side.normal, wo, wi, n)}}}};
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace lightpath

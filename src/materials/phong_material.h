@@ -1,0 +1,50 @@
+#pragma once
+// The classic material of Szymczak's illumination formula
+//   I = sum_l I_l / (c0 + c1 d + c2 d^2) * (kd (N.L) + ks (H.N)^n) + ka Ia
+// extended with Whitted's mirror (kr) and refraction (kt, ior) weights. Per-channel RGB. Its lobes:
+//
+//   lobe        f(wo, wi) |cos theta_i|               event   Szymczak's term under a point light
+//   Diffuse     kd / pi |cos theta_i|                  <RD>    kd (N.L) I
+//   Highlight   ks (H.N)^n / pi                        <RG>    ks (H.N)^n I
+//   Mirror      kr (+ kt F with Fresnel), a delta      <RS>    kr * (light from the mirror ray)
+//   Refraction  kt (kt (1 - F) with Fresnel), a delta  <TS>    kt * (light from the refracted ray)
+//
+// A point light of `intensity` I has radiant intensity pi I (lights/point_light.h), so ray casting's
+// formula is this BSDF under that light, term by term, and the path tracer reading the same numbers
+// produces the same light on the same paths. kd is an albedo (Lambert), emission a radiance.
+#include "materials/material.h"
+
+namespace lightpath {
+
+class PhongMaterial final : public Material {
+public:
+    Rgb ka{0.0f};      // ambient reflectance
+    Rgb kd{0.0f};      // diffuse reflectance
+    Rgb ks{0.0f};      // specular (highlight) reflectance
+    float n = 20.0f;   // specular exponent, >= 0
+    Rgb kr{0.0f};      // mirror reflection weight
+    Rgb kt{0.0f};      // transmission (refraction) weight
+    float ior = 1.5f;  // index of refraction of the inside, > 0
+    // Fresnel glass: the mirror ray gains kt F and the refracted ray keeps kt (1 - F), F the
+    // dielectric's reflectance at the angle of incidence; off, the weights are kr and kt exactly.
+    bool fresnel = false;
+
+    std::unique_ptr<Material> clone() const override { return std::make_unique<PhongMaterial>(*this); }
+
+    bool has(Lobe lobe) const override;
+    Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
+    float albedo(Lobe lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const override;
+    int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+                NamedFactors& factors) const override;
+    Rgb diffuseReflectance() const override { return kd; }
+    Rgb ambientReflectance() const override { return ka; }
+};
+
+// The Phong material in a scene's slot, for code that built the scene from Phong materials and
+// edits them (tests); throws std::bad_cast for any other material.
+inline PhongMaterial& phongOf(const MaterialSlot& slot) { return dynamic_cast<PhongMaterial&>(*slot); }
+
+}  // namespace lightpath
