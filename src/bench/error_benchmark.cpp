@@ -8,6 +8,7 @@
 #include "film/aov_set.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"
+#include "lights/point_light.h"
 #include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -128,7 +129,7 @@ Scene mirrorCausticScene(int size, Reference& caustic) {
     scene.objects = {{"floor", 0}, {"mirror", 1}};
     scene.planes.push_back({{0, 0, 0}, {0, 1, 0}, 0});
     scene.planes.push_back({{1, 0, 0}, {-1, 0, 0}, 1});
-    scene.lights.push_back({"key", Vec3(light), Rgb{static_cast<float>(intensity)}, {0, 0, 1}});
+    scene.lights.push_back(PointLight{"key", Vec3(light), Rgb{static_cast<float>(intensity)}, {0, 0, 1}});
     const PinholeCamera camera(scene.camera);
     constexpr int kSub = 8;
     for (int j = 0; j < size; ++j) {

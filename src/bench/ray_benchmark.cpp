@@ -11,6 +11,7 @@
 #include "bench/timing.h"
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
+#include "lights/point_light.h"
 #include "math/random.h"
 #include "render/renderer.h"
 #include "scene/camera.h"
@@ -47,7 +48,7 @@ Scene heightFieldScene(std::size_t side) {
     scene.camera.lookAt = Vec3(0.0f, -0.1f, 0.0f);
     scene.camera.verticalFovDegrees = 50.0f;
     PointLight light;
-    light.position = Vec3(-2.0f, 1.5f, 1.0f);
+    light.location = Vec3(-2.0f, 1.5f, 1.0f);
     scene.lights.push_back(light);
     return scene;
 }
@@ -194,7 +195,7 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, bool 
         const Bounds box = triangleBox(triangles);
         const std::vector<Ray> primary = primaryRays(scene, result.primarySide);
         const std::vector<Ray> random = randomRays(box, result.randomRays);
-        const Vec3 light = scene.lights.empty() ? box.hi : scene.lights.front().position;
+        const Vec3 light = scene.lights.empty() ? box.hi : scene.lights.front()->position();
         const float lift = 1e-4f * glm::length(box.hi - box.lo);
         const std::vector<Ray> shadow = shadowRays(geometries.front(), primary, light, lift);
 

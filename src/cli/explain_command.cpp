@@ -9,6 +9,7 @@
 
 #include "cli/exit_codes.h"
 #include "cli/render_setup.h"
+#include "integrators/event_symbols.h"
 #include "io/text_file.h"
 #include "lpe/path_string.h"
 
@@ -45,14 +46,7 @@ struct RejectionGroup {
 // The recorded path as the LPE engine's Path, labelled as the automaton saw it.
 lpe::Path toLpePath(const Scene& scene, const PathRecord& record) {
     lpe::Path path;
-    for (std::size_t i = 0; i < record.size(); ++i) {
-        const PathEvent& e = record[i];
-        lpe::Event event{e.type, e.scatter, {}};
-        if (e.subject == Subject::Ambient) event.label = kAmbientLabel;
-        else if (e.subject == Subject::PointLight) event.label = scene.lights[e.index].name;
-        else if (e.subject == Subject::Object) event.label = scene.labelOf(e.index);
-        path.push_back(event);
-    }
+    for (std::size_t i = 0; i < record.size(); ++i) path.push_back(lpeEventOf(scene, record[i]));
     return path;
 }
 

@@ -109,8 +109,8 @@ lpe::LabelPlacement labelPlacement(const Scene& scene) {
             if (std::find(events.begin(), events.end(), type) == events.end()) events.push_back(type);
     };
     add(kAmbientLabel, kLightEvents);
-    for (const PointLight& light : scene.lights)
-        if (!light.name.empty()) add(light.name, kLightEvents);
+    for (const LightSlot& light : scene.lights)
+        if (!light->name.empty()) add(light->name, kLightEvents);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         std::vector<EventType> events = {EventType::Reflection, EventType::Transmission};

@@ -6,26 +6,34 @@ namespace lightpath {
 
 EventSymbols::EventSymbols(const Scene& scene, const lpe::Automaton& automaton)
     : automaton_(automaton), ambient_(automaton.labelClass(kAmbientLabel)) {
-    for (const PointLight& light : scene.lights) lights_.push_back(automaton.labelClass(light.name));
+    for (const LightSlot& light : scene.lights) lights_.push_back(automaton.labelClass(light->name));
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) objects_.push_back(automaton.labelClass(scene.labelOf(i)));
 }
 
 std::vector<std::string> sceneLabels(const Scene& scene) {
     std::vector<std::string> labels{kAmbientLabel};
-    for (const PointLight& light : scene.lights)
-        if (!light.name.empty()) labels.push_back(light.name);
+    for (const LightSlot& light : scene.lights)
+        if (!light->name.empty()) labels.push_back(light->name);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) labels.push_back(scene.labelOf(i));
     std::sort(labels.begin(), labels.end());
     labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
     return labels;
 }
 
+lpe::Event lpeEventOf(const Scene& scene, const PathEvent& e) {
+    lpe::Event event{e.type, e.scatter, {}};
+    if (e.subject == Subject::Ambient) event.label = kAmbientLabel;
+    else if (e.subject == Subject::SceneLight) event.label = scene.lights[e.index]->name;
+    else if (e.subject == Subject::Object) event.label = scene.labelOf(e.index);
+    return event;
+}
+
 std::string subjectName(const Scene& scene, const PathEvent& event) {
     switch (event.subject) {
         case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
         case Subject::Ambient: return kAmbientLabel;
-        case Subject::PointLight: {
-            const std::string& name = scene.lights[event.index].name;
+        case Subject::SceneLight: {
+            const std::string& name = scene.lights[event.index]->name;
             return name.empty() ? "light #" + std::to_string(event.index) : name;
         }
         case Subject::Object: {

@@ -23,7 +23,7 @@ private:
     lpe::Automaton::LabelClass labelClass(const PathEvent& event) const {
         switch (event.subject) {
             case Subject::Object: return objects_[event.index];
-            case Subject::PointLight: return lights_[event.index];
+            case Subject::SceneLight: return lights_[event.index];
             case Subject::Ambient: return ambient_;
             case Subject::None: break;
         }
@@ -42,6 +42,9 @@ inline constexpr const char* kAmbientLabel = "ambient";
 // Every label an event of this scene can carry: "ambient", the point lights' names, and each
 // object's label (its name, else its material's; area lights are objects). Sorted, no repeats.
 std::vector<std::string> sceneLabels(const Scene& scene);
+
+// The recorded event as the LPE engine's event, labelled as the automaton sees it (explain, serve).
+lpe::Event lpeEventOf(const Scene& scene, const PathEvent& event);
 
 // What an event touched, as a student reads it: the object's or light's name ("camera",
 // "background", "ambient" for those).

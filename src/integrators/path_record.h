@@ -16,7 +16,7 @@ namespace lightpath {
 enum class Subject : std::uint8_t {
     None,        // the camera, the background
     Object,      // scene object `index`: a surface it scattered from, or an emissive surface
-    PointLight,  // scene.lights[index]
+    SceneLight,  // scene.lights[index], a light without a shape of its own
     Ambient,     // the ambient term ka * Ia
 };
 

@@ -84,7 +84,7 @@ std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane) {
         grow(t.b);
         grow(t.c);
     }
-    for (const PointLight& l : scene.lights) grow(l.position);
+    for (const LightSlot& l : scene.lights) grow(l->position());
     grow(scene.camera.eye);
     grow(plane.point);
     const Vec3 margin{std::max(0.5f * glm::length(hi - lo), 1.0f)};

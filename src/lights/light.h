@@ -2,7 +2,8 @@
 // The one light interface every integrator reads (docs/design.md): sample a point towards a
 // receiver (next-event estimation, ray casting's shadow rays), the density of that sampling (MIS),
 // sample a ray leaving the light (light tracing), and its power (choosing lights). A new kind of
-// light is one file implementing this, plus its line in LightSet's constructor.
+// shapeless light is one file implementing this and scene/light.h's SceneLight, plus its row in
+// the loader's light types.
 #include "geometry/surface_hit.h"
 #include "integrators/path_record.h"
 #include "math/ray.h"

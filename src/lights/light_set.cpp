@@ -2,14 +2,13 @@
 
 #include <algorithm>
 
-#include "lights/point_light.h"
 
 namespace lightpath {
 
 LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
     : ofObject_(scene.objects.size(), nullptr), areaChoiceOfObject_(scene.objects.size(), 0.0f) {
     for (std::uint32_t i = 0; i < scene.lights.size(); ++i)
-        lights_.push_back(std::make_unique<PointLightSource>(scene.lights[i], i));
+        lights_.push_back(scene.lights[i]->makeSource(i));
 
     // The emissive primitives of each object, by scene-wide id.
     std::vector<std::vector<std::uint32_t>> primitives(scene.objects.size());

@@ -8,6 +8,27 @@
 
 namespace lightpath {
 
+// As the scene file declares it.
+class PointLight final : public SceneLight {
+public:
+    Vec3 location{0.0f};
+    Rgb intensity{1.0f};
+    Vec3 attenuation{1.0f, 0.0f, 0.0f};  // (c0, c1, c2); the default is no attenuation
+
+    explicit PointLight(std::string lightName = {}, Vec3 position = Vec3{0.0f}, Rgb lightIntensity = Rgb{1.0f},
+                        Vec3 lightAttenuation = Vec3{1.0f, 0.0f, 0.0f})
+        : SceneLight(std::move(lightName)), location(position), intensity(lightIntensity), attenuation(lightAttenuation) {}
+
+    std::unique_ptr<SceneLight> clone() const override { return std::make_unique<PointLight>(*this); }
+    Vec3 position() const override { return location; }
+    std::unique_ptr<Light> makeSource(std::uint32_t index) const override;
+
+    float attenuationAt(float distance) const {
+        return 1.0f / (attenuation.x + distance * (attenuation.y + distance * attenuation.z));
+    }
+};
+
+// The light source the integrators sample.
 class PointLightSource final : public Light {
 public:
     PointLightSource(const PointLight& description, std::uint32_t index);
@@ -27,5 +48,9 @@ public:
 private:
     PointLight description_;
 };
+
+// The point light in a scene's slot, for code that built the scene and edits it (tests); throws
+// std::bad_cast for any other light.
+inline PointLight& pointLightOf(const LightSlot& slot) { return dynamic_cast<PointLight&>(*slot); }
 
 }  // namespace lightpath

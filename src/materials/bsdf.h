@@ -41,7 +41,7 @@ public:
     int specularBranches(const Vec3& wo, SpecularBranches& branches) const {
         return material_.specularBranches(side_, wo, branches);
     }
-    // eval's value as the lecture's named factors (`explain`); returns how many.
+    // pi eval(), the lobe's term under a point light, as the lecture's named factors; returns how many.
     int factors(Lobe lobe, const Vec3& wo, const Vec3& wi, NamedFactors& factors) const {
         return material_.factors(lobe, side_, wo, wi, factors);
     }

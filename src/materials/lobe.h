@@ -63,8 +63,8 @@ struct SpecularBranch {
 };
 using SpecularBranches = std::array<SpecularBranch, 2>;
 
-// A lobe's value f |cos theta_i| as the product of factors named as the lecture names them
-// (`explain`: kd and N.L, ks and (H.N)^n).
+// A lobe's term as the product of factors named as the lecture names them (`explain`: kd and
+// N.L, ks and (H.N)^n).
 struct NamedFactor {
     const char* name = "";
     Rgb value{0.0f};

@@ -36,7 +36,8 @@ public:
         (void)side, (void)wo, (void)branches;
         return 0;
     }
-    // eval's value split into named factors (`explain`); returns how many.
+    // pi eval(), the lobe's term in the lecture's formula under a point light of intensity I (whose
+    // radiant intensity is pi I), as named factors (`explain`: kd and N.L); returns how many.
     virtual int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                         NamedFactors& factors) const = 0;
 

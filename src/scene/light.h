@@ -1,20 +1,59 @@
 #pragma once
+// A light a scene file declares in [[lights]] without a shape of its own (a point light; a spot or
+// a directional light would be others): its name labels its `L` events, its position places it in
+// drawings and bounds, and it makes the light source the integrators sample (lights/light.h). A
+// new type is its own file (description and source) plus its row in the loader's light types.
+// Quad and sphere lights are not here: they are emissive objects with geometry.
+#include <concepts>
+#include <cstdint>
+#include <memory>
 #include <string>
 
 #include "math/types.h"
 
 namespace lightpath {
 
-// A point light with the lecture's attenuation 1 / (c0 + c1 d + c2 d^2).
-struct PointLight {
-    std::string name;
-    Vec3 position{0.0f};
-    Rgb intensity{1.0f};
-    Vec3 attenuation{1.0f, 0.0f, 0.0f};  // (c0, c1, c2); the default is no attenuation
+class Light;
 
-    float attenuationAt(float distance) const {
-        return 1.0f / (attenuation.x + distance * (attenuation.y + distance * attenuation.z));
+class SceneLight {
+public:
+    virtual ~SceneLight() = default;
+
+    std::string name;
+
+    virtual std::unique_ptr<SceneLight> clone() const = 0;
+    // Where the light is, for drawings and scene bounds.
+    virtual Vec3 position() const = 0;
+    // The source the integrators sample; `index` is this light's place in Scene::lights, the
+    // index of its events (Subject::SceneLight).
+    virtual std::unique_ptr<Light> makeSource(std::uint32_t index) const = 0;
+
+protected:
+    SceneLight() = default;
+    explicit SceneLight(std::string lightName) : name(std::move(lightName)) {}
+    SceneLight(const SceneLight&) = default;
+    SceneLight& operator=(const SceneLight&) = default;
+};
+
+// A scene's light: owned, polymorphic, and copied deeply with the scene.
+class LightSlot {
+public:
+    template <typename L>
+        requires std::derived_from<L, SceneLight>
+    LightSlot(L light) : light_(std::make_unique<L>(std::move(light))) {}
+    LightSlot(const LightSlot& other) : light_(other.light_->clone()) {}
+    LightSlot& operator=(const LightSlot& other) {
+        if (this != &other) light_ = other.light_->clone();
+        return *this;
     }
+    LightSlot(LightSlot&&) noexcept = default;
+    LightSlot& operator=(LightSlot&&) noexcept = default;
+
+    SceneLight& operator*() const { return *light_; }
+    SceneLight* operator->() const { return light_.get(); }
+
+private:
+    std::unique_ptr<SceneLight> light_;
 };
 
 }  // namespace lightpath

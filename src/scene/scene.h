@@ -30,7 +30,7 @@ struct Scene {
     Rgb ambient{0.0f};     // Ia of the illumination formula (an `L'ambient'` event)
 
     std::vector<MaterialSlot> materials;
-    std::vector<PointLight> lights;
+    std::vector<LightSlot> lights;  // [[lights]] without a shape (point lights)
     std::vector<SceneObject> objects;
 
     std::vector<Sphere> spheres;

@@ -8,6 +8,9 @@
 #include <sstream>
 #include <system_error>
 
+#include "lights/point_light.h"
+#include "materials/modified_phong_material.h"
+#include "materials/phong_material.h"
 #include "scene/obj_loader.h"
 #include "scene/spelling.h"
 #include "scene/toml_reader.h"
@@ -82,6 +85,19 @@ void readWorld(const TomlTable& table, Scene& scene) {
     if (auto ambient = table.find("ambient")) scene.ambient = ambient->rgb();
 }
 
+// A row of `types` (LightType or MaterialType) by the table's `type` key, the first when it has none.
+template <typename Type, std::size_t N>
+const Type& typeNamedIn(const TomlTable& table, const Type (&types)[N], std::string_view kind) {
+    auto value = table.find("type");
+    if (!value) return types[0];
+    const std::string name = value->string();
+    for (const Type& type : types)
+        if (type.name == name) return type;
+    std::vector<std::string> known;
+    for (const Type& type : types) known.emplace_back(type.name);
+    value->fail(unknownNameMessage(kind, name, known, ListKnown::always));
+}
+
 // Keys the file leaves out keep the defaults of PhongMaterial (materials/phong_material.h).
 MaterialSlot readPhongMaterial(const TomlTable& table) {
     table.allowOnly({"type", "ka", "kd", "ks", "n", "kr", "kt", "ior", "fresnel", "emission"});
@@ -98,28 +114,27 @@ MaterialSlot readPhongMaterial(const TomlTable& table) {
     return material;
 }
 
+MaterialSlot readModifiedPhongMaterial(const TomlTable& table) {
+    table.allowOnly({"type", "kd", "ks", "n", "emission"});
+    ModifiedPhongMaterial material;
+    if (auto kd = table.find("kd")) material.kd = kd->rgb();
+    if (auto ks = table.find("ks")) material.ks = ks->rgb();
+    if (auto n = table.find("n")) material.n = n->number(nonNegative);
+    if (auto emission = table.find("emission")) material.emission = emission->rgb();
+    return material;
+}
+
 // The material types a scene names with `type = "..."`: a new material is its own file plus its
 // row here. The first is the default.
 struct MaterialType {
     std::string_view name;
     MaterialSlot (*read)(const TomlTable& table);
 };
-constexpr MaterialType kMaterialTypes[] = {{"phong", readPhongMaterial}};
+constexpr MaterialType kMaterialTypes[] = {{"phong", readPhongMaterial},
+                                           {"modified-phong", readModifiedPhongMaterial}};
 
 MaterialSlot readMaterial(const std::string& name, const TomlTable& table) {
-    const MaterialType* type = &kMaterialTypes[0];
-    if (auto value = table.find("type")) {
-        const std::string typeName = value->string();
-        const auto known = std::find_if(std::begin(kMaterialTypes), std::end(kMaterialTypes),
-                                        [&](const MaterialType& t) { return t.name == typeName; });
-        if (known == std::end(kMaterialTypes)) {
-            std::vector<std::string> names;
-            for (const MaterialType& t : kMaterialTypes) names.emplace_back(t.name);
-            value->fail(unknownNameMessage("material type", typeName, names, ListKnown::always));
-        }
-        type = known;
-    }
-    MaterialSlot material = type->read(table);
+    MaterialSlot material = typeNamedIn(table, kMaterialTypes, "material type").read(table);
     material->name = name;
     return material;
 }
@@ -153,11 +168,11 @@ std::string readLightName(const TomlTable& table) {
 // The smallest non-zero attenuation coefficient: 1 / c stays within kMaxMagnitude.
 constexpr float kMinAttenuation = 1e-6f;
 
-PointLight readPointLight(const TomlTable& table) {
+void readPointLight(const TomlTable& table, Scene& scene) {
     table.allowOnly({"name", "type", "position", "intensity", "attenuation"});
     PointLight light;
     light.name = readLightName(table);
-    light.position = table.required("position").vec3();
+    light.location = table.required("position").vec3();
     if (auto intensity = table.find("intensity")) light.intensity = intensity->rgb();
     if (auto attenuation = table.find("attenuation")) {
         light.attenuation = attenuation->vec3(nonNegative);
@@ -173,7 +188,7 @@ PointLight readPointLight(const TomlTable& table) {
             }
         }
     }
-    return light;
+    scene.lights.push_back(std::move(light));
 }
 
 // An area light is an emissive object: a material of its own that only emits, and the shapes
@@ -213,19 +228,15 @@ void readSphereLight(const TomlTable& table, Scene& scene) {
     scene.spheres.push_back(sphere);
 }
 
-void readLight(const TomlTable& table, Scene& scene) {
-    std::string type = "point";
-    if (auto value = table.find("type")) {
-        type = value->string();
-        const std::vector<std::string> knownTypes{"point", "quad", "sphere"};
-        if (std::find(knownTypes.begin(), knownTypes.end(), type) == knownTypes.end()) {
-            value->fail(unknownNameMessage("light type", type, knownTypes, ListKnown::always));
-        }
-    }
-    if (type == "quad") readQuadLight(table, scene);
-    else if (type == "sphere") readSphereLight(table, scene);
-    else scene.lights.push_back(readPointLight(table));
-}
+// The light types a scene names with `type = "..."`: a new one is its own file plus its row here.
+// The first is the default. Quad and sphere lights are emissive shapes; the others SceneLights.
+struct LightType {
+    std::string_view name;
+    void (*read)(const TomlTable& table, Scene& scene);
+};
+constexpr LightType kLightTypes[] = {{"point", readPointLight}, {"quad", readQuadLight}, {"sphere", readSphereLight}};
+
+void readLight(const TomlTable& table, Scene& scene) { typeNamedIn(table, kLightTypes, "light type").read(table, scene); }
 
 std::uint32_t findMaterial(const TomlValue& reference,
                            const std::vector<MaterialSlot>& materials) {

@@ -12,15 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-// The recorded event as the LPE engine's event, labelled as the automaton saw it.
-lpe::Event toLpeEvent(const Scene& scene, const PathEvent& e) {
-    lpe::Event event{e.type, e.scatter, {}};
-    if (e.subject == Subject::Ambient) event.label = kAmbientLabel;
-    else if (e.subject == Subject::PointLight) event.label = scene.lights[e.index].name;
-    else if (e.subject == Subject::Object) event.label = scene.labelOf(e.index);
-    return event;
-}
-
 // World position of a path vertex (PathEvent::position). The ambient term comes from nowhere.
 std::optional<Vec3> positionOf(const PathEvent& event) {
     if (event.subject == Subject::Ambient) return std::nullopt;
@@ -65,7 +56,7 @@ json explainPixel(const Job& job, int x, int y) {
         std::optional<Vec3> previous;
         for (std::size_t i = 0; i < c.path.size(); ++i) {
             const PathEvent& e = c.path[i];
-            path.push_back(toLpeEvent(job.scene, e));
+            path.push_back(lpeEventOf(job.scene, e));
             state = automaton.step(state, automaton.symbol(path.back()));
             states.push_back(state);
             const std::optional<Vec3> position = positionOf(e);
@@ -120,7 +111,7 @@ json explainPixel(const Job& job, int x, int y) {
     json rejected = json::array();
     for (const Rejection& r : rejections) {
         lpe::Path path;
-        for (std::size_t i = 0; i < r.path.size(); ++i) path.push_back(toLpeEvent(job.scene, r.path[i]));
+        for (std::size_t i = 0; i < r.path.size(); ++i) path.push_back(lpeEventOf(job.scene, r.path[i]));
         rejected.push_back({{"compact", lpe::toCompactString(path)}, {"lpe", lpe::toExpressionString(path)}, {"reason", r.reason}});
     }
     return {{"pixel", json::array({x, y})},

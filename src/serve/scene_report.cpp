@@ -41,8 +41,8 @@ std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
         set.push_back({identifierFor(label, set), std::string("E.*<") + type + ".'" + label + "'>"});
     };
     if (!isBlackRgb(scene.ambient)) add('L', kAmbientLabel);
-    for (const PointLight& light : scene.lights)
-        if (!light.name.empty()) add('L', light.name);
+    for (const LightSlot& light : scene.lights)
+        if (!light->name.empty()) add('L', light->name);
     std::vector<std::string> emissive;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
         if (!isBlackRgb(scene.materials[scene.objects[i].material]->emission)) emissive.push_back(scene.labelOf(i));
@@ -89,7 +89,7 @@ json describeScene(const Scene& scene, const std::string& scenePath) {
     for (const Plane& p : scene.planes)
         objects[p.object]["plane"] = {{"point", point(p.point)}, {"normal", point(p.normal)}};
     json lights = json::array();
-    for (const PointLight& light : scene.lights) lights.push_back({{"name", light.name}, {"position", point(light.position)}});
+    for (const LightSlot& light : scene.lights) lights.push_back({{"name", light->name}, {"position", point(light->position())}});
     json sets = json::array();
     for (const auto& [name, set] : presets(scene)) {
         json list = json::array();

@@ -6,6 +6,7 @@
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/spawn_ray.h"
+#include "lights/point_light.h"
 #include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "stress/sampling.h"
@@ -52,8 +53,8 @@ Scene hostileScene(int size) {
     scene.triangles.push_back({a, b, 0.5f * (a + b), flat});
     scene.triangles.push_back({b, b, b, flat});
     scene.triangles.push_back({Vec3{1e-30f}, Vec3{2e-30f, 1e-30f, 1e-30f}, Vec3{1e-30f, 2e-30f, 1e-30f}, flat});
-    scene.lights.push_back({"key", {2.0f, 5.0f, 1.0f}, Rgb{1.0f}, Vec3{1.0f, 0.0f, 0.0f}});
-    scene.lights.push_back({"on-floor", {-2.0f, 0.0f, -2.0f}, Rgb{0.5f}, Vec3{1.0f, 0.0f, 0.0f}});
+    scene.lights.push_back(PointLight{"key", {2.0f, 5.0f, 1.0f}, Rgb{1.0f}, Vec3{1.0f, 0.0f, 0.0f}});
+    scene.lights.push_back(PointLight{"on-floor", {-2.0f, 0.0f, -2.0f}, Rgb{0.5f}, Vec3{1.0f, 0.0f, 0.0f}});
     return scene;
 }
 

@@ -6,6 +6,7 @@
 #include "film/aov_set.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/spawn_ray.h"
+#include "lights/point_light.h"
 #include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "stress/sampling.h"
@@ -58,7 +59,7 @@ Scene cornellRoom(float scale, int size) {
     PhongMaterial mirror;
     mirror.kr = {0.8f, 0.8f, 0.8f};
     scene.spheres.push_back({p(0.45f, -0.7f, 0.3f), 0.3f * scale, addObject(scene, "mirror", mirror)});
-    scene.lights.push_back({"key", p(0.1f, 0.9f, 0.2f), Rgb{1.2f}, Vec3{1.0f, 0.0f, 0.0f}});
+    scene.lights.push_back(PointLight{"key", p(0.1f, 0.9f, 0.2f), Rgb{1.2f}, Vec3{1.0f, 0.0f, 0.0f}});
     return scene;
 }
 
@@ -81,10 +82,10 @@ std::vector<bool> litFlatMask(const Scene& scene) {
         for (int x = 0; x < w; ++x) {
             const auto hit = geometry.intersect(camera.generateRay(x + 0.5f, y + 0.5f));
             if (!hit || hit->shape == ShapeKind::Sphere) continue;
-            const Vec3 toLight = scene.lights[0].position - hit->point;
+            const Vec3 toLight = scene.lights[0]->position() - hit->point;
             if (glm::dot(toLight, hit->normal) * glm::dot(-camera.generateRay(x + 0.5f, y + 0.5f).direction, hit->normal) <= 0.0f)
                 continue;  // the light is on the other side of the wall
-            if (geometry.occluded(spawnShadowRay(*hit, scene.lights[0].position, geometry.numerics()))) continue;
+            if (geometry.occluded(spawnShadowRay(*hit, scene.lights[0]->position(), geometry.numerics()))) continue;
             object[static_cast<std::size_t>(y * w + x)] = static_cast<int>(hit->object);
         }
     }

@@ -11,9 +11,12 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "film/aov_set.h"
 #include "fuzz_support.h"
+#include "lights/point_light.h"
+#include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -57,16 +60,29 @@ void checkScene(const Scene& scene) {
     if (!colour(scene.background) || !colour(scene.ambient)) broken("world colour accepted outside 0..1e6");
 
     for (const MaterialSlot& slot : scene.materials) {
-        const PhongMaterial& m = phongOf(slot);  // the only type a scene file can name today
-        if (!isName(m.name)) broken("material name \"" + m.name + "\" is not a label");
-        for (const Rgb& c : {m.ka, m.kd, m.ks, m.kr, m.kt, m.emission})
-            if (!colour(c)) broken("material " + m.name + " accepted with a colour outside 0..1e6");
-        if (!(m.n >= 0.0f && m.n <= kMaxMagnitude)) broken("material " + m.name + " accepted with a bad exponent n");
-        if (!(m.ior > 0.0f && m.ior <= kMaxMagnitude)) broken("material " + m.name + " accepted with a bad ior");
+        const std::string& name = slot->name;
+        if (!isName(name)) broken("material name \"" + name + "\" is not a label");
+        std::vector<Rgb> colours{slot->emission};
+        float exponent = 0.0f, ior = 1.0f;
+        if (const auto* m = dynamic_cast<const PhongMaterial*>(&*slot)) {
+            colours.insert(colours.end(), {m->ka, m->kd, m->ks, m->kr, m->kt});
+            exponent = m->n;
+            ior = m->ior;
+        } else if (const auto* m = dynamic_cast<const ModifiedPhongMaterial*>(&*slot)) {
+            colours.insert(colours.end(), {m->kd, m->ks});
+            exponent = m->n;
+        } else {
+            broken("material " + name + " has a type the fuzzer does not know");
+        }
+        for (const Rgb& c : colours)
+            if (!colour(c)) broken("material " + name + " accepted with a colour outside 0..1e6");
+        if (!(exponent >= 0.0f && exponent <= kMaxMagnitude)) broken("material " + name + " accepted with a bad exponent n");
+        if (!(ior > 0.0f && ior <= kMaxMagnitude)) broken("material " + name + " accepted with a bad ior");
     }
-    for (const PointLight& light : scene.lights) {
+    for (const LightSlot& slot : scene.lights) {
+        const PointLight& light = pointLightOf(slot);  // the only shapeless light a scene file can name today
         if (!light.name.empty() && (!isName(light.name) || light.name == "ambient")) broken("light name \"" + light.name + "\" accepted");
-        if (!within(light.position) || !colour(light.intensity)) broken("light accepted with a bad position or intensity");
+        if (!within(light.location) || !colour(light.intensity)) broken("light accepted with a bad position or intensity");
         if (!colour(light.attenuation) || light.attenuation == Vec3(0.0f)) broken("light accepted with bad attenuation");
         for (int i = 0; i < 3; ++i)
             if (light.attenuation[i] > 0.0f && light.attenuation[i] < 1e-6f) broken("light accepted with a tiny attenuation coefficient");

@@ -2,6 +2,7 @@
 // Small scenes built in code for closed-form tests: every number the test checks is visible here.
 #include <string>
 
+#include "lights/point_light.h"
 #include "materials/phong_material.h"
 #include "scene/scene.h"
 

@@ -12,6 +12,7 @@
 
 #include "film/aov_set.h"
 #include "render/renderer.h"
+#include "lights/point_light.h"
 #include "shipped_scenes.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"
@@ -105,14 +106,14 @@ TEST_CASE("every shipped scene: a point light's group AOV is the scene lit by th
     for (const auto& file : shippedScenes()) {
         const Scene full = loadScene(file);
         for (std::size_t k = 0; k < full.lights.size(); ++k) {
-            if (full.lights[k].name.empty()) continue;
+            if (full.lights[k]->name.empty()) continue;
             // Only light k shines: the other lights, emitters, the ambient term and the sky go dark.
             Scene alone = full;
             for (std::size_t i = 0; i < alone.lights.size(); ++i)
-                if (i != k) alone.lights[i].intensity = Rgb{0.0f};
+                if (i != k) pointLightOf(alone.lights[i]).intensity = Rgb{0.0f};
             for (MaterialSlot& m : alone.materials) m->emission = Rgb{0.0f};
             alone.ambient = alone.background = Rgb{0.0f};
-            const std::string name = full.lights[k].name;
+            const std::string name = full.lights[k]->name;
             const AovSet group({{"group", "E.*<L'" + name + "'>"}});
             const AovSet none(std::vector<lpe::NamedExpression>{});
             for (const std::string integrator : {"raycast", "whitted"}) {

@@ -125,7 +125,7 @@ TEST_CASE("bdpt: furnace, a closed emissive diffuse sphere has radiance Le / (1 
 
 TEST_CASE("bdpt: furnace, a point light of radiant intensity pi at the centre of a unit sphere with kd 0.5") {
     Scene scene = furnace(0.5f, Rgb{0.0f});
-    scene.lights.push_back({"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
+    scene.lights.push_back(PointLight{"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
     const Film film = render(scene, classesSet(), "bdpt", 32, 64, 5);
     checkLayer(film, "beauty", 1.0);
     checkLayer(film, "raycast", 0.5);
@@ -215,7 +215,7 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
     wall.kr = Rgb{0.2f};
     wall.emission = Rgb{1.0f};
     test::addSphere(scene, "room", test::addMaterial(scene, wall), {0, 0, 0}, 1.0f);
-    scene.lights.push_back({"bulb", {-0.2f, 0.4f, 0.1f}, Rgb{1.0f}, {0, 0, 1}});
+    scene.lights.push_back(PointLight{"bulb", {-0.2f, 0.4f, 0.1f}, Rgb{1.0f}, {0, 0, 1}});
     const World world(scene);
     const RenderContext& ctx = world.context;
     const Light& areaLight = *world.lights.lightOfObject(0);
@@ -391,7 +391,7 @@ Scene floorUnderLight(const glm::dvec3& light, const glm::dvec3& attenuation) {
     floor.name = "floor";
     floor.kd = Rgb{0.6f};
     test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
-    scene.lights.push_back({"key", Vec3(light), Rgb{3.0f}, Vec3(attenuation)});
+    scene.lights.push_back(PointLight{"key", Vec3(light), Rgb{3.0f}, Vec3(attenuation)});
     return scene;
 }
 

@@ -48,7 +48,7 @@ Scene floorUnderLight(Vec3 attenuation) {
     m.ks = {0.3f, 0.3f, 0.6f};
     m.n = 8.0f;
     addPlane(scene, "floor", addMaterial(scene, m), {0, 0, 0}, {0, 1, 0});
-    scene.lights.push_back({"key", {3, 4, 0}, Rgb{2.0f, 1.0f, 0.5f}, attenuation});
+    scene.lights.push_back(PointLight{"key", {3, 4, 0}, Rgb{2.0f, 1.0f, 0.5f}, attenuation});
     return scene;
 }
 
@@ -89,7 +89,7 @@ TEST_CASE("nearest point of a sphere: N = V, the formula with the light off-axis
     addSphere(scene, "ball", addMaterial(scene, m), {0, 0, 0}, 2.0f);
     // p = (0,0,2), N = (0,0,1); light at (0,3,6): b - p = (0,3,4), d = 5, N.L = 0.8,
     // H = ((0,0.6,0.8) + (0,0,1)) normalised, H.N = 1.8/sqrt(3.6).
-    scene.lights.push_back({"key", {0, 3, 6}, Rgb{1.0f}, {0, 0, 1}});
+    scene.lights.push_back(PointLight{"key", {0, 3, 6}, Rgb{1.0f}, {0, 0, 1}});
     const double att = 1.0 / 25.0;
     const double hDotN = 1.8 / std::sqrt(3.6);
     for (const char* integrator : {"raycast", "whitted"}) {
@@ -102,7 +102,7 @@ TEST_CASE("nearest point of a sphere: N = V, the formula with the light off-axis
 
 TEST_CASE("a light behind the surface adds nothing: the own-primitive test N.(b - p) < 0") {
     Scene scene = floorUnderLight({1, 0, 0});
-    scene.lights[0].position = {3, -4, 0};
+    pointLightOf(scene.lights[0]).location = {3, -4, 0};
     CHECK(centrePixel(scene, kDiffuse).r == 0.0f);
     CHECK(centrePixel(scene, kHighlight).r == 0.0f);
     CHECK(centrePixel(scene, kAmbient).r == doctest::Approx(0.2 * 0.5));

@@ -91,7 +91,7 @@ TEST_CASE("path: a Lambertian plane under a point light is kd I cos(theta) / (c0
     for (const glm::dvec3 attenuation : {glm::dvec3{0, 0, 1}, glm::dvec3{1, 0.1, 0.01}, glm::dvec3{1, 0, 0}}) {
         CAPTURE(attenuation.y);
         Scene scene = floorScene(0.6f);
-        scene.lights.push_back({"key", Vec3(light), Rgb{3.0f}, Vec3(attenuation)});
+        scene.lights.push_back(PointLight{"key", Vec3(light), Rgb{3.0f}, Vec3(attenuation)});
         CHECK(litFloor(scene, light, attenuation) < 1e-4);
     }
 }
@@ -178,7 +178,7 @@ TEST_CASE("path: furnace, a closed emissive diffuse sphere has radiance Le / (1 
 
 TEST_CASE("path: furnace, a point light of radiant intensity pi at the centre of a unit sphere with kd 0.5") {
     Scene scene = furnace(0.5f, Rgb{0.0f});
-    scene.lights.push_back({"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
+    scene.lights.push_back(PointLight{"centre", {0, 0, 0}, Rgb{1.0f}, {0, 0, 1}});
     const Film film = renderPath(scene, classesSet(), 16);
     checkLayer(film, "beauty", 1.0);
     checkLayer(film, "raycast", 0.5);   // E D L: exactly 0.5 everywhere
@@ -189,7 +189,7 @@ TEST_CASE("path: the classes AOVs sum to the beauty and indirect is non-zero in 
     // A room with walls, so light bounces: indirect must carry it and the sum must hold.
     const AovSet aovs(classesSet());
     Scene scene = furnace(0.5f, Rgb{0.0f});
-    scene.lights.push_back({"centre", {0, 0.5f, 0}, Rgb{1.0f}, {1, 0, 0}});
+    scene.lights.push_back(PointLight{"centre", {0, 0.5f, 0}, Rgb{1.0f}, {1, 0, 0}});
     RenderOptions options;
     options.integrator = "path";
     options.samplesPerPixel = 2;

@@ -32,7 +32,7 @@ Scene floorScene(Vec3 eye, Vec3 lookAt, Vec3 light) {
     floor.n = kN;
     floor.ka = Rgb{kKa};
     test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
-    scene.lights.push_back({"key", light, Rgb{kIntensity}, {1, 0, 0}});
+    scene.lights.push_back(PointLight{"key", light, Rgb{kIntensity}, {1, 0, 0}});
     return scene;
 }
 
@@ -68,7 +68,7 @@ Rgb contributionOf(const std::vector<LoggedContribution>& log, const std::vector
 }
 
 const ExpectedEvent kEye{EventType::Camera, Scatter::None, Subject::None, 0};
-const ExpectedEvent kKey{EventType::Emitter, Scatter::None, Subject::PointLight, 0};
+const ExpectedEvent kKey{EventType::Emitter, Scatter::None, Subject::SceneLight, 0};
 const ExpectedEvent kAmbientLight{EventType::Emitter, Scatter::None, Subject::Ambient, 0};
 
 std::size_t layerIndex(const AovSet& aovs, const std::string& name) {
@@ -142,7 +142,7 @@ TEST_CASE("explain: Szymczak's factors multiply to the term, and a blocked light
     const glm::dvec3 eye{0, 2, 3}, light{1, 3, 1};
     Scene scene = floorScene(Vec3(eye), {0, 0, 0}, Vec3(light));
     // A second light straight above the origin, hidden behind a ball named "blocker" at height 1.
-    scene.lights.push_back({"top", {0, 4, 0}, Rgb{1.0f}, {1, 0, 0}});
+    scene.lights.push_back(PointLight{"top", {0, 4, 0}, Rgb{1.0f}, {1, 0, 0}});
     PhongMaterial grey;
     grey.name = "grey";
     grey.kd = Rgb{0.5f};

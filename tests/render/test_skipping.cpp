@@ -76,9 +76,9 @@ Scene floorWithLights(Vec3 ks) {
     m.kd = Rgb{0.5f};
     m.ks = ks;
     test::addPlane(scene, "floor", test::addMaterial(scene, m), {0, 0, 0}, {0, 1, 0});
-    scene.lights.push_back({"above", {1, 3, 0}, Rgb{1.0f}, {1, 0, 0}});
-    scene.lights.push_back({"below", {0, -3, 0}, Rgb{1.0f}, {1, 0, 0}});
-    scene.lights.push_back({"dark", {0, 3, 1}, Rgb{0.0f}, {1, 0, 0}});
+    scene.lights.push_back(PointLight{"above", {1, 3, 0}, Rgb{1.0f}, {1, 0, 0}});
+    scene.lights.push_back(PointLight{"below", {0, -3, 0}, Rgb{1.0f}, {1, 0, 0}});
+    scene.lights.push_back(PointLight{"dark", {0, 3, 1}, Rgb{0.0f}, {1, 0, 0}});
     return scene;
 }
 

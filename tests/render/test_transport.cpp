@@ -16,6 +16,7 @@
 
 #include "film/aov_set.h"
 #include "render/renderer.h"
+#include "lights/point_light.h"
 #include "shipped_scenes.h"
 #include "scene/scene_loader.h"
 #include "statistics.h"
@@ -100,7 +101,7 @@ Scene smallScene(const std::filesystem::path& file, int width = 16) {
 
 // Every light and the background 5% brighter: the control that must be rejected.
 Scene brighter(Scene scene) {
-    for (PointLight& light : scene.lights) light.intensity *= 1.05f;
+    for (LightSlot& light : scene.lights) pointLightOf(light).intensity *= 1.05f;
     for (MaterialSlot& material : scene.materials) material->emission *= 1.05f;
     scene.background *= 1.05f;
     return scene;

@@ -10,10 +10,13 @@
 #include <string>
 #include <string_view>
 
+#include "lights/point_light.h"
+#include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
 #include "scene/scene_loader.h"
 
 namespace fs = std::filesystem;
+using lightpath::ModifiedPhongMaterial;
 using lightpath::Rgb;
 using lightpath::Scene;
 using lightpath::SceneError;
@@ -94,7 +97,7 @@ TEST_CASE("every shipped scene loads and names its lights, point or area") {
         REQUIRE_NOTHROW(scene = lightpath::loadScene(entry.path()));
         CHECK(scene.source == entry.path());
         CHECK_FALSE(scene.objects.empty());
-        for (const auto& light : scene.lights) CHECK_FALSE(light.name.empty());
+        for (const auto& light : scene.lights) CHECK_FALSE(light->name.empty());
         // Area lights are emissive objects; a shipped scene has some light, and names it.
         bool hasAreaLight = false;
         for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
@@ -134,8 +137,8 @@ TEST_CASE_FIXTURE(SceneFiles, "the example in scenes/README.md loads as describe
     CHECK(scene.labelOf(scene.planes.at(0).object) == "floor");
     CHECK(scene.labelOf(scene.triangles.at(0).object) == "red");
     REQUIRE(scene.lights.size() == 1);
-    CHECK(scene.lights[0].name == "key");
-    CHECK(scene.lights[0].attenuation == Vec3(1, 0.1f, 0.01f));
+    CHECK(scene.lights[0]->name == "key");
+    CHECK(pointLightOf(scene.lights[0]).attenuation == Vec3(1, 0.1f, 0.01f));
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "a scene reads back with exactly the values written") {
@@ -218,13 +221,13 @@ material = "red"
     }
     SUBCASE("lights") {
         REQUIRE(scene.lights.size() == 2);
-        const auto& key = scene.lights[0];
+        const auto& key = pointLightOf(scene.lights[0]);
         CHECK(key.name == "key");
-        CHECK(key.position == Vec3(2, 4, 3));
+        CHECK(key.position() == Vec3(2, 4, 3));
         CHECK(key.intensity == Rgb(1, 0.5f, 0.25f));
         CHECK(key.attenuation == Vec3(1, 0.1f, 0.01f));
-        CHECK(scene.lights[1].name.empty());
-        CHECK(scene.lights[1].intensity == Rgb(2, 2, 2));
+        CHECK(scene.lights[1]->name.empty());
+        CHECK(pointLightOf(scene.lights[1]).intensity == Rgb(2, 2, 2));
     }
     SUBCASE("shapes and their objects") {
         REQUIRE(scene.objects.size() == 3);
@@ -287,9 +290,9 @@ material = "plain"
     CHECK(plain.ior == 1.5f);
 
     REQUIRE(scene.lights.size() == 1);
-    CHECK(scene.lights[0].name.empty());
-    CHECK(scene.lights[0].intensity == Rgb(1));
-    CHECK(scene.lights[0].attenuation == Vec3(1, 0, 0));
+    CHECK(scene.lights[0]->name.empty());
+    CHECK(pointLightOf(scene.lights[0]).intensity == Rgb(1));
+    CHECK(pointLightOf(scene.lights[0]).attenuation == Vec3(1, 0, 0));
     CHECK(scene.objects[0].name.empty());
 }
 
@@ -497,6 +500,27 @@ TEST_CASE_FIXTURE(SceneFiles, "attenuation coefficients must not all be zero") {
     CHECK(errorOf("[[lights]]\nposition = [0, 1, 0]\nattenuation = [1e-30, 0, 0]\n") ==
           "scene.toml:3:15: lights[0].attenuation: expected c0, c1, c2 each 0 or at least 1e-6 "
           "(1 / (c0 + c1 d + c2 d^2) would overflow), got [1e-30, 0, 0]");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a material's type picks its model and its keys") {
+    const Scene scene = load("[materials.classic]\nkd = 0.5\n[materials.plastic]\ntype = \"modified-phong\"\n"
+                             "kd = 0.4\nks = [0.5, 0.4, 0.3]\nn = 50\nemission = 2\n");
+    REQUIRE(scene.materials.size() == 2);
+    CHECK(phongOf(scene.materials[0]).kd == Rgb(0.5f));
+    const auto* plastic = dynamic_cast<const ModifiedPhongMaterial*>(&*scene.materials[1]);
+    REQUIRE(plastic != nullptr);
+    CHECK(plastic->name == "plastic");
+    CHECK(plastic->kd == Rgb(0.4f));
+    CHECK(plastic->ks == Rgb(0.5f, 0.4f, 0.3f));
+    CHECK(plastic->n == 50.0f);
+    CHECK(plastic->emission == Rgb(2.0f));
+
+    CHECK(errorOf("[materials.m]\ntype = \"modified-phong\"\nkr = 0.5\n") ==
+          "scene.toml:3:1: materials.m.kr: unknown key \"kr\"; did you mean \"kd\"?");
+    CHECK(errorOf("[materials.m]\ntype = \"modified-phog\"\n") ==
+          "scene.toml:2:8: materials.m.type: unknown material type \"modified-phog\"; did you mean "
+          "\"modified-phong\"? (known: phong, modified-phong)");
+    CHECK(errorOf("[materials.m]\ntype = 3\n") == "scene.toml:2:8: materials.m.type: expected a string, got 3");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "material parameters are range-checked") {

@@ -1,0 +1,90 @@
+#include "materials/modified_phong_material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/optics.h"
+#include "sampling/warp.h"
+
+namespace lightpath {
+namespace {
+
+bool bothAbove(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
+    return glm::dot(wi, side.normal) > 0.0f && glm::dot(wo, side.normal) > 0.0f;
+}
+
+// cos(alpha), alpha the angle between wi and the mirror direction of wo.
+float cosToMirror(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
+    return std::max(0.0f, glm::dot(wi, reflectAbout(wo, side.normal)));
+}
+
+}  // namespace
+
+bool ModifiedPhongMaterial::has(Lobe lobe) const {
+    if (lobe == Lobe::Diffuse) return !isBlack(kd);
+    if (lobe == Lobe::Highlight) return !isBlack(ks);
+    return false;
+}
+
+Rgb ModifiedPhongMaterial::eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    if (!bothAbove(side, wo, wi)) return Rgb{0.0f};
+    const float cosIn = glm::dot(wi, side.normal);
+    if (lobe == Lobe::Diffuse) return kd * (cosIn / kPi);
+    if (lobe == Lobe::Highlight)
+        return ks * ((n + 2.0f) / (2.0f * kPi) * std::pow(cosToMirror(side, wo, wi), n) * cosIn);
+    return Rgb{0.0f};
+}
+
+float ModifiedPhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    if (!bothAbove(side, wo, wi)) return 0.0f;
+    if (lobe == Lobe::Diffuse) return cosineHemispherePdf(glm::dot(wi, side.normal));
+    // cos^n about the mirror direction, (n+1)/(2 pi) cos^n(alpha); directions below the surface
+    // are lost, so the lobe's density over the hemisphere integrates to at most 1.
+    if (lobe == Lobe::Highlight) return phongLobePdf(cosToMirror(side, wo, wi), n);
+    return 0.0f;
+}
+
+std::optional<LobeSample> ModifiedPhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo,
+                                                        Vec2 u) const {
+    LobeSample s;
+    if (lobe == Lobe::Diffuse) {
+        s.wi = Frame(side.normal).toWorld(sampleCosineHemisphere(u));
+        const float cosIn = glm::dot(s.wi, side.normal);
+        if (cosIn <= 0.0f) return std::nullopt;
+        s.pdf = cosineHemispherePdf(cosIn);
+        s.weight = kd;
+        return s;
+    }
+    if (lobe == Lobe::Highlight) {
+        s.wi = Frame(reflectAbout(wo, side.normal)).toWorld(samplePhongLobe(u, n));
+        const float cosIn = glm::dot(s.wi, side.normal);
+        if (cosIn <= 0.0f) return std::nullopt;
+        s.pdf = phongLobePdf(cosToMirror(side, wo, s.wi), n);
+        // ks (n+2)/(2 pi) cos^n cos_i over (n+1)/(2 pi) cos^n: the lobe cancels.
+        s.weight = ks * ((n + 2.0f) / (n + 1.0f) * cosIn);
+        return s;
+    }
+    return std::nullopt;
+}
+
+float ModifiedPhongMaterial::albedo(Lobe lobe, const SurfaceSide&, const Vec3&) const {
+    if (lobe == Lobe::Diffuse) return maxComponent(kd);
+    if (lobe == Lobe::Highlight) return maxComponent(ks);  // exact at normal incidence, less elsewhere
+    return 0.0f;
+}
+
+int ModifiedPhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+                                   NamedFactors& factors) const {
+    const float cosIn = glm::dot(side.normal, wi);
+    if (lobe == Lobe::Diffuse) {
+        factors = {{{"kd", kd}, {"N.L", Rgb{cosIn}}}};
+        return 2;
+    }
+    if (lobe == Lobe::Highlight) {
+        factors = {{{"ks", ks}, {"(n+2)/2 cos^n(a) N.L", Rgb{(n + 2.0f) / 2.0f * std::pow(cosToMirror(side, wo, wi), n) * cosIn}}}};
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace lightpath

@@ -1,0 +1,32 @@
+#pragma once
+// The modified Phong model of Lafortune and Willems (1994), the energy-conserving form of the
+// lecture's formula:
+//
+//   f(wo, wi) = kd / pi + ks (n + 2) / (2 pi) cos^n(alpha),  alpha = angle(wi, mirror of wo)
+//
+// Normalised so that it reflects exactly kd + ks at normal incidence and never more anywhere:
+// with kd + ks <= 1 per channel it conserves energy, which Szymczak's classic highlight
+// ks (H.N)^n does not. Its lobes are Diffuse (<RD>) and Highlight (<RG>); it has no delta lobes.
+#include "materials/material.h"
+
+namespace lightpath {
+
+class ModifiedPhongMaterial final : public Material {
+public:
+    Rgb kd{0.0f};     // diffuse albedo
+    Rgb ks{0.0f};     // specular albedo at normal incidence
+    float n = 20.0f;  // specular exponent, >= 0
+
+    std::unique_ptr<Material> clone() const override { return std::make_unique<ModifiedPhongMaterial>(*this); }
+
+    bool has(Lobe lobe) const override;
+    Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
+    float albedo(Lobe lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+                NamedFactors& factors) const override;
+    Rgb diffuseReflectance() const override { return kd; }
+};
+
+}  // namespace lightpath
