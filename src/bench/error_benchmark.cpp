@@ -153,6 +153,7 @@ Scene mirrorCausticScene(int size, Reference& caustic) {
 struct Measurement {
     double seconds, rmse, relmse;
     std::size_t patches = 0;
+    double raysPerSample = 0.0;
 };
 
 // The error of the beauty, or of the one AOV `expression` when it is given. CPU seconds include
@@ -182,7 +183,8 @@ Measurement measure(const Scene& scene, const Reference& reference, const Render
             }
         }
     }
-    return {seconds, std::sqrt(squared / n), relative / n, result.stats.radiosity ? result.stats.radiosity->patches : 0};
+    return {seconds, std::sqrt(squared / n), relative / n, result.stats.radiosity ? result.stats.radiosity->patches : 0,
+            static_cast<double>(result.stats.rays.total()) / static_cast<double>(std::max<std::uint64_t>(1, result.stats.samples))};
 }
 
 // Least-squares slope of log(rmse) against log(seconds).
@@ -227,7 +229,7 @@ Reference cachedReference(const Scene& scene, const std::filesystem::path& cache
     return film.layer(0);
 }
 
-// Path tracing against bidirectional path tracing (independent sampling, 1 thread): error against
+// Path tracing against bidirectional path tracing (the default sampler, 1 thread): error against
 // time on a caustic only light tracing finds, and on the Cornell box with its area light, where
 // both converge; bdpt's time to reach the path tracer's error at its largest budget, over path's.
 void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory,
@@ -254,35 +256,55 @@ void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory
         comparisons.push_back({"cornell-lamp", std::move(cornell), std::move(reference), ""});
     }
     const int maxLog2 = quick ? 5 : 8;
+    // Each render is repeated, interleaved (path, bdpt, path, ...), and its median CPU time kept:
+    // one run of a small render is at the mercy of the other processes on a shared machine. The
+    // images of the repeats are identical (same seed), so the error is the first's.
+    constexpr int kRepetitions = 3;
+    const char* const integrators[] = {"path", "bdpt"};
     for (const Comparison& c : comparisons) {
-        std::vector<std::vector<ErrorBenchmarkRow>> curves;
-        for (const char* integrator : {"path", "bdpt"}) {
-            std::vector<ErrorBenchmarkRow> curve;
+        std::vector<std::vector<ErrorBenchmarkRow>> curves(2);
+        std::vector<std::vector<std::vector<double>>> seconds(2, std::vector<std::vector<double>>(maxLog2 + 1));
+        std::vector<double> raysPerSample(2, 0.0);
+        for (int rep = 0; rep < kRepetitions; ++rep) {
             for (int k = 0; k <= maxLog2; ++k) {
-                RenderOptions options;
-                options.integrator = integrator;
-                options.threads = 1;
-                options.samplesPerPixel = 1 << k;
-                options.seed = 1;
-                const Measurement m = measure(c.scene, c.reference, options, c.expression);
-                curve.push_back({c.name, integrator, "independent", options.samplesPerPixel, 0, m.seconds, m.rmse, m.relmse});
+                for (std::size_t i = 0; i < 2; ++i) {
+                    RenderOptions options;
+                    options.integrator = integrators[i];
+                    options.threads = 1;
+                    options.samplesPerPixel = 1 << k;
+                    options.seed = 1;
+                    const Measurement m = measure(c.scene, c.reference, options, c.expression);
+                    seconds[i][static_cast<std::size_t>(k)].push_back(m.seconds);
+                    if (rep > 0) continue;
+                    curves[i].push_back({c.name, integrators[i], samplerName(options.sampler), options.samplesPerPixel, 0,
+                                         0.0, m.rmse, m.relmse});
+                    raysPerSample[i] = m.raysPerSample;
+                }
             }
-            result.rows.insert(result.rows.end(), curve.begin(), curve.end());
-            curves.push_back(std::move(curve));
+        }
+        for (std::size_t i = 0; i < 2; ++i) {
+            for (std::size_t k = 0; k < curves[i].size(); ++k) curves[i][k].seconds = median(seconds[i][k]);
+            result.rows.insert(result.rows.end(), curves[i].begin(), curves[i].end());
         }
         // The path tracer's error at its largest budget; on the caustic it never falls (it finds
         // none of the light), so bdpt's time to reach it says little there and the curves speak.
         const double error = curves[0].back().rmse;
         const double pathSeconds = secondsToReach(curves[0], error);
-        result.summaries.push_back({c.name, "path", fitSlope(curves[0]), 1.0});
-        result.summaries.push_back({c.name, "bdpt", fitSlope(curves[1]), secondsToReach(curves[1], error) / pathSeconds});
+        result.summaries.push_back({c.name, "path", fitSlope(curves[0]), 1.0, raysPerSample[0]});
+        result.summaries.push_back(
+            {c.name, "bdpt", fitSlope(curves[1]), secondsToReach(curves[1], error) / pathSeconds, raysPerSample[1]});
     }
 }
 
 }  // namespace
 
-ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& scenesDirectory,
+ErrorBenchmarkResult runErrorBenchmark(bool quick, bool integratorsOnly, const std::filesystem::path& scenesDirectory,
                                         const std::filesystem::path& cacheDirectory) {
+    ErrorBenchmarkResult result;
+    if (integratorsOnly) {
+        compareIntegrators(quick, scenesDirectory, cacheDirectory, result);
+        return result;
+    }
     struct BenchScene {
         std::string name;
         Scene scene;
@@ -311,7 +333,6 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& 
     }
 
     const int maxLog2 = quick ? 5 : 8;
-    ErrorBenchmarkResult result;
     for (const BenchScene& bench : scenes) {
         std::vector<std::vector<ErrorBenchmarkRow>> curves;
         for (const Strategy& strategy : kStrategies) {

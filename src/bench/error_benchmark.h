@@ -33,6 +33,9 @@ struct ErrorBenchmarkSummary {
     // Seconds to reach the common error, over independent sampling's (samplers) or over the path
     // tracer's at its largest budget (integrators).
     double timeRatio = 0.0;
+    // Integrators: rays cast per pixel sample (camera, shadow and connection rays, walks' bounces)
+    // at the largest budget; their ratio to the path tracer's is the cost of the extra strategies.
+    double raysPerSample = 0.0;
 };
 
 struct ErrorBenchmarkResult {
@@ -41,6 +44,8 @@ struct ErrorBenchmarkResult {
 };
 
 // `scenes`: the folder of shipped scenes; `cache`: where the lecture scene's reference is kept.
-ErrorBenchmarkResult runErrorBenchmark(bool quick, const std::filesystem::path& scenes, const std::filesystem::path& cache);
+// `integratorsOnly`: only path against bdpt.
+ErrorBenchmarkResult runErrorBenchmark(bool quick, bool integratorsOnly, const std::filesystem::path& scenes,
+                                       const std::filesystem::path& cache);
 
 }  // namespace lightpath

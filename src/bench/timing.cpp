@@ -18,6 +18,12 @@ double processCpuSeconds() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 std::vector<double> medianSeconds(const std::vector<std::function<void()>>& jobs, int repetitions) {
     std::vector<std::vector<double>> times(jobs.size());
     for (int r = 0; r < repetitions; ++r) {

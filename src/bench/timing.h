@@ -11,6 +11,8 @@ double median(std::vector<double> values);
 
 // CPU seconds used by this process so far (all its threads).
 double processCpuSeconds();
+// CPU seconds used by the calling thread so far.
+double threadCpuSeconds();
 
 // Runs every job `repetitions` times, interleaved; returns each job's median CPU time in seconds.
 std::vector<double> medianSeconds(const std::vector<std::function<void()>>& jobs, int repetitions);

@@ -16,6 +16,7 @@ namespace {
 
 struct ErrorOptions {
     bool quick = false;
+    bool integratorsOnly = false;
     std::string json;
     std::string csv = "out/bench-error.csv";
     std::string plot = "out/bench-error.png";
@@ -49,7 +50,7 @@ void run(const ErrorOptions& options) {
     std::printf("bench error: path tracer and radiosity, CPU seconds on 1 thread, error against closed forms or a cached "
                 "path-traced reference\n"
                 "machine: %s\n\n", describeMachine().c_str());
-    const ErrorBenchmarkResult r = runErrorBenchmark(options.quick, shippedScenesDirectory(), options.cache);
+    const ErrorBenchmarkResult r = runErrorBenchmark(options.quick, options.integratorsOnly, shippedScenesDirectory(), options.cache);
     std::printf("%-18s %-9s %-12s %6s %8s %10s %12s %12s\n", "scene", "method", "sampler", "spp", "patches", "seconds",
                 "rmse", "relmse");
     for (const auto& row : r.rows)
@@ -57,8 +58,11 @@ void run(const ErrorOptions& options) {
                     row.sampler.c_str(), row.spp, row.patches, row.seconds, row.rmse, row.relmse);
     std::printf("\n%-18s %-12s %10s %26s\n", "scene", "sampler", "slope", "time to reference error");
     std::printf("(samplers and radiosity: independent's error at its largest budget; path/bdpt: the path tracer's)\n");
-    for (const auto& s : r.summaries)
-        std::printf("%-18s %-12s %10.3f %25.2fx\n", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
+    for (const auto& s : r.summaries) {
+        std::printf("%-18s %-12s %10.3f %25.2fx", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
+        if (s.raysPerSample > 0.0) std::printf("   %.2f rays/sample", s.raysPerSample);
+        std::printf("\n");
+    }
     std::printf("\ntargets: independent slope -0.5 +- 0.05; on area-light-plane sobol <= 0.5x and adaptive <= 0.33x of "
                 "independent's time; on mirror-caustic path's error never falls and bdpt's does; on cornell-lamp\n"
                 "bdpt within the cost of its extra strategies of path's time\n");
@@ -86,6 +90,8 @@ void addBenchErrorCommand(CLI::App& bench) {
     CLI::App* sub = bench.add_subcommand("error", "Run time against error for each sampler and adaptive sampling");
     sub->add_flag("--quick", options->quick,
                   "Small images, budgets up to 32 spp (radiosity: 1024 patches), closed-form scenes only");
+    sub->add_flag("--integrators", options->integratorsOnly,
+                  "Only path tracing against bdpt (each render 3 times, interleaved, median CPU time)");
     sub->add_option("--json", options->json,
                     "Also write rows {scene, integrator, sampler, spp, patches, seconds, rmse, relmse}");
     sub->add_option("--csv", options->csv, "Where the CSV goes")->capture_default_str();

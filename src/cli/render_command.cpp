@@ -56,8 +56,8 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
                 n(r.reflectionDead), n(r.refractionDead));
     std::printf("highlights    %llu evaluated, %llu skipped (material has ks = 0)\n", n(r.highlightEvaluated),
                 n(r.highlightNoKs));
-    std::printf("time          %.3f s on %d thread%s: %.0f samples/s, %.2f M rays/s\n", stats.seconds, stats.threads,
-                stats.threads == 1 ? "" : "s", static_cast<double>(stats.samples) / stats.seconds,
+    std::printf("time          %.3f s on %d thread%s (%.3f s CPU): %.0f samples/s, %.2f M rays/s\n", stats.seconds,
+                stats.threads, stats.threads == 1 ? "" : "s", stats.cpuSeconds, static_cast<double>(stats.samples) / stats.seconds,
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);
     std::printf("wall time     rendering %.3f s, writing %.3f s (%zu file%s; %.3f s of it waiting for the image module)\n",
                 stats.seconds, write.seconds, write.files, write.files == 1 ? "" : "s", write.moduleWaitSeconds);

@@ -47,8 +47,14 @@ void RenderSetup::addOptions(CLI::App& command) {
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
         ->capture_default_str();
     command.add_option("--sampler", sampler,
-                       "Pixel sample sequence: independent, stratified, or sobol (Owen-scrambled, low discrepancy)")
+                       "Pixel sample sequence: sobol (Owen-scrambled, low discrepancy), stratified, or independent")
         ->check(oneOf({"independent", "stratified", "sobol"}))
+        ->capture_default_str();
+    command.add_option("--filter", filter,
+                       "Pixel reconstruction filter, by filter importance sampling: box (the pixel's square), "
+                       "tent (radius 1), gaussian (sigma 0.5, radius 1.5) or blackman-harris (radius 1.5, as "
+                       "Cycles' default); a single sample per pixel always goes through the centre")
+        ->check(oneOf({"box", "tent", "gaussian", "blackman-harris"}))
         ->capture_default_str();
     command.add_option("--target-error", targetError,
                        "Adaptive sampling: stop a pixel once the standard error of its mean is below this "
@@ -240,6 +246,7 @@ RenderOptions RenderSetup::renderOptions() const {
     options.threads = threads;
     options.seed = seed;
     parseSamplerKind(sampler, options.sampler);  // validated by the option's oneOf check
+    parsePixelFilterKind(filter, options.filter);  // likewise
     options.targetError = targetError;
     options.writeBeauty = !noBeauty;
     options.skip = !noSkip;

@@ -25,7 +25,8 @@ struct RenderSetup {
     int threads = 0;
     std::uint64_t seed = 0;
     std::string resolution;          // WxH, empty for the scene's
-    std::string sampler = "independent";
+    std::string sampler = "sobol";
+    std::string filter = "box";      // the pixel filter (sampling/pixel_filter.h)
     double targetError = 0.0;
     bool noBeauty = false;
     bool noSkip = false;

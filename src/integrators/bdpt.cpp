@@ -19,6 +19,17 @@ constexpr std::uint64_t kLightWalkKey = 0x6c69676874ull;  // "light"
 
 using Vertices = std::array<BdptVertex, kMaxSubpathVertices>;
 
+// Both subpaths' vertices, kept per thread: constructing 2 x kMaxSubpathVertices vertices per
+// sample (about 30 KB, most never used at the usual depths) cost more than a bounce. A walk
+// writes each vertex before anything reads it, so nothing carries over between samples.
+struct Subpaths {
+    Vertices light, eye;
+};
+Subpaths& threadSubpaths() {
+    thread_local Subpaths subpaths;
+    return subpaths;
+}
+
 // Russian roulette on a walk's throughput: false to stop; on going on, beta carries 1/q.
 bool survives(Rgb& beta, int depth, Sampler& sampler) {
     if (depth < kRouletteDepth) return true;
@@ -273,7 +284,8 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     const RenderContext& ctx = path.context;
     Sampler& sampler = *path.sampler;
 
-    Vertices light;
+    Subpaths& subpaths = threadSubpaths();
+    Vertices& light = subpaths.light;
     int lightCount = 0;
     if (lightWalks_) {
         Sampler lightSampler = sampler.forVertex(kLightWalkKey);
@@ -283,7 +295,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     }
     if (strategies_ == Strategies::LightTracingOnly) return;
 
-    Vertices eye;
+    Vertices& eye = subpaths.eye;
     eye[0] = cameraVertex(ctx.camera.eye());
     const std::size_t pathStart = path.size();
     Ray ray = cameraRay;

@@ -98,12 +98,14 @@ void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous
 // The area density of `previous` as the other walk would reach it from `vertex` by `step`.
 float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous);
 
-// Every strategy's density of one path, per vertex, in the path's order from the light.
+// Every strategy's density of one path, per vertex, in the path's order from the light. Only the
+// first n entries are written and read: the arrays are left uninitialised, since clearing all
+// 2 kMaxSubpathVertices of them per join cost more than the join's arithmetic.
 struct PathDensities {
     int n = 0;
-    std::array<double, 2 * kMaxSubpathVertices> fromLight{};  // x_i sampled by a walk from the light
-    std::array<double, 2 * kMaxSubpathVertices> fromEye{};    // x_i sampled by a walk from the eye
-    std::array<bool, 2 * kMaxSubpathVertices> connectible{};  // x_i may end a joined subpath
+    std::array<double, 2 * kMaxSubpathVertices> fromLight;  // x_i sampled by a walk from the light
+    std::array<double, 2 * kMaxSubpathVertices> fromEye;    // x_i sampled by a walk from the eye
+    std::array<bool, 2 * kMaxSubpathVertices> connectible;  // x_i may end a joined subpath
     double originByNextEvent = 0.0;  // x0 chosen by light sampling (s = 1): choice * pdfPosition
     double originByEmission = 0.0;   // x0 chosen to start a light walk (s >= 2)
     bool originHittable = false;     // an eye walk can find x0 by chance (an area light: s = 0)

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "bench/timing.h"
 #include "integrators/registry.h"
 #include "render/progress.h"
 #include "sampling/sampler.h"
@@ -43,6 +44,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       analysis_(scene),
       lights_(scene_, geometry_),
       camera_(scene.camera),
+      filter_(options.filter),
       integrator_(makeIntegrator(options.integrator)),
       context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip, options.radiosity,
@@ -107,9 +109,10 @@ int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layer
         const Rgb beautyBefore = layers[0];
         Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, seed);
         path.sampler = &sampler;
-        // One sample goes through the pixel centre, as in the lecture; more are jittered within it.
+        // One sample goes through the pixel centre, as in the lecture; more are spread around it
+        // as the pixel filter weighs them.
         const Vec2 jitter = sampler.next2D();
-        const Vec2 offset = spp > 1 ? jitter : Vec2{0.5f};
+        const Vec2 offset = spp > 1 ? Vec2{0.5f} + filter_.sample(jitter) : Vec2{0.5f};
         ++taken;
         if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
             ++path.counters.cameraDead;
@@ -228,6 +231,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
 
     RenderStats stats;
     for (const RayCounters& c : counters) stats.rays += c;
+    for (const auto& c : workerCpu) stats.cpuSeconds += c.value;
     stats.samples = stats.rays.camera + stats.rays.cameraDead;  // adaptive sampling takes fewer
     stats.threads = threadCount;
     stats.accelerator = geometry_.acceleratorStats();
