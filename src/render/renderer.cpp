@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <ctime>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -24,13 +23,6 @@ template <typename T>
 struct alignas(kCacheLine) CacheLinePadded {
     T value{};
 };
-
-// CPU time of the calling thread: what a worker cost, whatever else the machine was running.
-double threadCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 }  // namespace
 
