@@ -108,6 +108,11 @@ Settings applySettings(const Settings& current, const std::string& body) {
             settings.lpes = expressionsOf(value);
         }
     }
+    // The rasteriser samples each pixel once, at its centre (Integrator::samplesPixelCentres).
+    if (const IntegratorInfo* info = findIntegrator(settings.integrator);
+        info && settings.samplesPerPixel != 1 && info->make()->samplesPixelCentres())
+        throw RequestError(400, "spp", "spp: the " + settings.integrator + " integrator samples each pixel once, at its "
+                                       "centre: expected 1, got " + std::to_string(settings.samplesPerPixel));
     const std::int64_t pixelLayers =
         std::int64_t{settings.width} * settings.height * static_cast<std::int64_t>(settings.lpes.size() + 2);
     if (pixelLayers > kMaxPixelLayers)
