@@ -141,7 +141,14 @@ void Server::routes() {
 
     http.Get("/api/settings", guarded([this](const httplib::Request& req, httplib::Response& res) {
         allowParameters(req, {});
-        sendJson(res, progressJson(session_.progress()));
+        // The settings last accepted, even before the render worker has picked them up: a client
+        // reads back what its PUT was answered with.
+        Progress p = session_.progress();
+        if (const auto job = session_.job(); p.job != job) {
+            p = Progress{};
+            p.job = job;
+        }
+        sendJson(res, progressJson(p));
     }));
 
     // No query parameters are checked here: httplib files a form-encoded body under req.params.
