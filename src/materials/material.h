@@ -3,13 +3,13 @@
 // sample/eval/pdf, one material per file). A material is a set of lobes (materials/lobe.h); the
 // per-hit Bsdf chooses among them and weighs the choice, so a material only describes each lobe.
 // Adding a material is its own file plus its entry in the scene loader's table of material types.
-#include <concepts>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "materials/lobe.h"
 #include "math/types.h"
+#include "util/polymorphic_value.h"
 
 namespace lightpath {
 
@@ -52,26 +52,7 @@ protected:
     Material& operator=(const Material&) = default;
 };
 
-// A scene's material: owned, polymorphic, and copied with the scene (a copy is a deep copy, so a
-// test can brighten a copy without touching the original).
-class MaterialSlot {
-public:
-    template <typename M>
-        requires std::derived_from<M, Material>
-    MaterialSlot(M material) : material_(std::make_unique<M>(std::move(material))) {}
-    MaterialSlot(const MaterialSlot& other) : material_(other.material_->clone()) {}
-    MaterialSlot& operator=(const MaterialSlot& other) {
-        if (this != &other) material_ = other.material_->clone();
-        return *this;
-    }
-    MaterialSlot(MaterialSlot&&) noexcept = default;
-    MaterialSlot& operator=(MaterialSlot&&) noexcept = default;
-
-    Material& operator*() const { return *material_; }
-    Material* operator->() const { return material_.get(); }
-
-private:
-    std::unique_ptr<Material> material_;
-};
+// A scene's material: owned, polymorphic, and copied with the scene.
+using MaterialSlot = PolymorphicValue<Material>;
 
 }  // namespace lightpath

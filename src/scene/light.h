@@ -4,12 +4,12 @@
 // drawings and bounds, and it makes the light source the integrators sample (lights/light.h). A
 // new type is its own file (description and source) plus its row in the loader's light types.
 // Quad and sphere lights are not here: they are emissive objects with geometry.
-#include <concepts>
 #include <cstdint>
 #include <memory>
 #include <string>
 
 #include "math/types.h"
+#include "util/polymorphic_value.h"
 
 namespace lightpath {
 
@@ -35,25 +35,7 @@ protected:
     SceneLight& operator=(const SceneLight&) = default;
 };
 
-// A scene's light: owned, polymorphic, and copied deeply with the scene.
-class LightSlot {
-public:
-    template <typename L>
-        requires std::derived_from<L, SceneLight>
-    LightSlot(L light) : light_(std::make_unique<L>(std::move(light))) {}
-    LightSlot(const LightSlot& other) : light_(other.light_->clone()) {}
-    LightSlot& operator=(const LightSlot& other) {
-        if (this != &other) light_ = other.light_->clone();
-        return *this;
-    }
-    LightSlot(LightSlot&&) noexcept = default;
-    LightSlot& operator=(LightSlot&&) noexcept = default;
-
-    SceneLight& operator*() const { return *light_; }
-    SceneLight* operator->() const { return light_.get(); }
-
-private:
-    std::unique_ptr<SceneLight> light_;
-};
+// A scene's light: owned, polymorphic, and copied with the scene.
+using LightSlot = PolymorphicValue<SceneLight>;
 
 }  // namespace lightpath
