@@ -44,6 +44,11 @@ struct SurfaceSide {
     Vec3 normal{0.0f, 0.0f, 1.0f};  // unit shading normal on the side of the outgoing direction wo
     bool entering = true;           // that side is the material's outside
     TransportMode mode = TransportMode::Radiance;
+
+    // Both directions leave the surface on this side: a reflection lobe can connect them.
+    bool bothAbove(const Vec3& wo, const Vec3& wi) const {
+        return glm::dot(wi, normal) > 0.0f && glm::dot(wo, normal) > 0.0f;
+    }
 };
 
 // A direction sampled within one smooth lobe.

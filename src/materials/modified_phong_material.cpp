@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/lambert_lobe.h"
 #include "materials/optics.h"
 #include "sampling/warp.h"
 
 namespace lightpath {
 namespace {
-
-bool bothAbove(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
-    return glm::dot(wi, side.normal) > 0.0f && glm::dot(wo, side.normal) > 0.0f;
-}
 
 // cos(alpha), alpha the angle between wi and the mirror direction of wo.
 float cosToMirror(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
@@ -27,17 +24,16 @@ bool ModifiedPhongMaterial::has(Lobe lobe) const {
 }
 
 Rgb ModifiedPhongMaterial::eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
-    if (!bothAbove(side, wo, wi)) return Rgb{0.0f};
-    const float cosIn = glm::dot(wi, side.normal);
-    if (lobe == Lobe::Diffuse) return kd * (cosIn / kPi);
+    if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
+    if (lobe == Lobe::Diffuse) return lambert::eval(kd, side, wi);
     if (lobe == Lobe::Highlight)
-        return ks * ((n + 2.0f) / (2.0f * kPi) * std::pow(cosToMirror(side, wo, wi), n) * cosIn);
+        return ks * ((n + 2.0f) / (2.0f * kPi) * std::pow(cosToMirror(side, wo, wi), n) * glm::dot(wi, side.normal));
     return Rgb{0.0f};
 }
 
 float ModifiedPhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
-    if (!bothAbove(side, wo, wi)) return 0.0f;
-    if (lobe == Lobe::Diffuse) return cosineHemispherePdf(glm::dot(wi, side.normal));
+    if (!side.bothAbove(wo, wi)) return 0.0f;
+    if (lobe == Lobe::Diffuse) return lambert::pdf(side, wi);
     // cos^n about the mirror direction, (n+1)/(2 pi) cos^n(alpha); directions below the surface
     // are lost, so the lobe's density over the hemisphere integrates to at most 1.
     if (lobe == Lobe::Highlight) return phongLobePdf(cosToMirror(side, wo, wi), n);
@@ -46,16 +42,9 @@ float ModifiedPhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3&
 
 std::optional<LobeSample> ModifiedPhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo,
                                                         Vec2 u) const {
-    LobeSample s;
-    if (lobe == Lobe::Diffuse) {
-        s.wi = Frame(side.normal).toWorld(sampleCosineHemisphere(u));
-        const float cosIn = glm::dot(s.wi, side.normal);
-        if (cosIn <= 0.0f) return std::nullopt;
-        s.pdf = cosineHemispherePdf(cosIn);
-        s.weight = kd;
-        return s;
-    }
+    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, u);
     if (lobe == Lobe::Highlight) {
+        LobeSample s;
         s.wi = Frame(reflectAbout(wo, side.normal)).toWorld(samplePhongLobe(u, n));
         const float cosIn = glm::dot(s.wi, side.normal);
         if (cosIn <= 0.0f) return std::nullopt;
@@ -75,12 +64,12 @@ float ModifiedPhongMaterial::albedo(Lobe lobe, const SurfaceSide&, const Vec3&) 
 
 int ModifiedPhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                                    NamedFactors& factors) const {
-    const float cosIn = glm::dot(side.normal, wi);
     if (lobe == Lobe::Diffuse) {
-        factors = {{{"kd", kd}, {"N.L", Rgb{cosIn}}}};
+        factors = lambert::factors(kd, side, wi);
         return 2;
     }
     if (lobe == Lobe::Highlight) {
+        const float cosIn = glm::dot(side.normal, wi);
         factors = {{{"ks", ks}, {"(n+2)/2 cos^n(a) N.L", Rgb{(n + 2.0f) / 2.0f * std::pow(cosToMirror(side, wo, wi), n) * cosIn}}}};
         return 2;
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "materials/lambert_lobe.h"
 #include "materials/optics.h"
 #include "sampling/warp.h"
 
@@ -23,10 +24,6 @@ float blinnTerm(const Vec3& normal, const Vec3& wo, const Vec3& wi, float expone
     return halfway ? std::pow(std::max(0.0f, glm::dot(normal, *halfway)), exponent) : 0.0f;
 }
 
-bool bothAbove(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
-    return glm::dot(wi, side.normal) > 0.0f && glm::dot(wo, side.normal) > 0.0f;
-}
-
 }  // namespace
 
 bool PhongMaterial::has(Lobe lobe) const {
@@ -40,15 +37,15 @@ bool PhongMaterial::has(Lobe lobe) const {
 }
 
 Rgb PhongMaterial::eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
-    if (!bothAbove(side, wo, wi)) return Rgb{0.0f};
-    if (lobe == Lobe::Diffuse) return kd * (glm::dot(wi, side.normal) / kPi);
+    if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
+    if (lobe == Lobe::Diffuse) return lambert::eval(kd, side, wi);
     if (lobe == Lobe::Highlight) return ks * (blinnTerm(side.normal, wo, wi, n) / kPi);
     return Rgb{0.0f};  // a delta lobe has no value to evaluate
 }
 
 float PhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
-    if (!bothAbove(side, wo, wi)) return 0.0f;
-    if (lobe == Lobe::Diffuse) return cosineHemispherePdf(glm::dot(wi, side.normal));
+    if (!side.bothAbove(wo, wi)) return 0.0f;
+    if (lobe == Lobe::Diffuse) return lambert::pdf(side, wi);
     if (lobe == Lobe::Highlight) {
         const std::optional<Vec3> halfway = halfwayOf(wo, wi);
         if (!halfway) return 0.0f;
@@ -61,16 +58,9 @@ float PhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, con
 }
 
 std::optional<LobeSample> PhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
-    LobeSample s;
-    if (lobe == Lobe::Diffuse) {
-        s.wi = Frame(side.normal).toWorld(sampleCosineHemisphere(u));
-        const float cosIn = glm::dot(s.wi, side.normal);
-        if (cosIn <= 0.0f) return std::nullopt;
-        s.pdf = cosineHemispherePdf(cosIn);
-        s.weight = kd;  // (kd/pi) cos / (cos/pi)
-        return s;
-    }
+    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, u);
     if (lobe == Lobe::Highlight) {
+        LobeSample s;
         const Vec3 halfway = Frame(side.normal).toWorld(samplePhongLobe(u, n));
         const float woDotHalf = glm::dot(wo, halfway);
         if (woDotHalf <= 0.0f) return std::nullopt;
@@ -124,7 +114,7 @@ int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, Spe
 int PhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                            NamedFactors& factors) const {
     if (lobe == Lobe::Diffuse) {
-        factors = {{{"kd", kd}, {"N.L", Rgb{glm::dot(side.normal, wi)}}}};
+        factors = lambert::factors(kd, side, wi);
         return 2;
     }
     if (lobe == Lobe::Highlight) {
