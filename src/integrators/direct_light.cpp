@@ -199,8 +199,7 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
     // ignores them; a delta light that sampled would have to be counted here): without any area
     // light the vertex's sampler is not made. It is keyed by the path, so no other sample depends on it.
     LightChoiceSample u{0.0f, Vec2{0.0f}};
-    const LightSet& lights = path.context.lights;
-    if (lights.all().size() > lights.deltaLights().size()) {  // some light is an area light
+    if (path.context.lights.hasAreaLights()) {
         Sampler vertex = path.sampler->forVertex(path.key());
         u.uChoice = vertex.next1D();
         u.uPoint = vertex.next2D();

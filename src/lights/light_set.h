@@ -29,6 +29,7 @@ public:
     // All lights: the point lights in scene order, then the area lights in object order.
     std::span<const std::unique_ptr<Light>> all() const { return lights_; }
     std::span<const Light* const> deltaLights() const { return delta_; }
+    bool hasAreaLights() const { return !area_.empty(); }
 
     // One area light in proportion to its power.
     ChosenLight chooseAreaLight(float u) const;
