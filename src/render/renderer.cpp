@@ -26,19 +26,27 @@ struct alignas(kCacheLine) CacheLinePadded {
 
 }  // namespace
 
+std::shared_ptr<const SceneGeometry> Renderer::buildGeometry(const Scene& scene, const RenderOptions& options) {
+    return std::make_shared<const SceneGeometry>(scene.spheres, scene.planes, scene.triangles, options.numerics,
+                                                 options.accelerator, scene.triangleNormals);
+}
+
 Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options)
+    : Renderer(scene, aovs, options, buildGeometry(scene, options)) {}
+
+Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options,
+                   std::shared_ptr<const SceneGeometry> geometry)
     : scene_(scene),
       aovs_(aovs),
       options_(options),
-      geometry_(scene.spheres, scene.planes, scene.triangles, options.numerics, options.accelerator,
-                scene.triangleNormals),
+      geometry_(std::move(geometry)),
       symbols_(scene, aovs.automaton()),
       analysis_(scene),
-      lights_(scene_, geometry_),
+      lights_(scene_, *geometry_),
       camera_(scene.camera),
       filter_(options.filter),
       integrator_(makeIntegrator(options.integrator)),
-      context_{scene_, geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
+      context_{scene_, *geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip, options.radiosity,
                options.threads, options.progress, options.cancel} {
     if (!integrator_) {
@@ -226,7 +234,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     for (const auto& c : workerCpu) stats.cpuSeconds += c.value;
     stats.samples = stats.rays.camera + stats.rays.cameraDead;  // adaptive sampling takes fewer
     stats.threads = threadCount;
-    stats.accelerator = geometry_.acceleratorStats();
+    stats.accelerator = geometry_->acceleratorStats();
     if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
     for (const auto& cpu : workerCpu) stats.workerCpuSeconds.push_back(cpu.value);
     stats.serialCpuSeconds = serialBeforeCpu + (threadCpuSeconds() - afterWorkersCpu);

@@ -92,6 +92,11 @@ class Renderer {
 public:
     // Throws std::invalid_argument for an unknown integrator or an option out of range.
     Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options);
+    // The same over geometry already built from `scene`'s shapes with options.numerics and
+    // options.accelerator (see buildGeometry): renderers of one scene share its BVH.
+    Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options,
+             std::shared_ptr<const SceneGeometry> geometry);
+    static std::shared_ptr<const SceneGeometry> buildGeometry(const Scene& scene, const RenderOptions& options);
 
     RenderResult render() const;
     // The same render with the per-pixel sample sequences seeded by `seed` instead of
@@ -115,7 +120,7 @@ private:
     const Scene& scene_;
     const AovSet& aovs_;
     RenderOptions options_;
-    SceneGeometry geometry_;
+    std::shared_ptr<const SceneGeometry> geometry_;
     EventSymbols symbols_;
     SceneAnalysis analysis_;
     LightSet lights_;

@@ -35,13 +35,14 @@ double maxSumError(const Film& film) {
 }  // namespace
 
 Job::Job(std::uint64_t generation, Settings settings, Scene scene, AovSet aovs, RenderOptions options,
-         std::vector<std::string> warnings)
+         std::vector<std::string> warnings, std::shared_ptr<const SceneGeometry> geometry)
     : generation(generation),
       settings(std::move(settings)),
       scene(std::move(scene)),
       aovs(std::move(aovs)),
       warnings(std::move(warnings)),
-      options_(options) {
+      options_(options),
+      geometry_(std::move(geometry)) {
     options_.cancel = &cancelled_;
 }
 
@@ -49,7 +50,7 @@ const Renderer& Job::centreRenderer() const {
     std::call_once(centreOnce_, [this] {
         RenderOptions options = options_;
         options.samplesPerPixel = 1;
-        centre_ = std::make_unique<Renderer>(scene, aovs, options);
+        centre_ = std::make_unique<Renderer>(scene, aovs, options, geometry_);
     });
     return *centre_;
 }
@@ -60,12 +61,15 @@ const Renderer& Job::passRenderer() const {
     std::call_once(passOnce_, [this] {
         RenderOptions options = options_;
         options.samplesPerPixel = samplesPerPass();
-        pass_ = std::make_unique<Renderer>(scene, aovs, options);
+        pass_ = std::make_unique<Renderer>(scene, aovs, options, geometry_);
     });
     return *pass_;
 }
 
-Session::Session(Scene scene, std::string scenePath) : scene_(std::move(scene)), scenePath_(std::move(scenePath)) {
+Session::Session(Scene scene, std::string scenePath)
+    : scene_(std::move(scene)),
+      scenePath_(std::move(scenePath)),
+      geometry_(Renderer::buildGeometry(scene_, RenderSetup{}.renderOptions())) {
     job_ = prepare(defaultSettings(scene_), 1);
     progress_.job = job_;
     worker_ = std::thread([this] { work(); });
@@ -130,7 +134,8 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
     scene.camera.height = settings.height;
     RenderOptions options = setup.renderOptions();
     options.progress = false;
-    return std::make_shared<Job>(generation, settings, std::move(scene), std::move(*aovs), options, std::move(warnings));
+    return std::make_shared<Job>(generation, settings, std::move(scene), std::move(*aovs), options, std::move(warnings),
+                                 geometry_);
 }
 
 std::shared_ptr<const Job> Session::update(const Settings& settings) {

@@ -28,8 +28,9 @@ inline constexpr int kSamplesPerPass = 4;
 // long as the last request using it (shared_ptr).
 class Job {
 public:
+    // `geometry`: the scene's shapes, built once per session and shared by every job's renderers.
     Job(std::uint64_t generation, Settings settings, Scene scene, AovSet aovs, RenderOptions options,
-        std::vector<std::string> warnings);
+        std::vector<std::string> warnings, std::shared_ptr<const SceneGeometry> geometry);
 
     const std::uint64_t generation;
     const Settings settings;
@@ -48,6 +49,7 @@ public:
 
 private:
     RenderOptions options_;
+    std::shared_ptr<const SceneGeometry> geometry_;
     std::atomic<bool> cancelled_{false};
     mutable std::once_flag centreOnce_, passOnce_;
     mutable std::unique_ptr<Renderer> centre_, pass_;
@@ -103,6 +105,9 @@ private:
 
     const Scene scene_;
     const std::string scenePath_;
+    // Settings change the camera, the AOVs and the integrator, never the shapes or the numerics:
+    // the BVH is built once.
+    const std::shared_ptr<const SceneGeometry> geometry_;
 
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;
