@@ -17,6 +17,7 @@
 #include "math/random.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "render_world.h"
 #include "scene_builder.h"
 #include "statistics.h"
 
@@ -145,23 +146,8 @@ TEST_CASE("bdpt: bit-identical images on 1, 2 and 8 threads, splats included") {
     }
 }
 
-// --- The pieces a test can hold: a scene with its geometry, lights and automaton. ---
-struct World {
-    explicit World(const Scene& s, std::vector<lpe::NamedExpression> set = classesSet(), int maxDepth = 5)
-        : scene(s), aovs(std::move(set)), geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh,
-                                                   scene.triangleNormals),
-          symbols(scene, aovs.automaton()), analysis(scene), lights(scene, geometry), camera(scene.camera),
-          context{scene, geometry, aovs.automaton(), symbols, analysis, lights, camera, maxDepth,
-                  aovs.automaton().allOutputs(), true, true} {}
-    Scene scene;
-    AovSet aovs;
-    SceneGeometry geometry;
-    EventSymbols symbols;
-    SceneAnalysis analysis;
-    LightSet lights;
-    PinholeCamera camera;
-    RenderContext context;
-};
+// The pieces a test can hold: a scene with its geometry, lights and automaton.
+using World = test::RenderWorld;
 
 TEST_CASE("camera: project() inverts generateRay, and importance integrates to one over the image") {
     CameraDescription d;

@@ -27,8 +27,10 @@ struct Case {
     float cosOut;
 };
 
-PhongMaterial makeMaterial(Rgb kd, Rgb ks, float n) {
-    PhongMaterial m;
+// A material of type M with a diffuse and a highlight lobe (Phong's or the modified Phong's).
+template <typename M = PhongMaterial>
+M makeMaterial(Rgb kd, Rgb ks, float n) {
+    M m;
     m.kd = kd;
     m.ks = ks;
     m.n = n;
@@ -120,23 +122,15 @@ TEST_CASE("chi-square: Lambert and Blinn highlight sampling follow their densiti
     }
 }
 
-ModifiedPhongMaterial makeModifiedPhong(Rgb kd, Rgb ks, float n) {
-    ModifiedPhongMaterial m;
-    m.kd = kd;
-    m.ks = ks;
-    m.n = n;
-    return m;
-}
-
 TEST_CASE("chi-square: modified Phong's lobe about the mirror direction follows its density") {
     const struct {
         const char* name;
         ModifiedPhongMaterial material;
         float cosOut;
     } cases[] = {
-        {"n=1", makeModifiedPhong(Rgb{0}, Rgb{0.9f}, 1), 0.7f},
-        {"n=30, grazing: part of the lobe falls below the surface", makeModifiedPhong(Rgb{0}, Rgb{0.9f}, 30), 0.15f},
-        {"diffuse + n=10", makeModifiedPhong(Rgb{0.5f}, Rgb{0.4f}, 10), 0.5f},
+        {"n=1", makeMaterial<ModifiedPhongMaterial>(Rgb{0}, Rgb{0.9f}, 1), 0.7f},
+        {"n=30, grazing: part of the lobe falls below the surface", makeMaterial<ModifiedPhongMaterial>(Rgb{0}, Rgb{0.9f}, 30), 0.15f},
+        {"diffuse + n=10", makeMaterial<ModifiedPhongMaterial>(Rgb{0.5f}, Rgb{0.4f}, 10), 0.5f},
     };
     for (const auto& c : cases) {
         CAPTURE(c.name);
@@ -163,7 +157,7 @@ Rgb directionalAlbedo(const Material& material, float cosOut) {
 }
 
 TEST_CASE("modified Phong reflects exactly kd + ks at normal incidence and never more (Lafortune and Willems 1994)") {
-    const ModifiedPhongMaterial material = makeModifiedPhong({0.5f, 0.2f, 0.0f}, {0.5f, 0.3f, 0.8f}, 20);
+    const ModifiedPhongMaterial material = makeMaterial<ModifiedPhongMaterial>({0.5f, 0.2f, 0.0f}, {0.5f, 0.3f, 0.8f}, 20);
     const Rgb normal = directionalAlbedo(material, 1.0f);
     for (int c = 0; c < 3; ++c) CHECK(normal[c] == doctest::Approx(material.kd[c] + material.ks[c]).epsilon(0.01));
     for (float cosOut : {0.8f, 0.4f, 0.1f}) {

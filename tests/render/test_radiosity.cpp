@@ -16,34 +16,20 @@
 #include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
+#include "render_world.h"
 #include "scene_builder.h"
 
 namespace lightpath {
 namespace {
 
-// Everything a RenderContext refers to, for calling the integrator directly.
+// A scene solved by the radiosity integrator, called directly.
 struct Solved {
-    Scene scene;
-    AovSet aovs;
-    SceneGeometry geometry;
-    EventSymbols symbols;
-    SceneAnalysis analysis;
-    LightSet lights;
-    PinholeCamera camera;
-    RenderContext context;
+    test::RenderWorld world;
     RadiosityIntegrator radiosity;
 
     Solved(Scene s, const RadiosityOptions& options, int maxDepth)
-        : scene(std::move(s)),
-          aovs(classesSet()),
-          geometry(scene.spheres, scene.planes, scene.triangles, NumericsOptions{}, Accelerator::Bvh),
-          symbols(scene, aovs.automaton()),
-          analysis(scene),
-          lights(scene, geometry),
-          camera(scene.camera),
-          context{scene, geometry, aovs.automaton(), symbols, analysis, lights, camera, maxDepth,
-                  aovs.automaton().allOutputs(), true, true, options, 2} {
-        radiosity.preprocess(context);
+        : world(std::move(s), classesSet(), maxDepth, options, 2) {
+        radiosity.preprocess(world.context);
     }
 
     // Area-weighted form factor from the front of every patch of object `from` to the front of
