@@ -24,6 +24,9 @@ public:
         nextUint();
     }
 
+    // A generator that is never drawn from (a member its owner only sometimes needs): no seeding.
+    static Pcg32 unseeded() { return Pcg32(); }
+
     std::uint32_t nextUint() {
         const std::uint64_t old = state_;
         state_ = old * 6364136223846793005ull + increment_;
@@ -36,6 +39,8 @@ public:
     float nextFloat() { return static_cast<float>(nextUint() >> 8) * 0x1p-24f; }
 
 private:
+    Pcg32() : increment_(1u) {}
+
     std::uint64_t state_ = 0;
     std::uint64_t increment_;
 };

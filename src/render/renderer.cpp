@@ -111,8 +111,9 @@ int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layer
         path.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are spread around it
         // as the pixel filter weighs them.
-        const Vec2 jitter = sampler.next2D();
-        const Vec2 offset = spp > 1 ? Vec2{0.5f} + filter_.sample(jitter) : Vec2{0.5f};
+        Vec2 offset{0.5f};
+        if (spp > 1) offset += filter_.sample(sampler.next2D());
+        else sampler.skip2D();
         ++taken;
         if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
             ++path.counters.cameraDead;

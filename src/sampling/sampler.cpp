@@ -27,14 +27,8 @@ std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
     return reverseBits(x);
 }
 
-// Sobol's first dimension (van der Corput) and second dimension (primitive polynomial x + 1).
+// Sobol's first dimension (van der Corput).
 std::uint32_t sobolDimension0(std::uint32_t index) { return reverseBits(index); }
-std::uint32_t sobolDimension1(std::uint32_t index) {
-    std::uint32_t result = 0;
-    for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-        if (index & 1u) result ^= v;
-    return result;
-}
 
 // A bijection of [0, count) chosen by `seed`: xor-shift-multiply rounds on the smallest
 // power-of-two range holding count, walking the cycle until the value falls inside.
@@ -63,6 +57,19 @@ std::uint32_t squareSide(std::uint32_t count) {
 
 }  // namespace
 
+std::uint32_t sobolDimension1(std::uint32_t index) {
+    // Output digit m (weight 2^-(m+1)) is the sum mod 2 of index bits k with C(k, m) odd, i.e.
+    // (Lucas) with k's bits a superset of m's: a superset-sum transform over the five bits of the
+    // digit position, one shift-and-mask step per bit, instead of a loop over the index's bits.
+    std::uint32_t digits = index;
+    digits ^= (digits >> 1) & 0x55555555u;
+    digits ^= (digits >> 2) & 0x33333333u;
+    digits ^= (digits >> 4) & 0x0f0f0f0fu;
+    digits ^= (digits >> 8) & 0x00ff00ffu;
+    digits ^= (digits >> 16) & 0x0000ffffu;
+    return reverseBits(digits);
+}
+
 bool parseSamplerKind(std::string_view name, SamplerKind& kind) {
     if (name == "independent") kind = SamplerKind::Independent;
     else if (name == "stratified") kind = SamplerKind::Stratified;
@@ -82,7 +89,9 @@ const char* samplerName(SamplerKind kind) {
 
 Sampler::Sampler(SamplerKind kind, std::uint64_t seed, int sampleIndex, int samplesPerPixel)
     : kind_(kind), seed_(seed), index_(static_cast<std::uint32_t>(sampleIndex)),
-      count_(static_cast<std::uint32_t>(samplesPerPixel)), gridSide_(squareSide(count_)), rng_(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) {}
+      count_(static_cast<std::uint32_t>(samplesPerPixel)),
+      gridSide_(kind == SamplerKind::Stratified ? squareSide(count_) : 0),
+      rng_(usesRng() ? Pcg32(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) : Pcg32::unseeded()) {}
 
 Sampler Sampler::forPixel(SamplerKind kind, int x, int y, int sampleIndex, int samplesPerPixel, std::uint64_t seed) {
     const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32) | static_cast<std::uint32_t>(x);
@@ -101,6 +110,13 @@ float Sampler::next1D() {
         }
     }
     return rng_.nextFloat();
+}
+
+void Sampler::skip2D() {
+    ++dimension_;
+    if (!usesRng()) return;
+    rng_.nextUint();  // next2D draws two numbers for either kind that uses the generator
+    rng_.nextUint();
 }
 
 Vec2 Sampler::next2D() {

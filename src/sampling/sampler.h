@@ -30,6 +30,9 @@ public:
 
     float next1D();
     Vec2 next2D();
+    // Passes over the next dimension pair without computing it, so later dimensions keep their
+    // numbers (the single sample of a pixel goes through its centre and needs none).
+    void skip2D();
 
     // The sampler of one vertex of a branching path, keyed by the path that leads to it: its
     // numbers do not depend on which other branches were traced (or skipped) before it, and
@@ -37,6 +40,7 @@ public:
     Sampler forVertex(std::uint64_t pathKey) const { return Sampler(kind_, mixBits(seed_ ^ pathKey), index_, count_); }
 
 private:
+    bool usesRng() const { return kind_ != SamplerKind::Sobol; }
     std::uint64_t dimensionSeed() { return mixBits(seed_ + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(++dimension_)); }
 
     SamplerKind kind_;
@@ -45,7 +49,11 @@ private:
     std::uint32_t count_;
     std::uint32_t gridSide_;  // stratified: sqrt(count_) when count_ is a square, else 0
     int dimension_ = 0;
-    Pcg32 rng_;
+    Pcg32 rng_;  // independent and stratified only (left unseeded for sobol)
 };
+
+// Sobol's second dimension (primitive polynomial x + 1, whose generator matrix is Pascal's
+// triangle mod 2) of point `index`, as 32 fraction bits.
+std::uint32_t sobolDimension1(std::uint32_t index);
 
 }  // namespace lightpath

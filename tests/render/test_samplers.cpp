@@ -49,6 +49,53 @@ TEST_CASE("sobol: the first 2^m samples of every dimension pair form a (0,m,2)-n
     }
 }
 
+TEST_CASE("sobol: the second dimension is the index times Pascal's triangle mod 2") {
+    // The generator matrix of Sobol's second dimension (polynomial x + 1) has C(k, m) mod 2 in row
+    // m, column k (Joe and Kuo's direction numbers for it are all 1): built here by the triangle's
+    // own recurrence, then applied bit by bit.
+    bool odd[32][32] = {};
+    for (int k = 0; k < 32; ++k) {
+        odd[k][0] = true;
+        for (int m = 1; m <= k; ++m) odd[k][m] = odd[k - 1][m - 1] != odd[k - 1][m];
+    }
+    const auto reference = [&](std::uint32_t index) {
+        std::uint32_t result = 0;
+        for (int m = 0; m < 32; ++m) {
+            bool bit = false;
+            for (int k = 0; k < 32; ++k) bit = bit != (((index >> k) & 1u) != 0 && odd[k][m]);
+            if (bit) result |= 1u << (31 - m);
+        }
+        return result;
+    };
+    std::vector<std::uint32_t> indices{0u, 1u, 2u, 3u, 0x7fffffffu, 0x80000000u, 0xffffffffu, 0xaaaaaaaau, 0x55555555u};
+    for (int k = 0; k < 32; ++k) indices.push_back(1u << k);
+    Pcg32 rng(7, 11);
+    for (int i = 0; i < 100000; ++i) indices.push_back(rng.nextUint());
+    for (std::uint32_t index : indices) {
+        CAPTURE(index);
+        REQUIRE(sobolDimension1(index) == reference(index));
+    }
+    CHECK(sobolDimension1(1) == 0x80000000u);  // the first points: 1/2, then 3/4, 1/4
+    CHECK(sobolDimension1(2) == 0xc0000000u);
+    CHECK(sobolDimension1(3) == 0x40000000u);
+}
+
+TEST_CASE("skipping a dimension pair leaves every later number as drawing it would") {
+    for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
+        for (int spp : {1, 9, 12}) {
+            CAPTURE(samplerName(kind));
+            CAPTURE(spp);
+            Sampler drawn = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
+            Sampler skipped = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
+            drawn.next2D();
+            skipped.skip2D();
+            CHECK(drawn.next1D() == skipped.next1D());
+            CHECK(drawn.next2D() == skipped.next2D());
+            CHECK(drawn.forVertex(99).next2D() == skipped.forVertex(99).next2D());
+        }
+    }
+}
+
 TEST_CASE("stratified: one sample per stratum, grid for square counts, Latin hypercube otherwise") {
     const auto grid = firstPoints(SamplerKind::Stratified, 16, 1, 9);
     std::set<int> cells;
