@@ -4,7 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <limits>
+
+#include "math/float_bits.h"
 
 namespace lightpath {
 namespace {
@@ -23,9 +24,8 @@ float offsetCoordinateWachterBinder(float p, float n) {
 
 // One float further along the normal's sign, so rounding of p + offset cannot undo the move.
 float roundAway(float moved, float normal) {
-    constexpr float inf = std::numeric_limits<float>::infinity();
-    if (normal > 0.0f) return std::nextafter(moved, inf);
-    if (normal < 0.0f) return std::nextafter(moved, -inf);
+    if (normal > 0.0f) return nextFloatUp(moved);
+    if (normal < 0.0f) return nextFloatDown(moved);
     return moved;
 }
 

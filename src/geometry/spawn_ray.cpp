@@ -15,46 +15,66 @@ bool isUsable(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && glm::dot(v, v) > 0.0f;
 }
 
-// The side of the surface `direction` leaves into. A degenerate normal (zero or not finite, e.g.
-// from a zero-area triangle) cannot say, so the ray is pushed along its own direction instead.
-Vec3 leavingSide(const SurfaceHit& hit, const Vec3& direction) {
-    if (!isUsable(hit.normal)) return isUsable(direction) ? glm::normalize(direction) : Vec3{0.0f};
-    return glm::dot(direction, hit.normal) >= 0.0f ? hit.normal : -hit.normal;
+// The point a ray leaving `point` along unit `side` starts from, by the chosen method.
+Vec3 offsetOrigin(const SurfaceHit& hit, const Vec3& side, const NumericsOptions& numerics) {
+    switch (numerics.offset) {
+        case RayOffset::Robust: return offsetRayOrigin(hit.point, side, hit.t);
+        case RayOffset::WachterBinder: return offsetRayOriginWachterBinder(hit.point, side);
+        case RayOffset::FixedEpsilon:
+        case RayOffset::None:
+        case RayOffset::OwnPrimitive: break;
+    }
+    return hit.point;
 }
 
-// The origin and the rules of a ray leaving `hit` towards the side of `direction`.
-Ray leave(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics) {
+}  // namespace
+
+RayOrigins::RayOrigins(const SurfaceHit& hit, const NumericsOptions& numerics)
+    : hit_(hit), numerics_(numerics), normalUsable_(isUsable(hit.normal)) {}
+
+Ray RayOrigins::leave(const Vec3& direction) {
     Ray ray;
-    ray.origin = hit.point;
-    switch (numerics.offset) {
+    ray.origin = hit_.point;
+    switch (numerics_.offset) {
         case RayOffset::Robust:
-            ray.origin = offsetRayOrigin(hit.point, leavingSide(hit, direction), hit.t);
+        case RayOffset::WachterBinder: {
+            if (!normalUsable_) {
+                // No side to name: the ray is pushed along its own direction instead.
+                const Vec3 along = isUsable(direction) ? glm::normalize(direction) : Vec3{0.0f};
+                ray.origin = offsetOrigin(hit_, along, numerics_);
+                break;
+            }
+            const bool normalSide = glm::dot(direction, hit_.normal) >= 0.0f;
+            std::optional<Vec3>& origin = origins_[normalSide ? 0 : 1];
+            if (!origin) origin = offsetOrigin(hit_, normalSide ? hit_.normal : -hit_.normal, numerics_);
+            ray.origin = *origin;
             break;
-        case RayOffset::WachterBinder:
-            ray.origin = offsetRayOriginWachterBinder(hit.point, leavingSide(hit, direction));
-            break;
+        }
         case RayOffset::FixedEpsilon:
-            ray.tMin = numerics.epsilon;
+            ray.tMin = numerics_.epsilon;
             break;
         case RayOffset::None:
             break;
         case RayOffset::OwnPrimitive:
-            ray.ignoredPrimitive = hit.primitive;
+            ray.ignoredPrimitive = hit_.primitive;
             break;
     }
     return ray;
 }
 
-}  // namespace
-
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics) {
-    Ray ray = leave(hit, direction, numerics);
+    Ray ray = RayOrigins(hit, numerics).leave(direction);
     ray.direction = direction;
     return ray;
 }
 
 Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOptions& numerics) {
-    Ray ray = leave(hit, target - hit.point, numerics);
+    RayOrigins origins(hit, numerics);
+    return spawnShadowRay(origins, target);
+}
+
+Ray spawnShadowRay(RayOrigins& origins, const Vec3& target) {
+    Ray ray = origins.leave(target - origins.hit().point);
     const Vec3 toTarget = target - ray.origin;
     const float distance = glm::length(toTarget);
     if (!(distance > 0.0f) || !std::isfinite(distance)) {

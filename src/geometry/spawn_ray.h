@@ -1,11 +1,31 @@
 #pragma once
 // The one place where secondary rays (shadow, reflection, refraction) are born, so every ray
 // leaves its surface by the same numerical method (NumericsOptions::offset).
+#include <optional>
+
 #include "geometry/numerics.h"
 #include "geometry/surface_hit.h"
 #include "math/ray.h"
 
 namespace lightpath {
+
+// Where rays leaving one surface hit start: a point on each side of the surface, each computed
+// on first use and then shared, so a shading point's shadow rays (one per light) pay for the
+// robust offset once per side, not once per ray.
+class RayOrigins {
+public:
+    RayOrigins(const SurfaceHit& hit, const NumericsOptions& numerics);
+
+    // A ray (origin, tMin, ignored primitive; no direction) leaving on the side `direction` points to.
+    Ray leave(const Vec3& direction);
+    const SurfaceHit& hit() const { return hit_; }
+
+private:
+    const SurfaceHit& hit_;
+    const NumericsOptions& numerics_;
+    bool normalUsable_;  // a zero or non-finite normal names no side: each ray then leaves along itself
+    std::optional<Vec3> origins_[2];  // [0] on the normal's side, [1] on the other
+};
 
 // A ray leaving `hit` in unit `direction`; it leaves on the side of the surface `direction` points to.
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics);
@@ -13,5 +33,7 @@ Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions
 // The segment from `hit` towards a point light at `target`, stopping just short of it so a light
 // placed on a surface does not shadow itself.
 Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOptions& numerics);
+// The same from origins shared by several shadow rays of one hit.
+Ray spawnShadowRay(RayOrigins& origins, const Vec3& target);
 
 }  // namespace lightpath

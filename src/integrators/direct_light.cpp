@@ -65,8 +65,8 @@ struct SmoothLobeEvents {
           after{path.stateAfter(events[0]), path.stateAfter(events[1])} {}
 };
 
-// One light sample through both smooth lobes, with one shadow ray.
-void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, const Rgb& throughput,
+// One light sample through both smooth lobes, with one shadow ray from `origins` (p's).
+void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
                     DirectLightWeighting weighting, PathState& path) {
     const RenderContext& ctx = path.context;
@@ -115,7 +115,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, const 
 
     if (ctx.shadows) {
         ++counters.shadow;
-        const Ray shadowRay = spawnShadowRay(p.hit, sample.point, ctx.geometry.numerics());
+        const Ray shadowRay = spawnShadowRay(origins, sample.point);
         if (ctx.geometry.occluded(shadowRay)) {
             if (path.explaining()) {
                 const auto blocker = ctx.geometry.intersect(shadowRay);
@@ -147,13 +147,14 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, const 
 void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
                     const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path) {
     const LightSet& lights = path.context.lights;
+    RayOrigins origins(point.hit, path.context.geometry.numerics());  // shared by the shadow rays of every light
     for (const Light* light : lights.deltaLights())
-        addLightSample(point, lobes, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light, weighting,
-                       path);
+        addLightSample(point, lobes, origins, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light,
+                       weighting, path);
     const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
     if (chosen.light == nullptr) return;
-    addLightSample(point, lobes, throughput, chosen.light->sample(point.hit.point, u.uPoint), chosen.probability,
-                   *chosen.light, weighting, path);
+    addLightSample(point, lobes, origins, throughput, chosen.light->sample(point.hit.point, u.uPoint),
+                   chosen.probability, *chosen.light, weighting, path);
 }
 
 void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput, PathState& path) {

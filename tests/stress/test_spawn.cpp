@@ -2,17 +2,84 @@
 // any scale, and stays finite when the hit is degenerate.
 #include <doctest/doctest.h>
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
 
 #include "geometry/ray_offset.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/spawn_ray.h"
+#include "math/float_bits.h"
 #include "reference.h"
 
 namespace lightpath {
 namespace {
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Same float, bit for bit (NaN: any NaN).
+bool sameFloat(float a, float b) {
+    return std::isnan(a) ? std::isnan(b) : std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+}
+bool sameRay(const Ray& a, const Ray& b) {
+    for (int i = 0; i < 3; ++i)
+        if (!sameFloat(a.origin[i], b.origin[i]) || !sameFloat(a.direction[i], b.direction[i])) return false;
+    return sameFloat(a.tMin, b.tMin) && sameFloat(a.tMax, b.tMax) && a.ignoredPrimitive == b.ignoredPrimitive;
+}
+
+TEST_CASE("nextFloatUp and nextFloatDown are std::nextafter towards +inf and -inf") {
+    using limits = std::numeric_limits<float>;
+    constexpr float inf = limits::infinity();
+    std::vector<float> values{0.0f, -0.0f, limits::denorm_min(), -limits::denorm_min(), limits::min(), -limits::min(),
+                              limits::max(), -limits::max(), inf, -inf, limits::quiet_NaN(), 1.0f, -1.0f,
+                              std::bit_cast<float>(0x007fffffu), std::bit_cast<float>(0x807fffffu)};
+    std::mt19937 rng(17);
+    for (int i = 0; i < 2000000; ++i) values.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(rng())));
+    for (const float x : values) {
+        CAPTURE(x);
+        REQUIRE(sameFloat(nextFloatUp(x), std::nextafter(x, inf)));
+        REQUIRE(sameFloat(nextFloatDown(x), std::nextafter(x, -inf)));
+    }
+    // The cases that differ from "bits plus or minus one": through zero, and the infinities.
+    CHECK(sameFloat(nextFloatUp(-limits::denorm_min()), -0.0f));
+    CHECK(sameFloat(nextFloatDown(limits::denorm_min()), 0.0f));
+    CHECK(sameFloat(nextFloatUp(-0.0f), limits::denorm_min()));
+    CHECK(sameFloat(nextFloatUp(limits::max()), inf));
+    CHECK(sameFloat(nextFloatUp(-inf), -limits::max()));
+    CHECK(sameFloat(nextFloatDown(-inf), -inf));
+}
+
+TEST_CASE("shadow rays from shared origins are the rays spawned one by one, under every offset method") {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const Sphere sphere{{0.3f, -0.2f, 0.5f}, 0.7f, 0};
+    for (const RayOffset offset : {RayOffset::Robust, RayOffset::WachterBinder, RayOffset::FixedEpsilon, RayOffset::None,
+                                   RayOffset::OwnPrimitive}) {
+        NumericsOptions numerics;
+        numerics.offset = offset;
+        const SceneGeometry geometry({sphere}, {}, {}, numerics);
+        int compared = 0;
+        for (int i = 0; i < 2000; ++i) {
+            Ray camera;
+            camera.origin = Vec3{u(rng), u(rng), u(rng)} * 4.0f + Vec3{0.0f, 0.0f, 6.0f};
+            camera.direction = glm::normalize(sphere.center + 0.5f * Vec3{u(rng), u(rng), u(rng)} - camera.origin);
+            auto hit = geometry.intersect(camera);
+            if (!hit) continue;
+            if (i % 7 == 0) hit->normal = Vec3{0.0f};  // a degenerate hit: no side, each ray leaves along itself
+            RayOrigins origins(*hit, numerics);
+            for (int light = 0; light < 4; ++light) {  // lights on both sides of the surface, some twice
+                const Vec3 target = hit->point + 3.0f * Vec3{u(rng), u(rng), u(rng)};
+                CAPTURE(i);
+                CHECK(sameRay(spawnShadowRay(origins, target), spawnShadowRay(*hit, target, numerics)));
+                CHECK(sameRay(spawnShadowRay(origins, target), spawnShadowRay(*hit, target, numerics)));
+                ++compared;
+            }
+        }
+        CHECK(compared > 1000);
+    }
+}
 
 TEST_CASE("the robust offset puts the origin on the leaving side of the exact plane, at every scale") {
     std::mt19937_64 rng(3);
