@@ -152,13 +152,23 @@ template <typename Keep>
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
-    const std::optional<PrimitiveHit> found = closestPrimitive(ray);
+    if (accelerator_ == Accelerator::BruteForce) {
+        const std::optional<PrimitiveHit> found = closestBruteForce(ray);
+        if (!found) return std::nullopt;
+        return describeHit(ray, found->t, found->primitive);
+    }
+    const PackedRay packed(ray);
+    const std::optional<PrimitiveHit> found = closestAccelerated(ray, packed);
     if (!found) return std::nullopt;
-    return describeHit(ray, found->t, found->primitive);
+    return describeHit(ray, found->t, found->primitive, nullptr, &packed.sheared);
 }
 
 std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) return closestBruteForce(ray);
+    return closestAccelerated(ray, PackedRay(ray));
+}
+
+std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, const PackedRay& packed) const {
     // The brute-force answer is the smallest t, ties to the smallest id (a later primitive must
     // be strictly nearer). Candidates arrive in another order here, so each is tested against a
     // limit one ulp beyond the best t, and an equal t wins only with a smaller id.
@@ -173,7 +183,6 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
                                   : std::nextafter(t, std::numeric_limits<float>::infinity());
         }
     };
-    const PackedRay packed(ray);
     bvh_.closest(ray, best.t,
                  [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
     const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
@@ -233,6 +242,11 @@ bool SceneGeometry::occludedBruteForce(const Ray& ray) const {
 }
 
 SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {
+    return describeHit(ray, t, id, barycentrics, nullptr);
+}
+
+SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics,
+                                      const WatertightRay* sheared) const {
     SurfaceHit hit;
     hit.t = t;
     hit.point = ray.at(t);
@@ -264,6 +278,7 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id,
     Vec3 weights{0.0f};
     bool weighted = true;
     if (barycentrics != nullptr) weights = *barycentrics;
+    else if (sheared != nullptr) weighted = intersectTriangle(ray, *sheared, tri, ray.tMin, &weights) != kNoHit;
     else weighted = intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit;
     if (weighted) {
         hit.point = weights.x * tri.a + weights.y * tri.b + weights.z * tri.c;

@@ -96,6 +96,11 @@ public:
     }
 
 private:
+    // The accelerated closest hit, given the ray's per-ray watertight set-up, which intersect()
+    // then hands on to describeHit so a triangle's barycentrics cost no second set-up.
+    std::optional<PrimitiveHit> closestAccelerated(const Ray& ray, const PackedRay& packed) const;
+    SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics,
+                           const WatertightRay* sheared) const;
     std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
     bool occludedBruteForce(const Ray& ray) const;
     // Calls keep(t, id) for every primitive of the BVH leaf at `firstSlot` that `ray` hits, t as

@@ -7,25 +7,14 @@
 namespace lightpath {
 
 PathState::PathState(const RenderContext& context, ContributionSink& sink, RayCounters& counters)
-    : context(context), counters(counters), sink_(sink) {
+    : context(context), counters(counters), automaton_(context.automaton), symbols_(context.symbols),
+      requested_(context.requested), keepAllPaths_(context.keepAllPaths), sink_(sink) {
     states_[0] = context.automaton.start();
-}
-
-lpe::Automaton::State PathState::step(lpe::Automaton::State state, const PathEvent& event) const {
-    return context.automaton.step(state, context.symbols(event));
-}
-
-lpe::OutputMask PathState::acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const {
-    return context.automaton.accepts(step(state, light));
-}
-
-bool PathState::wanted(lpe::OutputMask accepted) const {
-    return context.keepAllPaths || (accepted & context.requested) != 0;
 }
 
 bool PathState::push(const PathEvent& event) {
     const lpe::Automaton::State next = step(state(), event);
-    if (!context.keepAllPaths && context.automaton.isDead(next, context.requested)) return false;
+    if (!keepAllPaths_ && automaton_.isDead(next, requested_)) return false;
     events_.push(event);
     states_[events_.size()] = next;
     return true;

@@ -43,8 +43,10 @@ public:
     // ambient term and its light samples): the state after `surface`, stepped once, then the
     // outputs accepting a path that ends from there in `light`, and whether any is requested.
     lpe::Automaton::State stateAfter(const PathEvent& surface) const { return step(state(), surface); }
-    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const;
-    bool wanted(lpe::OutputMask accepted) const;
+    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const {
+        return automaton_.accepts(step(state, light));
+    }
+    bool wanted(lpe::OutputMask accepted) const { return keepAllPaths_ || (accepted & requested_) != 0; }
     // Ends the path in `light` (after `surface`) with radiance `value`. Non-finite values are
     // counted and dropped, never stored.
     void emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors = {});
@@ -66,9 +68,18 @@ public:
     Sampler* sampler = nullptr;  // the current pixel sample's random numbers
 
 private:
-    lpe::Automaton::State step(lpe::Automaton::State state, const PathEvent& event) const;
+    // Inline, as the two lookups they are: every light sample of every shading point asks them.
+    lpe::Automaton::State step(lpe::Automaton::State state, const PathEvent& event) const {
+        return automaton_.step(state, symbols_(event));
+    }
     bool finite(const Rgb& value);
 
+    // The context's automaton and requested outputs, kept here so the lookups above need no
+    // RenderContext (integrator.h includes this header).
+    const lpe::Automaton& automaton_;
+    const EventSymbols& symbols_;
+    lpe::OutputMask requested_;
+    bool keepAllPaths_;
     ContributionSink& sink_;
     PathRecord events_;
     std::array<lpe::Automaton::State, kMaxPathEvents + 1> states_{};
