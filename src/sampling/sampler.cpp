@@ -17,9 +17,9 @@ std::uint32_t reverseBits(std::uint32_t x) {
 
 // A hash in which each bit depends only on the bits below it (Laine and Karras 2011); applied to
 // reversed bits it permutes each binary digit given the digits before it: Owen's nested uniform
-// scrambling (Burley 2020, sec. 3).
-std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
-    std::uint32_t x = reverseBits(value) + seed;
+// scrambling (Burley 2020, sec. 3). This one takes the value with its bits already reversed.
+std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed) {
+    std::uint32_t x = reversed + seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
@@ -27,8 +27,25 @@ std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
     return reverseBits(x);
 }
 
-// Sobol's first dimension (van der Corput).
-std::uint32_t sobolDimension0(std::uint32_t index) { return reverseBits(index); }
+std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
+    return owenScrambleReversed(reverseBits(value), seed);
+}
+
+// Sobol's first two dimensions with their bits reversed (digit m at bit m), as the scrambling
+// takes them. The first is van der Corput's: the index itself.
+std::uint32_t sobolDimension0Reversed(std::uint32_t index) { return index; }
+std::uint32_t sobolDimension1Reversed(std::uint32_t index) {
+    // Output digit m (weight 2^-(m+1)) is the sum mod 2 of index bits k with C(k, m) odd, i.e.
+    // (Lucas) with k's bits a superset of m's: a superset-sum transform over the five bits of the
+    // digit position, one shift-and-mask step per bit, instead of a loop over the index's bits.
+    std::uint32_t digits = index;
+    digits ^= (digits >> 1) & 0x55555555u;
+    digits ^= (digits >> 2) & 0x33333333u;
+    digits ^= (digits >> 4) & 0x0f0f0f0fu;
+    digits ^= (digits >> 8) & 0x00ff00ffu;
+    digits ^= (digits >> 16) & 0x0000ffffu;
+    return digits;
+}
 
 // A bijection of [0, count) chosen by `seed`: xor-shift-multiply rounds on the smallest
 // power-of-two range holding count, walking the cycle until the value falls inside.
@@ -57,18 +74,7 @@ std::uint32_t squareSide(std::uint32_t count) {
 
 }  // namespace
 
-std::uint32_t sobolDimension1(std::uint32_t index) {
-    // Output digit m (weight 2^-(m+1)) is the sum mod 2 of index bits k with C(k, m) odd, i.e.
-    // (Lucas) with k's bits a superset of m's: a superset-sum transform over the five bits of the
-    // digit position, one shift-and-mask step per bit, instead of a loop over the index's bits.
-    std::uint32_t digits = index;
-    digits ^= (digits >> 1) & 0x55555555u;
-    digits ^= (digits >> 2) & 0x33333333u;
-    digits ^= (digits >> 4) & 0x0f0f0f0fu;
-    digits ^= (digits >> 8) & 0x00ff00ffu;
-    digits ^= (digits >> 16) & 0x0000ffffu;
-    return reverseBits(digits);
-}
+std::uint32_t sobolDimension1(std::uint32_t index) { return reverseBits(sobolDimension1Reversed(index)); }
 
 bool parseSamplerKind(std::string_view name, SamplerKind& kind) {
     if (name == "independent") kind = SamplerKind::Independent;
@@ -106,7 +112,7 @@ float Sampler::next1D() {
             return (static_cast<float>(permute(index_, count_, seed)) + rng_.nextFloat()) / static_cast<float>(count_);
         case SamplerKind::Sobol: {
             const std::uint32_t shuffled = owenScramble(index_, static_cast<std::uint32_t>(seed));
-            return toUnitFloat(owenScramble(sobolDimension0(shuffled), static_cast<std::uint32_t>(seed >> 32)));
+            return toUnitFloat(owenScrambleReversed(sobolDimension0Reversed(shuffled), static_cast<std::uint32_t>(seed >> 32)));
         }
     }
     return rng_.nextFloat();
@@ -137,8 +143,8 @@ Vec2 Sampler::next2D() {
         case SamplerKind::Sobol: {
             const auto scrambleSeed = static_cast<std::uint32_t>(seed >> 32);
             const std::uint32_t shuffled = owenScramble(index_, static_cast<std::uint32_t>(seed));
-            return {toUnitFloat(owenScramble(sobolDimension0(shuffled), scrambleSeed)),
-                    toUnitFloat(owenScramble(sobolDimension1(shuffled), scrambleSeed ^ 0x5bd1e995u))};
+            return {toUnitFloat(owenScrambleReversed(sobolDimension0Reversed(shuffled), scrambleSeed)),
+                    toUnitFloat(owenScrambleReversed(sobolDimension1Reversed(shuffled), scrambleSeed ^ 0x5bd1e995u))};
         }
     }
     const float u = rng_.nextFloat();
