@@ -72,6 +72,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
     if (!options.writeBeauty && aovs.expressions().empty())
         throw std::invalid_argument("nothing to render: no beauty and no AOVs requested");
+    // One contiguous run (render() copies it as a block): every layer, or all but beauty and rest.
     for (std::size_t l = 0; l < aovs.layerCount(); ++l) {
         const bool beautyOrRest = l == 0 || l + 1 == aovs.layerCount();
         if (options.writeBeauty || !beautyOrRest) writtenLayers_.push_back(l);
@@ -197,6 +198,9 @@ RenderResult Renderer::render(std::uint64_t seed) const {
         const std::span<Rgb> layers(padded.data() + kPad, aovs_.layerCount());
         ContributionSink sink(layers, splats ? &*splats : nullptr);
         PathState path(context_, sink, counters[static_cast<std::size_t>(worker)]);
+        // The written layers are one run of the accumulators (all of them, or all but beauty and
+        // rest): each pixel is one block copy, not a lookup per layer.
+        const std::span<const Rgb> written = layers.subspan(writtenLayers_.front(), writtenLayers_.size());
         // Tiles are handed out dynamically; each pixel is written by exactly one worker.
         for (int tile = nextTile.value++; tile < tileCount; tile = nextTile.value++) {
             const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
@@ -212,8 +216,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
                     }
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
                     renderPixel(x, y, seed, layers, path);
-                    const std::span<Rgb> pixel = film.pixel(x, y);
-                    for (std::size_t l = 0; l < writtenLayers_.size(); ++l) pixel[l] = layers[writtenLayers_[l]];
+                    std::ranges::copy(written, film.pixel(x, y).begin());
                 }
             }
             progress.tileDone();
