@@ -64,12 +64,9 @@ struct Box {
     }
     void grow(const Box& b) { grow(b.lo, b.hi); }
     void grow(Float4 p) { grow(p, p); }
-    // Bounds::halfArea's expression, float for float.
-    float halfArea() const {
-        alignas(16) float l[4], h[4], d[4];
-        lo.store(l);
-        hi.store(h);
-        if (l[0] > h[0]) return 0.0f;
+    // Bounds::halfArea's expression, float for float, for a box that holds something.
+    float nonEmptyHalfArea() const {
+        alignas(16) float d[4];
         (hi - lo).store(d);
         return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
     }
@@ -140,29 +137,38 @@ struct Split {
 };
 
 // The cheapest bin boundary over the three axes; cost is sum(area * blocks) of both sides (half
-// areas, unnormalised).
+// areas, unnormalised). Only non-empty bins are visited: an empty bin leaves both sides' boxes
+// and counts, so its boundary costs what the previous one did and never wins (a split must be
+// strictly cheaper), which keeps the choice exactly that of the full sweep while small ranges,
+// most of the tree, fill only a few of the bins.
 Split findSplit(const Bins& bins, std::size_t count, const Binning& binning) {
     alignas(16) float scale[4];
     binning.scale.store(scale);
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
         if (scale[axis] == 0.0f) continue;
-        // Sweep from the right to get each suffix's cost, then from the left.
-        std::array<float, kBins> rightCost{};
+        const std::uint32_t* counts = bins.counts[axis];
+        // Sweep from the right to get each suffix's cost (0 while it is empty), then from the left.
+        std::array<float, kBins> rightCost;
         Box right;
         std::uint32_t rightCount = 0;
+        float suffixCost = 0.0f;
         for (int b = kBins - 1; b > 0; --b) {
-            right.grow(bins.boxes[axis][b]);
-            rightCount += bins.counts[axis][b];
-            rightCost[static_cast<std::size_t>(b)] = right.halfArea() * blocks(rightCount);
+            if (counts[b] != 0) {
+                right.grow(bins.boxes[axis][b]);
+                rightCount += counts[b];
+                suffixCost = right.nonEmptyHalfArea() * blocks(rightCount);
+            }
+            rightCost[static_cast<std::size_t>(b)] = suffixCost;
         }
         Box left;
         std::uint32_t leftCount = 0;
         for (int b = 0; b < kBins - 1; ++b) {
+            if (counts[b] == 0) continue;
             left.grow(bins.boxes[axis][b]);
-            leftCount += bins.counts[axis][b];
-            if (leftCount == 0 || leftCount == count) continue;
-            const float cost = left.halfArea() * blocks(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
+            leftCount += counts[b];
+            if (leftCount == count) break;
+            const float cost = left.nonEmptyHalfArea() * blocks(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
             if (cost < best.cost) best = {axis, b, cost};
         }
     }
