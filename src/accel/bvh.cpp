@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "util/parallel_chunks.h"
+
 namespace lightpath {
 namespace {
 
@@ -498,20 +500,24 @@ private:
     std::size_t outstanding_ = 0;
 };
 
+// A collapsed subtree: its wide nodes in depth-first order and its leaves' slots, node and block
+// indices counted from its own start.
+struct WideTree {
+    std::vector<BvhNode> nodes;
+    std::vector<std::uint32_t> ids;
+};
+
 // Turns the binary tree into 8-wide nodes, depth first: a wide node takes its binary node's
 // children and, while it has room, opens the interior child of largest surface area (the one a
 // ray most likely enters) in place. Leaves get one block of slots each.
 class Collapser {
 public:
-    Collapser(const BinaryBuilder& binary, std::vector<BvhNode>& nodes, std::vector<std::uint32_t>& ids)
-        : binary_(binary), nodes_(nodes), ids_(ids) {}
+    explicit Collapser(const BinaryBuilder& binary) : binary_(binary) {}
 
-    std::uint32_t collapse(std::uint32_t index) {
-        const BinaryNode& b = binary_.node(index);
-        if (b.count > 0) return leaf(b);
-        const auto wide = static_cast<std::uint32_t>(nodes_.size());
-        nodes_.emplace_back();
-        std::array<std::uint32_t, kBvhWidth> open{b.first, b.first + 1};
+    // The binary nodes that become the lanes of the wide node for interior node `b`; their count.
+    int lanes(const BinaryNode& b, std::array<std::uint32_t, kBvhWidth>& open) const {
+        open[0] = b.first;
+        open[1] = b.first + 1;
         // Each open child's half area, computed once; -1 for a leaf, which is never opened.
         std::array<float, kBvhWidth> area{interiorArea(b.first), interiorArea(b.first + 1)};
         int n = 2;
@@ -536,21 +542,34 @@ public:
             area[static_cast<std::size_t>(widest) + 1] = interiorArea(first + 1);
             ++n;
         }
+        return n;
+    }
+
+    // Appends the subtree under binary node `index` to `out`; returns its child reference.
+    std::uint32_t collapse(std::uint32_t index, WideTree& out) const {
+        const BinaryNode& b = binary_.node(index);
+        if (b.count > 0) return leaf(b, out.ids);
+        const auto wide = static_cast<std::uint32_t>(out.nodes.size());
+        out.nodes.emplace_back();
+        std::array<std::uint32_t, kBvhWidth> open;
+        const int n = lanes(b, open);
         for (int lane = 0; lane < kBvhWidth; ++lane) {
-            Bounds box;  // empty for an unused lane: lo = +inf, hi = -inf
-            std::uint32_t child = BvhChild::kEmpty;
-            if (lane < n) {
-                box = binary_.node(open[static_cast<std::size_t>(lane)]).bounds();
-                child = collapse(open[static_cast<std::size_t>(lane)]);
-            }
-            BvhNode& node = nodes_[wide];  // collapse() may have moved the nodes
-            for (int a = 0; a < 3; ++a) {
-                node.planes[0][a][lane] = box.lo[a];
-                node.planes[1][a][lane] = box.hi[a];
-            }
-            node.children[lane] = child;
+            const bool used = lane < n;
+            const std::uint32_t child = used ? collapse(open[static_cast<std::size_t>(lane)], out) : BvhChild::kEmpty;
+            // collapse() may have moved the nodes
+            setLane(out.nodes[wide], lane, used ? &binary_.node(open[static_cast<std::size_t>(lane)]) : nullptr, child);
         }
         return wide;
+    }
+
+    // Lane `lane` of `node`: the box of binary node `b` (empty without one: lo = +inf, hi = -inf).
+    static void setLane(BvhNode& node, int lane, const BinaryNode* b, std::uint32_t child) {
+        const Bounds box = b != nullptr ? b->bounds() : Bounds{};
+        for (int a = 0; a < 3; ++a) {
+            node.planes[0][a][lane] = box.lo[a];
+            node.planes[1][a][lane] = box.hi[a];
+        }
+        node.children[lane] = child;
     }
 
 private:
@@ -559,17 +578,22 @@ private:
         return c.count == 0 ? c.bounds().halfArea() : -1.0f;
     }
 
-    std::uint32_t leaf(const BinaryNode& b) {
-        const auto block = static_cast<std::uint32_t>(ids_.size() / kBvhLeafSize);
+    std::uint32_t leaf(const BinaryNode& b, std::vector<std::uint32_t>& ids) const {
+        const auto block = static_cast<std::uint32_t>(ids.size() / kBvhLeafSize);
         for (std::uint32_t i = 0; i < kBvhLeafSize; ++i)
-            ids_.push_back(i < b.count ? binary_.items()[b.first + i].id() : kBvhEmptySlot);
+            ids.push_back(i < b.count ? binary_.items()[b.first + i].id() : kBvhEmptySlot);
         return BvhChild::leaf(block, b.count);
     }
 
     const BinaryBuilder& binary_;
-    std::vector<BvhNode>& nodes_;
-    std::vector<std::uint32_t>& ids_;
 };
+
+// A subtree's child reference once its nodes start at `nodeOffset` and its blocks at
+// `blockOffset` (a leaf's block index is in its low bits).
+std::uint32_t relocated(std::uint32_t child, std::uint32_t nodeOffset, std::uint32_t blockOffset) {
+    if (child == BvhChild::kEmpty) return child;
+    return child + (BvhChild::isLeaf(child) ? blockOffset : nodeOffset);
+}
 
 }  // namespace
 
@@ -581,24 +605,59 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) : path_(simd::a
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     // Below the grain no subtree is shared: starting threads would cost more than the build.
     if (primitives.size() < 2 * kParallelGrain) threads = 1;
-    if (!primitives.empty()) {
-        const std::size_t count = primitives.size();
+    const std::size_t count = primitives.size();
+    if (count > 0) {
         BinaryBuilder binary(count);
         binary.build(std::move(primitives), threads);
-        // A wide node replaces at least one binary interior node; a leaf takes at most
-        // kBvhLeafSize slots per primitive, usually far fewer.
-        nodes_.reserve(count / 2 + 1);
-        ids_.reserve(count * 2);
-        Collapser collapser(binary, nodes_, ids_);
-        root_ = collapser.collapse(0);
+        const Collapser collapser(binary);
+        const BinaryNode& top = binary.node(0);
+        if (top.count > 0) {
+            WideTree tree;
+            root_ = collapser.collapse(0, tree);
+            ids_ = std::move(tree.ids);
+        } else {
+            // The root's lanes' subtrees collapse independently, on the build's threads, and are
+            // laid out after the root in lane order: exactly the depth-first order of one pass.
+            std::array<std::uint32_t, kBvhWidth> open;
+            const int n = collapser.lanes(top, open);
+            std::array<WideTree, kBvhWidth> parts;
+            std::array<std::uint32_t, kBvhWidth> children;
+            parallelChunks(static_cast<std::size_t>(n), 1, threads, [&](std::size_t lane, std::size_t) {
+                children[lane] = collapser.collapse(open[lane], parts[lane]);
+            });
+            std::array<std::uint32_t, kBvhWidth> nodeOffset, blockOffset;
+            std::size_t nodeCount = 1, slotCount = 0;
+            for (int lane = 0; lane < n; ++lane) {
+                nodeOffset[static_cast<std::size_t>(lane)] = static_cast<std::uint32_t>(nodeCount);
+                blockOffset[static_cast<std::size_t>(lane)] = static_cast<std::uint32_t>(slotCount / kBvhLeafSize);
+                nodeCount += parts[static_cast<std::size_t>(lane)].nodes.size();
+                slotCount += parts[static_cast<std::size_t>(lane)].ids.size();
+            }
+            nodes_.resize(nodeCount);
+            ids_.resize(slotCount);
+            parallelChunks(static_cast<std::size_t>(n), 1, threads, [&](std::size_t lane, std::size_t) {
+                const WideTree& part = parts[lane];
+                BvhNode* to = nodes_.data() + nodeOffset[lane];
+                for (const BvhNode& node : part.nodes) {
+                    *to = node;
+                    for (std::uint32_t& child : to->children) child = relocated(child, nodeOffset[lane], blockOffset[lane]);
+                    ++to;
+                }
+                std::copy(part.ids.begin(), part.ids.end(), ids_.begin() + blockOffset[lane] * kBvhLeafSize);
+            });
+            for (int lane = 0; lane < kBvhWidth; ++lane) {
+                const auto l = static_cast<std::size_t>(lane);
+                Collapser::setLane(nodes_[0], lane, lane < n ? &binary.node(open[l]) : nullptr,
+                                   lane < n ? relocated(children[l], nodeOffset[l], blockOffset[l]) : BvhChild::kEmpty);
+            }
+            root_ = 0;
+        }
     }
     stats_.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     stats_.nodes = nodes_.size();
     stats_.nodeBytes = nodes_.size() * sizeof(BvhNode);
     stats_.leaves = ids_.size() / kBvhLeafSize;
-    stats_.primitives = static_cast<std::size_t>(std::count_if(ids_.begin(), ids_.end(), [](std::uint32_t id) {
-        return id != kBvhEmptySlot;
-    }));
+    stats_.primitives = count;  // each in exactly one leaf
 }
 
 }  // namespace lightpath
