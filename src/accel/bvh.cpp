@@ -33,9 +33,11 @@ constexpr int kSahDepthLimit = 64;
 // A subtree at least this large goes to the shared queue, where an idle thread may take it;
 // smaller ones are built depth-first by the thread that split their parent.
 constexpr std::size_t kParallelGrain = 4096;
-// A range at least this large is binned and partitioned in chunks of kChunkSize items that every
-// idle thread helps with (Embree's parallel binning), so two threads share the top splits, which
-// otherwise run on one. The chunks depend on the range alone, never on the thread count.
+// A range at least this large is binned in chunks of kChunkSize items that every idle thread
+// helps with (Embree's parallel binning), so two threads share the top splits, which otherwise run
+// on one; bins merge exactly (min, max, sums), so the bins are those of one pass. The partition
+// that follows stays in place on one thread: it costs a third of the binning, and an
+// out-of-place parallel one would touch a second array, whose first-touch page faults cost more.
 constexpr std::size_t kChunkedGrain = 32768;
 constexpr std::size_t kChunkSize = 4096;
 
@@ -52,7 +54,10 @@ struct alignas(16) Item {
     std::uint32_t id() const { return std::bit_cast<std::uint32_t>(lo[3]); }
     Float4 low() const { return Float4::load(lo); }
     Float4 high() const { return Float4::load(hi); }
-    Float4 doubledCentroid() const { return simd::xyzOnly(low()) + high(); }
+    // The low corner without the id: as a float, an id is a denormal (or a NaN), and arithmetic
+    // on denormals takes microcode assists on many processors.
+    Float4 corner() const { return simd::xyzOnly(low()); }
+    Float4 doubledCentroid() const { return corner() + high(); }
 };
 
 // A box in two registers (lane 3 is not part of it); empty: lo = +inf, hi = -inf.
@@ -114,9 +119,9 @@ struct Binning {
     }
     void add(const Item* items, std::size_t count, Bins& to) const {
         for (std::size_t i = 0; i < count; ++i) {
-            const Float4 lo = items[i].low(), hi = items[i].high();
+            const Float4 lo = items[i].corner(), hi = items[i].high();
             alignas(16) std::int32_t bin[4];
-            bins(simd::xyzOnly(lo) + hi, bin);
+            bins(lo + hi, bin);
             for (int a = 0; a < 3; ++a) {
                 to.boxes[a][bin[a]].grow(lo, hi);
                 ++to.counts[a][bin[a]];
@@ -204,8 +209,7 @@ struct ChunkLoop {
     }
 };
 
-// Builds the binary tree. Every split depends only on the items of its own range (chunked ranges
-// on their fixed chunks), and threads work on disjoint ranges, so the tree's shape and the items'
+// Builds the binary tree. Every split depends only on the items of its own range, and threads work on disjoint ranges, so the tree's shape and the items'
 // order are the same for any number of threads; only the binary nodes' indices vary, and
 // collapse() reads the tree in child order.
 class BinaryBuilder {
@@ -213,9 +217,7 @@ public:
     explicit BinaryBuilder(std::size_t count)
         : count_(count), items_(std::make_unique_for_overwrite<Item[]>(count)),
           // A binary tree over N primitives has at most 2N - 1 nodes.
-          nodes_(std::make_unique_for_overwrite<BinaryNode[]>(2 * count - 1)) {
-        if (count >= kChunkedGrain) scratch_ = std::make_unique_for_overwrite<Item[]>(count);
-    }
+          nodes_(std::make_unique_for_overwrite<BinaryNode[]>(2 * count - 1)) {}
 
     // Consumes the primitives: they are freed once converted, before the build's peak.
     void build(std::vector<BvhPrimitive>&& primitives, unsigned threads) {
@@ -258,7 +260,7 @@ private:
                 Item& item = items_[i];
                 item = {{p.bounds.lo.x, p.bounds.lo.y, p.bounds.lo.z, std::bit_cast<float>(p.id)},
                         {p.bounds.hi.x, p.bounds.hi.y, p.bounds.hi.z, 0.0f}};
-                box.grow(item.low(), item.high());
+                box.grow(item.corner(), item.high());
                 centroids.grow(item.doubledCentroid());
             }
             boxes[chunk] = {box, centroids};
@@ -389,8 +391,7 @@ private:
             const Split best = findSplit(bins, count, binning);
             if (best.axis >= 0) {
                 for (int b = 0; b < kBins; ++b) children[b <= best.bin ? 0 : 1].box.grow(bins.boxes[best.axis][b]);
-                const std::size_t middle =
-                    chunked ? partitionChunked(t, binning, best, chunkBins, children) : partition(t, binning, best, children);
+                const std::size_t middle = partition(t, binning, best, children);
                 children[0].end = children[1].begin = middle;
                 return true;  // both sides hold items: the sweep only takes splits that leave none empty
             }
@@ -405,7 +406,7 @@ private:
         children[0].end = children[1].begin = middle;
         for (Task& child : children) {
             for (std::size_t i = child.begin; i < child.end; ++i) {
-                child.box.grow(items_[i].low(), items_[i].high());
+                child.box.grow(items_[i].corner(), items_[i].high());
                 child.centroids.grow(items_[i].doubledCentroid());
             }
         }
@@ -448,47 +449,8 @@ private:
         }
     }
 
-    // Out of place and stable, chunk by chunk: each chunk's left count is known from its bins,
-    // so prefix sums give every chunk where its items go; the scratch array is copied back.
-    std::size_t partitionChunked(const Task& t, const Binning& binning, const Split& split,
-                                 const std::vector<Bins>& chunkBins, Task (&children)[2]) {
-        const std::size_t chunks = chunkBins.size();
-        std::vector<std::size_t> leftAt(chunks), rightAt(chunks);
-        std::size_t lefts = 0;
-        for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-            leftAt[chunk] = t.begin + lefts;
-            for (int b = 0; b <= split.bin; ++b) lefts += chunkBins[chunk].counts[split.axis][b];
-        }
-        const std::size_t middle = t.begin + lefts;
-        for (std::size_t chunk = 0; chunk < chunks; ++chunk) {
-            const std::size_t begin = t.begin + chunk * kChunkSize;
-            rightAt[chunk] = middle + (begin - t.begin) - (leftAt[chunk] - t.begin);
-        }
-        std::vector<std::array<Box, 2>> centroids(chunks);
-        forEachChunk(chunks, [&](std::size_t chunk) {
-            const std::size_t begin = t.begin + chunk * kChunkSize, end = std::min(t.end, begin + kChunkSize);
-            std::size_t left = leftAt[chunk], right = rightAt[chunk];
-            for (std::size_t i = begin; i < end; ++i) {
-                const Float4 c = items_[i].doubledCentroid();
-                const int side = split.left(binning, c) ? 0 : 1;
-                centroids[chunk][static_cast<std::size_t>(side)].grow(c);
-                scratch_[side == 0 ? left++ : right++] = items_[i];
-            }
-        });
-        forEachChunk(chunks, [&](std::size_t chunk) {
-            const std::size_t begin = t.begin + chunk * kChunkSize, end = std::min(t.end, begin + kChunkSize);
-            std::copy(&scratch_[begin], &scratch_[begin] + (end - begin), &items_[begin]);
-        });
-        for (const auto& [left, right] : centroids) {
-            children[0].centroids.grow(left);
-            children[1].centroids.grow(right);
-        }
-        return middle;
-    }
-
     std::size_t count_;
     std::unique_ptr<Item[]> items_;
-    std::unique_ptr<Item[]> scratch_;  // the chunked partition's target, for ranges of kChunkedGrain+
     std::unique_ptr<BinaryNode[]> nodes_;
     unsigned threads_ = 1;
     std::atomic<std::uint32_t> nextNode_{1};
@@ -500,11 +462,12 @@ private:
     std::size_t outstanding_ = 0;
 };
 
-// A collapsed subtree: its wide nodes in depth-first order and its leaves' slots, node and block
-// indices counted from its own start.
-struct WideTree {
-    std::vector<BvhNode> nodes;
-    std::vector<std::uint32_t> ids;
+// Where the collapse writes next: the final arrays, and the next free node and leaf block.
+struct WideCursor {
+    BvhNode* nodes;
+    std::uint32_t* ids;
+    std::uint32_t node;
+    std::uint32_t block;
 };
 
 // Turns the binary tree into 8-wide nodes, depth first: a wide node takes its binary node's
@@ -545,19 +508,38 @@ public:
         return n;
     }
 
-    // Appends the subtree under binary node `index` to `out`; returns its child reference.
-    std::uint32_t collapse(std::uint32_t index, WideTree& out) const {
+    // How many wide nodes and leaf blocks the subtree under binary node `index` becomes.
+    std::array<std::uint32_t, 2> size(std::uint32_t index) const {
         const BinaryNode& b = binary_.node(index);
-        if (b.count > 0) return leaf(b, out.ids);
-        const auto wide = static_cast<std::uint32_t>(out.nodes.size());
-        out.nodes.emplace_back();
+        if (b.count > 0) return {0, 1};
+        std::array<std::uint32_t, kBvhWidth> open;
+        const int n = lanes(b, open);
+        std::array<std::uint32_t, 2> total{1, 0};
+        for (int lane = 0; lane < n; ++lane) {
+            const auto [nodes, blocks] = size(open[static_cast<std::size_t>(lane)]);
+            total[0] += nodes;
+            total[1] += blocks;
+        }
+        return total;
+    }
+
+    // Writes the subtree under binary node `index` at the cursor, depth first; returns its child
+    // reference.
+    std::uint32_t collapse(std::uint32_t index, WideCursor& at) const {
+        const BinaryNode& b = binary_.node(index);
+        if (b.count > 0) {
+            const std::uint32_t block = at.block++;
+            for (std::uint32_t i = 0; i < kBvhLeafSize; ++i)
+                at.ids[kBvhLeafSize * block + i] = i < b.count ? binary_.items()[b.first + i].id() : kBvhEmptySlot;
+            return BvhChild::leaf(block, b.count);
+        }
+        const std::uint32_t wide = at.node++;
         std::array<std::uint32_t, kBvhWidth> open;
         const int n = lanes(b, open);
         for (int lane = 0; lane < kBvhWidth; ++lane) {
             const bool used = lane < n;
-            const std::uint32_t child = used ? collapse(open[static_cast<std::size_t>(lane)], out) : BvhChild::kEmpty;
-            // collapse() may have moved the nodes
-            setLane(out.nodes[wide], lane, used ? &binary_.node(open[static_cast<std::size_t>(lane)]) : nullptr, child);
+            const std::uint32_t child = used ? collapse(open[static_cast<std::size_t>(lane)], at) : BvhChild::kEmpty;
+            setLane(at.nodes[wide], lane, used ? &binary_.node(open[static_cast<std::size_t>(lane)]) : nullptr, child);
         }
         return wide;
     }
@@ -578,22 +560,8 @@ private:
         return c.count == 0 ? c.bounds().halfArea() : -1.0f;
     }
 
-    std::uint32_t leaf(const BinaryNode& b, std::vector<std::uint32_t>& ids) const {
-        const auto block = static_cast<std::uint32_t>(ids.size() / kBvhLeafSize);
-        for (std::uint32_t i = 0; i < kBvhLeafSize; ++i)
-            ids.push_back(i < b.count ? binary_.items()[b.first + i].id() : kBvhEmptySlot);
-        return BvhChild::leaf(block, b.count);
-    }
-
     const BinaryBuilder& binary_;
 };
-
-// A subtree's child reference once its nodes start at `nodeOffset` and its blocks at
-// `blockOffset` (a leaf's block index is in its low bits).
-std::uint32_t relocated(std::uint32_t child, std::uint32_t nodeOffset, std::uint32_t blockOffset) {
-    if (child == BvhChild::kEmpty) return child;
-    return child + (BvhChild::isLeaf(child) ? blockOffset : nodeOffset);
-}
 
 }  // namespace
 
@@ -612,44 +580,34 @@ Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) : path_(simd::a
         const Collapser collapser(binary);
         const BinaryNode& top = binary.node(0);
         if (top.count > 0) {
-            WideTree tree;
-            root_ = collapser.collapse(0, tree);
-            ids_ = std::move(tree.ids);
+            ids_.resize(kBvhLeafSize);
+            WideCursor at{nullptr, ids_.data(), 0, 0};
+            root_ = collapser.collapse(0, at);
         } else {
-            // The root's lanes' subtrees collapse independently, on the build's threads, and are
-            // laid out after the root in lane order: exactly the depth-first order of one pass.
+            // The root's lanes' subtrees are sized, then written where one depth-first pass would
+            // put them (after the root, in lane order), each on whichever build thread is free.
             std::array<std::uint32_t, kBvhWidth> open;
-            const int n = collapser.lanes(top, open);
-            std::array<WideTree, kBvhWidth> parts;
-            std::array<std::uint32_t, kBvhWidth> children;
-            parallelChunks(static_cast<std::size_t>(n), 1, threads, [&](std::size_t lane, std::size_t) {
-                children[lane] = collapser.collapse(open[lane], parts[lane]);
-            });
-            std::array<std::uint32_t, kBvhWidth> nodeOffset, blockOffset;
-            std::size_t nodeCount = 1, slotCount = 0;
-            for (int lane = 0; lane < n; ++lane) {
-                nodeOffset[static_cast<std::size_t>(lane)] = static_cast<std::uint32_t>(nodeCount);
-                blockOffset[static_cast<std::size_t>(lane)] = static_cast<std::uint32_t>(slotCount / kBvhLeafSize);
-                nodeCount += parts[static_cast<std::size_t>(lane)].nodes.size();
-                slotCount += parts[static_cast<std::size_t>(lane)].ids.size();
+            const auto n = static_cast<std::size_t>(collapser.lanes(top, open));
+            std::array<std::array<std::uint32_t, 2>, kBvhWidth> sizes;
+            parallelChunks(n, 1, threads, [&](std::size_t lane, std::size_t) { sizes[lane] = collapser.size(open[lane]); });
+            std::array<WideCursor, kBvhWidth> cursors;
+            std::uint32_t nodeCount = 1, blockCount = 0;
+            for (std::size_t lane = 0; lane < n; ++lane) {
+                cursors[lane] = {nullptr, nullptr, nodeCount, blockCount};
+                nodeCount += sizes[lane][0];
+                blockCount += sizes[lane][1];
             }
             nodes_.resize(nodeCount);
-            ids_.resize(slotCount);
-            parallelChunks(static_cast<std::size_t>(n), 1, threads, [&](std::size_t lane, std::size_t) {
-                const WideTree& part = parts[lane];
-                BvhNode* to = nodes_.data() + nodeOffset[lane];
-                for (const BvhNode& node : part.nodes) {
-                    *to = node;
-                    for (std::uint32_t& child : to->children) child = relocated(child, nodeOffset[lane], blockOffset[lane]);
-                    ++to;
-                }
-                std::copy(part.ids.begin(), part.ids.end(), ids_.begin() + blockOffset[lane] * kBvhLeafSize);
+            ids_.resize(std::size_t{blockCount} * kBvhLeafSize);
+            std::array<std::uint32_t, kBvhWidth> children;
+            parallelChunks(n, 1, threads, [&](std::size_t lane, std::size_t) {
+                cursors[lane].nodes = nodes_.data();
+                cursors[lane].ids = ids_.data();
+                children[lane] = collapser.collapse(open[lane], cursors[lane]);
             });
-            for (int lane = 0; lane < kBvhWidth; ++lane) {
-                const auto l = static_cast<std::size_t>(lane);
-                Collapser::setLane(nodes_[0], lane, lane < n ? &binary.node(open[l]) : nullptr,
-                                   lane < n ? relocated(children[l], nodeOffset[l], blockOffset[l]) : BvhChild::kEmpty);
-            }
+            for (std::size_t lane = 0; lane < kBvhWidth; ++lane)
+                Collapser::setLane(nodes_[0], static_cast<int>(lane), lane < n ? &binary.node(open[lane]) : nullptr,
+                                   lane < n ? children[lane] : BvhChild::kEmpty);
             root_ = 0;
         }
     }
