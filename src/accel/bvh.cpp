@@ -219,8 +219,7 @@ public:
           // A binary tree over N primitives has at most 2N - 1 nodes.
           nodes_(std::make_unique_for_overwrite<BinaryNode[]>(2 * count - 1)) {}
 
-    // Consumes the primitives: they are freed once converted, before the build's peak.
-    void build(std::vector<BvhPrimitive>&& primitives, unsigned threads) {
+    void build(const Bvh::PrimitiveSource& primitives, unsigned threads) {
         threads_ = threads;
         nextNode_ = 1;
         outstanding_ = 1;  // the root, pushed once the items exist; until then workers only help
@@ -228,7 +227,6 @@ public:
         for (unsigned t = 1; t < threads; ++t) workers.emplace_back([this] { work(); });
         Task root{0, count_, 0, 0, {}, {}};
         convert(primitives, root);
-        primitives = {};
         {
             const std::lock_guard lock(mutex_);
             queue_.push_back(root);
@@ -249,19 +247,25 @@ private:
     };
 
     // Items from the primitives, and the root's boxes, in parallel chunks.
-    void convert(const std::vector<BvhPrimitive>& primitives, Task& root) {
+    void convert(const Bvh::PrimitiveSource& primitives, Task& root) {
         const std::size_t chunks = chunksOf(count_);
         std::vector<std::array<Box, 2>> boxes(chunks);
         forEachChunk(chunks, [&](std::size_t chunk) {
             const std::size_t begin = chunk * kChunkSize, end = std::min(count_, begin + kChunkSize);
             Box box, centroids;
-            for (std::size_t i = begin; i < end; ++i) {
-                const BvhPrimitive& p = primitives[i];
-                Item& item = items_[i];
-                item = {{p.bounds.lo.x, p.bounds.lo.y, p.bounds.lo.z, std::bit_cast<float>(p.id)},
-                        {p.bounds.hi.x, p.bounds.hi.y, p.bounds.hi.z, 0.0f}};
-                box.grow(item.corner(), item.high());
-                centroids.grow(item.doubledCentroid());
+            constexpr std::size_t kBatch = 256;  // asked of the source at once, kept on the stack
+            std::array<BvhPrimitive, kBatch> batch;
+            for (std::size_t from = begin; from < end; from += kBatch) {
+                const std::size_t to = std::min(end, from + kBatch);
+                primitives(from, to, batch.data());
+                for (std::size_t i = from; i < to; ++i) {
+                    const BvhPrimitive& p = batch[i - from];
+                    Item& item = items_[i];
+                    item = {{p.bounds.lo.x, p.bounds.lo.y, p.bounds.lo.z, std::bit_cast<float>(p.id)},
+                            {p.bounds.hi.x, p.bounds.hi.y, p.bounds.hi.z, 0.0f}};
+                    box.grow(item.corner(), item.high());
+                    centroids.grow(item.doubledCentroid());
+                }
             }
             boxes[chunk] = {box, centroids};
         });
@@ -565,18 +569,26 @@ private:
 
 }  // namespace
 
-Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads) : path_(simd::activePath()) {
+Bvh::Bvh(std::vector<BvhPrimitive> primitives, unsigned threads)
+    : Bvh(
+          primitives.size(),
+          [&](std::size_t begin, std::size_t end, BvhPrimitive* out) {
+              std::copy(primitives.begin() + static_cast<std::ptrdiff_t>(begin),
+                        primitives.begin() + static_cast<std::ptrdiff_t>(end), out);
+          },
+          threads) {}
+
+Bvh::Bvh(std::size_t count, const PrimitiveSource& source, unsigned threads) : path_(simd::activePath()) {
     const auto started = std::chrono::steady_clock::now();
     // Each leaf takes a block of kBvhLeafSize slots, and a block index has 29 bits.
-    if (primitives.size() > (std::size_t{BvhChild::kBlockMask} + 1) / 2)
+    if (count > (std::size_t{BvhChild::kBlockMask} + 1) / 2)
         throw std::length_error("too many primitives for a BVH with 29-bit block indices");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     // Below the grain no subtree is shared: starting threads would cost more than the build.
-    if (primitives.size() < 2 * kParallelGrain) threads = 1;
-    const std::size_t count = primitives.size();
+    if (count < 2 * kParallelGrain) threads = 1;
     if (count > 0) {
         BinaryBuilder binary(count);
-        binary.build(std::move(primitives), threads);
+        binary.build(source, threads);
         const Collapser collapser(binary);
         const BinaryNode& top = binary.node(0);
         if (top.count > 0) {

@@ -61,19 +61,24 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
     if (accelerator_ == Accelerator::Embree && !embreeAvailable())
         throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
     const auto started = std::chrono::steady_clock::now();
-    // The boxes and, after the build, the leaves' triangle blocks are filled on the build's
-    // threads too: on one, they would bound how far the build scales.
+    // The boxes are computed by the build's threads as it reads them (no list of them all), and
+    // the leaves' triangle blocks filled on as many: on one thread they would cap its scaling.
+    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+    const std::size_t primitiveCount = spheres_.size() + (accelerator_ == Accelerator::Bvh ? triangles_.size() : 0);
+    bvh_ = Bvh(
+        primitiveCount,
+        [&](std::size_t begin, std::size_t end, BvhPrimitive* out) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const auto index = static_cast<std::uint32_t>(i);
+                *out++ = index < spheres_.size()
+                             ? BvhPrimitive{sphereBounds(spheres_[index]), index}
+                             : BvhPrimitive{triangleBounds(triangles_[index - spheres_.size()]),
+                                            firstTriangle + index - static_cast<std::uint32_t>(spheres_.size())};
+            }
+        },
+        buildThreads);
     const unsigned threads = buildThreads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : buildThreads;
     constexpr std::size_t kGrain = 16384;
-    std::vector<BvhPrimitive> primitives(spheres_.size() +
-                                         (accelerator_ == Accelerator::Bvh ? triangles_.size() : 0));
-    for (std::uint32_t i = 0; i < spheres_.size(); ++i) primitives[i] = {sphereBounds(spheres_[i]), i};
-    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
-    parallelChunks(primitives.size() - spheres_.size(), kGrain, threads, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-            primitives[spheres_.size() + i] = {triangleBounds(triangles_[i]), firstTriangle + static_cast<std::uint32_t>(i)};
-    });
-    bvh_ = Bvh(std::move(primitives), buildThreads);
     if (accelerator_ == Accelerator::Bvh) {
         const auto ids = bvh_.slotIds();
         leafTriangles_.resize(ids.size() / kBvhLeafSize);
