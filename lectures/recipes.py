@@ -373,13 +373,39 @@ def caustics(fig):
     # a small bright spot: its image mean is small, so the bar is low (but far above zero)
     mean = checks.check_nonzero(exrs["bdpt"], "caustic", "bdpt's caustic", min_mean=1e-4)
     checks.check_zero(exrs["path"], "caustic", "the path tracer's caustic under a point light")
+    strategies = check_caustic_strategy(run, fig.scene(0), exrs["bdpt"], run.res(640, 480))
     panels = [Panel(exrs["path"], "path tracing", "caustic: E(D|G)S+<L.> = 0"),
               Panel(exrs["bdpt"], "bidirectional (bdpt)", "the same light transport"),
               Panel(exrs["bdpt"], "bdpt: the caustic, x4", "E(D|G)S+<L.>", layer="caustic",
                     exposure=4.0)]
     fig.compose(panels, cols=3)
     return [f"bdpt's caustic: mean luminance {mean:.3g}; the path tracer's: exactly 0",
-            "both: classes sum to the beauty"]
+            "both: classes sum to the beauty",
+            f"the caustic's brightest pixel: {strategies}"]
+
+
+def check_caustic_strategy(run, scene, exr, resolution):
+    """The README's reading of the caustic: through a specular vertex no join can pass, so only
+    light tracing (t = 1, s = every other vertex) makes it. Explain the caustic's brightest pixel
+    under bdpt and fail unless every caustic contribution there came from that one strategy."""
+    caustic = checks.luminance(checks.layer(exr, "caustic"))
+    y, x = np.unravel_index(int(np.argmax(caustic)), caustic.shape)
+    doc = explain(run, scene, x, y, "--integrator", "bdpt", "--spp", 8, "--resolution", resolution,
+                  "--lpe", CAUSTIC, "--aovs", "none", "--quiet")
+    found = {}
+    for path in doc["paths"]:
+        if "caustic" not in path["aovs"]:
+            continue
+        for c in path["contributions"]:
+            st = c["strategy"]
+            vertices = len(path["events"])
+            if st is None or st["t"] != 1 or not st["splatted"] or st["s"] != vertices - 1:
+                raise FigureError(f"caustic at pixel {x},{y}: {path['path']} came from strategy {st}, "
+                                  f"expected s={vertices - 1} t=1 (light tracing)")
+            found[path["compact"]] = found.get(path["compact"], 0) + 1
+    if not found:
+        raise FigureError(f"caustic at pixel {x},{y}: explain found no caustic contribution")
+    return ", ".join(f"{p} x{n} all from s={len(p) - 1} t=1" for p, n in found.items())
 
 
 def fill_caption(fig, **values):

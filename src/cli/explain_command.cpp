@@ -24,6 +24,17 @@ struct ExplainCommand {
     bool json = false;  // the documented JSON (docs/lpe.md) instead of text
 };
 
+// Which of bdpt's strategies made a contribution (Veach 1997 ch. 10): s vertices from the light, t
+// from the eye; t = 1 is light tracing, splatted onto the pixel it lands on.
+struct BdptStrategy {
+    int s = 0, t = 0;
+    bool splatted = false;
+
+    std::string text() const {
+        return "s=" + std::to_string(s) + " t=" + std::to_string(t) + (splatted ? " (light tracing, splatted here)" : "");
+    }
+};
+
 // Identical paths (same events, labels and things touched) are one row: their contributions'
 // count and sum, each contribution's value and the factors it is the product of.
 struct PathGroup {
@@ -37,7 +48,9 @@ struct PathGroup {
     // nowhere.
     std::vector<std::vector<std::optional<Vec3>>> positions;
     Rgb sum{0.0f};
-    std::vector<std::string> strategies;  // bdpt: the strategies (s, t) that made it, in order found
+    // bdpt: per contribution, the strategy (s light vertices, t eye vertices) that made it; none
+    // for the other integrators.
+    std::vector<std::optional<BdptStrategy>> strategies;
 };
 
 // Terms that added nothing, grouped by path and reason.
@@ -91,12 +104,8 @@ std::vector<PathGroup> groupPaths(const Scene& scene, const std::vector<LoggedCo
             positions.push_back(c.path[e].subject == Subject::Ambient ? std::nullopt
                                                                       : std::optional<Vec3>(c.path[e].position));
         g.sum += c.value;
-        if (c.lightVertices >= 0) {
-            const std::string strategy = "s=" + std::to_string(c.lightVertices) + " t=" + std::to_string(c.eyeVertices) +
-                                         (c.splatted ? " (light tracing, splatted here)" : "");
-            if (std::find(g.strategies.begin(), g.strategies.end(), strategy) == g.strategies.end())
-                g.strategies.push_back(strategy);
-        }
+        g.strategies.push_back(c.lightVertices < 0 ? std::nullopt
+                                                   : std::optional<BdptStrategy>({c.lightVertices, c.eyeVertices, c.splatted}));
     }
     const auto luminance = [](const Rgb& v) { return 0.2126 * v.r + 0.7152 * v.g + 0.0722 * v.b; };
     std::stable_sort(groups.begin(), groups.end(),
@@ -182,7 +191,11 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
             std::printf("     factors: %s\n", joined(words, " x ").c_str());
         }
         if (g.factors.size() > kFactorRows) std::printf("     (factors of the first %zu of %zu samples shown)\n", kFactorRows, g.factors.size());
-        if (!g.strategies.empty()) std::printf("     strategy: %s\n", joined(g.strategies, ", ").c_str());
+        std::vector<std::string> strategies;  // the distinct ones, in the order found
+        for (const auto& strategy : g.strategies)
+            if (strategy && std::find(strategies.begin(), strategies.end(), strategy->text()) == strategies.end())
+                strategies.push_back(strategy->text());
+        if (!strategies.empty()) std::printf("     strategy: %s\n", joined(strategies, ", ").c_str());
     }
     if (zero > 0 && !command.all)
         std::printf("\n(%zu path%s whose contributions sum to zero hidden; --all shows them)\n", zero, zero == 1 ? "" : "s");
@@ -222,6 +235,12 @@ std::string jsonGeometry(const PinholeCamera& camera, const std::vector<std::opt
         json += (v ? ", " : "") + std::string(ends ? buffer : "null");
     }
     return json + "]";
+}
+
+std::string jsonStrategy(const std::optional<BdptStrategy>& strategy) {
+    if (!strategy) return "null";
+    return "{\"s\": " + std::to_string(strategy->s) + ", \"t\": " + std::to_string(strategy->t) +
+           ", \"splatted\": " + (strategy->splatted ? "true" : "false") + "}";
 }
 
 void printJson(const ExplainCommand& command, const Scene& scene, const RenderOptions& options, const AovSet& aovs,
@@ -264,7 +283,8 @@ void printJson(const ExplainCommand& command, const Scene& scene, const RenderOp
         for (std::size_t v = 0; v < g.values.size(); ++v) {
             json << (v ? ", " : "") << "{\"rgb\": " << jsonRgb(g.values[v]) << ", \"factors\": {";
             for (std::size_t f = 0; f < g.factors[v].size(); ++f) json << (f ? ", " : "") << jsonFactor(g.factors[v][f]);
-            json << "}, " << jsonGeometry(camera, g.positions[v]) << "}";
+            json << "}, \"strategy\": " << jsonStrategy(g.strategies[v]) << ", " << jsonGeometry(camera, g.positions[v])
+                 << "}";
         }
         json << "]}";
         first = false;
