@@ -214,13 +214,13 @@ struct ChunkLoop {
 // collapse() reads the tree in child order.
 class BinaryBuilder {
 public:
-    explicit BinaryBuilder(std::size_t count)
-        : count_(count), items_(std::make_unique_for_overwrite<Item[]>(count)),
-          // A binary tree over N primitives has at most 2N - 1 nodes.
-          nodes_(std::make_unique_for_overwrite<BinaryNode[]>(2 * count - 1)) {}
+    explicit BinaryBuilder(std::size_t count) : count_(count), items_(std::make_unique_for_overwrite<Item[]>(count)) {}
 
     void build(const Bvh::PrimitiveSource& primitives, unsigned threads) {
         threads_ = threads;
+        // A binary tree over N primitives has at most 2N - 1 nodes; each thread may leave part of
+        // its last block unused. Pages never written are never resident.
+        nodes_ = std::make_unique_for_overwrite<BinaryNode[]>(2 * count_ - 1 + threads * kNodeBlock);
         nextNode_ = 1;
         outstanding_ = 1;  // the root, pushed once the items exist; until then workers only help
         std::vector<std::jthread> workers;
@@ -239,6 +239,13 @@ public:
     const BinaryNode& node(std::uint32_t index) const { return nodes_[index]; }
 
 private:
+    // Node indices a thread hands out, taken from the shared count kNodeBlock at a time: one
+    // atomic add per split, and threads writing the same cache lines, cost more than the splits.
+    static constexpr std::uint32_t kNodeBlock = 64;  // even: children come in pairs
+    struct NodeBlock {
+        std::uint32_t next = 0, end = 0;
+    };
+
     struct Task {
         std::size_t begin, end;
         std::uint32_t node;
@@ -302,6 +309,7 @@ private:
 
     void work() {
         std::vector<Task> local;
+        NodeBlock block;
         for (;;) {
             Task task;
             ChunkLoop* loop = nullptr;
@@ -329,7 +337,7 @@ private:
                 const Task t = local.back();
                 local.pop_back();
                 Task children[2];
-                if (!split(t, children)) continue;  // a leaf
+                if (!split(t, children, block)) continue;  // a leaf
                 for (const Task& child : {children[1], children[0]}) {
                     if (child.end - child.begin >= kParallelGrain) {
                         {
@@ -351,7 +359,7 @@ private:
     // Fills the task's node and either makes it a leaf (returns false) or partitions its range
     // into two child tasks, each with its boxes: the SAH sweep's side boxes and the centroid
     // boxes the partition grows, so no node needs a pass of its own to find them.
-    bool split(const Task& t, Task (&children)[2]) {
+    bool split(const Task& t, Task (&children)[2], NodeBlock& block) {
         BinaryNode& node = nodes_[t.node];
         alignas(16) float lo[4], hi[4];
         t.box.lo.store(lo);
@@ -369,7 +377,12 @@ private:
             node.count = static_cast<std::uint32_t>(count);
             return false;
         }
-        const auto first = nextNode_.fetch_add(2);
+        if (block.next == block.end) {
+            block.next = nextNode_.fetch_add(kNodeBlock, std::memory_order_relaxed);
+            block.end = block.next + kNodeBlock;
+        }
+        const std::uint32_t first = block.next;
+        block.next += 2;
         node.first = first;
         children[0] = {t.begin, 0, first, t.depth + 1, {}, {}};
         children[1] = {0, t.end, first + 1, t.depth + 1, {}, {}};
