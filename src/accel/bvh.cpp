@@ -19,11 +19,8 @@ namespace {
 using simd::Float4;
 
 constexpr int kBins = 16;
-// Relative costs of one node visit and one leaf block test. A block's primitives are tested four
-// at once, so the SAH counts blocks of kBvhLeafSize, not primitives (as Embree's builders do
-// for their 4-triangle leaves): a range that fits one block is always a leaf.
-constexpr float kTraversalCost = 1.0f;
-
+// A block's primitives are tested four at once, so the SAH counts blocks of kBvhLeafSize, not
+// primitives (as Embree's builders do for their 4-triangle leaves).
 float blocks(std::size_t count) {
     return static_cast<float>((count + kBvhLeafSize - 1) / kBvhLeafSize);
 }
@@ -209,9 +206,10 @@ struct ChunkLoop {
     }
 };
 
-// Builds the binary tree. Every split depends only on the items of its own range, and threads work on disjoint ranges, so the tree's shape and the items'
-// order are the same for any number of threads; only the binary nodes' indices vary, and
-// collapse() reads the tree in child order.
+// Builds the binary tree. Every split depends only on the items of its own range (binned in
+// chunks or in one pass, the bins are the same), and threads work on disjoint ranges, so the
+// tree's shape and the items' order are the same for any number of threads; only the binary
+// nodes' indices vary, and collapse() reads the tree in child order.
 class BinaryBuilder {
 public:
     explicit BinaryBuilder(std::size_t count) : count_(count), items_(std::make_unique_for_overwrite<Item[]>(count)) {}
@@ -315,7 +313,9 @@ private:
             ChunkLoop* loop = nullptr;
             {
                 std::unique_lock lock(mutex_);
-                wake_.wait(lock, [&] { return !queue_.empty() || (loop = openLoop()) != nullptr || outstanding_ == 0; });
+                wake_.wait(lock, [&] {
+                    return !queue_.empty() || (loop = openLoop()) != nullptr || outstanding_ == 0;
+                });
                 if (!queue_.empty()) {
                     task = queue_.back();
                     queue_.pop_back();
@@ -370,8 +370,9 @@ private:
         }
         node.count = 0;
         const std::size_t count = t.end - t.begin;
-        // A range that fits one block is a leaf: its SAH split cost, 1 + a non-negative ratio,
-        // never beats the one block it costs as a leaf.
+        // A range that fits one block is a leaf: splitting it would cost a node visit (1) plus
+        // a non-negative area ratio, never less than the one block it costs as a leaf. Larger
+        // ranges are always split (a leaf holds one block), so no leaf cost is weighed.
         if (count <= kBvhLeafSize) {
             node.first = static_cast<std::uint32_t>(t.begin);
             node.count = static_cast<std::uint32_t>(count);
@@ -416,7 +417,8 @@ private:
         // Coincident centroids, or too deep: halve the range along the widest axis by centroid
         // (ties in id order, so the build is deterministic).
         const std::size_t middle = t.begin + count / 2;
-        std::nth_element(&items_[t.begin], &items_[middle], &items_[t.begin] + count, [&](const Item& a, const Item& b) {
+        Item* const range = &items_[t.begin];
+        std::nth_element(range, range + count / 2, range + count, [&](const Item& a, const Item& b) {
             const float ca = a.lo[widest] + a.hi[widest], cb = b.lo[widest] + b.hi[widest];
             return ca < cb || (ca == cb && a.id() < b.id());
         });
@@ -614,7 +616,8 @@ Bvh::Bvh(std::size_t count, const PrimitiveSource& source, unsigned threads) : p
             std::array<std::uint32_t, kBvhWidth> open;
             const auto n = static_cast<std::size_t>(collapser.lanes(top, open));
             std::array<std::array<std::uint32_t, 2>, kBvhWidth> sizes;
-            parallelChunks(n, 1, threads, [&](std::size_t lane, std::size_t) { sizes[lane] = collapser.size(open[lane]); });
+            parallelChunks(n, 1, threads,
+                           [&](std::size_t lane, std::size_t) { sizes[lane] = collapser.size(open[lane]); });
             std::array<WideCursor, kBvhWidth> cursors;
             std::uint32_t nodeCount = 1, blockCount = 0;
             for (std::size_t lane = 0; lane < n; ++lane) {
