@@ -84,9 +84,12 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         leafTriangles_.resize(ids.size() / kBvhLeafSize);
         parallelChunks(leafTriangles_.size(), kGrain / kBvhLeafSize, threads, [&](std::size_t begin, std::size_t end) {
             for (std::size_t slot = begin * kBvhLeafSize; slot < end * kBvhLeafSize; ++slot) {
+                TrianglePack& pack = leafTriangles_[slot / kBvhLeafSize];
+                const auto lane = static_cast<int>(slot % kBvhLeafSize);
                 if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
-                    leafTriangles_[slot / kBvhLeafSize].set(static_cast<int>(slot % kBvhLeafSize),
-                                                         triangles_[ids[slot] - firstTriangle]);
+                    pack.set(lane, triangles_[ids[slot] - firstTriangle]);
+                else
+                    pack.clear(lane);  // padding, or a sphere: never tested as a triangle
             }
         });
     }
