@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -100,6 +101,11 @@ public:
     Bvh() = default;
     // Builds on `threads` threads (0: all the hardware has). The tree is the same for any count.
     explicit Bvh(std::vector<BvhPrimitive> primitives, unsigned threads = 0);
+    // Writes the boxes (and ids) of primitives [begin, end) to out[0, end - begin); the build
+    // calls it from its threads at once, on disjoint ranges.
+    using PrimitiveSource = std::function<void(std::size_t begin, std::size_t end, BvhPrimitive* out)>;
+    // The same tree from `count` primitives that `source` describes, without a list of them all.
+    Bvh(std::size_t count, const PrimitiveSource& source, unsigned threads = 0);
 
     bool empty() const { return root_ == kNoRoot; }
     const BvhStats& stats() const { return stats_; }

@@ -53,6 +53,14 @@ inline int equal(Float4 a, Float4 b) { return _mm_movemask_ps(_mm_cmpeq_ps(a.v, 
 inline Float4 maxKeepSecond(Float4 x, Float4 acc) { return Float4(_mm_max_ps(x.v, acc.v)); }
 inline Float4 minKeepSecond(Float4 x, Float4 acc) { return Float4(_mm_min_ps(x.v, acc.v)); }
 inline Float4 abs(Float4 x) { return Float4(_mm_andnot_ps(_mm_set1_ps(-0.0f), x.v)); }
+// Lanes 0-2 kept, lane 3 zeroed: the BVH builder keeps a primitive id's bits in a box's lane 3.
+inline Float4 xyzOnly(Float4 x) {
+    return Float4(_mm_and_ps(x.v, _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1))));
+}
+// Each lane truncated toward zero, as static_cast<std::int32_t> does (lanes within int range).
+inline void truncateToInts(Float4 x, std::int32_t* out) {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_cvttps_epi32(x.v));
+}
 
 #else
 
@@ -97,6 +105,13 @@ inline Float4 minKeepSecond(Float4 x, Float4 acc) {
     return Float4::apply(x, acc, [](float a, float b) { return a < b ? a : b; });
 }
 inline Float4 abs(Float4 x) { return Float4::apply(x, x, [](float a, float) { return a < 0.0f ? -a : a; }); }
+inline Float4 xyzOnly(Float4 x) {
+    x.v[3] = 0.0f;
+    return x;
+}
+inline void truncateToInts(Float4 x, std::int32_t* out) {
+    for (int i = 0; i < 4; ++i) out[i] = static_cast<std::int32_t>(x.v[i]);
+}
 
 #endif
 

@@ -14,9 +14,14 @@
 namespace lightpath {
 
 // Coordinates as corners[vertex][axis][lane]: vertex 0, 1, 2 are a triangle's a, b, c.
+// No initializer: SceneGeometry writes every lane of every block, zeros in padding lanes.
 struct alignas(16) TrianglePack {
-    float corners[3][3][kBvhLeafSize]{};
+    float corners[3][3][kBvhLeafSize];
 
+    void clear(int lane) {
+        for (int v = 0; v < 3; ++v)
+            for (int a = 0; a < 3; ++a) corners[v][a][lane] = 0.0f;
+    }
     void set(int lane, const Triangle& t) {
         const Vec3* vertices[3] = {&t.a, &t.b, &t.c};
         for (int v = 0; v < 3; ++v)

@@ -1,13 +1,16 @@
 #include "geometry/scene_geometry.h"
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "accel/bvh_traversal.h"
 #include "geometry/intersect.h"
+#include "util/parallel_chunks.h"
 #ifdef LIGHTPATH_HAS_EMBREE
 #include "accel/embree_accelerator.h"
 #endif
@@ -58,23 +61,37 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
     if (accelerator_ == Accelerator::Embree && !embreeAvailable())
         throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
     const auto started = std::chrono::steady_clock::now();
-    std::vector<BvhPrimitive> primitives;
-    primitives.reserve(spheres_.size() + triangles_.size());
-    for (std::uint32_t i = 0; i < spheres_.size(); ++i) primitives.push_back({sphereBounds(spheres_[i]), i});
+    // The boxes are computed by the build's threads as it reads them (no list of them all), and
+    // the leaves' triangle blocks filled on as many: on one thread they would cap its scaling.
     const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
-    if (accelerator_ == Accelerator::Bvh) {
-        for (std::uint32_t i = 0; i < triangles_.size(); ++i)
-            primitives.push_back({triangleBounds(triangles_[i]), firstTriangle + i});
-    }
-    bvh_ = Bvh(std::move(primitives), buildThreads);
+    const std::size_t primitiveCount = spheres_.size() + (accelerator_ == Accelerator::Bvh ? triangles_.size() : 0);
+    bvh_ = Bvh(
+        primitiveCount,
+        [&](std::size_t begin, std::size_t end, BvhPrimitive* out) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const auto index = static_cast<std::uint32_t>(i);
+                *out++ = index < spheres_.size()
+                             ? BvhPrimitive{sphereBounds(spheres_[index]), index}
+                             : BvhPrimitive{triangleBounds(triangles_[index - spheres_.size()]),
+                                            firstTriangle + index - static_cast<std::uint32_t>(spheres_.size())};
+            }
+        },
+        buildThreads);
+    const unsigned threads = buildThreads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : buildThreads;
+    constexpr std::size_t kGrain = 16384;
     if (accelerator_ == Accelerator::Bvh) {
         const auto ids = bvh_.slotIds();
         leafTriangles_.resize(ids.size() / kBvhLeafSize);
-        for (std::size_t slot = 0; slot < ids.size(); ++slot) {
-            if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
-                leafTriangles_[slot / kBvhLeafSize].set(static_cast<int>(slot % kBvhLeafSize),
-                                                     triangles_[ids[slot] - firstTriangle]);
-        }
+        parallelChunks(leafTriangles_.size(), kGrain / kBvhLeafSize, threads, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t slot = begin * kBvhLeafSize; slot < end * kBvhLeafSize; ++slot) {
+                TrianglePack& pack = leafTriangles_[slot / kBvhLeafSize];
+                const auto lane = static_cast<int>(slot % kBvhLeafSize);
+                if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
+                    pack.set(lane, triangles_[ids[slot] - firstTriangle]);
+                else
+                    pack.clear(lane);  // padding, or a sphere: never tested as a triangle
+            }
+        });
     }
 #ifdef LIGHTPATH_HAS_EMBREE
     if (accelerator_ == Accelerator::Embree && !triangles_.empty())

@@ -10,6 +10,7 @@
 #include "geometry/shapes.h"
 #include "geometry/surface_hit.h"
 #include "math/ray.h"
+#include "util/default_init_allocator.h"
 
 namespace lightpath {
 
@@ -119,7 +120,8 @@ private:
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // spheres and triangles (Bvh), spheres only (Embree)
-    std::vector<TrianglePack> leafTriangles_;  // the triangles of each BVH leaf block (Bvh only)
+    // The triangles of each BVH leaf block (Bvh only); filled on the build's threads, not zeroed first.
+    std::vector<TrianglePack, DefaultInitAllocator<TrianglePack>> leafTriangles_;
     std::shared_ptr<const EmbreeScene> embree_;
     AcceleratorStats stats_;
 };

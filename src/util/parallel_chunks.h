@@ -1,0 +1,26 @@
+#pragma once
+// Runs body(begin, end) over [0, count) in chunks of `grain` items on up to `threads` threads,
+// the caller's among them. The chunks depend on count and grain alone, so work that writes only
+// its own chunk's results gives the same answer on any number of threads.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace lightpath {
+
+template <typename Body>
+void parallelChunks(std::size_t count, std::size_t grain, unsigned threads, const Body& body) {
+    const std::size_t chunks = (count + grain - 1) / grain;
+    std::atomic<std::size_t> next{0};
+    const auto run = [&] {
+        for (std::size_t chunk; (chunk = next.fetch_add(1, std::memory_order_relaxed)) < chunks;)
+            body(chunk * grain, std::min(count, (chunk + 1) * grain));
+    };
+    std::vector<std::jthread> helpers;
+    for (std::size_t t = 1; t < std::min<std::size_t>(threads, chunks); ++t) helpers.emplace_back(run);
+    run();
+}
+
+}  // namespace lightpath
