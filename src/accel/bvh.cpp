@@ -598,7 +598,7 @@ Bvh::Bvh(std::size_t count, const PrimitiveSource& source, unsigned threads) : p
     // Each leaf takes a block of kBvhLeafSize slots, and a block index has 29 bits.
     if (count > (std::size_t{BvhChild::kBlockMask} + 1) / 2)
         throw std::length_error("too many primitives for a BVH with 29-bit block indices");
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    threads = threadsOrAll(threads);
     // Below the grain no subtree is shared: starting threads would cost more than the build.
     if (count < 2 * kParallelGrain) threads = 1;
     if (count > 0) {

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
 #include "accel/bvh_traversal.h"
@@ -77,7 +76,7 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
             }
         },
         buildThreads);
-    const unsigned threads = buildThreads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : buildThreads;
+    const unsigned threads = threadsOrAll(buildThreads);
     constexpr std::size_t kGrain = 16384;
     if (accelerator_ == Accelerator::Bvh) {
         const auto ids = bvh_.slotIds();

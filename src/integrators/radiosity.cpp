@@ -5,13 +5,13 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
 #include "math/random.h"
 #include "render/progress.h"
 #include "sampling/warp.h"
+#include "util/parallel_chunks.h"
 
 namespace lightpath {
 namespace {
@@ -23,22 +23,15 @@ constexpr std::uint32_t kChunk = 256;
 
 float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
-// Runs work(begin, end) over [0, count) in chunks on `threads` workers; stops handing out chunks
-// once `cancel` is set.
+// Runs work(begin, end) over [0, count) in chunks of kChunk on `threads` workers (0: all), one
+// progress step per chunk; once `cancel` is set, the chunks left are skipped.
 template <class Work>
-void parallelChunks(std::uint32_t count, int threads, const std::atomic<bool>* cancel, ProgressBar& progress, Work work) {
-    if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    std::atomic<std::uint32_t> next{0};
-    const auto worker = [&] {
-        for (std::uint32_t begin = next.fetch_add(kChunk); begin < count; begin = next.fetch_add(kChunk)) {
-            if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return;
-            work(begin, std::min(count, begin + kChunk));
-            progress.tileDone();
-        }
-    };
-    std::vector<std::jthread> helpers;
-    for (int t = 1; t < threads; ++t) helpers.emplace_back(worker);
-    worker();
+void solveInChunks(std::uint32_t count, int threads, const std::atomic<bool>* cancel, ProgressBar& progress, Work work) {
+    parallelChunks(count, kChunk, threadsOrAll(threads), [&](std::size_t begin, std::size_t end) {
+        if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) return;
+        work(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end));
+        progress.tileDone();
+    });
 }
 
 std::uint32_t chunkCount(std::uint32_t count) { return (count + kChunk - 1) / kChunk; }
@@ -166,7 +159,7 @@ void RadiosityIntegrator::computeFormFactors(const RenderContext& context, Progr
         std::uint64_t rays = 0;
     };
     std::vector<ChunkRows> rows(chunkCount(elements));
-    parallelChunks(elements, context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
+    solveInChunks(elements, context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
         ChunkRows& out = rows[begin / kChunk];
         std::vector<std::uint32_t> order(rays), hits;
         hits.reserve(rays);
@@ -223,7 +216,7 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (wanted[l] == 0) continue;
         const Light& light = *lights[l];
-        parallelChunks(elementCount(), context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
+        solveInChunks(elementCount(), context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
             std::vector<std::uint32_t> order(samples);
             std::uint64_t cast = 0;
             for (std::uint32_t e = begin; e < end; ++e) {
@@ -293,7 +286,7 @@ void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<
             if (wanted[l] < k) continue;
             const Rgb* previous = &values_[valueIndex(l, k - 1, 0)];
             Rgb* next = &values_[valueIndex(l, k, 0)];
-            parallelChunks(elementCount(), context.threads, context.cancel, progress,
+            solveInChunks(elementCount(), context.threads, context.cancel, progress,
                            [&](std::uint32_t begin, std::uint32_t end) {
                                for (std::uint32_t e = begin; e < end; ++e) {
                                    Rgb gathered{0.0f};

@@ -11,6 +11,7 @@
 #include "integrators/registry.h"
 #include "render/progress.h"
 #include "sampling/sampler.h"
+#include "util/parallel_chunks.h"
 
 namespace lightpath {
 namespace {
@@ -174,7 +175,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
-    int threadCount = options_.threads > 0 ? options_.threads : static_cast<int>(std::thread::hardware_concurrency());
+    int threadCount = static_cast<int>(threadsOrAll(options_.threads));
     threadCount = std::clamp(threadCount, 1, std::max(1, tileCount));
 
     ProgressBar progress(tileCount, options_.progress);

@@ -10,6 +10,11 @@
 
 namespace lightpath {
 
+// A requested thread count, where 0 (or less) means all the hardware has.
+inline unsigned threadsOrAll(long requested) {
+    return requested > 0 ? static_cast<unsigned>(requested) : std::max(1u, std::thread::hardware_concurrency());
+}
+
 template <typename Body>
 void parallelChunks(std::size_t count, std::size_t grain, unsigned threads, const Body& body) {
     const std::size_t chunks = (count + grain - 1) / grain;
