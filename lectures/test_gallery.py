@@ -67,7 +67,7 @@ def run_chromium(args, profile):
     argv = [chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
             f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0",
             "--virtual-time-budget=10000", *args]
-    proc = subprocess.run(argv, capture_output=True, text=True, timeout=120)
+    proc = subprocess.run(argv, capture_output=True, text=True, timeout=400)
     if proc.returncode != 0:
         sys.exit(f"test_gallery: chromium failed (exit {proc.returncode}):\n{proc.stderr[-3000:]}")
     return proc.stdout, proc.stderr
