@@ -33,6 +33,7 @@ int run(int argc, char** argv) {
         "  lightpath lpe check --set classes                             is the AOV set a partition?\n"
         "  lightpath lpe check --set taxonomy                            the nest of the four methods\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n"
+        "  lightpath lpe exercise                                        the lecture's questions, checked\n"
         "  lightpath serve scenes/lecture-room.toml                      explore it in the browser\n"
         "  lightpath bench skip                                          what skipping saves\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
