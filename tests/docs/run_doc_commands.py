@@ -5,7 +5,8 @@
 
 Commands are read from the pages' fenced code blocks: in a block with `$ ` prompts each prompt
 line is a command and the lines after it, up to the next prompt, are its output as pasted; in a
-block without prompts every line is a command (a trailing `# comment` is dropped). Each runs
+block without prompts every line is a command (a trailing `# comment` is dropped); in prose, an
+inline code span that starts with `build/lightpath` is a command too. Each runs
 under bash (pipefail) in DIR, where `build/lightpath` is BIN and the repository's scenes,
 lectures and tests are linked, so `out/...` outputs land in DIR.
 
@@ -13,7 +14,8 @@ What is checked: the exit code is 0 (1 for an `lpe exercise` whose pasted output
 "not yet": a wrong answer), and every pasted output line but `...` occurs, trailing spaces aside,
 in what the command printed (stdout and stderr). Changes to the commands as written, stated here:
 - commands that start with `scripts/` (set-up and the whole test suite, this test included) and
-  `cmake` commands (building) are not run: the build that runs this test has run them;
+  `cmake` commands (building) are not run: the build that runs this test has run them; of
+  `scripts/setup && COMMAND`, COMMAND is run;
 - `serve` gets `--port 0` appended (any free port: 8080 may be taken on a shared machine); it runs
   until it prints its URL, then gets SIGINT and must exit.
 """
@@ -34,6 +36,8 @@ def commands(page):
     found = []
     block, language = None, ""
     for number, line in enumerate(open(page, encoding="utf-8").read().split("\n"), 1):
+        if block is None and not FENCE.match(line):
+            found.extend((number, span, []) for span in re.findall(r"`(build/lightpath [^`]+)`", line))
         m = FENCE.match(line)
         if m and block is None:
             block, language = [], m.group(2)
@@ -104,6 +108,7 @@ def main():
     for page in args.pages:
         for number, command, pasted in commands(os.path.join(args.source, page)):
             where = f"{page}:{number}"
+            command = re.sub(r"^scripts/setup && ", "", command)
             if command.startswith(NOT_RUN):
                 print(f"{where}: not run (see the header): {command}")
                 continue
