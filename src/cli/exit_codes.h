@@ -1,5 +1,5 @@
 #pragma once
-// Documented exit codes of the lightpath command (README, "Errors and limits").
+// Documented exit codes of the lightpath command (docs/robustness.md, "Errors and limits").
 namespace lightpath {
 
 inline constexpr int kExitOk = 0;

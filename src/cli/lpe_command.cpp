@@ -263,7 +263,8 @@ void addLpeCommand(CLI::App& app) {
         "Examples:\n"
         "  lightpath lpe match 'E(D|G)L' EDL ESDL\n"
         "  lightpath lpe check --set classes\n"
-        "  lightpath lpe dot 'E(S*)(D|G)L' -o automaton.dot\n\n"
+        "  lightpath lpe dot 'E(S*)(D|G)L' -o automaton.dot\n"
+        "  lightpath lpe exercise --question mirror-only --answer 'ES+L'\n\n"
         "Syntax: E (or C) camera, L any emitter (light, emitting object O or background B), D G S s\n"
         "scattering, R T V reflection, transmission and volume, . any event, <RS> and <L.'key'> tuples\n"
         "(type, scattering, 'label'), [SG] and [^D] sets, Heckbert's [S*] = (S*)?, 'name' labels, and\n"
@@ -327,6 +328,8 @@ void addLpeCommand(CLI::App& app) {
         "  lightpath lpe dot --set classes -o classes.dot\n"
         "  lightpath lpe dot key='E.*<L.'\\''key'\\''>' fill='E.*<L.'\\''fill'\\''>'");
     dotCommand->callback([dot] { reportingErrors([&] { runDot(*dot); }); });
+
+    addLpeExerciseCommand(*lpe);
 }
 
 }  // namespace lightpath

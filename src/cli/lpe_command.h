@@ -8,4 +8,7 @@ namespace lightpath {
 // are thrown as CLI::RuntimeError carrying the engine's message, with exit code 2 (bad input).
 void addLpeCommand(CLI::App& app);
 
+// Registers `lpe exercise` under `lpe` (lpe_exercise_command.cpp).
+void addLpeExerciseCommand(CLI::App& lpe);
+
 }  // namespace lightpath

@@ -4,8 +4,11 @@
 
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "cli/bench_command.h"
+#include "cli/bracket_arguments.h"
 #include "cli/cli_errors.h"
 #include "cli/exit_codes.h"
 #include "cli/explain_command.h"
@@ -30,6 +33,7 @@ int run(int argc, char** argv) {
         "  lightpath lpe check --set classes                             is the AOV set a partition?\n"
         "  lightpath lpe check --set taxonomy                            the nest of the four methods\n"
         "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n"
+        "  lightpath lpe exercise                                        the lecture's questions, checked\n"
         "  lightpath serve scenes/lecture-room.toml                      explore it in the browser\n"
         "  lightpath bench skip                                          what skipping saves\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
@@ -39,8 +43,12 @@ int run(int argc, char** argv) {
     lightpath::addBenchCommand(app);
     lightpath::addStressCommand(app);
     lightpath::addServeCommand(app);
+    lightpath::unmarkBracketedValues(app);
+    const std::vector<std::string> arguments = lightpath::markBracketedArguments(argc, argv);
+    std::vector<const char*> marked;
+    for (const std::string& argument : arguments) marked.push_back(argument.c_str());
     try {
-        app.parse(argc, argv);
+        app.parse(argc, marked.data());
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
@@ -48,12 +56,12 @@ int run(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::RuntimeError& e) {
-        std::cerr << "lightpath: " << e.what() << "\n";
+        std::cerr << "lightpath: " << lightpath::withoutMarks(e.what()) << "\n";
         return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         // Wrong arguments are bad input, whatever CLI11's own code for them; CLI11's message gets
         // the prefix and a did-you-mean like every other error.
-        std::cerr << lightpath::parseErrorMessage(app, e) << "\n";
+        std::cerr << lightpath::withoutMarks(lightpath::parseErrorMessage(app, e)) << "\n";
         return lightpath::kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << "lightpath: error: " << e.what() << "\n";

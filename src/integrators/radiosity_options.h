@@ -1,5 +1,5 @@
 #pragma once
-// What `--integrator radiosity` is asked for on the command line (README "Radiosity").
+// What `--integrator radiosity` is asked for on the command line (docs/integrators.md, "Radiosity").
 #include <cstddef>
 #include <cstdint>
 

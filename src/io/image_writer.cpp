@@ -28,7 +28,7 @@ constexpr const char* kBeautyLayer = "beauty";
 
 // PNG is lossless at any setting; the choice trades file size for time. Measured on the seven
 // PNGs of a 1920x1080 Whitted render of scenes/lecture-room.toml, CPU seconds on one thread
-// (README, "Performance"): OpenImageIO's default (zlib level 6, libpng's adaptive row filters)
+// (docs/performance.md): OpenImageIO's default (zlib level 6, libpng's adaptive row filters)
 // 0.51 s and 611 KB; level 6 without filters 0.22 s, 576 KB; level 1 without filters 0.148 s,
 // 1.0 MB. Rendered images (smooth shading, AOVs mostly black) compress well without filters, and
 // trying five filters on every row costs more than it saves; level 1 is zlib's fastest.
