@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace lightpath {
@@ -172,7 +173,10 @@ Vec3 sphereNormal(const Sphere& sphere, const Vec3& point) {
 }
 
 Vec3 triangleNormal(const Triangle& tri) {
-    return glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+    const Vec3 cross = glm::cross(tri.b - tri.a, tri.c - tri.a);
+    if (glm::dot(cross, cross) >= std::numeric_limits<float>::min()) return glm::normalize(cross);
+    // A sliver's squared cross product underflows float (edges of 1e-19 and less): in double.
+    return Vec3(glm::normalize(glm::cross(glm::dvec3(tri.b) - glm::dvec3(tri.a), glm::dvec3(tri.c) - glm::dvec3(tri.a))));
 }
 
 }  // namespace lightpath

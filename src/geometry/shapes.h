@@ -2,6 +2,7 @@
 // The primitives of the lectures. Each carries the index of the scene object it belongs to;
 // geometry knows nothing of materials or light paths.
 #include <cstdint>
+#include <limits>
 
 #include "math/types.h"
 
@@ -30,5 +31,21 @@ struct Triangle {
 struct TriangleNormals {
     Vec3 a{0.0f}, b{0.0f}, c{0.0f};
 };
+
+// The smallest emitting area a light samples: below the smallest normal float, the density 1/A
+// per unit area overflows (or has lost its digits), so such an emitter is only seen where a ray
+// hits it. The scene loader warns about emitters below it; LightSet never samples them.
+inline constexpr double kMinSampledEmitterArea = std::numeric_limits<float>::min();
+
+// Surface areas in double: a float sphere's r^2 underflows below r = 1e-19, and a sliver
+// triangle's cross product squared below edges of 1e-19 (its area would be lost, not small).
+inline double surfaceArea(const Sphere& s) {
+    const double r = s.radius;
+    return 4.0 * 3.14159265358979323846 * r * r;
+}
+inline double surfaceArea(const Triangle& t) {
+    const glm::dvec3 e1 = glm::dvec3(t.b) - glm::dvec3(t.a), e2 = glm::dvec3(t.c) - glm::dvec3(t.a);
+    return 0.5 * glm::length(glm::cross(e1, e2));
+}
 
 }  // namespace lightpath

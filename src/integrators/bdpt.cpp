@@ -49,7 +49,7 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
     const Light& light = *chosen.light;
     const EmittedRay e = light.sampleEmission(uPoint, uDirection);
     if (!(e.pdfPosition > 0.0f) || !(e.pdfDirection > 0.0f) || isBlack(e.radiance)) return 0;
-    v[0] = lightVertex(light, e.ray.origin, e.normal, e.pdfPosition);
+    v[0] = lightVertex(light, e.ray.origin, e.normal, e.pdfPosition, e.pdfPosition);
     v[0].pdfFwd = chosen.probability * e.pdfPosition;
     v[0].beta = e.radiance / (chosen.probability * e.pdfPosition);
 
@@ -73,6 +73,9 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
             // for a point light) instead of the 1/d^2 the area density conversion assumes.
             const float d = glm::length(hit->point - v[0].point);
             beta *= light.falloff(d) * d * d;
+            // Light sampling from x1 would have picked x0 by another density than emission did.
+            if (!light.samplesByArea(hit->point))
+                v[0].pdfPosition = lightSamplingAreaDensity(light, hit->point, v[0].point, v[0].normal);
         }
         BdptVertex& here = v[count];
         here = surfaceVertex(*hit, ray, beta, v[count - 1], pdf, delta, ctx, TransportMode::Importance);
@@ -188,7 +191,8 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
     if (!light.isDelta() && !(sample.pdf > 0.0f)) return;
     const float pdfPosition =
         light.isDelta() ? 1.0f : sample.pdf * std::fabs(glm::dot(sample.normal, sample.wi)) / (sample.distance * sample.distance);
-    BdptVertex y[1] = {lightVertex(light, sample.point, sample.normal, pdfPosition)};
+    const float pdfEmission = light.samplesByArea(z.point) ? pdfPosition : light.pdfEmissionPosition();
+    BdptVertex y[1] = {lightVertex(light, sample.point, sample.normal, pdfPosition, pdfEmission)};
     y[0].pdfFwd = choice * pdfPosition;
     const PathEvent lightEvent = eventOfLight(y[0]);
     Visibility visible(sp.hit, sample.point);

@@ -56,7 +56,7 @@ BdptVertex cameraVertex(const Vec3& eye) {
     return v;
 }
 
-BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition) {
+BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition, float pdfEmission) {
     BdptVertex v;
     v.kind = VertexKind::Light;
     v.point = point;
@@ -64,7 +64,17 @@ BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal
     v.light = &light;
     v.delta = light.isDelta();
     v.pdfPosition = pdfPosition;
+    v.pdfEmission = pdfEmission;
     return v;
+}
+
+float lightSamplingAreaDensity(const Light& light, const Vec3& receiver, const Vec3& point, const Vec3& normal) {
+    // Light::pdf is light sampling's solid-angle density; times cos / d^2 it is per unit area.
+    const Vec3 back = receiver - point;
+    const float distance2 = glm::dot(back, back);
+    return distance2 > 0.0f ? light.pdf(receiver, point, normal) * std::fabs(glm::dot(normal, back)) /
+                                  (std::sqrt(distance2) * distance2)
+                            : 0.0f;
 }
 
 BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
@@ -80,14 +90,10 @@ BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta,
 }
 
 void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous) {
-    // Light::pdf is light sampling's solid-angle density; times cos / d^2 it is the density per
-    // unit area with which light sampling and emission both pick points on the light.
-    const Vec3 back = previous.point - z.point;
-    const float distance2 = glm::dot(back, back);
     z.light = &emitter;
-    z.pdfPosition = distance2 > 0.0f ? emitter.pdf(previous.point, z.point, z.normal) *
-                                           std::fabs(glm::dot(z.normal, back)) / (std::sqrt(distance2) * distance2)
-                                     : 0.0f;
+    z.pdfPosition = lightSamplingAreaDensity(emitter, previous.point, z.point, z.normal);
+    // Where light sampling picks points by area, emission's density is the same number.
+    z.pdfEmission = emitter.samplesByArea(previous.point) ? z.pdfPosition : emitter.pdfEmissionPosition();
 }
 
 float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous) {
@@ -144,7 +150,7 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, Lobe lightLobe,
     const BdptVertex& origin = s >= 1 ? light[0] : eye[t - 1];
     if (origin.light != nullptr) {
         p.originByNextEvent = double(context.lights.nextEventProbability(*origin.light)) * origin.pdfPosition;
-        p.originByEmission = double(context.lights.emitterProbability(*origin.light)) * origin.pdfPosition;
+        p.originByEmission = double(context.lights.emitterProbability(*origin.light)) * origin.pdfEmission;
         p.originHittable = !origin.light->isDelta();
     }
     return p;

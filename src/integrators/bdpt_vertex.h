@@ -60,7 +60,11 @@ struct BdptVertex {
     Lobe lobe = Lobe::Diffuse;
     bool delta = false;
     const Light* light = nullptr;  // the light of x0
-    float pdfPosition = 0.0f;      // x0's density per unit area on its light
+    // x0's densities per unit area on its light: as light sampling from x1 picks it (next-event
+    // estimation, s = 1), and as sampleEmission does (light walks, s >= 2). They differ where light
+    // sampling samples the solid angle a sphere subtends instead of its area.
+    float pdfPosition = 0.0f;
+    float pdfEmission = 0.0f;
     ShadingSlot surface;
 
     bool onSurface() const { return kind == VertexKind::Surface; }
@@ -87,8 +91,12 @@ std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, 
 
 // Builders of subpath vertices.
 BdptVertex cameraVertex(const Vec3& eye);
-// x0 on `light`, at `point` with outward `normal`, sampled with area density `pdfPosition`.
-BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition);
+// x0 on `light`, at `point` with outward `normal`, where light sampling picks it with area
+// density `pdfPosition` and emission with `pdfEmission`.
+BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition, float pdfEmission);
+// The density per unit area with which light sampling from `receiver` picks `point` (of `normal`)
+// on `light`: Light::pdf converted from solid angle (Veach 1997, eq. 8.10).
+float lightSamplingAreaDensity(const Light& light, const Vec3& receiver, const Vec3& point, const Vec3& normal);
 // The vertex where a walk's `ray`, leaving `previous` with solid-angle density `pdfSolidAngle`
 // (through a delta lobe when `delta`), hits `hit`.
 BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,

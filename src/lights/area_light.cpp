@@ -2,20 +2,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
+#include "geometry/intersect.h"
 #include "sampling/warp.h"
 
 namespace lightpath {
 namespace {
 
+constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+
 float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
     const auto ref = geometry.decodePrimitive(primitive);
-    if (ref.shape == ShapeKind::Sphere) {
-        const float r = geometry.spheres()[ref.index].radius;
-        return 4.0f * kPi * r * r;
-    }
+    if (ref.shape == ShapeKind::Sphere) return static_cast<float>(surfaceArea(geometry.spheres()[ref.index]));
     const Triangle& t = geometry.triangles()[ref.index];
-    return 0.5f * glm::length(glm::cross(t.b - t.a, t.c - t.a));
+    // In float while its squared cross product is a normal float (as every shipped mesh's is, so
+    // their areas, and images, stay bit-identical), else in double: a sliver's area is small, not 0.
+    const Vec3 cross = glm::cross(t.b - t.a, t.c - t.a);
+    const float length2 = glm::dot(cross, cross);
+    if (length2 >= std::numeric_limits<float>::min()) return 0.5f * std::sqrt(length2);
+    return static_cast<float>(surfaceArea(t));
 }
 
 }  // namespace
@@ -23,13 +30,36 @@ float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
 AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const SceneGeometry& geometry,
                                  const std::vector<std::uint32_t>& primitives)
     : Light(event), emission_(emission), geometry_(geometry) {
+    std::size_t sphereCount = 0;
     for (std::uint32_t primitive : primitives) {
         const float area = shapeArea(geometry, primitive);
         if (!(area > 0.0f)) continue;  // a zero-area triangle emits nothing and cannot be sampled
         area_ += area;
         shapes_.push_back({primitive, area_});
-        spheres_ = geometry.decodePrimitive(primitive).shape == ShapeKind::Sphere;
+        sphereCount += geometry.decodePrimitive(primitive).shape == ShapeKind::Sphere;
     }
+    if (sphereCount != 0 && sphereCount != shapes_.size())
+        throw std::invalid_argument("an area light is spheres or triangles, not both");
+    spheres_ = sphereCount != 0;
+    if (shapes_.size() == 1 && spheres_) sphere_ = geometry.spheres()[geometry.decodePrimitive(shapes_[0].primitive).index];
+    sampleable_ = area_ >= kMinSampledEmitterArea;
+}
+
+std::optional<SphereCone> sphereCone(const Sphere& sphere, const Vec3& receiver) {
+    const glm::dvec3 toReceiver = glm::dvec3(receiver) - glm::dvec3(sphere.center);
+    const double d2 = glm::dot(toReceiver, toReceiver);
+    const double r = sphere.radius;
+    if (!(d2 > r * r)) return std::nullopt;
+    const double d = std::sqrt(d2);
+    SphereCone cone;
+    cone.axis = Vec3(toReceiver / d);
+    cone.sin2ThetaMax = (r / d) * (r / d);
+    // cos^2 = (d - r)(d + r) / d^2, without the cancellation of 1 - sin^2 near the surface.
+    const double cosThetaMax = std::sqrt(std::max(0.0, (d - r) * (d + r))) / d;
+    cone.oneMinusCosThetaMax = cone.sin2ThetaMax / (1.0 + cosThetaMax);
+    const double pdf = 1.0 / (kTwoPi * cone.oneMinusCosThetaMax);
+    cone.pdf = pdf <= double(std::numeric_limits<float>::max()) ? static_cast<float>(pdf) : 0.0f;
+    return cone;
 }
 
 AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
@@ -46,43 +76,74 @@ AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
     if (ref.shape == ShapeKind::Sphere) {
         const Sphere& sphere = geometry_.spheres()[ref.index];
         const Vec3 n = sampleUniformSphere(u);
-        return {sphere.center + sphere.radius * n, n, true};
+        return {sphere.center + sphere.radius * n, n};
     }
     const Triangle& t = geometry_.triangles()[ref.index];
     const Vec3 b = sampleUniformTriangle(u);
-    return {b.x * t.a + b.y * t.b + b.z * t.c, glm::normalize(glm::cross(t.b - t.a, t.c - t.a)), false};
+    return {b.x * t.a + b.y * t.b + b.z * t.c, triangleNormal(t)};
 }
 
 LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
-    const SurfacePoint p = samplePoint(u);
     LightSample s;
-    s.point = p.point;
-    s.normal = p.normal;
-    const Vec3 toLight = p.point - receiver;
-    const float distance2 = glm::dot(toLight, toLight);
-    s.distance = std::sqrt(distance2);
-    if (!(s.distance > 0.0f)) return s;
+    if (!sampleable_) return s;
+    const std::optional<SphereCone> cone = sphere_ ? sphereCone(*sphere_, receiver) : std::nullopt;
+    if (cone) {
+        // Uniform in the cone (pbrt-v4 6.2.4), then the point on the sphere the direction meets
+        // first: alpha, its angle at the centre from the axis, by the law of sines.
+        if (!(cone->pdf > 0.0f)) return s;
+        const double oneMinusCos = double(u.x) * cone->oneMinusCosThetaMax;
+        const double cosTheta = 1.0 - oneMinusCos;
+        const double sin2Theta = oneMinusCos * (2.0 - oneMinusCos);
+        const double ratio = std::min(1.0, sin2Theta / cone->sin2ThetaMax);
+        const double cosAlpha =
+            std::clamp(sin2Theta / std::sqrt(cone->sin2ThetaMax) + cosTheta * std::sqrt(1.0 - ratio), -1.0, 1.0);
+        const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
+        const double phi = kTwoPi * double(u.y);
+        const Frame frame(cone->axis);
+        s.normal = glm::normalize(frame.toWorld(Vec3(float(sinAlpha * std::cos(phi)), float(sinAlpha * std::sin(phi)),
+                                                     float(cosAlpha))));
+        s.point = sphere_->center + sphere_->radius * s.normal;
+        s.pdf = cone->pdf;
+    } else {
+        const SurfacePoint p = samplePoint(u);
+        s.point = p.point;
+        s.normal = p.normal;
+        s.pdf = areaToSolidAngle(1.0f / area_, receiver, p.point, p.normal);
+    }
+    const Vec3 toLight = s.point - receiver;
+    s.distance = std::sqrt(glm::dot(toLight, toLight));
+    if (!(s.distance > 0.0f)) {
+        s.pdf = 0.0f;
+        return s;
+    }
     s.wi = toLight / s.distance;
-    const float cosLight = -glm::dot(p.normal, s.wi);
-    if (cosLight <= 0.0f && !p.twoSided) return s;  // the receiver is behind a one-sided emitter
-    s.pdf = areaToSolidAngle(1.0f / area_, receiver, p.point, p.normal);
+    // The receiver behind a one-sided emitter sees nothing of it (spheres emit on both sides).
+    if (!spheres_ && -glm::dot(s.normal, s.wi) <= 0.0f) s.pdf = 0.0f;
     if (s.pdf > 0.0f) s.weight = emission_ / s.pdf;
     return s;
 }
 
 float AreaLightSource::pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const {
+    if (!sampleable_) return 0.0f;
+    if (sphere_) {
+        if (const auto cone = sphereCone(*sphere_, receiver)) return cone->pdf;
+    }
     return areaToSolidAngle(1.0f / area_, receiver, point, normal);
+}
+
+bool AreaLightSource::samplesByArea(const Vec3& receiver) const {
+    return !sphere_ || !sphereCone(*sphere_, receiver);
 }
 
 EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     const SurfacePoint p = samplePoint(uPoint);
     EmittedRay e;
     Vec3 normal = p.normal;
-    if (p.twoSided && uDirection.x < 0.5f) {
+    if (spheres_ && uDirection.x < 0.5f) {
         // A sphere emits on both sides: pick one, then reuse the sample for the direction.
         normal = -normal;
         uDirection.x *= 2.0f;
-    } else if (p.twoSided) {
+    } else if (spheres_) {
         uDirection.x = (uDirection.x - 0.5f) * 2.0f;
     }
     const Vec3 local = sampleCosineHemisphere(uDirection);
@@ -91,7 +152,7 @@ EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     e.normal = normal;
     e.radiance = emission_;
     e.pdfPosition = 1.0f / area_;
-    e.pdfDirection = cosineHemispherePdf(local.z) * (p.twoSided ? 0.5f : 1.0f);
+    e.pdfDirection = cosineHemispherePdf(local.z) * (spheres_ ? 0.5f : 1.0f);
     return e;
 }
 
@@ -109,20 +170,15 @@ Rgb AreaLightSource::radiance(const SurfaceHit& hit, const Vec3& towardViewer) c
 
 Rgb AreaLightSource::power() const {
     // Le pi A for a one-sided Lambertian emitter; a sphere emits from both sides of its surface.
-    float twoSidedArea = 0.0f;
-    float before = 0.0f;
-    for (const Shape& s : shapes_) {
-        if (geometry_.decodePrimitive(s.primitive).shape == ShapeKind::Sphere) twoSidedArea += s.cumulativeArea - before;
-        before = s.cumulativeArea;
-    }
-    return emission_ * (kPi * (area_ + twoSidedArea));
+    return emission_ * (kPi * area_ * (spheres_ ? 2.0f : 1.0f));
 }
 
 float areaToSolidAngle(float pdfArea, const Vec3& receiver, const Vec3& point, const Vec3& normal) {
     const Vec3 toPoint = point - receiver;
     const float distance2 = glm::dot(toPoint, toPoint);
     const float cosEmitter = std::fabs(glm::dot(normal, toPoint)) / std::sqrt(distance2);
-    return cosEmitter > 0.0f ? pdfArea * distance2 / cosEmitter : 0.0f;
+    const float pdf = cosEmitter > 0.0f ? pdfArea * distance2 / cosEmitter : 0.0f;
+    return std::isfinite(pdf) ? pdf : 0.0f;
 }
 
 }  // namespace lightpath

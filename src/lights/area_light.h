@@ -1,8 +1,12 @@
 #pragma once
-// An emissive object as a light: every sphere and triangle of one scene object whose material
-// emits radiance Le, sampled uniformly by area. Triangles emit on the side their winding's normal
-// faces; spheres on both sides, so a closed emissive sphere also lights its inside.
+// An emissive object as a light: one sphere, or the triangles of one scene object, whose material
+// emits radiance Le. Triangles emit on the side their winding's normal faces; a sphere on both
+// sides, so a closed emissive sphere also lights its inside. Light sampling picks points
+// uniformly by area, except on a sphere seen from outside, where it samples the cone of
+// directions the sphere subtends (pbrt-v4 6.2.4): its density then stays finite and noiseless
+// for a sphere of any size at any distance.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "geometry/scene_geometry.h"
@@ -12,13 +16,18 @@ namespace lightpath {
 
 class AreaLightSource final : public Light {
 public:
-    // `primitives`: scene-wide ids of the object's spheres and triangles with non-zero area.
+    // `primitives`: scene-wide ids of the object's spheres or triangles; those without area are
+    // left out. Throws std::invalid_argument when they mix spheres and triangles: the two emit on
+    // different sides, and pdfEmissionDirection, given only a normal, could not tell which applies
+    // (one scene object is one sphere or a mesh).
     AreaLightSource(const PathEvent& event, Rgb emission, const SceneGeometry& geometry,
                     const std::vector<std::uint32_t>& primitives);
 
     LightSample sample(const Vec3& receiver, Vec2 u) const override;
     float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const override;
+    bool samplesByArea(const Vec3& receiver) const override;
     EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const override;
+    float pdfEmissionPosition() const override { return 1.0f / area_; }
     float pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const override;
     Rgb radiance(const SurfaceHit& hit, const Vec3& towardViewer) const override;
     Rgb power() const override;
@@ -26,6 +35,8 @@ public:
 
     float area() const { return area_; }
     bool empty() const { return shapes_.empty(); }
+    // Its area is at least kMinSampledEmitterArea, so that 1/area is a float.
+    bool sampleable() const override { return sampleable_; }
 
 private:
     struct Shape {
@@ -34,7 +45,6 @@ private:
     };
     struct SurfacePoint {
         Vec3 point, normal;
-        bool twoSided;
     };
     // A point uniformly by area: a shape in proportion to its area, then a point on it.
     SurfacePoint samplePoint(Vec2 u) const;
@@ -43,10 +53,24 @@ private:
     const SceneGeometry& geometry_;
     std::vector<Shape> shapes_;
     float area_ = 0.0f;
-    bool spheres_ = false;  // its shapes are spheres (one object is one sphere or a mesh), two-sided
+    bool sampleable_ = false;
+    bool spheres_ = false;          // its shapes are spheres, which emit on both sides
+    std::optional<Sphere> sphere_;  // the light is this one sphere: cone-sampled from outside
 };
 
-// Solid-angle density at `receiver` of a point sampled with `pdfArea` on a surface with `normal`.
+// Solid-angle density at `receiver` of a point sampled with `pdfArea` on a surface with `normal`;
+// 0 where it would not be a finite float (a point seen edge-on, or a tiny light).
 float areaToSolidAngle(float pdfArea, const Vec3& receiver, const Vec3& point, const Vec3& normal);
+
+// The cone of directions a sphere subtends from a receiver outside it, in double: sin^2 of its
+// half-angle is r^2/d^2, which underflows float for r/d below 1e-19.
+struct SphereCone {
+    Vec3 axis{0.0f};             // unit, from the centre towards the receiver
+    double sin2ThetaMax = 0.0;
+    double oneMinusCosThetaMax = 0.0;  // sin^2/(1 + cos): no cancellation for small cones
+    float pdf = 0.0f;            // 1 / (2 pi (1 - cos theta_max)) per steradian; 0 when above float's range
+};
+// Empty when the receiver is inside the sphere or on it.
+std::optional<SphereCone> sphereCone(const Sphere& sphere, const Vec3& receiver);
 
 }  // namespace lightpath

@@ -42,8 +42,14 @@ public:
     // The solid-angle density at `receiver` with which sample() returns `point` (normal `normal`)
     // on this light; 0 for a delta light, which no other technique can reach.
     virtual float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const = 0;
+    // Whether sample() towards `receiver` picks points with sampleEmission()'s density per unit
+    // area (true for a delta light); false where it samples the solid angle the light subtends
+    // instead (a sphere seen from outside), so that bidirectional path tracing weighs the two apart.
+    virtual bool samplesByArea(const Vec3& /*receiver*/) const { return true; }
     // A ray leaving the light: a point by area, a direction by cosine (area) or uniformly (point).
     virtual EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const = 0;
+    // The density per unit area of sampleEmission()'s points (1 for a point light: a delta).
+    virtual float pdfEmissionPosition() const { return 1.0f; }
     // The density per steradian with which sampleEmission() leaves a point of outward normal
     // `normal` (zero for a point light) along unit `direction`: bidirectional path tracing weighs
     // a path that another strategy found by it (MIS, Veach 1997 ch. 10).
@@ -56,6 +62,9 @@ public:
     // Emitted flux (W): lights are chosen in proportion to it.
     virtual Rgb power() const = 0;
     virtual bool isDelta() const = 0;
+    // Whether light sampling and light tracing may start on it; an emitter too small for its
+    // densities to be floats is seen only where a ray hits it (LightSet chooses it never).
+    virtual bool sampleable() const { return true; }
 
     // The event this light ends a path with: `L` for a [[lights]] entry, `O` for a surface whose
     // material emits (OSL's object emission), with the subject that labels it.

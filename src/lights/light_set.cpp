@@ -28,13 +28,19 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
         ofObject_[object] = light.get();
         lights_.push_back(std::move(light));
     }
-    for (const auto& light : lights_) (light->isDelta() ? delta_ : area_).push_back(light.get());
+    // An emitter too small to sample (its warning came from the loader) is seen only where a ray
+    // hits it: it is in no distribution, so every strategy's density of reaching it by choice is 0.
+    std::vector<const Light*> sampled;
+    for (const auto& light : lights_) {
+        if (!light->sampleable()) continue;
+        (light->isDelta() ? delta_ : area_).push_back(light.get());
+        sampled.push_back(light.get());
+    }
     areaChoices_ = distribution(area_);
-    std::vector<const Light*> all;
-    for (const auto& light : lights_) all.push_back(light.get());
-    emitterChoices_ = distribution(all);
+    emitterChoices_ = distribution(sampled);
+    // Indexed by object: a shapeless light's event index counts scene lights, another index space.
     for (const Choice& c : areaChoices_)
-        areaChoiceOfObject_[c.light->event().index] = c.probability;
+        if (c.light->event().subject == Subject::Object) areaChoiceOfObject_[c.light->event().index] = c.probability;
 }
 
 std::vector<LightSet::Choice> LightSet::distribution(std::span<const Light* const> lights) {

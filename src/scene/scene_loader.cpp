@@ -191,6 +191,17 @@ void readPointLight(const TomlTable& table, Scene& scene) {
     scene.lights.push_back(std::move(light));
 }
 
+// An emitter whose area is below kMinSampledEmitterArea is legal but cannot be light-sampled (its
+// density per unit area would not be a float): said once, where it is declared. LightSet then
+// leaves it to the rays that hit it.
+void warnIfTooSmallToSample(const TomlValue& where, const char* what, double area, const Rgb& emission, Scene& scene) {
+    if (isBlack(emission) || area >= kMinSampledEmitterArea) return;
+    scene.warnings.push_back(where.located(std::string("the emitting ") + what + " has an area of " + formatNumber(area) +
+                                           ", below the smallest a light can sample (" +
+                                           formatNumber(kMinSampledEmitterArea) +
+                                           "): its light is seen where a ray hits it but never sampled"));
+}
+
 // An area light is an emissive object: a material of its own that only emits, and the shapes
 // that carry it. Its label is the light's name, or "area-light-K" for the K-th unnamed one.
 std::uint32_t addEmitterObject(const TomlTable& table, Scene& scene) {
@@ -214,6 +225,8 @@ void readQuadLight(const TomlTable& table, Scene& scene) {
                                      formatVec3(edge2));
     }
     const std::uint32_t object = addEmitterObject(table, scene);
+    warnIfTooSmallToSample(table.required("edge2"), "quad", glm::length(glm::cross(glm::dvec3(edge1), glm::dvec3(edge2))),
+                           scene.materials.back()->emission, scene);
     scene.triangles.push_back({corner, corner + edge1, corner + edge1 + edge2, object});
     scene.triangles.push_back({corner, corner + edge1 + edge2, corner + edge2, object});
 }
@@ -225,6 +238,7 @@ void readSphereLight(const TomlTable& table, Scene& scene) {
     sphere.center = table.required("center").vec3();
     sphere.radius = table.required("radius").number(positive);
     sphere.object = addEmitterObject(table, scene);
+    warnIfTooSmallToSample(table.required("radius"), "sphere", surfaceArea(sphere), scene.materials.back()->emission, scene);
     scene.spheres.push_back(sphere);
 }
 
@@ -266,6 +280,8 @@ Sphere readSphere(const TomlTable& table, Scene& scene) {
     sphere.center = table.required("center").vec3();
     sphere.radius = table.required("radius").number(positive);
     sphere.object = addObject(table, scene);
+    warnIfTooSmallToSample(table.required("radius"), "sphere", surfaceArea(sphere),
+                           scene.materials[scene.objects.back().material]->emission, scene);
     return sphere;
 }
 
@@ -293,6 +309,10 @@ Triangle readTriangle(const TomlTable& table, Scene& scene) {
         scene.warnings.push_back(vertices.located("the 3 points lie on one line: the triangle has no area and is never seen"));
     }
     triangle.object = addObject(table, scene);
+    if (!areParallel(triangle.b - triangle.a, triangle.c - triangle.a)) {
+        warnIfTooSmallToSample(vertices, "triangle", surfaceArea(triangle),
+                               scene.materials[scene.objects.back().material]->emission, scene);
+    }
     return triangle;
 }
 

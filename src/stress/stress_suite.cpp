@@ -1,6 +1,7 @@
 #include "stress/stress_suite.h"
 
 #include "stress/bvh_row.h"
+#include "stress/emitter_rows.h"
 #include "stress/mesh_rows.h"
 #include "stress/non_finite_row.h"
 #include "stress/render_row.h"
@@ -16,6 +17,7 @@ std::vector<ScoreRow> runStressSuite(const StressConfig& config) {
     runShadowRows(config, rows);
     runBvhRow(config, rows);
     runNonFiniteRow(config, rows);
+    runEmitterRows(config, rows);
     runRenderRow(config, rows);
     return rows;
 }

@@ -186,9 +186,11 @@ TEST_CASE("camera: project() inverts generateRay, and importance integrates to o
 }
 
 // Random paths x0 (on a light) ... x(n-1) (the eye) inside a closed sphere whose wall is diffuse,
-// glossy, a mirror and an emitter at once, lit also by a point light: any two points inside see
-// each other, so every strategy can make every path. Each strategy's subpaths are rebuilt through
-// the given points by the integrator's own vertex code, and their weights must sum to one.
+// glossy, a mirror and an emitter at once, lit also by a point light and by a small emitting
+// sphere that light sampling samples by the cone it subtends (not by area, as emission does):
+// every strategy can make every path (the weights are of the points given, whatever lies between).
+// Each strategy's subpaths are rebuilt through the given points by the integrator's own vertex
+// code, and their weights must sum to one.
 TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over random paths") {
     Scene scene;
     scene.camera = test::centredCamera({0.1f, -0.2f, 0.3f}, {0, 0, -1}, {0, 1, 0}, 33);
@@ -202,10 +204,17 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
     wall.emission = Rgb{1.0f};
     test::addSphere(scene, "room", test::addMaterial(scene, wall), {0, 0, 0}, 1.0f);
     scene.lights.push_back(PointLight{"bulb", {-0.2f, 0.4f, 0.1f}, Rgb{1.0f}, {0, 0, 1}});
+    PhongMaterial lamp;
+    lamp.name = "lamp";
+    lamp.kd = Rgb{0.5f};
+    lamp.emission = Rgb{3.0f};
+    test::addSphere(scene, "lamp", test::addMaterial(scene, lamp), {0.3f, 0.2f, -0.4f}, 0.1f);
     const World world(scene);
     const RenderContext& ctx = world.context;
     const Light& areaLight = *world.lights.lightOfObject(0);
+    const Light& sphereLight = *world.lights.lightOfObject(1);
     const Light& pointLight = *world.lights.deltaLights()[0];
+    int coneSampled = 0;
 
     Pcg32 rng(2024, 1);
     auto u2 = [&] { return Vec2{rng.nextFloat(), rng.nextFloat()}; };
@@ -214,7 +223,7 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
     double worst = 0.0;
     for (int trial = 0; trial < 3000; ++trial) {
         const int n = 3 + trial % 5;  // 3 .. 7 vertices
-        const Light& light = trial % 2 == 0 ? areaLight : pointLight;
+        const Light& light = trial % 3 == 0 ? areaLight : trial % 3 == 1 ? sphereLight : pointLight;
         // x0 and a light walk to x(n-3), then the eye's first hit x(n-2) and the eye x(n-1).
         std::vector<SurfaceHit> hits(n);
         std::vector<Lobe> lobes(n, Lobe::Diffuse);
@@ -257,9 +266,12 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
             std::array<BdptVertex, kMaxSubpathVertices> lightPath, eyePath;
             // Light subpath x0 .. x(s-1), as a light walk would have made it.
             if (s >= 1) {
-                const float pdfPosition = e.pdfPosition;
-                lightPath[0] = lightVertex(light, points[0], e.normal, pdfPosition);
-                lightPath[0].pdfFwd = world.lights.emitterProbability(light) * pdfPosition;
+                // Light sampling from x1 picks x0 by its own density; emission by e.pdfPosition.
+                const float pdfPosition =
+                    light.isDelta() ? e.pdfPosition : lightSamplingAreaDensity(light, points[1], points[0], e.normal);
+                lightPath[0] = lightVertex(light, points[0], e.normal, pdfPosition, e.pdfPosition);
+                lightPath[0].pdfFwd = world.lights.emitterProbability(light) * e.pdfPosition;
+                coneSampled += !light.samplesByArea(points[1]);
                 float pdf = light.pdfEmissionDirection(e.normal, glm::normalize(points[1] - points[0]));
                 bool delta = false;
                 for (int i = 1; i < s; ++i) {
@@ -322,6 +334,7 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
     CHECK(paths > 2000);
     CHECK(shared > paths / 2);  // most paths are found by more than one strategy
     CHECK(withDelta > 100);     // and many pass a mirror bounce
+    CHECK(coneSampled > 1000);  // and many start on the sphere light seen from outside
 }
 
 // Renders with light tracing alone (t = 1, unweighted), splats summed as the renderer does.

@@ -1,0 +1,217 @@
+// Emitters of every size the loader accepts give finite, non-negative light in every integrator
+// (issue #28), and a sphere light sampled by the cone it subtends gives the closed-form
+// irradiance of a uniformly emitting sphere at any radius. Also issue #30's light-set defects.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "lights/area_light.h"
+#include "render/renderer.h"
+#include "render_world.h"
+#include "scene/scene_loader.h"
+
+namespace lightpath {
+namespace {
+
+constexpr const char* kIntegrators[] = {"raycast", "raster", "whitted", "path", "bdpt", "radiosity"};
+
+RenderResult renderWith(const Scene& scene, const AovSet& aovs, const std::string& integrator, int spp) {
+    RenderOptions options;
+    options.integrator = integrator;
+    options.samplesPerPixel = integrator == "raster" ? 1 : spp;  // the rasteriser samples pixel centres once
+    options.threads = 1;
+    return Renderer(scene, aovs, options).render();
+}
+
+bool finiteNonNegative(const Film& film) {
+    for (std::size_t l = 0; l < film.layerCount(); ++l)
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const float v = film.at(l, x, y)[c];
+                    if (!std::isfinite(v) || v < 0.0f) return false;
+                }
+    return true;
+}
+
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return text;
+}
+
+double layerMean(const Film& film, const std::string& name) {
+    std::size_t layer = film.layerCount();
+    for (std::size_t l = 0; l < film.layerCount(); ++l)
+        if (film.layerNames()[l] == name) layer = l;
+    REQUIRE(layer < film.layerCount());
+    double sum = 0.0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) sum += film.at(layer, x, y).g;
+    return sum / (film.width() * film.height());
+}
+
+}  // namespace
+
+TEST_CASE("emitters: the tiny sphere light of issue #28 renders finite in every integrator") {
+    Scene scene = loadScene(std::string(LIGHTPATH_SOURCE_DIR) + "/tests/fuzz/corpus/scene/regression-tiny-sphere-light.toml");
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    const AovSet aovs(classesSet());
+    for (const std::string integrator : kIntegrators) {
+        CAPTURE(integrator);
+        const RenderResult result = renderWith(scene, aovs, integrator, 4);
+        CHECK(result.stats.rays.nonFinite == 0);
+        CHECK(finiteNonNegative(result.film));
+    }
+}
+
+// A floor point facing a sphere light of radius r whose centre is d straight above it receives
+// E = pi L sin^2(theta_max), sin(theta_max) = r/d (the cone of directions the sphere subtends, a
+// cap fully above the horizon): the floor (kd = 1) shows kd/pi E = L r^2/d^2 in E(D|G)L.
+TEST_CASE("emitters: a sphere light gives the closed-form irradiance from radius 1e-12 to 9e5") {
+    struct Case {
+        double radius, distance, radiance;
+    };
+    const Case cases[] = {{1e-12, 1.0, 1e6}, {1e-3, 1.0, 1.0}, {1.0, 10.0, 1.0}, {1e3, 1e4, 1.0}, {9e5, 1e6, 1.0}};
+    const AovSet aovs(classesSet());
+    for (const Case& c : cases) {
+        const std::string text = R"(
+[camera]
+eye = [0, 0, 0.001]
+look_at = [0, 0, 0]
+up = [0, 1, 0]
+fov = 1
+resolution = [4, 4]
+[materials.floor]
+kd = 1
+[[planes]]
+point = [0, 0, 0]
+normal = [0, 0, 1]
+material = "floor"
+[[lights]]
+type = "sphere"
+center = [0, 0, )" + number(c.distance) + R"(]
+radius = )" + number(c.radius) + R"(
+radiance = )" + number(c.radiance) + "\n";
+        const Scene scene = loadSceneFromText(text, "sphere-light.toml");
+        const double r = scene.spheres[0].radius, d = scene.spheres[0].center.z;
+        const double expected = c.radiance * (r / d) * (r / d);
+        for (const std::string integrator : {"raycast", "path"}) {
+            CAPTURE(c.radius);
+            CAPTURE(integrator);
+            const RenderResult result = renderWith(scene, aovs, integrator, 64);
+            CHECK(result.stats.rays.nonFinite == 0);
+            const double measured = layerMean(result.film, "raycast");
+            CAPTURE(measured);
+            CAPTURE(expected);
+            CHECK(std::fabs(measured - expected) <= 0.02 * expected);  // relative: Approx adds 1 to the scale
+        }
+    }
+}
+
+TEST_CASE("emitters: an emitter too small to sample is warned about once, seen when hit, never sampled") {
+    const std::string text = R"(
+[materials.lamp]
+emission = 1
+[materials.grey]
+kd = 0.5
+[[spheres]]
+center = [0, 0, -3]
+radius = 1e-20
+material = "lamp"
+[[spheres]]
+center = [0, -101, -3]
+radius = 100
+material = "grey"
+)";
+    const Scene scene = loadSceneFromText(text, "tiny.toml");
+    REQUIRE(scene.warnings.size() == 1);
+    CHECK(scene.warnings[0].find("tiny.toml:") == 0);
+    CHECK(scene.warnings[0].find("never sampled") != std::string::npos);
+    const test::RenderWorld world(scene);
+    const Light* tiny = world.lights.lightOfObject(0);
+    REQUIRE(tiny != nullptr);
+    CHECK_FALSE(tiny->sampleable());
+    CHECK_FALSE(world.lights.hasAreaLights());
+    CHECK(world.lights.nextEventProbability(*tiny) == 0.0f);
+    CHECK(world.lights.emitterProbability(*tiny) == 0.0f);
+    const AovSet aovs(classesSet());
+    for (const std::string integrator : kIntegrators) {
+        CAPTURE(integrator);
+        const RenderResult result = renderWith(scene, aovs, integrator, 2);
+        CHECK(result.stats.rays.nonFinite == 0);
+        CHECK(finiteNonNegative(result.film));
+    }
+}
+
+TEST_CASE("emitters: a sliver triangle light keeps its area and lights by it") {
+    // Edges 1 and 1e-25: the float cross product squared underflows (1e-50), the area is 5e-26.
+    Scene scene;
+    const std::string text = R"(
+[materials.lamp]
+emission = 1
+[[triangles]]
+vertices = [[0, 0, 0], [1, 0, 0], [0.5, 1e-25, 0]]
+material = "lamp"
+)";
+    scene = loadSceneFromText(text, "sliver.toml");
+    const test::RenderWorld world(scene);
+    const auto* light = dynamic_cast<const AreaLightSource*>(world.lights.lightOfObject(0));
+    REQUIRE(light != nullptr);
+    CHECK(light->area() == doctest::Approx(5e-26).epsilon(1e-5));
+    // Seen from (0.5, 0, 1): E ~ L A cos cos' / d^2 (the triangle is tiny against d = 1).
+    const Vec3 receiver{0.5f, 0.0f, 1.0f};
+    const LightSample s = light->sample(receiver, Vec2{0.3f, 0.6f});
+    REQUIRE(s.pdf > 0.0f);
+    const float irradiance = s.weight.g * -s.wi.z;
+    CHECK(std::isfinite(irradiance));
+    CHECK(irradiance == doctest::Approx(5e-26).epsilon(1e-3));
+}
+
+TEST_CASE("light set: a shapeless light that is not a delta is indexed as a light, not as an object (#30)") {
+    // Its event's index counts scene lights; the light set once wrote its choice probability at
+    // that index into a table of objects (here: none).
+    class GlowSource final : public Light {
+    public:
+        explicit GlowSource(std::uint32_t index) : Light({lpe::EventType::Emitter, lpe::Scatter::None, Subject::SceneLight, index}) {}
+        LightSample sample(const Vec3&, Vec2) const override { return {}; }
+        float pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0f; }
+        EmittedRay sampleEmission(Vec2, Vec2) const override { return {}; }
+        float pdfEmissionDirection(const Vec3&, const Vec3&) const override { return 0.0f; }
+        Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
+        Rgb power() const override { return Rgb{1.0f}; }
+        bool isDelta() const override { return false; }
+    };
+    class Glow final : public SceneLight {
+    public:
+        Glow() : SceneLight("glow") {}
+        std::unique_ptr<SceneLight> clone() const override { return std::make_unique<Glow>(*this); }
+        Vec3 position() const override { return Vec3{0.0f}; }
+        std::unique_ptr<Light> makeSource(std::uint32_t index) const override { return std::make_unique<GlowSource>(index); }
+    };
+    Scene scene;
+    scene.lights.push_back(Glow());
+    const test::RenderWorld world(scene);
+    REQUIRE(world.lights.all().size() == 1);
+    CHECK(world.lights.nextEventProbability(*world.lights.all()[0]) == 1.0f);
+}
+
+TEST_CASE("area light: one light is spheres or triangles, never both (#30)") {
+    // Spheres emit on both sides and triangles on one; the light once took the kind of its last
+    // primitive for all of them, so a mix was sampled on one side and weighed as two.
+    const SceneGeometry geometry({Sphere{{0, 0, 0}, 1.0f, 0}}, {}, {Triangle{{2, 0, 0}, {3, 0, 0}, {2, 1, 0}, 0}});
+    const PathEvent event{lpe::EventType::ObjectEmission, lpe::Scatter::None, Subject::Object, 0};
+    CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.sphereId(0), geometry.triangleId(0)}),
+                    std::invalid_argument);
+    CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.triangleId(0), geometry.sphereId(0)}),
+                    std::invalid_argument);
+    CHECK_NOTHROW(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.sphereId(0)}));
+}
+
+}  // namespace lightpath
