@@ -1,9 +1,12 @@
 #include "cli/bench_error_command.h"
 
+#include <sys/wait.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <sstream>
+#include <utility>
 
 #include "bench/error_benchmark.h"
 #include "bench/machine.h"
@@ -46,7 +49,14 @@ std::string toJson(const ErrorBenchmarkResult& r) {
     return json.str();
 }
 
+// plot_error.py's exit code when python3-matplotlib is missing; any other failure is the script's.
+constexpr int kPlotWithoutMatplotlib = 3;
+
 void run(const ErrorOptions& options) {
+    // The outputs are written after minutes of rendering: refuse one that cannot be, first.
+    for (const auto& [option, path] : {std::pair{"--csv", options.csv}, {"--json", options.json}, {"--plot", options.plot}})
+        if (!path.empty())
+            if (const auto why = whyCannotWrite(path)) throw CLI::RuntimeError(std::string(option) + ": " + *why, kExitBadInput);
     std::printf("bench error: path tracer and radiosity, CPU seconds on 1 thread, error against closed forms or a cached "
                 "path-traced reference\n"
                 "machine: %s\n\n", describeMachine().c_str());
@@ -78,8 +88,14 @@ void run(const ErrorOptions& options) {
         const std::filesystem::path script = shippedScenesDirectory().parent_path() / "scripts" / "plot_error.py";
         const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + options.csv + "' '" + options.plot + "'";
         std::fflush(stdout);
-        if (std::system(command.c_str()) == 0) std::printf("wrote %s\n", options.plot.c_str());
-        else std::fprintf(stderr, "warning: no plot (%s failed; is python3-matplotlib installed?)\n", command.c_str());
+        const int status = std::system(command.c_str());
+        const int code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        if (code == 0) std::printf("wrote %s\n", options.plot.c_str());
+        else if (code == kPlotWithoutMatplotlib)
+            std::fprintf(stderr, "warning: no plot: python3-matplotlib is missing (apt-get install python3-matplotlib); "
+                                 "the CSV stands\n");
+        else std::fprintf(stderr, "warning: no plot: %s failed (exit %d, its message is above); the CSV stands\n",
+                          script.string().c_str(), code);
     }
 }
 

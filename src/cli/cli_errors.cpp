@@ -34,6 +34,58 @@ std::optional<std::string> nearest(const std::string& word, const std::vector<st
     return names[static_cast<std::size_t>(std::find(lowerNames.begin(), lowerNames.end(), *match) - lowerNames.begin())];
 }
 
+// What users of other renderers type for lightpath's options (pbrt, Mitsuba, Cycles, POV-Ray,
+// make): one table for every command, consulted before the spelling distance, which would
+// answer --samples with --sampler. A synonym is offered only where its option exists.
+struct Synonym {
+    const char* typed;
+    const char* option;
+    const char* usage;  // how to say it, when the option takes another form ("" for the option alone)
+};
+constexpr Synonym kSynonyms[] = {
+    {"--samples", "--spp", ""},
+    {"--spp-count", "--spp", ""},
+    {"--samples-per-pixel", "--spp", ""},
+    {"--pixel-samples", "--spp", ""},
+    {"-s", "--spp", ""},
+    {"--width", "--resolution", "--resolution WIDTHxHEIGHT"},
+    {"--height", "--resolution", "--resolution WIDTHxHEIGHT"},
+    {"--size", "--resolution", "--resolution WIDTHxHEIGHT"},
+    {"--res", "--resolution", "--resolution WIDTHxHEIGHT"},
+    {"-w", "--resolution", "--resolution WIDTHxHEIGHT"},
+    {"--outfile", "--output", ""},
+    {"--out", "--output", ""},
+    {"--threads-count", "--threads", ""},
+    {"--nthreads", "--threads", ""},
+    {"--jobs", "--threads", ""},
+    {"-j", "--threads", ""},
+    {"-t", "--threads", ""},
+    {"--depth", "--max-depth", ""},
+    {"--maxdepth", "--max-depth", ""},
+    {"--bounces", "--max-depth", ""},
+    {"--max-bounces", "--max-depth", ""},
+    {"--method", "--integrator", ""},
+    {"--aov", "--lpe", ""},
+    {"--pass", "--lpe", ""},
+    {"--passes", "--aovs", ""},
+    {"--pixel-filter", "--filter", ""},
+    {"--accelerator", "--accel", ""},
+    {"--adaptive-threshold", "--target-error", ""},
+    {"--noise-threshold", "--target-error", ""},
+    {"--silent", "--quiet", ""},
+    {"-q", "--quiet", ""},
+};
+
+// The option `word` stands for in `candidates`, by the table of synonyms.
+std::optional<std::string> synonym(const std::string& word, const std::vector<std::string>& candidates) {
+    for (const Synonym& s : kSynonyms) {
+        if (lowered(word) != s.typed || std::find(candidates.begin(), candidates.end(), s.option) == candidates.end())
+            continue;
+        return *s.usage ? std::string(s.usage) : std::string(s.option);
+    }
+    return std::nullopt;
+}
+
 // The subcommand being parsed when the error struck: the deepest one that was given.
 const CLI::App& deepest(const CLI::App& app) {
     for (const CLI::App* sub : app.get_subcommands())
@@ -88,14 +140,26 @@ std::string parseErrorMessage(const CLI::App& app, const CLI::ParseError& error)
         words = where.remaining();
         if (!words.empty()) message += " (got " + words.front() + ")";
     }
-    for (const std::string& word : words) {
-        if (const auto match = nearest(word.substr(0, word.find('=')), candidatesOf(where))) {
-            message += "; did you mean " + *match + "?";
-            break;
-        }
-    }
+    // A synonym of any word first (--samples means --spp), then the nearest spelling.
+    const std::vector<std::string> candidates = candidatesOf(where);
+    std::optional<std::string> suggestion;
+    for (const std::string& word : words)
+        if (!suggestion) suggestion = synonym(word.substr(0, word.find('=')), candidates);
+    for (const std::string& word : words)
+        if (!suggestion) suggestion = nearest(word.substr(0, word.find('=')), candidates);
+    if (suggestion) message += "; did you mean " + *suggestion + "?";
     return message + "\nRun with --help for more information.";
 }
+
+namespace {
+std::string& activityText() {
+    static std::string text;
+    return text;
+}
+}  // namespace
+
+void setActivity(std::string activity) { activityText() = std::move(activity); }
+const std::string& activity() { return activityText(); }
 
 std::string versionText() {
     std::string text = "lightpath " LIGHTPATH_VERSION "\nbuild: ";

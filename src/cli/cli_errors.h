@@ -21,6 +21,12 @@ std::string choiceMessage(const std::string& word, const std::vector<std::string
 // subcommands (those of the subcommand that was being parsed).
 std::string parseErrorMessage(const CLI::App& app, const CLI::ParseError& error);
 
+// What the command is doing, for main's last resort when memory runs out anyway (std::bad_alloc):
+// "out of memory while <activity>". Set before each step that allocates much ("rendering a
+// 640x480 image of 7 layers (...)"); main sets "running lightpath COMMAND" first.
+void setActivity(std::string activity);
+const std::string& activity();
+
 // The version and the build's options, for `lightpath --version`.
 std::string versionText();
 

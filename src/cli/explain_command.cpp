@@ -308,6 +308,10 @@ void run(const ExplainCommand& command) {
     std::vector<LoggedContribution> log;
     std::vector<Rejection> rejections;
     try {
+        // explain makes no film: only what the integrator keeps per pixel (the z-buffer) must fit.
+        PixelMemory memory = Renderer::pixelMemory(scene, aovs, options);
+        memory.film = memory.splats = 0;
+        command.setup.refuseBeyondMemory(memory);
         log = Renderer(scene, aovs, options).explainPixel(x, y, &rejections);
     } catch (const std::invalid_argument& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);

@@ -2,7 +2,10 @@
 // path; light path expressions split the render into AOVs that sum to the beauty.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <exception>
+#include <new>
+#include <string>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -17,6 +20,7 @@
 #include "cli/serve_command.h"
 #include "cli/stress_command.h"
 #include "io/image_module.h"
+#include "render/memory_limit.h"
 
 namespace {
 
@@ -37,6 +41,7 @@ int run(int argc, char** argv) {
         "  lightpath serve scenes/lecture-room.toml                      explore it in the browser\n"
         "  lightpath bench skip                                          what skipping saves\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
+    lightpath::setActivity(std::string("running lightpath") + (argc > 1 ? std::string(" ") + argv[1] : std::string()));
     lightpath::addRenderCommand(app);
     lightpath::addExplainCommand(app);
     lightpath::addLpeCommand(app);
@@ -63,6 +68,20 @@ int run(int argc, char** argv) {
         // the prefix and a did-you-mean like every other error.
         std::cerr << lightpath::withoutMarks(lightpath::parseErrorMessage(app, e)) << "\n";
         return lightpath::kExitBadInput;
+    } catch (const lightpath::MemoryLimitError& e) {
+        // A render the commands did not check first (bench): refused all the same, as bad input.
+        std::cerr << "lightpath: " << e.what() << "\n";
+        return lightpath::kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        // The last resort: renders are refused before they allocate what the machine cannot give
+        // (render/memory_limit.h), but anything else may still run out. No allocation here: the
+        // activity's text was made before.
+        std::fputs("lightpath: out of memory while ", stderr);
+        std::fputs(lightpath::activity().c_str(), stderr);
+        std::fputs(": the machine or this process's limit (ulimit -v) gave no more; free memory or ask for less "
+                   "(fewer pixels, layers or samples)\n",
+                   stderr);
+        return lightpath::kExitFailure;
     } catch (const std::exception& e) {
         std::cerr << "lightpath: error: " << e.what() << "\n";
         return lightpath::kExitFailure;

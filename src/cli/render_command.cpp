@@ -11,10 +11,12 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/cli_errors.h"
 #include "cli/exit_codes.h"
 #include "cli/render_setup.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
+#include "io/text_file.h"
 
 namespace lightpath {
 namespace {
@@ -104,23 +106,35 @@ static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler
 
 void run(const RenderCommand& command) {
     std::signal(SIGINT, [](int) { interrupted.store(true); });
+    setActivity("loading " + command.setup.scenePath);
     const Scene scene = command.setup.loadScene();
     const AovSet aovs = command.setup.buildAovSet(scene);
     RenderOptions options = command.setup.renderOptions();
     options.cancel = &interrupted;
     options.onWorkersStarted = preloadImageModule;
+    PixelMemory memory;
+    try {
+        memory = Renderer::pixelMemory(scene, aovs, options);
+    } catch (const std::invalid_argument& e) {
+        throw CLI::RuntimeError(e.what(), kExitBadInput);
+    }
+    // Check the output name, that every file of it can be written, and that the film fits in
+    // memory, before spending time on the scene's structures or the render.
+    const Film probe(1, 1, memory.layers);
+    try {
+        for (const auto& file : outputFiles(probe, command.output))
+            if (const auto why = whyCannotWrite(file)) throw ImageWriteError(*why);
+    } catch (const ImageWriteError& e) {
+        throw CLI::RuntimeError(std::string("-o: ") + e.what(), kExitBadInput);
+    }
+    command.setup.refuseBeyondMemory(
+        memory, encodingBytes(command.output, memory.width, memory.height, memory.layers.size(), options.threads));
+    setActivity("preparing to render " + memory.describe());
     std::unique_ptr<Renderer> renderer;
     try {
         renderer = std::make_unique<Renderer>(scene, aovs, options);
     } catch (const std::invalid_argument& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
-    }
-    // Check the output name before spending time on the render.
-    const Film probe(1, 1, renderer->layerNames());
-    try {
-        outputFiles(probe, command.output);
-    } catch (const ImageWriteError& e) {
-        throw CLI::RuntimeError(std::string("-o: ") + e.what(), kExitBadInput);
     }
 
     // Every input is accepted: an image will be written. Fail now if it could not be, and have
@@ -134,6 +148,7 @@ void run(const RenderCommand& command) {
     if (!command.readyFile.empty() && !std::ofstream(command.readyFile))
         throw CLI::RuntimeError("--ready-file: cannot create " + command.readyFile, kExitFailure);
 
+    setActivity("rendering " + memory.describe());
     const RenderResult result = renderer->render();
     if (result.cancelled) throw CLI::RuntimeError("interrupted: no image written", kExitInterrupted);
     ImageMetadata metadata{{"lightpath:scene", command.setup.scenePath},
@@ -147,6 +162,7 @@ void run(const RenderCommand& command) {
     try {
         imageCodec();
         write.moduleWaitSeconds = secondsSince(writeStart);
+        setActivity("writing " + command.output);
         const auto files = writeFilm(result.film, command.output, metadata, options.threads);
         write.seconds = secondsSince(writeStart);
         write.files = files.size();

@@ -1,6 +1,7 @@
 #include "cli/render_setup.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <optional>
 
@@ -14,6 +15,7 @@
 #include "lpe/error.h"
 #include "lpe/path_string.h"
 #include "lpe/reading.h"
+#include "render/memory_limit.h"
 #include "scene/scene_loader.h"
 #include "scene/spelling.h"
 
@@ -236,6 +238,29 @@ void RenderSetup::warnEmptyAovs(const Film& film, const AovSet& aovs, const Scen
              std::to_string(film.height()) + ", " + std::to_string(samplesPerPixel) + " spp, --max-depth " +
              std::to_string(maxDepth));
     }
+}
+
+void RenderSetup::refuseBeyondMemory(const PixelMemory& memory, std::uint64_t outputBytes) const {
+    const std::uint64_t needed = memory.total() + outputBytes;
+    const MemoryLimit limit = memoryLimit();
+    if (needed <= limit.bytes) return;
+    std::string parts;
+    const auto part = [&](std::uint64_t bytes, const std::string& what) {
+        if (bytes > 0) parts += (parts.empty() ? "" : ", ") + what + " " + formatBytes(bytes);
+    };
+    part(memory.film, "film");
+    part(memory.splats, "splat film");
+    part(memory.preprocess, integrator + "'s preprocess");
+    part(outputBytes, "PNG encoding");
+    // Every part grows with the pixels: scaling both sides by sqrt(limit / needed) fits.
+    const double scale = std::sqrt(static_cast<double>(limit.bytes) / static_cast<double>(needed));
+    const int width = std::max(1, static_cast<int>(memory.width * scale));
+    const int height = std::max(1, static_cast<int>(memory.height * scale));
+    std::string change = "render fewer pixels (--resolution " + std::to_string(width) + "x" + std::to_string(height) + " fits)";
+    if (memory.film > 0)
+        change = "render fewer layers (--aovs none keeps beauty and rest; fewer --lpe; --no-beauty) or " + change;
+    badInput(memory.describe() + " needs " + formatBytes(needed) + " of memory (" + parts + "), more than the " +
+             formatBytes(limit.bytes) + " that " + limit.bound + " leaves this process: " + change);
 }
 
 RenderOptions RenderSetup::renderOptions() const {

@@ -54,6 +54,10 @@ struct RenderSetup {
     // names nothing in `scene`. Refuses an AOV that can never be filled (cli/lpe_feasibility.h).
     AovSet buildAovSet(const Scene& scene, std::vector<std::string>* warnings = nullptr) const;
     RenderOptions renderOptions() const;
+    // Refuses (exit 2) a render whose pixel memory, plus `outputBytes` to write its files, is more
+    // than this process can get (render/memory_limit.h): names the amount, its parts, the layers,
+    // the bound, and what to change (fewer layers, fewer pixels: a --resolution that fits).
+    void refuseBeyondMemory(const PixelMemory& memory, std::uint64_t outputBytes = 0) const;
     // After a render: warns of each AOV that could have received light but got none.
     void warnEmptyAovs(const Film& film, const AovSet& aovs, const Scene& scene) const;
 

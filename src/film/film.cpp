@@ -7,13 +7,13 @@ namespace lightpath {
 
 Film::Film(int width, int height, std::vector<std::string> layerNames)
     : width_(width), height_(height), layerNames_(std::move(layerNames)),
-      pixels_(layerNames_.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), Rgb{0.0f}) {}
+      pixels_(valueCount(width, height, layerNames_.size()), Rgb{0.0f}) {}
 
 static_assert(std::is_trivially_default_constructible_v<Rgb>, "Film::Unset relies on Rgb having no constructor to run");
 
 Film::Film(int width, int height, std::vector<std::string> layerNames, Unset)
     : width_(width), height_(height), layerNames_(std::move(layerNames)),
-      pixels_(layerNames_.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {}
+      pixels_(valueCount(width, height, layerNames_.size())) {}
 
 std::vector<Rgb> Film::layer(std::size_t layer) const {
     std::vector<Rgb> pixels;

@@ -20,6 +20,15 @@ public:
     struct Unset {};
     Film(int width, int height, std::vector<std::string> layerNames, Unset);
 
+    // The bytes a film of this size holds, before it is allocated (issue #28: a render that cannot
+    // get them is refused up front). The constructors allocate exactly valueCount values.
+    static std::size_t valueCount(int width, int height, std::size_t layers) {
+        return layers * static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    }
+    static std::size_t bytes(int width, int height, std::size_t layers) {
+        return valueCount(width, height, layers) * sizeof(Rgb);
+    }
+
     int width() const { return width_; }
     int height() const { return height_; }
     std::size_t layerCount() const { return layerNames_.size(); }

@@ -6,7 +6,7 @@ namespace lightpath {
 
 SplatFilm::SplatFilm(int width, int height, std::size_t layers)
     : width_(width), height_(height), layers_(layers),
-      sums_(std::make_unique<std::atomic<std::int64_t>[]>(static_cast<std::size_t>(width) * height * layers * 3)) {}
+      sums_(std::make_unique<std::atomic<std::int64_t>[]>(valueCount(width, height, layers))) {}
 
 void SplatFilm::add(int x, int y, std::size_t layer, const Rgb& value) {
     const std::size_t i = index(x, y, layer);

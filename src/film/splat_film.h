@@ -16,6 +16,14 @@ class SplatFilm {
 public:
     SplatFilm(int width, int height, std::size_t layers);
 
+    // The bytes a splat film of this size holds (the constructor allocates valueCount sums).
+    static std::size_t valueCount(int width, int height, std::size_t layers) {
+        return static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * layers * 3;
+    }
+    static std::size_t bytes(int width, int height, std::size_t layers) {
+        return valueCount(width, height, layers) * sizeof(std::atomic<std::int64_t>);
+    }
+
     int width() const { return width_; }
     int height() const { return height_; }
     // Thread-safe; values are finite (the caller drops non-finite ones).

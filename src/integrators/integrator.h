@@ -4,6 +4,7 @@
 // and meets the LPE automaton only through PathState. A new integrator is one file implementing
 // this, plus its row in the registry.
 #include <atomic>
+#include <cstddef>
 #include <memory>
 #include <string_view>
 
@@ -63,6 +64,9 @@ public:
     // True when the integrator sees each pixel only at its centre (the rasteriser's fixed sample
     // grid): the renderer then takes exactly one sample per pixel.
     virtual bool samplesPixelCentres() const { return false; }
+    // The bytes preprocess keeps in proportion to the image (the rasteriser's z-buffer), so a
+    // render that cannot get them is refused before preprocess allocates them.
+    virtual std::size_t preprocessBytes(int /*width*/, int /*height*/) const { return 0; }
 };
 
 // A name of the registry (registry.h); nullptr for an unknown name.

@@ -14,7 +14,7 @@ ZBuffer::ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera)
       camera_(camera),
       width_(camera.width()),
       height_(camera.height()),
-      fragments_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_)) {
+      fragments_(fragmentCount(width_, height_)) {
     // The lecture's loops, in the rasteriser's order: for each primitive, for each pixel it covers.
     for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i) rasteriseSphere(i);
     for (std::uint32_t i = 0; i < geometry.planes().size(); ++i) rasterisePlane(i);

@@ -45,6 +45,12 @@ public:
     // Rasterises every primitive of `geometry` as `camera` sees it, in primitive id order: equal
     // depths keep the smaller id, as the ray caster's closest hit does.
     ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera);
+    // One fragment per pixel: the constructor allocates fragmentCount, and `bytes` is what a
+    // render is checked against before the z-buffer exists.
+    static std::size_t fragmentCount(int width, int height) {
+        return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    }
+    static std::size_t bytes(int width, int height) { return fragmentCount(width, height) * sizeof(RasterFragment); }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -81,6 +87,7 @@ public:
     void preprocess(const RenderContext& context) override;
     void traceCameraRay(const Ray& ray, PathState& path) const override;
     bool samplesPixelCentres() const override { return true; }
+    std::size_t preprocessBytes(int width, int height) const override { return ZBuffer::bytes(width, height); }
 
 private:
     std::optional<ZBuffer> zBuffer_;

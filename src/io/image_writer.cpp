@@ -34,6 +34,7 @@ constexpr const char* kBeautyLayer = "beauty";
 // trying five filters on every row costs more than it saves; level 1 is zlib's fastest.
 constexpr int kPngCompressionLevel = 1;
 constexpr int kPngRowFilter = 8;  // PNG_FILTER_NONE
+constexpr std::size_t kPngBytesPerPixel = 3;  // 8-bit R, G, B
 
 std::string lowerExtension(const fs::path& path) {
     std::string ext = path.extension().string();
@@ -126,17 +127,21 @@ std::string writePng(const ImageCodec& codec, const Film& film, std::size_t laye
     const std::span<const Rgb> all = film.interleaved();
     const std::size_t stride = film.layerCount();
     const Srgb8Table& table = srgb8Table();
-    std::vector<unsigned char, LargeBufferAllocator<unsigned char>> encoded(all.size() / stride * 3);
+    std::vector<unsigned char, LargeBufferAllocator<unsigned char>> encoded(all.size() / stride * kPngBytesPerPixel);
     for (std::size_t p = 0, i = layer; i < all.size(); ++p, i += stride)
-        for (int c = 0; c < 3; ++c) encoded[p * 3 + static_cast<std::size_t>(c)] = table.encode(all[i][c] * scale);
+        for (int c = 0; c < 3; ++c) encoded[p * kPngBytesPerPixel + static_cast<std::size_t>(c)] = table.encode(all[i][c] * scale);
     return codec.write("png", temporary.string(), spec, encoded.data());
 }
 
 // Runs task(0..count-1) on up to `threads` threads (0: one per core); returns the first failure.
+std::size_t parallelWorkers(std::size_t count, int threads) {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    return std::min<std::size_t>(count, threads > 0 ? static_cast<std::size_t>(threads) : cores);
+}
+
 template <typename Task>
 std::string runInParallel(std::size_t count, int threads, const Task& task) {
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    const std::size_t workers = std::min<std::size_t>(count, threads > 0 ? static_cast<std::size_t>(threads) : cores);
+    const std::size_t workers = parallelWorkers(count, threads);
     std::atomic<std::size_t> next{0};
     std::atomic<bool> failed{false};
     std::mutex mutex;
@@ -146,6 +151,8 @@ std::string runInParallel(std::size_t count, int threads, const Task& task) {
             std::string error;
             try {
                 error = task(i);
+            } catch (const std::bad_alloc&) {
+                error = "out of memory";
             } catch (const std::exception& e) {
                 error = e.what();
             }
@@ -219,6 +226,12 @@ std::vector<fs::path> outputFiles(const Film& film, const fs::path& path) {
         files.push_back(file);
     }
     return files;
+}
+
+std::uint64_t encodingBytes(const fs::path& path, int width, int height, std::size_t layers, int threads) {
+    if (lowerExtension(path) != ".png") return 0;  // the EXR is written from the film itself
+    const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+    return parallelWorkers(layers, threads) * pixels * kPngBytesPerPixel;
 }
 
 std::vector<fs::path> writeFilm(const Film& film, const fs::path& path, const ImageMetadata& metadata, int threads) {

@@ -7,6 +7,7 @@
 //             sRGB-encoded.
 // Every file is written under a temporary name in the same folder and renamed only when all were
 // written, so a failed run leaves no half-written file and keeps any older image of that name.
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,10 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // The files that `writeFilm` would produce for `path`, in layer order. Throws ImageWriteError for
 // an extension other than .exr or .png.
 std::vector<std::filesystem::path> outputFiles(const Film& film, const std::filesystem::path& path);
+
+// The bytes writeFilm allocates beside the film to write it to `path` on `threads` threads: the
+// PNG layers encoded at once (none for an EXR), for the check before a render (issue #28).
+std::uint64_t encodingBytes(const std::filesystem::path& path, int width, int height, std::size_t layers, int threads);
 
 // Returns the files written. Files are written side by side on up to `threads` threads (0: one
 // per core). Throws ImageWriteError, naming the file, when one cannot be written (the image module

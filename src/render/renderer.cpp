@@ -9,6 +9,7 @@
 
 #include "bench/timing.h"
 #include "integrators/registry.h"
+#include "render/memory_limit.h"
 #include "render/progress.h"
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
@@ -73,15 +74,46 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
     if (!options.writeBeauty && aovs.expressions().empty())
         throw std::invalid_argument("nothing to render: no beauty and no AOVs requested");
-    // One contiguous run (render() copies it as a block): every layer, or all but beauty and rest.
-    for (std::size_t l = 0; l < aovs.layerCount(); ++l) {
-        const bool beautyOrRest = l == 0 || l + 1 == aovs.layerCount();
-        if (options.writeBeauty || !beautyOrRest) writtenLayers_.push_back(l);
-    }
+    writtenLayers_ = writtenLayers(aovs, options.writeBeauty);
     if (integrator_->splats() && options.targetError > 0.0)
         throw std::invalid_argument("adaptive sampling (--target-error) cannot be combined with the " + options.integrator +
                                     " integrator, whose light tracing adds to every pixel");
+    if (const std::size_t bytes = integrator_->preprocessBytes(camera_.width(), camera_.height()); bytes > 0)
+        refuseBeyondMemory(bytes, "the " + options.integrator + " integrator's preprocess for " +
+                                      pixelMemory(scene, aovs, options).describe());
     integrator_->preprocess(context_);
+}
+
+std::vector<std::size_t> Renderer::writtenLayers(const AovSet& aovs, bool writeBeauty) {
+    // One contiguous run (render() copies it as a block): every layer, or all but beauty and rest.
+    std::vector<std::size_t> layers;
+    for (std::size_t l = 0; l < aovs.layerCount(); ++l) {
+        const bool beautyOrRest = l == 0 || l + 1 == aovs.layerCount();
+        if (writeBeauty || !beautyOrRest) layers.push_back(l);
+    }
+    return layers;
+}
+
+PixelMemory Renderer::pixelMemory(const Scene& scene, const AovSet& aovs, const RenderOptions& options) {
+    const std::unique_ptr<Integrator> integrator = makeIntegrator(options.integrator);
+    if (!integrator) throw std::invalid_argument("unknown integrator \"" + options.integrator + "\"");
+    PixelMemory memory;
+    memory.width = scene.camera.width;
+    memory.height = scene.camera.height;
+    const auto all = aovs.layerNames();
+    for (std::size_t l : writtenLayers(aovs, options.writeBeauty)) memory.layers.push_back(all[l]);
+    memory.film = Film::bytes(memory.width, memory.height, memory.layers.size());
+    // The splat film has every layer: the sink splats by automaton output (render()).
+    if (integrator->splats()) memory.splats = SplatFilm::bytes(memory.width, memory.height, aovs.layerCount());
+    memory.preprocess = integrator->preprocessBytes(memory.width, memory.height);
+    return memory;
+}
+
+std::string PixelMemory::describe() const {
+    std::string names;
+    for (const std::string& name : layers) names += (names.empty() ? "" : ", ") + name;
+    return "a " + std::to_string(width) + "x" + std::to_string(height) + " image of " + std::to_string(layers.size()) +
+           " layer" + (layers.size() == 1 ? "" : "s") + " (" + names + ")";
 }
 
 namespace {
@@ -168,6 +200,10 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     const auto started = std::chrono::steady_clock::now();
     const double startedCpu = threadCpuSeconds();
     const int width = camera_.width(), height = camera_.height();
+    {
+        const PixelMemory memory = pixelMemory(scene_, aovs_, options_);
+        refuseBeyondMemory(memory.film + memory.splats, memory.describe());
+    }
     // Unset: each worker writes the pixels of its tiles, so the film's pages (174 MB at 1080p with
     // the classes AOVs) are first touched by the workers in parallel, not zeroed by this thread
     // before they start (which made the AOVs cost 36-64% on two threads and 1.4% on one).

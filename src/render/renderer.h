@@ -82,6 +82,19 @@ struct RenderStats {
     double serialCpuSeconds = 0.0;
 };
 
+// What a render holds in proportion to its pixels, known before any of it is allocated (issue
+// #28): a render that cannot get it is refused with the amount, not ended by std::bad_alloc.
+struct PixelMemory {
+    int width = 0, height = 0;
+    std::vector<std::string> layers;  // the film's layers (Renderer::layerNames)
+    std::uint64_t film = 0;           // the film: Film::bytes
+    std::uint64_t splats = 0;         // light tracing's splat film, for an integrator that splats
+    std::uint64_t preprocess = 0;     // what the integrator's preprocess keeps (the rasteriser's z-buffer)
+    std::uint64_t total() const { return film + splats + preprocess; }
+    // "a 640x480 image of 7 layers (beauty, raycast, ..., rest)", for messages.
+    std::string describe() const;
+};
+
 struct RenderResult {
     Film film;
     RenderStats stats;
@@ -97,7 +110,12 @@ public:
     Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options,
              std::shared_ptr<const SceneGeometry> geometry);
     static std::shared_ptr<const SceneGeometry> buildGeometry(const Scene& scene, const RenderOptions& options);
+    // The bytes a renderer of these arguments allocates in proportion to the image, without
+    // building it: the one computation of them. Throws std::invalid_argument for an unknown integrator.
+    static PixelMemory pixelMemory(const Scene& scene, const AovSet& aovs, const RenderOptions& options);
 
+    // Throws MemoryLimitError (render/memory_limit.h) when the film would not fit in memory; callers
+    // that can say what to change check Renderer::pixelMemory before building the renderer.
     RenderResult render() const;
     // The same render with the per-pixel sample sequences seeded by `seed` instead of
     // RenderOptions::seed: renders with different seeds are independent estimates, so a caller
@@ -126,7 +144,9 @@ private:
     LightSet lights_;
     PinholeCamera camera_;
     PixelFilter filter_;
-    std::vector<std::size_t> writtenLayers_;  // indices into AovSet::layerNames()
+    // Indices into AovSet::layerNames(): every layer, or all but beauty and rest.
+    static std::vector<std::size_t> writtenLayers(const AovSet& aovs, bool writeBeauty);
+    std::vector<std::size_t> writtenLayers_;
     std::unique_ptr<Integrator> integrator_;
     RenderContext context_;
 };

@@ -7,6 +7,7 @@
 
 #include "cli/render_setup.h"
 #include "lpe/error.h"
+#include "render/memory_limit.h"
 #include "serve/request_error.h"
 
 namespace lightpath::serve {
@@ -134,6 +135,17 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
     scene.camera.height = settings.height;
     RenderOptions options = setup.renderOptions();
     options.progress = false;
+    // A session holds up to five films of this size at once (the previous job's image, the one
+    // shown, the sum of the passes, the pass being rendered and its new mean): refused here, not
+    // by std::bad_alloc on the render thread.
+    constexpr std::uint64_t kFilmsHeld = 5;
+    try {
+        const PixelMemory memory = Renderer::pixelMemory(scene, *aovs, options);
+        refuseBeyondMemory(kFilmsHeld * memory.film + memory.splats + memory.preprocess,
+                           memory.describe() + ", held " + std::to_string(kFilmsHeld) + " times,");
+    } catch (const MemoryLimitError& e) {
+        throw RequestError(400, "width,height", std::string("width,height: ") + e.what() + "; expected fewer pixels or lpes");
+    }
     return std::make_shared<Job>(generation, settings, std::move(scene), std::move(*aovs), options, std::move(warnings),
                                  geometry_);
 }
