@@ -12,6 +12,7 @@
 #include "render/progress.h"
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
+#include "util/worker_threads.h"
 
 namespace lightpath {
 namespace {
@@ -190,7 +191,10 @@ RenderResult Renderer::render(std::uint64_t seed) const {
             for (; x < std::min(x0 + kTileSize, width); ++x) std::ranges::fill(film.pixel(x, y), Rgb{0.0f});
     };
     const double serialBeforeCpu = threadCpuSeconds() - startedCpu;
-    auto work = [&](int worker) {
+    // A worker's exception stops the others and is rethrown here once all have joined: thrown out
+    // of a std::jthread it would call std::terminate (and take `serve` down).
+    WorkerErrors errors;
+    auto work = [&](unsigned worker) {
         const double workerStarted = threadCpuSeconds();
         // A cache line of padding on each side of the worker's accumulators: the heap may have put
         // another worker's data next to them.
@@ -210,7 +214,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
                     // Checked per pixel, not per tile: a tile at thousands of samples per pixel
                     // takes seconds, and Ctrl-C must stop the render promptly. The film is unset:
                     // the rest of the tile is cleared.
-                    if (cancelled()) {
+                    if (cancelled() || errors.failed()) {
                         clearTileFrom(tile, x, y);
                         workerCpu[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - workerStarted;
                         return;
@@ -224,11 +228,9 @@ RenderResult Renderer::render(std::uint64_t seed) const {
         }
         workerCpu[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - workerStarted;
     };
-    std::vector<std::jthread> workers;
-    for (int w = 1; w < threadCount; ++w) workers.emplace_back(work, w);
-    if (options_.onWorkersStarted) options_.onWorkersStarted();
-    work(0);
-    workers.clear();
+    runWorkers(static_cast<unsigned>(threadCount), errors, work, [&] {
+        if (options_.onWorkersStarted) options_.onWorkersStarted();
+    });
     const double afterWorkersCpu = threadCpuSeconds();
     // Tiles no worker took (a cancelled render) are still unset.
     for (int tile = nextTile.value.load(); tile < tileCount; ++tile) clearTileFrom(tile, (tile % tilesX) * kTileSize, (tile / tilesX) * kTileSize);
