@@ -146,6 +146,47 @@ TEST_CASE("bdpt: bit-identical images on 1, 2 and 8 threads, splats included") {
     }
 }
 
+TEST_CASE("splat film: sums faint and bright splats with a relative step, in any order") {
+    // 2^-20 absolute steps lost every splat below 5e-7 and overflowed above 8.8e12.
+    SplatFilm film(2, 1, 1);
+    for (int i = 0; i < 1000; ++i) film.add(0, 0, 0, Rgb{1e-9f, 3e-12f, 1.0f});
+    film.add(1, 0, 0, Rgb{1e13f, 3e15f, -2e14f});
+    film.add(1, 0, 0, Rgb{1e13f, 1.0f, 1e14f});
+    const Rgb faint = film.at(0, 0, 0), bright = film.at(1, 0, 0);
+    const auto close = [](float value, double expected) { return std::fabs(value / expected - 1.0) < 1e-6; };
+    CHECK(close(faint[0], 1e-6));
+    CHECK(close(faint[1], 3e-9));
+    CHECK(close(faint[2], 1000.0));
+    CHECK(close(bright[0], 2e13));
+    CHECK(close(bright[1], 3e15));
+    CHECK(close(bright[2], -1e14));
+}
+
+TEST_CASE("bdpt: an image scales with its light, faint (1e-9) and bright (1e+12) alike, splats included") {
+    // The point-light furnace: light tracing (splats) carries much of every pixel. Depth 2 keeps
+    // Russian roulette, which reads the light walk's absolute throughput, out of the comparison.
+    const auto lit = [](float intensity) {
+        Scene scene = furnace(0.5f, Rgb{0.0f});
+        scene.lights.push_back(PointLight{"centre", {0, 0, 0}, Rgb{intensity}, {0, 0, 1}});
+        return scene;
+    };
+    const Film reference = render(lit(1.0f), classesSet(), "bdpt", 4, 2, 5, 2);
+    for (const float scale : {1e-9f, 1e12f}) {
+        CAPTURE(scale);
+        const Film scaled = render(lit(scale), classesSet(), "bdpt", 4, 2, 5, 2);
+        const auto a = reference.interleaved(), b = scaled.interleaved();
+        REQUIRE(a.size() == b.size());
+        double worst = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::fabs(double(b[i][c]) / scale - double(a[i][c])) / (1e-6 + std::fabs(double(a[i][c]))));
+        CHECK(worst < 1e-5);
+        // Still bit-identical for any number of threads.
+        const Film one = render(lit(scale), classesSet(), "bdpt", 4, 2, 5, 1);
+        CHECK(std::equal(one.interleaved().begin(), one.interleaved().end(), b.begin(), b.end()));
+    }
+}
+
 // The pieces a test can hold: a scene with its geometry, lights and automaton.
 using World = test::RenderWorld;
 
