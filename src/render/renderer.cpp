@@ -65,6 +65,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     if (options.shadows == true && info.shadowRays == ShadowRays::Never)
         throw std::invalid_argument("the " + options.integrator + " integrator casts no rays, so it has no shadows; "
                                     "compare it with --integrator raycast --shadows off");
+    context_.filter = &filter_;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
     if (integrator_->samplesPixelCentres() && (options.samplesPerPixel != 1 || options.targetError > 0.0))
         throw std::invalid_argument("the " + options.integrator + " integrator samples each pixel once, at its centre: "
@@ -113,9 +114,10 @@ int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layer
         Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, seed);
         path.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are spread around it
-        // as the pixel filter weighs them.
+        // as the pixel filter weighs them. Under light tracing even one is spread: its splats
+        // estimate the filter's mean over the pixel, and so must the eye's strategies.
         Vec2 offset{0.5f};
-        if (spp > 1) offset += filter_.sample(sampler.next2D());
+        if (spp > 1 || integrator_->splats()) offset += filter_.sample(sampler.next2D());
         else sampler.skip2D();
         ++taken;
         if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
