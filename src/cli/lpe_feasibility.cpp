@@ -7,6 +7,7 @@
 #include "lpe/automaton.h"
 #include "lpe/path_string.h"
 #include "lpe/reading.h"
+#include "scene/emission.h"
 
 namespace lightpath {
 namespace {
@@ -72,6 +73,18 @@ std::string neverRendered(const std::string& expression) {
            "(<[RT][DGSs]>), then one light, emitting object or background ([LOB])";
 }
 
+// "R, T and L events (<R.'panel'>, <T.'panel'>, <L.'panel'>)": the events `label` is on in the
+// scene, each written as the expression that names it there.
+std::string eventsOf(const std::string& label, const std::vector<EventType>& types) {
+    std::string letters, tuples;
+    for (std::size_t i = 0; i < types.size(); ++i) {
+        const std::string letter(1, lpe::letter(types[i]));
+        letters += (i == 0 ? "" : i + 1 == types.size() ? " and " : ", ") + letter;
+        tuples += (i == 0 ? "<" : ", <") + letter + ".'" + label + "'>";
+    }
+    return letters + " events (" + tuples + ")";
+}
+
 // The first label of `expression` whose placement in `scene` rules it out, with what it is and
 // what the expression wanted it to be.
 std::optional<std::string> misplacedLabel(const std::string& expression, const std::vector<std::string>& languages,
@@ -91,9 +104,7 @@ std::optional<std::string> misplacedLabel(const std::string& expression, const s
         freed[label] = isLight ? kObjectEvents : kLightEvents;
         const std::string is = isLight ? "a light" : "an object";
         const std::string wanted = possible(all, freed) ? (isLight ? ", not an object" : ", not a light") : "";
-        std::string message = label + " is " + is + wanted + ": it labels only ";
-        message += isLight ? "L events (<L.'" + label + "'>)" : "R, T and O events (<RD'" + label + "'>, <O.'" + label + "'>)";
-        return message;
+        return label + " is " + is + wanted + ": it labels only " + eventsOf(label, placed->second);
     }
     return std::nullopt;
 }
@@ -112,11 +123,8 @@ lpe::LabelPlacement labelPlacement(const Scene& scene) {
     for (const LightSlot& light : scene.lights)
         if (!light->name.empty()) add(light->name, kLightEvents);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
         std::vector<EventType> events = {EventType::Reflection, EventType::Transmission};
-        // A [[lights]] quad or sphere emits as L; another emitting surface as O (path_record.h).
-        if (object.declaredLight) events.push_back(EventType::Emitter);
-        else if (!isBlack(scene.materials[object.material]->emission)) events.push_back(EventType::ObjectEmission);
+        if (const auto emission = emissionEventOf(scene, i)) events.push_back(*emission);
         add(scene.labelOf(i), events);
     }
     return placement;

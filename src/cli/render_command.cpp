@@ -78,6 +78,7 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
                     stats.serialCpuSeconds, stats.serialCpuSeconds + busiest);
     }
     std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
+    if (r.eventOverflow > 0) std::printf("paths cut at the event stack's bound: %llu\n", n(r.eventOverflow));
     std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
 }
 

@@ -141,7 +141,34 @@ private:
     bool known_ = false, visible_ = false;
 };
 
-// t = 1: light vertex y_i joined to the pinhole, splatted into the pixel it projects to.
+// Calls add(x, y, weight) for every pixel whose filter covers film position p, weight the filter's
+// density at p (PixelFilter::density). A pixel's own samples are spread by that density (filter
+// importance sampling), so a splat must be too, or light tracing and the eye's strategies would
+// estimate different integrals and their MIS sum neither (pbrt-v4's RGBFilm::AddSplat weighs splats
+// by the filter likewise). The box: the pixel that contains p, weight 1.
+template <class Add>
+void forPixelsCovering(const PixelFilter* filter, const Vec2& p, const PinholeCamera& camera, const Add& add) {
+    if (filter == nullptr || filter->kind() == PixelFilterKind::Box) {
+        add(std::min(static_cast<int>(p.x), camera.width() - 1), std::min(static_cast<int>(p.y), camera.height() - 1), 1.0f);
+        return;
+    }
+    // Pixel i's centre is i + 0.5: the pixels within the filter's radius of p.
+    const float r = filter->radius();
+    const int x0 = std::max(0, static_cast<int>(std::ceil(p.x - 0.5f - r)));
+    const int x1 = std::min(camera.width() - 1, static_cast<int>(std::floor(p.x - 0.5f + r)));
+    const int y0 = std::max(0, static_cast<int>(std::ceil(p.y - 0.5f - r)));
+    const int y1 = std::min(camera.height() - 1, static_cast<int>(std::floor(p.y - 0.5f + r)));
+    for (int y = y0; y <= y1; ++y) {
+        const float wy = filter->density(p.y - (static_cast<float>(y) + 0.5f));
+        if (wy == 0.0f) continue;
+        for (int x = x0; x <= x1; ++x) {
+            const float w = wy * filter->density(p.x - (static_cast<float>(x) + 0.5f));
+            if (w > 0.0f) add(x, y, w);
+        }
+    }
+}
+
+// t = 1: light vertex y_i joined to the pinhole, splatted into the pixels whose filter covers it.
 void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks, bool weighted) {
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[i];
@@ -156,8 +183,6 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
     if (!(importance > 0.0f)) return;
     // We cos(theta_eye) / d^2: the pinhole's importance through the solid angle it subtends.
     const float cameraTerm = importance * glm::dot(-w, ctx.camera.forward()) / distance2;
-    const int x = std::min(static_cast<int>(raster->x), ctx.camera.width() - 1);
-    const int yPixel = std::min(static_cast<int>(raster->y), ctx.camera.height() - 1);
     const PathEvent lightEvent = eventOfLight(light[0]);
     const BdptVertex eye[1] = {cameraVertex(ctx.camera.eye())};
     Visibility visible(sp.hit, ctx.camera.eye());
@@ -172,7 +197,12 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
                     weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1, lightWalks)
                              : 1.0f;
                 path.setStrategy(i + 1, 1);
-                if (weight > 0.0f && visible(path)) path.splat(x, yPixel, lightEvent, y.beta * f * (cameraTerm * weight));
+                if (weight > 0.0f && visible(path)) {
+                    const Rgb value = y.beta * f * (cameraTerm * weight);
+                    forPixelsCovering(ctx.filter, *raster, ctx.camera, [&](int x, int yPixel, float share) {
+                        path.splat(x, yPixel, lightEvent, value * share);
+                    });
+                }
             }
         }
         popTo(path, before);

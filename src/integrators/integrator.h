@@ -15,6 +15,7 @@
 #include "lights/light_set.h"
 #include "lpe/automaton.h"
 #include "math/ray.h"
+#include "sampling/pixel_filter.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "scene/scene_analysis.h"
@@ -49,6 +50,9 @@ struct RenderContext {
     // Szymczak's formula with its shadow term S_i = 1 (raycast and whitted; the rasteriser has no
     // rays, so it is always off there).
     bool shadows = true;
+    // The pixel filter the renderer spreads each pixel's samples with; light tracing weighs its
+    // splats by it. Null: the box.
+    const PixelFilter* filter = nullptr;
 };
 
 class Integrator {

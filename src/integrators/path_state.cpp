@@ -6,6 +6,10 @@
 
 namespace lightpath {
 
+namespace {
+constexpr std::size_t kEmitEvents = 2;  // emitAccepted() and reject() record a surface and a light
+}  // namespace
+
 PathState::PathState(const RenderContext& context, ContributionSink& sink, RayCounters& counters)
     : context(context), counters(counters), automaton_(context.automaton), symbols_(context.symbols),
       requested_(context.requested), keepAllPaths_(context.keepAllPaths), sink_(sink) {
@@ -13,6 +17,12 @@ PathState::PathState(const RenderContext& context, ContributionSink& sink, RayCo
 }
 
 bool PathState::push(const PathEvent& event) {
+    // Room is kept for the surface and light that emit() records after the last push. Checked in
+    // Release too: one compare, against writing past the end of a std::array.
+    if (events_.size() + 1 + kEmitEvents > kMaxPathEvents) [[unlikely]] {
+        ++counters.eventOverflow;
+        return false;
+    }
     const lpe::Automaton::State next = step(state(), event);
     if (!keepAllPaths_ && automaton_.isDead(next, requested_)) return false;
     events_.push(event);

@@ -25,7 +25,9 @@ public:
     PathState(const RenderContext& context, ContributionSink& sink, RayCounters& counters);
 
     // Appends `event` and advances the automaton; false, and nothing appended, when no requested
-    // output can accept any path that continues from here (a dead state: the branch stops).
+    // output can accept any path that continues from here (a dead state: the branch stops), or
+    // when the event stack is full (counted in RayCounters::eventOverflow; no shipped integrator
+    // gets there, since maxDepth <= kMaxDepth).
     bool push(const PathEvent& event);
     void pop();
     std::size_t size() const { return events_.size(); }

@@ -26,6 +26,7 @@ struct alignas(64) RayCounters {
     std::uint64_t highlightNoKs = 0;
 
     std::uint64_t nonFinite = 0;  // contributions dropped because they were NaN or infinite
+    std::uint64_t eventOverflow = 0;  // events refused because the path's event stack was full
 
     std::uint64_t total() const { return camera + shadow + reflection + refraction; }
 
@@ -43,6 +44,7 @@ struct alignas(64) RayCounters {
         highlightEvaluated += o.highlightEvaluated;
         highlightNoKs += o.highlightNoKs;
         nonFinite += o.nonFinite;
+        eventOverflow += o.eventOverflow;
         return *this;
     }
 };

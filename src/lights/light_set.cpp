@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "scene/emission.h"
 
 namespace lightpath {
 
@@ -12,15 +13,14 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
 
     // The emissive primitives of each object, by scene-wide id.
     std::vector<std::vector<std::uint32_t>> primitives(scene.objects.size());
-    auto emits = [&](std::uint32_t object) { return !isBlack(scene.materials[scene.objects[object].material]->emission); };
+    auto emits = [&](std::uint32_t object) { return emissionEventOf(scene, object).has_value(); };
     for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i)
         if (emits(geometry.spheres()[i].object)) primitives[geometry.spheres()[i].object].push_back(geometry.sphereId(i));
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i)
         if (emits(geometry.triangles()[i].object)) primitives[geometry.triangles()[i].object].push_back(geometry.triangleId(i));
     for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {
         if (primitives[object].empty()) continue;
-        // A [[lights]] quad or sphere is a light (L); any other emitting surface is object emission (O).
-        const lpe::EventType type = scene.objects[object].declaredLight ? lpe::EventType::Emitter : lpe::EventType::ObjectEmission;
+        const lpe::EventType type = *emissionEventOf(scene, object);
         auto light = std::make_unique<AreaLightSource>(PathEvent{type, lpe::Scatter::None, Subject::Object, object},
                                                        scene.materials[scene.objects[object].material]->emission,
                                                        geometry, primitives[object]);

@@ -15,7 +15,11 @@ inline Rgb eval(const Rgb& kd, const SurfaceSide& side, const Vec3& wi) {
 
 inline float pdf(const SurfaceSide& side, const Vec3& wi) { return cosineHemispherePdf(glm::dot(wi, side.normal)); }
 
-inline std::optional<LobeSample> sample(const Rgb& kd, const SurfaceSide& side, Vec2 u) {
+// Nothing when wo is below the shading normal, where eval() is 0 (a smooth mesh seen at a grazing
+// angle: the geometric side and the shading normal disagree), so BSDF sampling and light sampling
+// add the same light.
+inline std::optional<LobeSample> sample(const Rgb& kd, const SurfaceSide& side, const Vec3& wo, Vec2 u) {
+    if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;
     LobeSample s;
     s.wi = Frame(side.normal).toWorld(sampleCosineHemisphere(u));
     const float cosIn = glm::dot(s.wi, side.normal);

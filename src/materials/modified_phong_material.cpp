@@ -42,8 +42,9 @@ float ModifiedPhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3&
 
 std::optional<LobeSample> ModifiedPhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo,
                                                         Vec2 u) const {
-    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, u);
+    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, wo, u);
     if (lobe == Lobe::Highlight) {
+        if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;  // eval() is 0 there
         LobeSample s;
         s.wi = Frame(reflectAbout(wo, side.normal)).toWorld(samplePhongLobe(u, n));
         const float cosIn = glm::dot(s.wi, side.normal);

@@ -58,8 +58,9 @@ float PhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, con
 }
 
 std::optional<LobeSample> PhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
-    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, u);
+    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, wo, u);
     if (lobe == Lobe::Highlight) {
+        if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;  // eval() is 0 there
         LobeSample s;
         const Vec3 halfway = Frame(side.normal).toWorld(samplePhongLobe(u, n));
         const float woDotHalf = glm::dot(wo, halfway);

@@ -13,6 +13,7 @@
 #include "render/progress.h"
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
+#include "util/worker_threads.h"
 
 namespace lightpath {
 namespace {
@@ -65,6 +66,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     if (options.shadows == true && info.shadowRays == ShadowRays::Never)
         throw std::invalid_argument("the " + options.integrator + " integrator casts no rays, so it has no shadows; "
                                     "compare it with --integrator raycast --shadows off");
+    context_.filter = &filter_;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
     if (integrator_->samplesPixelCentres() && (options.samplesPerPixel != 1 || options.targetError > 0.0))
         throw std::invalid_argument("the " + options.integrator + " integrator samples each pixel once, at its centre: "
@@ -144,9 +146,10 @@ int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layer
         Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, seed);
         path.sampler = &sampler;
         // One sample goes through the pixel centre, as in the lecture; more are spread around it
-        // as the pixel filter weighs them.
+        // as the pixel filter weighs them. Under light tracing even one is spread: its splats
+        // estimate the filter's mean over the pixel, and so must the eye's strategies.
         Vec2 offset{0.5f};
-        if (spp > 1) offset += filter_.sample(sampler.next2D());
+        if (spp > 1 || integrator_->splats()) offset += filter_.sample(sampler.next2D());
         else sampler.skip2D();
         ++taken;
         if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
@@ -226,7 +229,10 @@ RenderResult Renderer::render(std::uint64_t seed) const {
             for (; x < std::min(x0 + kTileSize, width); ++x) std::ranges::fill(film.pixel(x, y), Rgb{0.0f});
     };
     const double serialBeforeCpu = threadCpuSeconds() - startedCpu;
-    auto work = [&](int worker) {
+    // A worker's exception stops the others and is rethrown here once all have joined: thrown out
+    // of a std::jthread it would call std::terminate (and take `serve` down).
+    WorkerErrors errors;
+    auto work = [&](unsigned worker) {
         const double workerStarted = threadCpuSeconds();
         // A cache line of padding on each side of the worker's accumulators: the heap may have put
         // another worker's data next to them.
@@ -246,7 +252,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
                     // Checked per pixel, not per tile: a tile at thousands of samples per pixel
                     // takes seconds, and Ctrl-C must stop the render promptly. The film is unset:
                     // the rest of the tile is cleared.
-                    if (cancelled()) {
+                    if (cancelled() || errors.failed()) {
                         clearTileFrom(tile, x, y);
                         workerCpu[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - workerStarted;
                         return;
@@ -260,11 +266,9 @@ RenderResult Renderer::render(std::uint64_t seed) const {
         }
         workerCpu[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - workerStarted;
     };
-    std::vector<std::jthread> workers;
-    for (int w = 1; w < threadCount; ++w) workers.emplace_back(work, w);
-    if (options_.onWorkersStarted) options_.onWorkersStarted();
-    work(0);
-    workers.clear();
+    runWorkers(static_cast<unsigned>(threadCount), errors, work, [&] {
+        if (options_.onWorkersStarted) options_.onWorkersStarted();
+    });
     const double afterWorkersCpu = threadCpuSeconds();
     // Tiles no worker took (a cancelled render) are still unset.
     for (int tile = nextTile.value.load(); tile < tileCount; ++tile) clearTileFrom(tile, (tile % tilesX) * kTileSize, (tile / tilesX) * kTileSize);

@@ -83,6 +83,17 @@ float PixelFilter::sample1D(float u) const {
     return negative ? -x : x;
 }
 
+float PixelFilter::density(float x) const {
+    const float a = std::fabs(x);
+    if (kind_ == PixelFilterKind::Box) return a <= 0.5f ? 1.0f : 0.0f;
+    if (a >= radius_) return 0.0f;
+    // sample1D is linear within each bin: uniform there, with the bin's share of |x|'s mass,
+    // split evenly between the two signs.
+    const float width = radius_ / kFilterTableSize;
+    const auto bin = static_cast<std::size_t>(std::min(static_cast<int>(a / width), kFilterTableSize - 1));
+    return 0.5f * (cdf_[bin + 1] - cdf_[bin]) / width;
+}
+
 Vec2 PixelFilter::sample(Vec2 u) const { return {sample1D(u.x), sample1D(u.y)}; }
 
 }  // namespace lightpath

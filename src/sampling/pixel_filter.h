@@ -39,6 +39,11 @@ public:
     // A uniform point of [0,1)^2 mapped to an offset from the pixel centre distributed as the
     // filter; monotone per axis, so stratified and low-discrepancy points stay so.
     Vec2 sample(Vec2 u) const;
+    // The density sample() draws an offset with, per axis and together: the tabulated filter,
+    // normalised. Light tracing splats a film position into each pixel with this weight, so its
+    // estimate of a pixel is the same filtered integral the pixel's own samples estimate.
+    float density(float x) const;
+    float density(Vec2 offset) const { return density(offset.x) * density(offset.y); }
 
 private:
     float sample1D(float u) const;

@@ -8,6 +8,7 @@
 #include "integrators/registry.h"
 #include "integrators/event_symbols.h"
 #include "lpe/analysis.h"
+#include "scene/emission.h"
 #include "serve/session.h"
 #include "serve/settings.h"
 
@@ -35,7 +36,7 @@ std::string identifierFor(const std::string& label, const std::vector<lpe::Named
 
 std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
     std::vector<lpe::NamedExpression> set;
-    // Lights are L events, emitting objects O events (docs/lpe.md), in OSL's spelling <L.'key'>.
+    // One group per light and per emitting surface, in OSL's spelling <L.'key'>, <O.'lamp'>.
     const auto add = [&](char type, const std::string& label) {
         if (label.find('\'') != std::string::npos) return;  // cannot be quoted in an LPE
         set.push_back({identifierFor(label, set), std::string("E.*<") + type + ".'" + label + "'>"});
@@ -43,12 +44,14 @@ std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
     if (!isBlackRgb(scene.ambient)) add('L', kAmbientLabel);
     for (const LightSlot& light : scene.lights)
         if (!light->name.empty()) add('L', light->name);
-    std::vector<std::string> emissive;
+    // An emitting surface ends its paths with the event the scene says: L for a [[lights]] quad or
+    // sphere, O for another (scene/emission.h, which the light set and the command line read).
+    std::vector<std::pair<std::string, char>> emissive;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
-        if (!isBlackRgb(scene.materials[scene.objects[i].material]->emission)) emissive.push_back(scene.labelOf(i));
+        if (const auto type = emissionEventOf(scene, i)) emissive.emplace_back(scene.labelOf(i), lpe::letter(*type));
     std::sort(emissive.begin(), emissive.end());
     emissive.erase(std::unique(emissive.begin(), emissive.end()), emissive.end());
-    for (const std::string& label : emissive) add('O', label);
+    for (const auto& [label, type] : emissive) add(type, label);
     if (!isBlackRgb(scene.background)) set.push_back({identifierFor("background", set), "E.*B"});
     return set;
 }
@@ -82,7 +85,7 @@ json describeScene(const Scene& scene, const std::string& scenePath) {
     json objects = json::array();
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         json object = {{"name", scene.objects[i].name}, {"label", scene.labelOf(i)},
-                       {"emissive", !isBlackRgb(scene.materials[scene.objects[i].material]->emission)}};
+                       {"emissive", emissionEventOf(scene, i).has_value()}};
         if (low[i].x <= high[i].x) object["bounds"] = {point(low[i]), point(high[i])};
         objects.push_back(object);
     }

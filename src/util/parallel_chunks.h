@@ -1,12 +1,14 @@
 #pragma once
 // Runs body(begin, end) over [0, count) in chunks of `grain` items on up to `threads` threads,
 // the caller's among them. The chunks depend on count and grain alone, so work that writes only
-// its own chunk's results gives the same answer on any number of threads.
+// its own chunk's results gives the same answer on any number of threads. An exception thrown by
+// body on any thread stops the others taking chunks and is rethrown on the caller's (worker_threads.h).
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <thread>
-#include <vector>
+
+#include "util/worker_threads.h"
 
 namespace lightpath {
 
@@ -19,13 +21,12 @@ template <typename Body>
 void parallelChunks(std::size_t count, std::size_t grain, unsigned threads, const Body& body) {
     const std::size_t chunks = (count + grain - 1) / grain;
     std::atomic<std::size_t> next{0};
-    const auto run = [&] {
-        for (std::size_t chunk; (chunk = next.fetch_add(1, std::memory_order_relaxed)) < chunks;)
+    WorkerErrors errors;
+    const auto run = [&](unsigned) {
+        for (std::size_t chunk; !errors.failed() && (chunk = next.fetch_add(1, std::memory_order_relaxed)) < chunks;)
             body(chunk * grain, std::min(count, (chunk + 1) * grain));
     };
-    std::vector<std::jthread> helpers;
-    for (std::size_t t = 1; t < std::min<std::size_t>(threads, chunks); ++t) helpers.emplace_back(run);
-    run();
+    runWorkers(static_cast<unsigned>(std::clamp<std::size_t>(chunks, 1, std::max(1u, threads))), errors, run);
 }
 
 }  // namespace lightpath

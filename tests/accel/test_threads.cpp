@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <atomic>
 #include <memory>
+#include <stdexcept>
+#include <thread>
 
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"
 #include "util/parallel_chunks.h"
+#include "util/worker_threads.h"
 
 namespace lightpath {
 namespace {
@@ -61,6 +64,57 @@ TEST_CASE("parallelChunks visits every index once, in the chunks count and grain
             }
         }
     }
+}
+
+TEST_CASE("parallelChunks rethrows a worker's exception on the calling thread") {
+    // Without this an exception in a helper std::jthread calls std::terminate: in `serve` that takes
+    // the server down. The chunk that throws is taken by whichever thread comes first.
+    for (const unsigned threads : {1u, 2u, 5u}) {
+        CAPTURE(threads);
+        constexpr std::size_t kCount = 100000;
+        std::atomic<std::size_t> visited{0};
+        const auto body = [&](std::size_t begin, std::size_t end) {
+            if (begin == 3) throw std::runtime_error("chunk 3 failed");
+            visited += end - begin;
+        };
+        CHECK_THROWS_WITH_AS(parallelChunks(kCount, 1, threads, body), "chunk 3 failed", std::runtime_error);
+        if (threads == 1) CHECK(visited == 3);  // chunks 0 to 2, then none after the throw
+    }
+}
+
+TEST_CASE("parallelChunks rethrows an exception thrown on a helper thread, not std::terminate") {
+    // The calling thread's chunks wait until a helper has thrown, so the helper surely throws.
+    for (const unsigned threads : {2u, 5u}) {
+        CAPTURE(threads);
+        const std::thread::id caller = std::this_thread::get_id();
+        std::atomic<bool> helperThrew{false};
+        const auto body = [&](std::size_t, std::size_t) {
+            if (std::this_thread::get_id() != caller) {
+                helperThrew = true;
+                throw std::runtime_error("a helper failed");
+            }
+            while (!helperThrew) std::this_thread::yield();
+        };
+        CHECK_THROWS_WITH_AS(parallelChunks(1000, 1, threads, body), "a helper failed", std::runtime_error);
+    }
+}
+
+TEST_CASE("runWorkers: a helper's exception reaches the caller, the others see failed(), started() runs once") {
+    WorkerErrors errors;
+    std::atomic<int> started{0}, stopped{0};
+    const auto work = [&](unsigned worker) {
+        if (worker == 2) throw std::invalid_argument("worker 2 failed");
+        while (!errors.failed()) std::this_thread::yield();  // until worker 2 has thrown
+        ++stopped;
+    };
+    CHECK_THROWS_WITH_AS(runWorkers(4, errors, work, [&] { ++started; }), "worker 2 failed", std::invalid_argument);
+    CHECK(started == 1);
+    CHECK(stopped == 3);
+    // Without a failure nothing is thrown and every worker ran.
+    WorkerErrors none;
+    std::atomic<int> ran{0};
+    runWorkers(3, none, [&](unsigned) { ++ran; });
+    CHECK(ran == 3);
 }
 
 }  // namespace

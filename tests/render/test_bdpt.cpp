@@ -146,6 +146,47 @@ TEST_CASE("bdpt: bit-identical images on 1, 2 and 8 threads, splats included") {
     }
 }
 
+TEST_CASE("splat film: sums faint and bright splats with a relative step, in any order") {
+    // 2^-20 absolute steps lost every splat below 5e-7 and overflowed above 8.8e12.
+    SplatFilm film(2, 1, 1);
+    for (int i = 0; i < 1000; ++i) film.add(0, 0, 0, Rgb{1e-9f, 3e-12f, 1.0f});
+    film.add(1, 0, 0, Rgb{1e13f, 3e15f, -2e14f});
+    film.add(1, 0, 0, Rgb{1e13f, 1.0f, 1e14f});
+    const Rgb faint = film.at(0, 0, 0), bright = film.at(1, 0, 0);
+    const auto close = [](float value, double expected) { return std::fabs(value / expected - 1.0) < 1e-6; };
+    CHECK(close(faint[0], 1e-6));
+    CHECK(close(faint[1], 3e-9));
+    CHECK(close(faint[2], 1000.0));
+    CHECK(close(bright[0], 2e13));
+    CHECK(close(bright[1], 3e15));
+    CHECK(close(bright[2], -1e14));
+}
+
+TEST_CASE("bdpt: an image scales with its light, faint (1e-9) and bright (1e+12) alike, splats included") {
+    // The point-light furnace: light tracing (splats) carries much of every pixel. Depth 2 keeps
+    // Russian roulette, which reads the light walk's absolute throughput, out of the comparison.
+    const auto lit = [](float intensity) {
+        Scene scene = furnace(0.5f, Rgb{0.0f});
+        scene.lights.push_back(PointLight{"centre", {0, 0, 0}, Rgb{intensity}, {0, 0, 1}});
+        return scene;
+    };
+    const Film reference = render(lit(1.0f), classesSet(), "bdpt", 4, 2, 5, 2);
+    for (const float scale : {1e-9f, 1e12f}) {
+        CAPTURE(scale);
+        const Film scaled = render(lit(scale), classesSet(), "bdpt", 4, 2, 5, 2);
+        const auto a = reference.interleaved(), b = scaled.interleaved();
+        REQUIRE(a.size() == b.size());
+        double worst = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::fabs(double(b[i][c]) / scale - double(a[i][c])) / (1e-6 + std::fabs(double(a[i][c]))));
+        CHECK(worst < 1e-5);
+        // Still bit-identical for any number of threads.
+        const Film one = render(lit(scale), classesSet(), "bdpt", 4, 2, 5, 1);
+        CHECK(std::equal(one.interleaved().begin(), one.interleaved().end(), b.begin(), b.end()));
+    }
+}
+
 // The pieces a test can hold: a scene with its geometry, lights and automaton.
 using World = test::RenderWorld;
 
@@ -462,6 +503,119 @@ TEST_CASE("bdpt: the caustic under a point light behind a glass ball is found by
     const double bdpt = total(render(scene, set, "bdpt", 4, 5, 1));
     CHECK(path == 0.0);
     CHECK(bdpt > 0.0);
+}
+
+// Light tracing and the eye's samples must estimate one integral per pixel: the pixel filter's
+// weighted mean of the radiance. A point light two pixels above a floor seen from above makes a
+// spot sharp enough that a tent's mean, a box's mean and the centre's value differ by several
+// percent: a bdpt that splats with a box while its eye samples follow the tent (or go through the
+// centre at 1 spp) lands between them, by the MIS weights. Light tracing's weight against the eye's
+// is r^2 / (1 + r^2) (power heuristic), r the ratio of their densities on the floor: 1 / (4 pi d^2)
+// for the light, 1 / (the image's area on the floor) for the eye, so r = N^2 / (16 pi) at N x N
+// pixels: about 4.5 at 15 (light tracing carries the spot), about 0.2 at 3 (the eye does).
+struct SpotFloor {
+    static constexpr double kHeight = 2.0, kKd = 0.6, kIntensity = 3.0;
+    Scene scene;
+    int size;
+    double lightHeight;
+
+    explicit SpotFloor(int pixels) : size(pixels) {
+        scene.camera = test::centredCamera({0, float(kHeight), 0}, {0, 0, 0}, {0, 0, -1}, size);
+        scene.camera.verticalFovDegrees = 60.0f;
+        const double pixel = 2.0 * kHeight * std::tan(kPi / 6.0) / size;
+        lightHeight = 2.0 * pixel;
+        PhongMaterial floor;
+        floor.name = "floor";
+        floor.kd = Rgb{float(kKd)};
+        test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
+        scene.lights.push_back(PointLight{"key", {0, float(lightHeight), 0}, Rgb{float(kIntensity)}, {0, 0, 1}});
+    }
+    // kd I cos(theta) / d^2 at floor point p.
+    double radiance(const glm::dvec3& p) const {
+        const glm::dvec3 toLight = glm::dvec3{0, lightHeight, 0} - p;
+        const double d = glm::length(toLight);
+        return kKd * kIntensity * (toLight.y / d) / (d * d);
+    }
+    // The filter-weighted mean of the radiance over pixel (i, j): profile(x) profile(y) over
+    // [-radius, radius]^2 around its centre, by a fine midpoint grid.
+    template <class Profile>
+    double filtered(int i, int j, double radius, Profile profile) const {
+        const PinholeCamera camera(scene.camera);
+        constexpr int kGrid = 96;
+        double sum = 0.0, weights = 0.0;
+        for (int b = 0; b < kGrid; ++b) {
+            for (int a = 0; a < kGrid; ++a) {
+                const double x = -radius + 2.0 * radius * (a + 0.5) / kGrid, y = -radius + 2.0 * radius * (b + 0.5) / kGrid;
+                const double w = profile(x) * profile(y);
+                const Ray ray = camera.generateRay(float(i + 0.5 + x), float(j + 0.5 + y));
+                const glm::dvec3 d(ray.direction), o(ray.origin);
+                sum += w * radiance(o + (-o.y / d.y) * d);
+                weights += w;
+            }
+        }
+        return sum / weights;
+    }
+    double tent(int i, int j) const { return filtered(i, j, 1.0, [](double x) { return 1.0 - std::fabs(x); }); }
+    double box(int i, int j) const { return filtered(i, j, 0.5, [](double) { return 1.0; }); }
+};
+
+// The centre pixel and its four neighbours from `renders` independent renders.
+std::vector<std::vector<double>> spotPixels(const SpotFloor& spot, const char* integrator, PixelFilterKind filter, int spp,
+                                            int renders) {
+    std::vector<std::vector<double>> values(5);
+    const int c = spot.size / 2;
+    const int pixels[5][2] = {{c, c}, {c + 1, c}, {c - 1, c}, {c, c + 1}, {c, c - 1}};
+    const AovSet aovs({});
+    for (int r = 0; r < renders; ++r) {
+        RenderOptions options;
+        options.integrator = integrator;
+        options.samplesPerPixel = spp;
+        options.maxDepth = 1;
+        options.seed = 1000 + r;
+        options.filter = filter;
+        const Film film = Renderer(spot.scene, aovs, options).render().film;
+        for (int k = 0; k < 5; ++k) values[k].push_back(film.at(0, pixels[k][0], pixels[k][1]).g);
+    }
+    return values;
+}
+
+void checkSpot(const std::vector<std::vector<double>>& values, const std::vector<double>& expected, double control) {
+    for (std::size_t k = 0; k < values.size(); ++k) {
+        CAPTURE(k);
+        CAPTURE(mean(values[k]));
+        CAPTURE(expected[k]);
+        CHECK(studentTTest(values[k], expected[k]) > kPValue);
+    }
+    // The control: the centre pixel is told apart from the other integral.
+    CAPTURE(control);
+    CHECK(studentTTest(values[0], control) < kPValue);
+}
+
+TEST_CASE("bdpt: with a tent filter, splats and eye samples estimate the tent's mean, as the path tracer does") {
+    const SpotFloor spot(15);
+    const int c = spot.size / 2;
+    const std::vector<double> tent = {spot.tent(c, c), spot.tent(c + 1, c), spot.tent(c - 1, c), spot.tent(c, c + 1),
+                                      spot.tent(c, c - 1)};
+    const double box = spot.box(c, c);
+    CAPTURE(tent[0]);
+    CAPTURE(box);
+    REQUIRE(std::fabs(box / tent[0] - 1.0) > 0.04);  // the integrals differ enough to tell apart
+    checkSpot(spotPixels(spot, "path", PixelFilterKind::Tent, 64, 16), tent, box);
+    checkSpot(spotPixels(spot, "bdpt", PixelFilterKind::Tent, 64, 64), tent, box);
+}
+
+TEST_CASE("bdpt: at 1 spp, splats and eye samples estimate the same pixel mean") {
+    const SpotFloor spot(3);
+    const int c = spot.size / 2;
+    const std::vector<double> box = {spot.box(c, c), spot.box(c + 1, c), spot.box(c - 1, c), spot.box(c, c + 1),
+                                     spot.box(c, c - 1)};
+    const PinholeCamera camera(spot.scene.camera);
+    const Ray centreRay = camera.generateRay(c + 0.5f, c + 0.5f);
+    const glm::dvec3 d(centreRay.direction), o(centreRay.origin);
+    const double centre = spot.radiance(o + (-o.y / d.y) * d);
+    CAPTURE(centre);
+    REQUIRE(std::fabs(box[0] / centre - 1.0) > 0.04);
+    checkSpot(spotPixels(spot, "bdpt", PixelFilterKind::Box, 1, 4096), box, centre);
 }
 
 }  // namespace

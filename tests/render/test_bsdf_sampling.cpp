@@ -225,5 +225,50 @@ TEST_CASE("dielectric: reflection frequency is Fresnel's and refraction obeys Sn
     }
 }
 
+// Sampling and evaluation must describe one BSDF: every sample's weight is eval / pdf of the
+// direction it returned (eval is f |cos theta_i|), and E[weight] = integral of eval over the
+// sphere (by uniform sampling, independent of the material's own sampling). With wo below the
+// shading normal (smooth meshes at grazing angles: the geometric side and the shading normal
+// disagree) eval is 0, so sampling must return nothing or weight 0 too, or BSDF sampling and
+// next-event estimation add different light.
+template <typename M>
+void checkSamplingMatchesEval(const M& material, const char* name) {
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    for (const float cosOut : {0.9f, 0.3f, -0.05f, -0.4f}) {
+        INFO(name << ", cos theta_o " << cosOut);
+        const Vec3 wo{std::sqrt(1.0f - cosOut * cosOut), 0, cosOut};
+        std::mt19937_64 rng(99);
+        std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+        constexpr int kDraws = 200000;
+        Rgb sampled{0.0f}, integrated{0.0f};
+        int mismatches = 0;
+        for (const Lobe lobe : kSmoothLobes) {
+            for (int i = 0; i < kDraws; ++i) {
+                const auto s = material.sample(lobe, side, wo, {uniform(rng), uniform(rng)});
+                if (!s) continue;
+                const Rgb expected = s->pdf > 0.0f ? material.eval(lobe, side, wo, s->wi) / s->pdf : Rgb{0.0f};
+                for (int c = 0; c < 3; ++c)
+                    if (std::abs(s->weight[c] - expected[c]) > 1e-3f * (1.0f + expected[c])) ++mismatches;
+                sampled += s->weight;
+            }
+            for (int i = 0; i < kDraws; ++i) {
+                const float z = 2.0f * uniform(rng) - 1.0f, phi = 2.0f * kPi * uniform(rng);
+                const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+                integrated += material.eval(lobe, side, wo, {r * std::cos(phi), r * std::sin(phi), z});
+            }
+        }
+        CHECK(mismatches == 0);
+        sampled /= float(kDraws);
+        integrated *= 4.0f * kPi / kDraws;
+        for (int c = 0; c < 3; ++c) CHECK(sampled[c] == doctest::Approx(integrated[c]).epsilon(0.02).scale(0.01));
+    }
+}
+
+TEST_CASE("sampling agrees with eval / pdf, also for wo below the shading normal") {
+    checkSamplingMatchesEval(makeMaterial({0.8f, 0.5f, 0.2f}, Rgb{0}, 1), "Lambert");
+    checkSamplingMatchesEval(makeMaterial(Rgb{0}, Rgb{0.2f}, 10), "Blinn highlight");
+    checkSamplingMatchesEval(makeMaterial<ModifiedPhongMaterial>({0.5f, 0.3f, 0.1f}, Rgb{0.4f}, 10), "modified Phong");
+}
+
 }  // namespace
 }  // namespace lightpath

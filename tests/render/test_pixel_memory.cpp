@@ -40,10 +40,10 @@ TEST_CASE("without the beauty the film holds the AOVs alone") {
     CHECK(memoryOf("whitted", false).film == kPixels * (kLayers - 2) * 3 * 4);  // 720
 }
 
-TEST_CASE("bdpt's splat film adds three 8-byte fixed-point sums per layer per pixel") {
+TEST_CASE("bdpt's splat film adds three 16-byte (128-bit) fixed-point sums per layer per pixel") {
     const PixelMemory memory = memoryOf("bdpt");
-    CHECK(memory.splats == kPixels * kLayers * 3 * 8);  // 2016
-    CHECK(memory.total() == 1008 + 2016);
+    CHECK(memory.splats == kPixels * kLayers * 3 * 16);  // 4032
+    CHECK(memory.total() == 1008 + 4032);
 }
 
 TEST_CASE("the rasteriser's z-buffer adds one fragment per pixel: depth, primitive id, barycentrics") {

@@ -10,6 +10,7 @@
 
 #include "film/aov_set.h"
 #include "render/renderer.h"
+#include "render_world.h"
 #include "scene_builder.h"
 
 namespace lightpath {
@@ -175,6 +176,30 @@ TEST_CASE("explain: Szymczak's factors multiply to the term, and a blocked light
     for (const Rejection& r : rejections)
         blocked |= r.reason.find("towards top is blocked by blocker at t = 0.750") != std::string::npos;
     CHECK(blocked);
+}
+
+
+TEST_CASE("the path's event stack refuses the event that would overflow it, in Release too") {
+    // An integrator that pushes more events than kMaxPathEvents (a new one, or a longer maxDepth)
+    // must stop that branch, as at a dead state, not write past the end of a std::array.
+    const test::RenderWorld world(floorScene({0, 1, 3}, {0, 0, 0}, {0, 2, 0}));
+    ContributionSink sink({}, nullptr);
+    RayCounters counters;
+    PathState path(world.context, sink, counters);
+    const PathEvent bounce{EventType::Reflection, Scatter::Diffuse, Subject::Object, 0, Vec3{0.0f}};
+    REQUIRE(path.push({EventType::Camera, Scatter::None, Subject::None, 0, Vec3{0.0f}}));
+    // The camera, kMaxDepth bounces, one more surface: what the longest allowed path pushes.
+    for (int i = 0; i <= kMaxDepth; ++i) REQUIRE(path.push(bounce));
+    int accepted = 0;
+    while (accepted < 100 && path.push(bounce)) ++accepted;
+    CHECK(accepted < 100);
+    CHECK(path.size() <= kMaxPathEvents - 2);  // room for emit()'s surface and light
+    const std::size_t full = path.size();
+    CHECK_FALSE(path.push(bounce));
+    CHECK(path.size() == full);
+    CHECK(counters.eventOverflow == 2);  // counted, for --stats
+    path.pop();
+    CHECK(path.push(bounce));  // room again after a pop
 }
 
 }  // namespace
