@@ -6,7 +6,8 @@
 namespace lightpath {
 namespace {
 
-using Wide = unsigned __int128;
+// GCC and clang's 128-bit integer (__extension__: not ISO C++, so -Wpedantic would warn).
+__extension__ typedef unsigned __int128 Wide;
 
 // value in units of 2^-fractionBits, rounded to the nearest, as a two's-complement 128-bit
 // integer; beyond +-2^126 units it saturates rather than wrapping.
