@@ -41,16 +41,17 @@ RequestGuard::RequestGuard(const std::string& host, int port) : names_{"127.0.0.
     if (std::find(names_.begin(), names_.end(), given) == names_.end()) names_.push_back(given);
 }
 
-std::string RequestGuard::acceptedHosts() const {
+std::string RequestGuard::acceptedHosts(const std::string& prefix) const {
     std::string list;
     for (std::size_t i = 0; i < names_.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == names_.size() ? " or " : ", ") + names_[i] + ":" + std::to_string(port_);
+        list += (i == 0 ? "" : i + 1 == names_.size() ? " or " : ", ") + prefix + names_[i] + ":" + std::to_string(port_);
     return list;
 }
 
 bool RequestGuard::acceptedHost(std::string_view value) const {
     const std::string host = lowerCase(value);
-    const std::string port = ":" + std::to_string(port_);
+    std::string port(1, ':');  // appended, not ":" + ...: GCC 12 warns falsely about that (its bug 105329)
+    port += std::to_string(port_);
     for (const std::string& name : names_) {
         if (host == name + port) return true;
         if (port_ == kDefaultHttpPort && host == name) return true;
@@ -75,7 +76,7 @@ void RequestGuard::check(const Request& request) const {
         if (!(origin.size() > scheme.size() && equalsIgnoringCase(origin.substr(0, scheme.size()), scheme) &&
               acceptedHost(origin.substr(scheme.size()))))
             throw RequestError(403, "Origin",
-                               "Origin " + quoted(origin) + " is not this server's page: only http://" + acceptedHosts() +
+                               "Origin " + quoted(origin) + " is not this server's page: only " + acceptedHosts("http://") +
                                    " may send requests; another site's page may not drive the server");
     }
 

@@ -27,8 +27,9 @@ public:
     // Throws RequestError (400, 403 or 421, naming the header) when `request` is refused.
     void check(const Request& request) const;
 
-    // "127.0.0.1:8080, localhost:8080, [::1]:8080": the Host values accepted, for messages.
-    std::string acceptedHosts() const;
+    // "127.0.0.1:8080, localhost:8080 or [::1]:8080": the Host values accepted, each after
+    // `prefix` ("http://": the origins), for messages.
+    std::string acceptedHosts(const std::string& prefix = "") const;
 
 private:
     bool acceptedHost(std::string_view value) const;

@@ -114,7 +114,8 @@ Request parse(std::string_view text) {
 // The conditions under which a request may change the settings, written out independently.
 bool mayChangeSettings(const Request& request, int status) {
     if (status != 200 || (request.method != "PUT" && request.method != "POST")) return false;
-    const std::string port = ":" + std::to_string(kPort);
+    std::string port(1, ':');  // appended, not ":" + ...: GCC 12 warns falsely about that (its bug 105329)
+    port += std::to_string(kPort);
     const std::vector<std::string> hosts{"127.0.0.1" + port, "localhost" + port, "[::1]" + port};
     int types = 0, hostCount = 0, originCount = 0;
     for (const auto& [name, value] : request.headers) {
