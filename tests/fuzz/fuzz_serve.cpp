@@ -130,7 +130,8 @@ bool mayChangeSettings(const Request& request, int status) {
             if (std::find(hosts.begin(), hosts.end(), lower(value)) == hosts.end()) return false;
         } else if (key == "origin") {
             ++originCount;
-            if (std::none_of(hosts.begin(), hosts.end(), [&](const std::string& h) { return lower(value) == "http://" + h; })) return false;
+            const std::string origin = lower(value);  // a structured binding: clang 14 cannot capture it
+            if (std::none_of(hosts.begin(), hosts.end(), [&](const std::string& h) { return origin == "http://" + h; })) return false;
         }
     }
     return types == 1 && hostCount <= 1 && originCount <= 1;
