@@ -14,7 +14,7 @@ namespace lightpath {
 // or nullptr when `interfaceVersion` is not the one it was built with (a stale module).
 inline constexpr const char* kImageCodecEntryPoint = "lightpathImageCodec";
 // Bumped whenever anything in this header changes.
-inline constexpr int kImageCodecInterfaceVersion = 1;
+inline constexpr int kImageCodecInterfaceVersion = 2;
 
 enum class PixelFormat { UInt8, Float32 };
 
@@ -43,6 +43,10 @@ public:
     // threads at once, each for its own file.
     virtual std::string write(const std::string& formatName, const std::string& file, const ImageFileSpec& spec,
                               const void* pixels) const = 0;
+    // The same file's bytes in `bytes`, written in memory: no file, no folder (what `serve`
+    // answers with). Returns an empty string, or why it could not.
+    virtual std::string encode(const std::string& formatName, const ImageFileSpec& spec, const void* pixels,
+                               std::vector<unsigned char>& bytes) const = 0;
     // Reads `file` into `image`. Returns an empty string, or why it could not.
     virtual std::string read(const std::string& file, ImageData& image) const = 0;
 

@@ -1,16 +1,11 @@
 #include "io/image_writer.h"
 
-#include <stdlib.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <functional>
-#include <iterator>
 #include <limits>
 #include <mutex>
 #include <thread>
@@ -105,32 +100,44 @@ ImageFileSpec specFor(const Film& film, PixelFormat format, const ImageMetadata&
     return spec;
 }
 
-// One multi-layer EXR: "beauty" as R,G,B and every other layer as <layer>.R/.G/.B.
-std::string writeExr(const ImageCodec& codec, const Film& film, const fs::path& temporary, const ImageMetadata& metadata) {
+// One multi-layer EXR: "beauty" as R,G,B and every other layer as <layer>.R/.G/.B. Rgb is three
+// packed floats, so the film (film.interleaved()) is already the EXR's interleaved channel order.
+ImageFileSpec exrSpec(const Film& film, const ImageMetadata& metadata) {
+    static_assert(sizeof(Rgb) == 3 * sizeof(float));
     ImageFileSpec spec = specFor(film, PixelFormat::Float32, metadata);
     for (const std::string& name : film.layerNames()) {
         const std::string prefix = name == kBeautyLayer ? "" : name + ".";
         for (const char* c : {"R", "G", "B"}) spec.channelNames.push_back(prefix + c);
     }
     spec.textAttributes.emplace_back("compression", "zip");
-    // Rgb is three packed floats, so the film is already the EXR's interleaved channel order.
-    static_assert(sizeof(Rgb) == 3 * sizeof(float));
-    return codec.write("exr", temporary.string(), spec, film.interleaved().data());
+    return spec;
 }
 
-// One layer as an 8-bit sRGB PNG.
-std::string writePng(const ImageCodec& codec, const Film& film, std::size_t layer, const fs::path& temporary,
-                     const ImageMetadata& metadata, float scale = 1.0f) {
+std::string writeExr(const ImageCodec& codec, const Film& film, const fs::path& temporary, const ImageMetadata& metadata) {
+    return codec.write("exr", temporary.string(), exrSpec(film, metadata), film.interleaved().data());
+}
+
+// One layer as an 8-bit sRGB PNG: its spec, and its pixels.
+ImageFileSpec pngSpec(const Film& film, const ImageMetadata& metadata) {
     ImageFileSpec spec = specFor(film, PixelFormat::UInt8, metadata);
     spec.channelNames = {"R", "G", "B"};
     spec.intAttributes = {{"png:compressionLevel", kPngCompressionLevel}, {"png:filter", kPngRowFilter}};
+    return spec;
+}
+
+std::vector<unsigned char, LargeBufferAllocator<unsigned char>> pngPixels(const Film& film, std::size_t layer, float scale) {
     const std::span<const Rgb> all = film.interleaved();
     const std::size_t stride = film.layerCount();
     const Srgb8Table& table = srgb8Table();
     std::vector<unsigned char, LargeBufferAllocator<unsigned char>> encoded(all.size() / stride * kPngBytesPerPixel);
     for (std::size_t p = 0, i = layer; i < all.size(); ++p, i += stride)
         for (int c = 0; c < 3; ++c) encoded[p * kPngBytesPerPixel + static_cast<std::size_t>(c)] = table.encode(all[i][c] * scale);
-    return codec.write("png", temporary.string(), spec, encoded.data());
+    return encoded;
+}
+
+std::string writePng(const ImageCodec& codec, const Film& film, std::size_t layer, const fs::path& temporary,
+                     const ImageMetadata& metadata) {
+    return codec.write("png", temporary.string(), pngSpec(film, metadata), pngPixels(film, layer, 1.0f).data());
 }
 
 // Runs task(0..count-1) on up to `threads` threads (0: one per core); returns the first failure.
@@ -173,28 +180,9 @@ std::string runInParallel(std::size_t count, int threads, const Task& task) {
 
 namespace {
 
-// A folder only this process can enter (mkdtemp: mode 0700), made on first use.
-const fs::path& privateFolder() {
-    static const fs::path folder = [] {
-        std::string pattern = (fs::temp_directory_path() / "lightpath-serve-XXXXXX").string();
-        if (::mkdtemp(pattern.data()) == nullptr) throw ImageWriteError("cannot create a temporary folder in " + fs::temp_directory_path().string());
-        return fs::path(pattern);
-    }();
-    return folder;
-}
-
-std::vector<unsigned char> encodeThroughFile(const char* extension,
-                                             const std::function<std::string(const fs::path&)>& write) {
-    static std::atomic<unsigned> counter{0};
-    const fs::path file = privateFolder() / ("image-" + std::to_string(counter++) + extension);
-    const std::string failure = write(file);
+std::vector<unsigned char> encoded(const char* format, const ImageFileSpec& spec, const void* pixels) {
     std::vector<unsigned char> bytes;
-    if (failure.empty()) {
-        std::ifstream in(file, std::ios::binary);
-        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    std::error_code ignored;
-    fs::remove(file, ignored);
+    const std::string failure = imageCodec().encode(format, spec, pixels, bytes);
     if (!failure.empty()) throw ImageWriteError(failure);
     return bytes;
 }
@@ -202,13 +190,11 @@ std::vector<unsigned char> encodeThroughFile(const char* extension,
 }  // namespace
 
 std::vector<unsigned char> encodeExr(const Film& film, const ImageMetadata& metadata) {
-    const ImageCodec& codec = imageCodec();
-    return encodeThroughFile(".exr", [&](const fs::path& file) { return writeExr(codec, film, file, metadata); });
+    return encoded("exr", exrSpec(film, metadata), film.interleaved().data());
 }
 
 std::vector<unsigned char> encodePng(const Film& film, std::size_t layer, float scale) {
-    const ImageCodec& codec = imageCodec();
-    return encodeThroughFile(".png", [&](const fs::path& file) { return writePng(codec, film, layer, file, {}, scale); });
+    return encoded("png", pngSpec(film, {}), pngPixels(film, layer, scale).data());
 }
 
 unsigned char toSrgb8(float linear) { return srgb8Table().encode(linear); }

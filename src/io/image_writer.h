@@ -40,9 +40,9 @@ std::vector<std::filesystem::path> writeFilm(const Film& film, const std::filesy
                                              const ImageMetadata& metadata, int threads = 0);
 
 // The same files in memory, for serving them (`lightpath serve`): the multi-layer EXR of writeFilm,
-// and one layer as an 8-bit sRGB PNG, each value first multiplied by `scale` (an exposure). The
-// image module writes files only, so each goes through a file of a private temporary folder,
-// read back and removed at once. Throws ImageWriteError.
+// and one layer as an 8-bit sRGB PNG, each value first multiplied by `scale` (an exposure).
+// Written in memory: no file or folder is ever made, so none is left behind however the process
+// ends. Throws ImageWriteError.
 std::vector<unsigned char> encodeExr(const Film& film, const ImageMetadata& metadata);
 std::vector<unsigned char> encodePng(const Film& film, std::size_t layer, float scale = 1.0f);
 

@@ -1,10 +1,10 @@
 #pragma once
-// The HTTP face of a Session (docs/serve.md): the page's files, and a small JSON API over the
-// renderer. No request path is ever a file path; every refused request gets a 4xx and a JSON
-// {"error": ...} naming what was wrong.
+// The HTTP face of a Session: the API (serve/api.h) on a socket, with cpp-httplib. Only moving
+// requests and answers on and off the socket happens here; what they mean is the API's.
 #include <memory>
 #include <string>
 
+#include "serve/api.h"
 #include "serve/session.h"
 
 namespace httplib {
@@ -13,17 +13,15 @@ class Server;
 
 namespace lightpath::serve {
 
-// Bounds on one request.
-inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
-inline constexpr double kMaxWaitSeconds = 10.0;  // GET /api/progress?wait=...
-inline constexpr int kIoTimeoutSeconds = 5;       // reading a request, writing a response
+inline constexpr int kIoTimeoutSeconds = 5;  // reading a request, writing a response
 
 class Server {
 public:
     explicit Server(Session& session);
     ~Server();
 
-    // Binds host:port (0: any free port) and returns the port; throws std::runtime_error.
+    // Binds host:port (0: any free port) and returns the port; throws std::runtime_error. From
+    // then on only requests for this host and port are answered (serve/request_guard.h).
     int bind(const std::string& host, int port);
     // Serves until stop(); call after bind().
     void run();
@@ -31,13 +29,8 @@ public:
     void stop();
 
 private:
-    void routes();
-
-    Session& session_;
+    Api api_;
     std::unique_ptr<httplib::Server> http_;
-    std::mutex automatonMutex_;
-    std::uint64_t automatonGeneration_ = 0;
-    std::string automatonSvg_;
 };
 
 }  // namespace lightpath::serve

@@ -2,7 +2,8 @@
 over the DevTools protocol with Debian's python3-websocket. Loads the page, types an LPE and sees
 its tile change, types a broken one and sees the caret message, clicks a mirror pixel and sees a
 path through a mirror reflection (RS) drawn over the image, switches to the path tracer, and
-keeps screenshots as artefacts. Any console error fails the test.
+keeps screenshots as artefacts. Any console error fails the test. Chromium's profile lives in a
+temporary folder that is removed however the test ends, once every Chromium process has exited.
 
     browser_test.py --lightpath build/lightpath --scene scenes/lecture-room.toml --out OUT
         [--screenshot docs/images/serve.png]
@@ -13,6 +14,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -30,6 +32,26 @@ CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic
 WAIT_LIMIT = 90.0
 
 
+def wait_for_group_exit(group, limit=30.0):
+    """Waits until no live process (zombies aside) is in process group `group`."""
+    deadline = time.monotonic() + limit
+    while time.monotonic() < deadline:
+        alive = False
+        for pid in filter(str.isdigit, os.listdir("/proc")):
+            try:
+                with open(f"/proc/{pid}/stat") as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if fields[0] != "Z" and int(fields[2]) == group:
+                alive = True
+                break
+        if not alive:
+            return
+        time.sleep(0.05)
+    raise AssertionError(f"chromium's processes (group {group}) still run {limit} s after it was killed")
+
+
 class Chromium:
     def __init__(self, profile):
         binary = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -38,6 +60,7 @@ class Chromium:
         self.process = subprocess.Popen([binary, *CHROMIUM_FLAGS, f"--user-data-dir={profile}", "about:blank"],
                                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                                         start_new_session=True)
+        self.browser_endpoint = None
         deadline = time.monotonic() + 60
         browser = None
         while time.monotonic() < deadline and browser is None:
@@ -50,6 +73,7 @@ class Chromium:
         if browser is None:
             self.stop()
             raise SystemExit("chromium did not start its DevTools endpoint")
+        self.browser_endpoint = browser.group(1)
         port = int(browser.group(2))
         with urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=30) as response:
             targets = json.load(response)
@@ -59,9 +83,21 @@ class Chromium:
         self.errors = []
 
     def stop(self):
-        if self.process.poll() is None:
-            self.process.kill()
+        """Closes the browser (so that it stops writing to its profile), then ends whatever of its
+        process group is left, and waits until none of it runs."""
+        if self.process.poll() is None and self.browser_endpoint:
+            try:
+                endpoint = websocket.create_connection(self.browser_endpoint, timeout=10, suppress_origin=True)
+                endpoint.send(json.dumps({"id": 1, "method": "Browser.close"}))
+                self.process.wait(timeout=30)
+            except (OSError, websocket.WebSocketException, subprocess.TimeoutExpired):
+                pass
+        try:
+            os.killpg(self.process.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
         self.process.wait()
+        wait_for_group_exit(self.process.pid)
 
     def _note(self, message):
         method, params = message.get("method"), message.get("params", {})
@@ -171,8 +207,12 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
+    with tempfile.TemporaryDirectory(prefix="lightpath-chromium-") as profile:
+        run(args, profile)
+
+
+def run(args, profile):
     server = ServeProcess(args.lightpath, args.scene)
-    profile = tempfile.mkdtemp(prefix="lightpath-chromium-")
     browser = None
     try:
         browser = Chromium(profile)
@@ -251,7 +291,6 @@ def main():
         if browser:
             browser.stop()
         server.stop()
-        shutil.rmtree(profile, ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -11,9 +11,9 @@ import urllib.request
 
 
 class ServeProcess:
-    def __init__(self, lightpath, scene, startup_limit=60.0):
+    def __init__(self, lightpath, scene, startup_limit=60.0, env=None):
         self.process = subprocess.Popen([lightpath, "serve", scene, "--port", "0"], stdout=subprocess.PIPE,
-                                        stderr=subprocess.PIPE, text=True, start_new_session=True)
+                                        stderr=subprocess.PIPE, text=True, start_new_session=True, env=env)
         line = read_line(self.process.stdout, startup_limit)
         match = re.search(r"at (http://127\.0\.0\.1:(\d+)/) \(Ctrl-C stops\)", line or "")
         if not match:

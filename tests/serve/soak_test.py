@@ -89,7 +89,8 @@ def next_request():
         ("GET", "/../../etc/passwd", None, {404}),
         ("GET", "/api/explain?x=99999&y=0", None, {400}),
         ("GET", "/api/image/none.png", None, {404, 503}),
-        ("DELETE", "/api/settings", None, {404, 405}),
+        ("DELETE", "/api/settings", None, {403}),  # not JSON: refused before the method is looked at
+        ("DELETE", "/api/settings", "{}", {405}),
     ]
     method, path, body, statuses = rng.choice(bad)
     return ("http", method, path, body, statuses)
