@@ -12,6 +12,9 @@ namespace lightpath {
 namespace {
 
 constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+// How many float spacings (of the centre's largest coordinate plus the radius) from a sphere's
+// surface a receiver still counts as on it: hit points land within a few of the true surface.
+constexpr double kOnSphereUlps = 8.0;
 
 float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
     const auto ref = geometry.decodePrimitive(primitive);
@@ -49,8 +52,12 @@ std::optional<SphereCone> sphereCone(const Sphere& sphere, const Vec3& receiver)
     const glm::dvec3 toReceiver = glm::dvec3(receiver) - glm::dvec3(sphere.center);
     const double d2 = glm::dot(toReceiver, toReceiver);
     const double r = sphere.radius;
-    if (!(d2 > r * r)) return std::nullopt;
     const double d = std::sqrt(d2);
+    // A receiver within the rounding of a hit point of the surface is on it: a hit on the sphere
+    // light itself, which sees the light only through its inside (from outside, none of it).
+    const Vec3 c = glm::abs(sphere.center);
+    const double magnitude = double(std::max({c.x, c.y, c.z})) + r;
+    if (!(d - r > kOnSphereUlps * double(std::numeric_limits<float>::epsilon()) * magnitude)) return std::nullopt;
     SphereCone cone;
     cone.axis = Vec3(toReceiver / d);
     cone.sin2ThetaMax = (r / d) * (r / d);

@@ -70,7 +70,8 @@ struct SphereCone {
     double oneMinusCosThetaMax = 0.0;  // sin^2/(1 + cos): no cancellation for small cones
     float pdf = 0.0f;            // 1 / (2 pi (1 - cos theta_max)) per steradian; 0 when above float's range
 };
-// Empty when the receiver is inside the sphere or on it.
+// Empty when the receiver is inside the sphere or on it (within 8 float spacings of the centre's
+// largest coordinate plus the radius): there light sampling samples by area.
 std::optional<SphereCone> sphereCone(const Sphere& sphere, const Vec3& receiver);
 
 }  // namespace lightpath
