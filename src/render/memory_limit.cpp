@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <string>
 
 namespace lightpath {
 namespace {
@@ -32,6 +33,43 @@ std::optional<std::uint64_t> headroom(int resource, std::uint64_t used) {
     return bound > used ? bound - used : 0;
 }
 
+// The first number in a file, if it holds one ("max" in cgroup v2 means no limit).
+std::optional<std::uint64_t> numberIn(const std::string& path) {
+    std::ifstream file(path);
+    std::uint64_t value = 0;
+    if (file >> value) return value;
+    return std::nullopt;
+}
+
+// A container's memory limit less its current use, from the process's own group in
+// /proc/self/cgroup: cgroup v2 ("0::PATH": memory.max, memory.current) or v1's memory controller
+// ("N:memory:PATH": memory.limit_in_bytes, memory.usage_in_bytes). A shared CI runner or a
+// container often has far less than the machine's physical memory. "No limit" reads as "max" (v2)
+// or a huge number (v1), which the physical memory then undercuts.
+std::optional<std::uint64_t> cgroupHeadroom() {
+    std::ifstream groups("/proc/self/cgroup");
+    std::string line;
+    std::optional<std::uint64_t> limit, used;
+    while (std::getline(groups, line)) {
+        const std::size_t first = line.find(':'), second = line.find(':', first + 1);
+        if (first == std::string::npos || second == std::string::npos) continue;
+        const std::string controllers = line.substr(first + 1, second - first - 1);
+        const std::string path = line.substr(second + 1);
+        if (line.rfind("0::", 0) == 0) {
+            const std::string dir = "/sys/fs/cgroup" + path;
+            if (auto bytes = numberIn(dir + "/memory.max")) limit = bytes, used = numberIn(dir + "/memory.current");
+        } else if (controllers == "memory") {
+            const std::string dir = "/sys/fs/cgroup/memory" + path;
+            if (auto bytes = numberIn(dir + "/memory.limit_in_bytes"))
+                limit = bytes, used = numberIn(dir + "/memory.usage_in_bytes");
+        }
+        if (limit) break;
+    }
+    if (!limit) return std::nullopt;
+    const std::uint64_t current = used.value_or(0);
+    return *limit > current ? *limit - current : 0;
+}
+
 }  // namespace
 
 MemoryLimit memoryLimit() {
@@ -45,6 +83,7 @@ MemoryLimit memoryLimit() {
     };
     consider(headroom(RLIMIT_AS, used.addressSpace), "the address-space limit (ulimit -v, RLIMIT_AS)");
     consider(headroom(RLIMIT_DATA, used.data), "the data limit (ulimit -d, RLIMIT_DATA)");
+    consider(cgroupHeadroom(), "the container's memory limit (its cgroup)");
     return tightest;
 }
 

@@ -16,7 +16,7 @@ struct MemoryLimit {
 };
 
 // The tightest of: physical memory; RLIMIT_AS less the address space already mapped; RLIMIT_DATA
-// less the data already allocated (each limit only when set).
+// less the data already allocated; a cgroup's memory limit less its use (each limit only when set).
 MemoryLimit memoryLimit();
 
 // "22.5 GiB": bytes in GiB with one decimal (MiB below 1 GiB), for messages.

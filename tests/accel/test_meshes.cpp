@@ -45,9 +45,13 @@ Counts countObj(const std::filesystem::path& file) {
     return counts;
 }
 
-// A scene file in a temporary directory holding `body`.
+// The tests' own files live in the build tree (ctest's working area), never in the system's
+// temporary directory, which the suite must leave as it found it.
+const std::filesystem::path kTestFiles = LIGHTPATH_TEST_OUTPUT_DIR;
+
+// A scene file holding `body`.
 std::filesystem::path writeScene(const std::string& name, const std::string& body) {
-    const auto directory = std::filesystem::temp_directory_path() / "lightpath-accel-tests";
+    const auto directory = kTestFiles;
     std::filesystem::create_directories(directory);
     const auto path = directory / name;
     std::ofstream(path) << body;
@@ -166,7 +170,7 @@ TEST_CASE("vertex normals are finite and normalised whatever their length") {
 }
 
 TEST_CASE("a mesh placed beyond the scene limit of 1e6 is refused") {
-    const auto directory = std::filesystem::temp_directory_path() / "lightpath-accel-tests";
+    const auto directory = kTestFiles;
     std::filesystem::create_directories(directory);
     std::ofstream(directory / "far.obj") << "v 0 0 0\nv 1 0 0\nv 0 1e5 0\nf 1 2 3\n";
     const std::string mesh = meshScene(directory / "far.obj", "material = \"grey\"\n");

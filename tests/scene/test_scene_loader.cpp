@@ -624,11 +624,7 @@ TEST_CASE("area lights become emissive objects labelled by the light's name") {
         "[[lights]]\nname = \"panel\"\ntype = \"quad\"\ncorner = [0, 2, 0]\nedge1 = [1, 0, 0]\n"
         "edge2 = [0, 0, 1]\nradiance = [4, 3, 2]\n\n"
         "[[lights]]\ntype = \"sphere\"\ncenter = [0, 5, 0]\nradius = 0.5\nradiance = 10\n";
-    const auto dir = std::filesystem::temp_directory_path() / "lightpath-area-lights";
-    std::filesystem::create_directories(dir);
-    const auto file = dir / "scene.toml";
-    std::ofstream(file) << text;
-    const Scene scene = loadScene(file);
+    const Scene scene = loadSceneFromText(text, "scene.toml");
     REQUIRE(scene.triangles.size() == 2);
     REQUIRE(scene.spheres.size() == 1);
     CHECK(scene.lights.empty());
