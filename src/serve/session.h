@@ -69,7 +69,8 @@ struct Progress {
 class Session {
 public:
     // `scene` is the scene the command line named, loaded once; nothing else is ever read.
-    Session(Scene scene, std::string scenePath);
+    // `threads`: render threads per pass (0: one per core).
+    Session(Scene scene, std::string scenePath, int threads = 0);
     ~Session();
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
@@ -90,6 +91,11 @@ public:
     // timeout passes (the caller's bound on a request's time); returns the progress then.
     Progress waitForProgress(std::uint64_t generation, int pass, double timeoutSeconds) const;
 
+    // Waits until the worker has finished with the current job (rendered it to its target or given
+    // it up) and waits for a change: then no render code runs until the next update. The fuzz
+    // target needs this to see the same code run for the same input on any machine.
+    void waitUntilIdle() const;
+
     // Stops the worker (cancelling its render); later updates are refused.
     void stop();
     // The same, but waits at most `seconds` for the worker: building a renderer's acceleration
@@ -105,6 +111,7 @@ private:
 
     const Scene scene_;
     const std::string scenePath_;
+    const int threads_;
     // Settings change the camera, the AOVs and the integrator, never the shapes or the numerics:
     // the BVH is built once.
     const std::shared_ptr<const SceneGeometry> geometry_;
@@ -117,6 +124,7 @@ private:
     Progress previous_;  // the last progress with an image, of an older generation
     bool stopping_ = false;
     bool workerDone_ = false;
+    bool idle_ = false;  // the worker waits for a change, the current job finished
     std::thread worker_;
 };
 
