@@ -254,7 +254,8 @@ TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton state
         REQUIRE(!c["factors"].empty());
         for (int channel = 0; channel < 3; ++channel) {
             double product = 1.0;
-            for (const json& f : c["factors"]) product *= f["rgb"][channel].get<double>();
+            for (const json& f : c["factors"])
+                if (f["inProduct"].get<bool>()) product *= f["rgb"][channel].get<double>();
             CHECK(product == doctest::Approx(c["rgb"][channel].get<double>()).epsilon(1e-4));
         }
     }
