@@ -20,9 +20,7 @@ MaterialCase phong(std::string parameters, Rgb kd, Rgb ks, float n, Rgb kr = Rgb
     m.kt = kt;
     m.ior = ior;
     m.fresnel = fresnel;
-    // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so
-    // f itself carries 1/cos theta_i and is not. Not energy-conserving by design (docs/design.md).
-    return {"phong: " + std::move(parameters), MaterialSlot(std::move(m)), {{true, false}, false}};
+    return {"phong: " + std::move(parameters), MaterialSlot(std::move(m)), materialClaims("phong")};
 }
 
 MaterialCase modifiedPhong(std::string parameters, Rgb kd, Rgb ks, float n) {
@@ -30,8 +28,7 @@ MaterialCase modifiedPhong(std::string parameters, Rgb kd, Rgb ks, float n) {
     m.kd = kd;
     m.ks = ks;
     m.n = n;
-    // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.
-    return {"modified-phong: " + std::move(parameters), MaterialSlot(std::move(m)), {{true, true}, true}};
+    return {"modified-phong: " + std::move(parameters), MaterialSlot(std::move(m)), materialClaims("modified-phong")};
 }
 
 // The part of a light scene every case shares: a camera (the loader requires one), nothing else.
@@ -42,11 +39,21 @@ look_at = [0, 0, 0]
 resolution = [8, 8]
 )";
 
-LightCase lightCase(std::string name, const std::string& toml, std::vector<Vec3> receivers) {
-    return {std::move(name), loadSceneFromText(std::string(kCamera) + toml, "conformance-light.toml"), std::move(receivers)};
+LightCase lightCase(std::string name, const std::string& toml) {
+    return {std::move(name), loadSceneFromText(std::string(kCamera) + toml, "conformance-light.toml")};
 }
 
 }  // namespace
+
+MaterialClaims materialClaims(std::string_view type) {
+    // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so
+    // f itself carries 1/cos theta_i and is not. Phong does not conserve energy by design
+    // (docs/design.md).
+    if (type == "phong") return {{true, false}, false};
+    // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.
+    if (type == "modified-phong") return {{true, true}, true};
+    return {};
+}
 
 void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit) {
     visit(phong("kd = 0.8", Rgb{0.8f}, Rgb{0.0f}, 1.0f));
@@ -71,14 +78,14 @@ type = "point"
 name = "bulb"
 position = [0, 2, 0]
 intensity = [2, 1, 0.5]
-)", {{0, 0, 0}, {3, -1, 2}}));
+)"));
     visit(lightCase("point: attenuation [0, 0, 1] (inverse square)", R"(
 [[lights]]
 name = "bulb"
 position = [1, 1, 1]
 intensity = 5
 attenuation = [0, 0, 1]
-)", {{0, 0, 0}, {-2, 0, 1}}));
+)"));
     visit(lightCase("quad: 2 x 1, radiance [4, 2, 1]", R"(
 [[lights]]
 type = "quad"
@@ -87,7 +94,7 @@ corner = [-1, 2, -0.5]
 edge1 = [2, 0, 0]
 edge2 = [0, 0, 1]
 radiance = [4, 2, 1]
-)", {{0, 0, 0}, {2, 1, 1}}));
+)"));
     visit(lightCase("sphere: radius 0.5, radiance 3", R"(
 [[lights]]
 type = "sphere"
@@ -95,7 +102,7 @@ name = "globe"
 center = [0, 3, 0]
 radius = 0.5
 radiance = 3
-)", {{0, 0, 0}, {1.5, 2.5, 0.5}, {0, 3.2, 0}}));
+)"));
     visit(lightCase("emissive object: a sphere whose material emits 2 (O)", R"(
 [materials.lamp]
 emission = 2
@@ -104,7 +111,7 @@ name = "lamp"
 center = [0, 0, -3]
 radius = 1
 material = "lamp"
-)", {{0, 0, 0}, {2, 0, -3}}));
+)"));
 }
 
 }  // namespace lightpath::conformance

@@ -6,6 +6,7 @@
 // Integrators are already a table: the kit iterates integrators() (src/integrators/registry.h).
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "integrators/registry.h"
 #include "materials/material.h"
@@ -28,13 +29,14 @@ struct MaterialCase {
     MaterialClaims claims;
 };
 
-// A scene holding one light (and nothing else) as its type puts it there, and points that receive
-// its light: in front of it, where all of it is visible.
+// A scene holding one light (and nothing else) as its type puts it there.
 struct LightCase {
     std::string name;
     Scene scene;
-    std::vector<Vec3> receivers;
 };
+
+// What each material type claims, by its `type = "..."` name; nothing for a type it does not know.
+MaterialClaims materialClaims(std::string_view type);
 
 void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit);
 void forEachLightCase(const std::function<void(const LightCase&)>& visit);

@@ -28,8 +28,8 @@ struct CheckResult {
     void merge(const CheckResult& other) {
         if (other.passed) return;
         passed = false;
+        if (failureCount < kMaxLines) failures += other.failures;
         failureCount += other.failureCount;
-        failures += other.failures;
     }
 };
 

@@ -178,6 +178,16 @@ CheckResult checkLightPower(const Light& light) {
     return result;
 }
 
+std::vector<Vec3> receiversOf(const Light& light) {
+    const float size = 1.0f / std::sqrt(light.pdfEmissionPosition());
+    std::vector<Vec3> receivers;
+    for (const Vec2 u : {Vec2{0.3f, 0.7f}, Vec2{0.8f, 0.2f}, Vec2{0.55f, 0.45f}}) {
+        const EmittedRay e = light.sampleEmission(u, Vec2{u.y, u.x});
+        for (const float distance : {0.1f, 2.0f}) receivers.push_back(e.ray.at(distance * size));
+    }
+    return receivers;
+}
+
 CheckResult checkLightCase(const LightCase& c) {
     const LightWorld world(c.scene);
     CheckResult result;
@@ -185,7 +195,7 @@ CheckResult checkLightCase(const LightCase& c) {
     for (const auto& light : world.lights.all()) {
         result.merge(checkLightPower(*light));
         if (light->isDelta()) result.merge(checkDeltaLightIntensity(*light));
-        for (const Vec3& receiver : c.receivers) {
+        for (const Vec3& receiver : receiversOf(*light)) {
             result.merge(checkLightSamples(*light, world, receiver));
             if (!light->isDelta()) result.merge(checkLightDensity(*light, world, receiver));
         }

@@ -5,6 +5,8 @@
 // every sample's weight is the radiance a ray finds there over its pdf, power() is the flux
 // sampleEmission() estimates, and every value is finite. Statistical checks use fixed seeds and
 // reject a correct light with probability `kLightAlpha` each.
+#include <vector>
+
 #include "cases.h"
 #include "check_result.h"
 #include "geometry/scene_geometry.h"
@@ -40,6 +42,10 @@ CheckResult checkDeltaLightIntensity(const Light& light);
 // E[Le |cos| / (pdfPosition pdfDirection)], and sampleEmission()'s densities against
 // pdfEmissionPosition() and pdfEmissionDirection().
 CheckResult checkLightPower(const Light& light);
+
+// Points that receive the light, found from the light alone: along three of its emitted rays, near
+// it and a few times its size away (1 / sqrt(pdfEmissionPosition()) is the square root of its area).
+std::vector<Vec3> receiversOf(const Light& light);
 
 // Every check above for every light of the case.
 CheckResult checkLightCase(const LightCase& c);

@@ -37,6 +37,16 @@ bool close(const Rgb& a, const Rgb& b, float relative) {
 }
 double sum(const Rgb& v) { return double(v.r) + v.g + v.b; }
 
+const char* nameOf(Lobe lobe) {
+    switch (lobe) {
+        case Lobe::Diffuse: return "diffuse lobe";
+        case Lobe::Highlight: return "highlight lobe";
+        case Lobe::Mirror: return "mirror lobe";
+        case Lobe::Refraction: return "refraction lobe";
+    }
+    return "lobe";
+}
+
 struct Moments {
     double mean = 0.0, variance = 0.0, count = 0.0;
 };
@@ -76,7 +86,7 @@ CheckResult checkSamplingMatchesPdf(const Material& material, Lobe lobe, const V
         },
         [&](const Vec3& wi) { return double(material.pdf(lobe, side, wo, wi)); });
     if (!(p > kMaterialAlpha))
-        result.fail("lobe ", int(lobe), " from wo.z = ", wo.z, ": chi-square p-value ", p, " <= ", kMaterialAlpha,
+        result.fail(nameOf(lobe), " from wo.z = ", wo.z, ": chi-square p-value ", p, " <= ", kMaterialAlpha,
                     ": sample() does not draw directions with the density pdf() claims");
     return result;
 }
@@ -96,9 +106,9 @@ CheckResult checkSampleWeights(const Material& material, const Vec3& wo) {
                     const float pdf = material.pdf(lobe, side, from, s->wi);
                     const Rgb expected = pdf > 0.0f ? material.eval(lobe, side, from, s->wi) / pdf : Rgb{0.0f};
                     if (!close(s->pdf, pdf, 1e-3f) && pdf > 0.0f)
-                        result.fail("lobe ", int(lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf, " but pdf() says ", pdf);
+                        result.fail(nameOf(lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf, " but pdf() says ", pdf);
                     if (!close(s->weight, expected, 1e-3f))
-                        result.fail("lobe ", int(lobe), " from wo.z = ", from.z, " to wi.z = ", s->wi.z, ": weight ",
+                        result.fail(nameOf(lobe), " from wo.z = ", from.z, " to wi.z = ", s->wi.z, ": weight ",
                                     s->weight.g, " but eval/pdf is ", expected.g);
                 }
             }
@@ -109,10 +119,10 @@ CheckResult checkSampleWeights(const Material& material, const Vec3& wo) {
                 const float pdf = bsdf.pdf(s->lobe, from, s->wi);
                 const Rgb expected = pdf > 0.0f ? bsdf.eval(s->lobe, from, s->wi) / pdf : Rgb{0.0f};
                 if (!close(s->pdf, pdf, 1e-3f) && pdf > 0.0f)
-                    result.fail("Bsdf, lobe ", int(s->lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf,
+                    result.fail("Bsdf, ", nameOf(s->lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf,
                                 " but Bsdf::pdf says ", pdf);
                 if (!close(s->weight, expected, 1e-3f))
-                    result.fail("Bsdf, lobe ", int(s->lobe), " from wo.z = ", from.z, ": weight ", s->weight.g,
+                    result.fail("Bsdf, ", nameOf(s->lobe), " from wo.z = ", from.z, ": weight ", s->weight.g,
                                 " but eval/pdf is ", expected.g);
             }
         }
@@ -131,7 +141,7 @@ CheckResult checkReciprocity(const Material& material, Lobe lobe) {
             const Vec3 b = fromCos(0.05f + 0.95f * uniform(rng), 2.0f * kPi * uniform(rng));
             const Rgb forward = material.eval(lobe, side, a, b) / b.z, backward = material.eval(lobe, side, b, a) / a.z;
             if (!close(forward, backward, 1e-3f))
-                result.fail("lobe ", int(lobe), ": f(wo, wi) = ", forward.g, " but f(wi, wo) = ", backward.g,
+                result.fail(nameOf(lobe), ": f(wo, wi) = ", forward.g, " but f(wi, wo) = ", backward.g,
                             " (wo.z = ", a.z, ", wi.z = ", b.z, ")");
         }
     }
@@ -178,7 +188,7 @@ CheckResult checkLobeAlbedo(const Material& material, Lobe lobe) {
     reflectance /= float(kMonteCarloSamples);
     const float claimed = material.albedo(lobe, side, wo), measured = maxComponent(reflectance);
     if (!(claimed >= measured / 1.5f && claimed <= 1.5f * measured))
-        result.fail("lobe ", int(lobe), ": albedo() says ", claimed, " at normal incidence, the lobe reflects ", measured);
+        result.fail(nameOf(lobe), ": albedo() says ", claimed, " at normal incidence, the lobe reflects ", measured);
     return result;
 }
 
@@ -225,13 +235,13 @@ CheckResult checkFiniteNonNegative(const Material& material) {
                 for (const Lobe lobe : kSmoothLobes) {
                     const Rgb f = material.eval(lobe, side, wo, wi);
                     const float pdf = material.pdf(lobe, side, wo, wi), albedo = material.albedo(lobe, side, wo);
-                    if (!finiteNonNegative(f)) result.fail("lobe ", int(lobe), ": eval is ", f.r, " ", f.g, " ", f.b);
-                    if (!(std::isfinite(pdf) && pdf >= 0.0f)) result.fail("lobe ", int(lobe), ": pdf is ", pdf);
-                    if (!(std::isfinite(albedo) && albedo >= 0.0f)) result.fail("lobe ", int(lobe), ": albedo is ", albedo);
+                    if (!finiteNonNegative(f)) result.fail(nameOf(lobe), ": eval is ", f.r, " ", f.g, " ", f.b);
+                    if (!(std::isfinite(pdf) && pdf >= 0.0f)) result.fail(nameOf(lobe), ": pdf is ", pdf);
+                    if (!(std::isfinite(albedo) && albedo >= 0.0f)) result.fail(nameOf(lobe), ": albedo is ", albedo);
                     const auto s = material.sample(lobe, side, wo, {uniform(rng), uniform(rng)});
                     if (s && !(finiteNonNegative(s->weight) && std::isfinite(s->pdf) && s->pdf >= 0.0f &&
                                std::fabs(glm::length(s->wi) - 1.0f) < 1e-3f))
-                        result.fail("lobe ", int(lobe), ": a sample has weight ", s->weight.g, ", pdf ", s->pdf,
+                        result.fail(nameOf(lobe), ": a sample has weight ", s->weight.g, ", pdf ", s->pdf,
                                     ", |wi| ", glm::length(s->wi));
                 }
                 SpecularBranches branches;

@@ -23,18 +23,18 @@ void forEveryLight(Check&& check) {
 }
 
 TEST_CASE("lights: pdf() integrates to 1 over the light and sample() draws with it") {
-    forEveryLight([](const Light& light, const LightWorld& world, const LightCase& c) {
+    forEveryLight([](const Light& light, const LightWorld& world, const LightCase&) {
         CheckResult result;
         if (!light.isDelta())
-            for (const Vec3& receiver : c.receivers) result.merge(checkLightDensity(light, world, receiver));
+            for (const Vec3& receiver : receiversOf(light)) result.merge(checkLightDensity(light, world, receiver));
         return result;
     });
 }
 
 TEST_CASE("lights: every sample's weight is radiance / pdf, its pdf is pdf(), and it is finite") {
-    forEveryLight([](const Light& light, const LightWorld& world, const LightCase& c) {
+    forEveryLight([](const Light& light, const LightWorld& world, const LightCase&) {
         CheckResult result;
-        for (const Vec3& receiver : c.receivers) result.merge(checkLightSamples(light, world, receiver));
+        for (const Vec3& receiver : receiversOf(light)) result.merge(checkLightSamples(light, world, receiver));
         if (light.isDelta()) result.merge(checkDeltaLightIntensity(light));
         return result;
     });

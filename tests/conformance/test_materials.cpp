@@ -56,7 +56,7 @@ TEST_CASE("materials: reciprocal lobes are reciprocal where the type claims it")
     });
 }
 
-TEST_CASE("materials: white furnace <= 1 where energy conservation is claimed; albedo() near each lobe's reflectance") {
+TEST_CASE("materials: white furnace <= 1 where energy conservation is claimed, albedo() near each lobe's reflectance") {
     forEveryMaterial([](const MaterialCase& c) {
         CheckResult result;
         if (c.claims.conservesEnergy) result.merge(checkEnergyConservation(*c.material));
@@ -66,7 +66,7 @@ TEST_CASE("materials: white furnace <= 1 where energy conservation is claimed; a
     });
 }
 
-TEST_CASE("materials: finite, non-negative values everywhere; delta branches in the right directions") {
+TEST_CASE("materials: finite, non-negative values everywhere, delta branches in the right directions") {
     forEveryMaterial([](const MaterialCase& c) {
         CheckResult result = checkFiniteNonNegative(*c.material);
         result.merge(checkSpecularBranches(*c.material));
