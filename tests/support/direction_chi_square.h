@@ -24,8 +24,11 @@ struct DirectionHistogram {
     std::uint64_t seed = 12345;
 };
 
-// Cell of a unit direction in the frame of +z: cos theta in [-1, 1], phi in [0, 2 pi).
+// Cell of a unit direction in the frame of +z: cos theta in [-1, 1], phi in [0, 2 pi). A
+// non-finite direction goes to the cell of samples without a direction (and converting NaN to int
+// would be undefined behaviour).
 inline int directionCell(const DirectionHistogram& h, const Vec3& w) {
+    if (!(std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z))) return h.cosBins * h.phiBins;
     const int c = std::clamp(static_cast<int>((w.z + 1.0f) * 0.5f * h.cosBins), 0, h.cosBins - 1);
     float phi = std::atan2(w.y, w.x);
     if (phi < 0.0f) phi += 2.0f * kPi;
