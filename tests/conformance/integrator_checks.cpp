@@ -9,6 +9,7 @@
 #include "lights/point_light.h"
 #include "scene/scene_loader.h"
 #include "cases.h"
+#include "film_checks.h"
 #include "statistics.h"
 
 namespace lightpath::conformance {
@@ -26,17 +27,11 @@ bool sameLayer(const Film& a, std::size_t la, const Film& b, std::size_t lb) {
     return std::equal(x.begin(), x.end(), y.begin(), y.end());
 }
 
-bool finite(const Rgb& v) { return std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b); }
-
 // Every value of every layer finite and non-negative, and no contribution dropped as non-finite.
 void checkFinite(const RenderResult& rendered, const char* scene, CheckResult& result) {
     if (rendered.stats.rays.nonFinite != 0)
         result.fail(scene, ": ", rendered.stats.rays.nonFinite, " non-finite contributions dropped");
-    for (const Rgb& v : rendered.film.interleaved())
-        if (!finite(v) || v.r < 0.0f || v.g < 0.0f || v.b < 0.0f) {
-            result.fail(scene, ": a pixel is ", v.r, " ", v.g, " ", v.b);
-            return;
-        }
+    if (!test::finiteNonNegative(rendered.film)) result.fail(scene, ": a pixel is not finite and non-negative");
 }
 
 double imageMean(const Film& film, std::size_t layer) {
@@ -61,24 +56,13 @@ CheckResult checkAovsSumToBeauty(const IntegratorInfo& integrator, const Scene& 
     CheckResult result;
     const AovSet aovs(classesSet());
     const Film film = render(integrator, scene, aovs, checkOptions(integrator)).film;
-    const auto names = film.layerNames();
-    double worst = 0.0, beautyTotal = 0.0;
-    for (int y = 0; y < film.height(); ++y) {
-        for (int x = 0; x < film.width(); ++x) {
-            Rgb sum{0.0f};
-            for (std::size_t l = 1; l < film.layerCount(); ++l) sum += film.at(l, x, y);
-            const Rgb beauty = film.at(0, x, y);
-            for (int c = 0; c < 3; ++c) {
-                const double error = std::fabs(double(sum[c]) - beauty[c]) / (1e-5 * std::fabs(beauty[c]) + 1e-7);
-                worst = std::max(worst, error);
-                beautyTotal += beauty[c];
-            }
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x)
             if (film.at(film.layerCount() - 1, x, y) != Rgb{0.0f})
                 result.fail("pixel ", x, ",", y, ": rest is not zero: a path outside every class");
-        }
-    }
+    const double worst = test::worstSumError(film);
     if (!(worst <= 1.0)) result.fail("the AOVs do not sum to the beauty: worst error ", worst, " times the tolerance");
-    if (!(beautyTotal > 0.0)) result.fail("the beauty is black");
+    if (!(imageMean(film, 0) > 0.0)) result.fail("the beauty is black");
     return result;
 }
 

@@ -4,6 +4,7 @@
 #include <random>
 #include <vector>
 
+#include "monte_carlo.h"
 #include "statistics.h"
 
 namespace lightpath::conformance {
@@ -19,23 +20,8 @@ bool close(const Rgb& a, const Rgb& b, float relative) {
 }
 double sum(const Rgb& v) { return double(v.r) + v.g + v.b; }
 
-Vec3 uniformSphere(std::mt19937_64& rng) {
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    const float z = 2.0f * uniform(rng) - 1.0f, phi = 2.0f * kPi * uniform(rng);
-    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-    return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
-struct Moments {
-    double mean = 0.0, variance = 0.0, count = 0.0;
-};
-Moments momentsOf(const std::vector<double>& values) {
-    Moments m;
-    m.count = double(values.size());
-    for (double v : values) m.mean += v / m.count;
-    for (double v : values) m.variance += (v - m.mean) * (v - m.mean) / (m.count - 1.0);
-    return m;
-}
+using test::Moments;
+using test::momentsOf;
 
 // The hit of a ray from `receiver` along `direction` when it is on `light`.
 std::optional<SurfaceHit> hitOnLight(const Light& light, const LightWorld& world, const Vec3& receiver, const Vec3& direction) {
@@ -68,7 +54,7 @@ CheckResult checkLightDensity(const Light& light, const LightWorld& world, const
     // pdf() over uniform directions: its integral over the sphere of directions.
     std::vector<double> normalisation, seen;
     for (int i = 0; i < kSamples; ++i) {
-        const Vec3 w = uniformSphere(rng);
+        const Vec3 w = test::uniformSphereDirection(rng);
         const auto hit = hitOnLight(light, world, receiver, w);
         normalisation.push_back(hit ? 4.0 * M_PI * light.pdf(receiver, hit->point, hit->normal) : 0.0);
         seen.push_back(hit ? 4.0 * M_PI : 0.0);
@@ -132,7 +118,7 @@ CheckResult checkDeltaLightIntensity(const Light& light) {
     constexpr float kDistance = 2.0f;
     std::vector<double> flux;
     for (int i = 0; i < kSamples / 10; ++i) {
-        const LightSample s = light.sample(position + kDistance * uniformSphere(rng), {0.5f, 0.5f});
+        const LightSample s = light.sample(position + kDistance * test::uniformSphereDirection(rng), {0.5f, 0.5f});
         flux.push_back(4.0 * M_PI * sum(s.weight) / light.falloff(kDistance));
     }
     const double expected = sum(light.power());

@@ -6,6 +6,7 @@
 
 #include "direction_chi_square.h"
 #include "materials/bsdf.h"
+#include "monte_carlo.h"
 #include "statistics.h"
 
 namespace lightpath::conformance {
@@ -21,12 +22,6 @@ SurfaceSide sideOf(bool entering, TransportMode mode = TransportMode::Radiance) 
 Vec3 fromCos(float cosTheta, float phi = 0.0f) {
     const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
     return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
-}
-
-Vec3 uniformSphere(std::mt19937_64& rng) {
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    const float z = 2.0f * uniform(rng) - 1.0f, phi = 2.0f * kPi * uniform(rng);
-    return fromCos(z, phi);
 }
 
 bool finite(const Rgb& v) { return std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b); }
@@ -47,16 +42,8 @@ const char* nameOf(Lobe lobe) {
     return "lobe";
 }
 
-struct Moments {
-    double mean = 0.0, variance = 0.0, count = 0.0;
-};
-Moments momentsOf(const std::vector<double>& values) {
-    Moments m;
-    m.count = double(values.size());
-    for (double v : values) m.mean += v / m.count;
-    for (double v : values) m.variance += (v - m.mean) * (v - m.mean) / (m.count - 1.0);
-    return m;
-}
+using test::Moments;
+using test::momentsOf;
 
 // The sum of the delta branches' weights from wo: what the Bsdf's delta lobes carry in all.
 Rgb branchTotal(const Material& material, const SurfaceSide& side, const Vec3& wo) {
@@ -205,7 +192,7 @@ CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool ent
     }
     const double delta = sum(branchTotal(material, side, wo));
     for (int i = 0; i < kMonteCarloSamples; ++i) {
-        const Vec3 wi = uniformSphere(rng);
+        const Vec3 wi = test::uniformSphereDirection(rng);
         double value = 0.0;
         for (const Lobe lobe : kSmoothLobes) value += sum(material.eval(lobe, side, wo, wi));
         uniformEstimate.push_back(4.0 * M_PI * value + delta);
@@ -228,7 +215,7 @@ CheckResult checkFiniteNonNegative(const Material& material) {
             const Bsdf bsdf(material, kNormal, entering, mode);
             for (int i = 0; i < 5000; ++i) {
                 // Every fifth pair exactly at the horizon, opposite, or equal: where formulas divide by 0.
-                Vec3 wo = uniformSphere(rng), wi = uniformSphere(rng);
+                Vec3 wo = test::uniformSphereDirection(rng), wi = test::uniformSphereDirection(rng);
                 if (i % 5 == 0) wo = fromCos(0.0f, 0.3f);
                 if (i % 10 == 1) wi = -wo;
                 if (i % 10 == 2) wi = wo;
