@@ -65,10 +65,17 @@ void printType(const TypeSchema& schema, bool markdown) {
         std::cout << "parameters: none\n";
         return;
     }
+    // The README's table without its Markdown.
+    const auto plain = [](std::string text) {
+        text.erase(std::remove(text.begin(), text.end(), '`'), text.end());
+        return text;
+    };
     std::cout << "parameters:\n";
     for (const Parameter& p : schema.parameters) {
+        const std::string defaultValue = p.required ? "required" : p.defaultText.empty() ? "none" : std::string(p.defaultText);
         std::cout << "  " << p.name << "  " << typeName(p.type) << (p.unit.empty() ? "" : ", " + std::string(p.unit))
-                  << "; default " << defaultCell(p) << "; allowed " << allowedText(p) << "\n      " << p.doc << "\n";
+                  << "; default " << defaultValue << "; allowed " << plain(allowedText(p)) << "\n      "
+                  << plain(std::string(p.doc)) << "\n";
     }
 }
 
