@@ -1,7 +1,6 @@
 #include "scene/toml_reader.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 

@@ -1,6 +1,8 @@
 #pragma once
 // The values one declaration gives a type, checked against its schema, each remembering where it
 // came from, so that a type's make() can refuse a combination with a located error.
+#include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <variant>
