@@ -19,6 +19,7 @@
 #include "cli/render_command.h"
 #include "cli/serve_command.h"
 #include "cli/stress_command.h"
+#include "cli/types_command.h"
 #include "io/image_module.h"
 #include "render/memory_limit.h"
 
@@ -39,7 +40,8 @@ int run(int argc, char** argv) {
         "  lightpath lpe dot 'E(S*)(D|G)L' > automaton.dot               the automaton, for Graphviz\n"
         "  lightpath lpe exercise                                        the lecture's questions, checked\n"
         "  lightpath serve scenes/lecture-room.toml                      explore it in the browser\n"
-        "  lightpath bench skip                                          what skipping saves\n\n"
+        "  lightpath bench skip                                          what skipping saves\n"
+        "  lightpath types material phong                                a scene type's keys\n\n"
         "Run `lightpath COMMAND --help` for each command's options.");
     lightpath::setActivity(std::string("running lightpath") + (argc > 1 ? std::string(" ") + argv[1] : std::string()));
     lightpath::addRenderCommand(app);
@@ -48,6 +50,7 @@ int run(int argc, char** argv) {
     lightpath::addBenchCommand(app);
     lightpath::addStressCommand(app);
     lightpath::addServeCommand(app);
+    lightpath::addTypesCommand(app);
     lightpath::unmarkBracketedValues(app);
     const std::vector<std::string> arguments = lightpath::markBracketedArguments(argc, argv);
     std::vector<const char*> marked;

@@ -1,5 +1,6 @@
 #include "integrators/bdpt.h"
 
+#include "integrators/registry.h"
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -396,3 +397,10 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
 }
 
 }  // namespace lightpath
+
+// Every bounce, from the eye and from the lights.
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+    "bdpt", "bidirectional path tracing: also light from the light's side, caustics under point lights", "E.*L",
+    "bidirectional path tracing follows every bounce, from the eye and from the lights",
+    [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::BdptIntegrator>()); },
+    lightpath::ShadowRays::Always, 5))

@@ -1,5 +1,6 @@
 #include "integrators/path.h"
 
+#include "integrators/registry.h"
 #include <algorithm>
 
 #include "geometry/spawn_ray.h"
@@ -66,3 +67,10 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
 }
 
 }  // namespace lightpath
+
+// It samples every lobe at every bounce.
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+    "path", "path tracing with global illumination (physically based reading)", "E.*L",
+    "path tracing follows every bounce",
+    [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::PathIntegrator>()); },
+    lightpath::ShadowRays::Always, 3))

@@ -1,5 +1,6 @@
 #include "integrators/radiosity.h"
 
+#include "integrators/registry.h"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -387,3 +388,10 @@ void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const 
 }
 
 }  // namespace lightpath
+
+// Its patches' diffuse bounces (ED+L), emitters and the background seen directly (EL).
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+    "radiosity", "diffuse patches, form factors by ray casting, solved bounce by bounce (Jacobi)", "ED*L",
+    "radiosity follows diffuse bounces only: no highlight, mirror or refraction",
+    [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::RadiosityIntegrator>()); },
+    lightpath::ShadowRays::Always, 4))

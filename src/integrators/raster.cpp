@@ -1,5 +1,6 @@
 #include "integrators/raster.h"
 
+#include "integrators/registry.h"
 #include <algorithm>
 #include <cmath>
 
@@ -145,3 +146,10 @@ void RasterIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 }
 
 }  // namespace lightpath
+
+// It finds ray casting's first hits with a z-buffer and shades them with raycast.cpp: ray casting's language.
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+    "raster", "z-buffer rasterisation: ray casting's first hits with the loops swapped, one sample per pixel, no shadows",
+    "E(D|G)L|EL", "rasterisation shades the first visible surface only, like ray casting",
+    [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::RasterIntegrator>()); },
+    lightpath::ShadowRays::Never, 1))

@@ -1,5 +1,6 @@
 #include "integrators/raycast.h"
 
+#include "integrators/registry.h"
 #include "integrators/direct_light.h"
 
 namespace lightpath {
@@ -20,3 +21,11 @@ void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathSta
 }
 
 }  // namespace lightpath
+
+// raycast.cpp shades the first hit with local_illumination.cpp's diffuse and highlight terms towards
+// each light and the ambient light (E(D|G)L), and adds emission and the background seen directly (EL).
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+    "raycast", "first hit only: Szymczak's formula, emitters and the background seen directly",
+    "E(D|G)L|EL", "ray casting follows no specular bounce and no second bounce: it shades the first hit only",
+    [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::RaycastIntegrator>()); },
+    lightpath::ShadowRays::Optional, 0))

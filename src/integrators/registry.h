@@ -1,6 +1,7 @@
 #pragma once
 // Every integrator in one table: its name, what it does, and the light paths it can produce (its
-// path language, an LPE). The command line's --integrator choices, their did-you-mean and
+// path language, an LPE). Each integrator's .cpp registers its own row (LIGHTPATH_REGISTER_INTEGRATOR);
+// the table lists them by rank, the lecture's order. The command line's --integrator choices, their did-you-mean and
 // makeIntegrator read this table; `lpe check --integrator` and the refusal of AOVs no integrator
 // path can reach read the languages.
 #include <cstdint>
@@ -10,6 +11,8 @@
 #include <vector>
 
 #include "integrators/integrator.h"
+#include "schema/registry.h"
+#include "schema/type_schema.h"
 
 namespace lightpath {
 
@@ -29,8 +32,22 @@ struct IntegratorInfo {
     const char* limitation;
     std::unique_ptr<Integrator> (*make)();
     ShadowRays shadowRays = ShadowRays::Always;
+    // The same name, summary and path language (as its events) for `lightpath types`; no parameters yet.
+    TypeSchema schema;
+    int rank = 0;  // listing order; rank 0 is the default
 };
 
+using IntegratorRegistry = TypeRegistry<IntegratorInfo>;
+
+// A row whose schema repeats its name, summary and path language.
+inline IntegratorInfo integratorRow(const char* name, const char* summary, const char* pathLanguage,
+                                    const char* limitation, std::unique_ptr<Integrator> (*make)(),
+                                    ShadowRays shadowRays, int rank) {
+    return {name, summary, pathLanguage, limitation, make, shadowRays, TypeSchema{"integrator", name, summary, {}, pathLanguage},
+            rank};
+}
+
+// Every registered integrator, by rank.
 const std::vector<IntegratorInfo>& integrators();
 const IntegratorInfo* findIntegrator(std::string_view name);
 std::vector<std::string> integratorNames();
@@ -40,3 +57,6 @@ std::vector<std::string> integratorNames();
 inline constexpr const char* kRenderedPaths = "E<[RT][DGSs]>*[LOB]";
 
 }  // namespace lightpath
+
+#define LIGHTPATH_REGISTER_INTEGRATOR(...) \
+    namespace { const ::lightpath::Registrar<::lightpath::IntegratorInfo> LIGHTPATH_SCHEMA_CONCAT(kIntegratorRegistrar, __LINE__){__VA_ARGS__}; }

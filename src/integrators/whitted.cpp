@@ -1,5 +1,6 @@
 #include "integrators/whitted.h"
 
+#include "integrators/registry.h"
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
 
@@ -37,3 +38,10 @@ void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, 
 }
 
 }  // namespace lightpath
+
+// Mirror and refraction rays (S*) before ray casting's shading.
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+    "whitted", "adds mirror and refraction rays (Whitted ray tracing)", "ES*(D|G)L|ES*L",
+    "Whitted ray tracing follows specular bounces only: no diffuse or glossy interreflection",
+    [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::WhittedIntegrator>()); },
+    lightpath::ShadowRays::Optional, 2))

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "materials/lambert_lobe.h"
+#include "materials/material_type.h"
 #include "materials/optics.h"
 #include "sampling/warp.h"
 
@@ -78,3 +79,30 @@ int ModifiedPhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec
 }
 
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+MaterialSlot makeModifiedPhong(const ParameterValues& values) {
+    ModifiedPhongMaterial material;
+    material.kd = values.colour("kd");
+    material.ks = values.colour("ks");
+    material.n = values.number("n");
+    material.emission = values.colour("emission");
+    return material;
+}
+
+}  // namespace
+}  // namespace lightpath
+
+LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
+    {"material", "modified-phong", "Lafortune and Willems' energy-conserving Phong (1994)",
+     {{"kd", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative, "diffuse albedo, f = kd/π"},
+      {"ks", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative,
+       "specular albedo at normal incidence: `ks (n+2)/(2π) cos^n α`"},
+      {"n", lightpath::ParameterType::Number, "", "20", lightpath::kNonNegative,
+       "specular exponent: larger is a tighter highlight"},
+      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
+       "emitted radiance: the surface is an area light"}},
+     "<R[DG]>"},
+    1, lightpath::makeModifiedPhong})

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "materials/lambert_lobe.h"
+#include "materials/material_type.h"
 #include "materials/optics.h"
 #include "sampling/warp.h"
 
@@ -126,3 +127,44 @@ int PhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, c
 }
 
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+MaterialSlot makePhong(const ParameterValues& values) {
+    PhongMaterial material;
+    material.ka = values.colour("ka");
+    material.kd = values.colour("kd");
+    material.ks = values.colour("ks");
+    material.n = values.number("n");
+    material.kr = values.colour("kr");
+    material.kt = values.colour("kt");
+    material.ior = values.number("ior");
+    material.fresnel = values.boolean("fresnel");
+    material.emission = values.colour("emission");
+    return material;
+}
+
+}  // namespace
+}  // namespace lightpath
+
+// The defaults are PhongMaterial's (phong_material.h); the meanings scenes/README.md's table shows.
+LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
+    {"material", "phong", "the lecture's illumination formula (Szymczak) with Whitted's mirror and glass",
+     {{"ka", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative, "ambient reflectance: `ka Ia`"},
+      {"kd", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative, "diffuse reflectance: `kd (N·L)`"},
+      {"ks", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative,
+       "specular (highlight) reflectance: `ks (H·N)^n`"},
+      {"n", lightpath::ParameterType::Number, "", "20", lightpath::kNonNegative,
+       "specular exponent: larger is a tighter highlight"},
+      {"kr", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative, "mirror reflection weight (Whitted)"},
+      {"kt", lightpath::ParameterType::Colour, "", "0", lightpath::kNonNegative,
+       "transmission (refraction) weight (Whitted)"},
+      {"ior", lightpath::ParameterType::Number, "", "1.5", lightpath::kPositive,
+       "index of refraction of the inside (glass 1.5, water 1.33)"},
+      {"fresnel", lightpath::ParameterType::Boolean, "", "false", {},
+       "clear glass: the mirror and refracted rays split `kt` by Fresnel's equations"},
+      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
+       "emitted radiance: the surface is an area light"}},
+     "<R[DGS]>|<TS>"},
+    0, lightpath::makePhong})

@@ -2,7 +2,7 @@
 // A light a scene file declares in [[lights]] without a shape of its own (a point light; a spot or
 // a directional light would be others): its name labels its `L` events, its position places it in
 // drawings and bounds, and it makes the light source the integrators sample (lights/light.h). A
-// new type is its own file (description and source) plus its row in the loader's light types.
+// new type is its own file: description, source and its registered LightType (lights/light_type.h).
 // Quad and sphere lights are not here: they are emissive objects with geometry.
 #include <cstdint>
 #include <memory>

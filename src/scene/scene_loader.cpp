@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <optional>
 #include <sstream>
 #include <system_error>
 
-#include "lights/point_light.h"
-#include "materials/modified_phong_material.h"
+#include "lights/light_type.h"
+#include "materials/material_type.h"
 #include "materials/phong_material.h"
+#include "schema/schema_error.h"
 #include "scene/obj_loader.h"
 #include "scene/spelling.h"
 #include "scene/toml_reader.h"
@@ -85,56 +87,91 @@ void readWorld(const TomlTable& table, Scene& scene) {
     if (auto ambient = table.find("ambient")) scene.ambient = ambient->rgb();
 }
 
-// A row of `types` (LightType or MaterialType) by the table's `type` key, the first when it has none.
-template <typename Type, std::size_t N>
-const Type& typeNamedIn(const TomlTable& table, const Type (&types)[N], std::string_view kind) {
+// Ranges as the reader states them: the loader's messages ("expected a positive number") predate
+// the schema and stay word for word.
+std::string expectedNumber(const Range& range) {
+    if (range.isAny()) return std::string(anyNumber.expected);
+    if (!range.lowExclusive && range.low == 0.0 && std::isinf(range.high)) return std::string(nonNegative.expected);
+    if (range.lowExclusive && range.low == 0.0 && std::isinf(range.high)) return std::string(positive.expected);
+    return "a number " + range.describe();
+}
+
+// One value of a declaration, read as its parameter's type says and checked against its range.
+void readParameter(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
+    const std::string expected = expectedNumber(parameter.range);
+    const NumberRule rule{parameter.range.low, parameter.range.high, parameter.range.lowExclusive,
+                          parameter.range.highExclusive, expected};
+    const std::string_view name = parameter.name;
+    switch (parameter.type) {
+        case ParameterType::Number: values.set(name, static_cast<double>(value.number(rule))); break;
+        case ParameterType::Integer: {
+            const auto bound = [](double x) {
+                return static_cast<int>(std::clamp(x, double(std::numeric_limits<int>::min()),
+                                                   double(std::numeric_limits<int>::max())));
+            };
+            values.set(name, value.integer(bound(parameter.range.low), bound(parameter.range.high)));
+            break;
+        }
+        case ParameterType::Boolean: values.set(name, value.boolean()); break;
+        case ParameterType::Colour: values.set(name, value.rgb()); break;
+        case ParameterType::Point: values.set(name, value.vec3(rule)); break;
+        case ParameterType::Vector: values.set(name, readNonZeroVector(value)); break;
+        case ParameterType::Name: values.set(name, readName(value)); break;
+        case ParameterType::Text: values.set(name, value.string()); break;
+    }
+    values.locate(name, value.position(), value.keyPath());
+}
+
+// The keys a declaration of `schema` may have, in the order messages list them: a leading `name`,
+// then `type`, then the rest.
+std::vector<std::string_view> allowedKeys(const TypeSchema& schema) {
+    std::vector<std::string_view> keys;
+    for (const Parameter& p : schema.parameters) keys.push_back(p.name);
+    const auto at = !keys.empty() && keys.front() == "name" ? keys.begin() + 1 : keys.begin();
+    keys.insert(at, "type");
+    return keys;
+}
+
+// A declaration's values: every key allowed by its type's schema, each read and checked, defaults
+// for the rest; a missing required key is an error at the table.
+ParameterValues readValues(const TomlTable& table, const TypeSchema& schema) {
+    table.allowOnly(allowedKeys(schema));
+    ParameterValues values(schema);
+    values.locateDeclaration(table.position(), table.keyPath());
+    for (const Parameter& parameter : schema.parameters) {
+        if (auto value = table.find(parameter.name)) {
+            readParameter(*value, parameter, values);
+        } else if (parameter.required) {
+            table.required(parameter.name);
+        }
+    }
+    return values;
+}
+
+// The registered type the table's `type` key names, the default (rank 0) when it has none.
+template <typename Entry>
+const Entry& typeNamedIn(const TomlTable& table, const TypeRegistry<Entry>& registry, std::string_view kind) {
     auto value = table.find("type");
-    if (!value) return types[0];
+    if (!value) return *registry.entries().front();
     const std::string name = value->string();
-    for (const Type& type : types)
-        if (type.name == name) return type;
-    std::vector<std::string> known;
-    for (const Type& type : types) known.emplace_back(type.name);
-    value->fail(unknownNameMessage(kind, name, known, ListKnown::always));
+    if (const Entry* type = registry.find(name)) return *type;
+    value->fail(unknownNameMessage(kind, name, registry.names(), ListKnown::always));
 }
 
-// Keys the file leaves out keep the defaults of PhongMaterial (materials/phong_material.h).
-MaterialSlot readPhongMaterial(const TomlTable& table) {
-    table.allowOnly({"type", "ka", "kd", "ks", "n", "kr", "kt", "ior", "fresnel", "emission"});
-    PhongMaterial material;
-    if (auto ka = table.find("ka")) material.ka = ka->rgb();
-    if (auto kd = table.find("kd")) material.kd = kd->rgb();
-    if (auto ks = table.find("ks")) material.ks = ks->rgb();
-    if (auto n = table.find("n")) material.n = n->number(nonNegative);
-    if (auto kr = table.find("kr")) material.kr = kr->rgb();
-    if (auto kt = table.find("kt")) material.kt = kt->rgb();
-    if (auto ior = table.find("ior")) material.ior = ior->number(positive);
-    if (auto fresnel = table.find("fresnel")) material.fresnel = fresnel->boolean();
-    if (auto emission = table.find("emission")) material.emission = emission->rgb();
-    return material;
+// A type's make()/addTo() refuses combinations with ParameterValues::fail, already located.
+template <typename Make>
+auto asSceneError(Make make) {
+    try {
+        return make();
+    } catch (const SchemaError& error) {
+        throw SceneError(error.what());
+    }
 }
-
-MaterialSlot readModifiedPhongMaterial(const TomlTable& table) {
-    table.allowOnly({"type", "kd", "ks", "n", "emission"});
-    ModifiedPhongMaterial material;
-    if (auto kd = table.find("kd")) material.kd = kd->rgb();
-    if (auto ks = table.find("ks")) material.ks = ks->rgb();
-    if (auto n = table.find("n")) material.n = n->number(nonNegative);
-    if (auto emission = table.find("emission")) material.emission = emission->rgb();
-    return material;
-}
-
-// The material types a scene names with `type = "..."`: a new material is its own file plus its
-// row here. The first is the default.
-struct MaterialType {
-    std::string_view name;
-    MaterialSlot (*read)(const TomlTable& table);
-};
-constexpr MaterialType kMaterialTypes[] = {{"phong", readPhongMaterial},
-                                           {"modified-phong", readModifiedPhongMaterial}};
 
 MaterialSlot readMaterial(const std::string& name, const TomlTable& table) {
-    MaterialSlot material = typeNamedIn(table, kMaterialTypes, "material type").read(table);
+    const MaterialType& type = typeNamedIn(table, MaterialRegistry::instance(), "material type");
+    const ParameterValues values = readValues(table, type.schema);
+    MaterialSlot material = asSceneError([&] { return type.make(values); });
     material->name = name;
     return material;
 }
@@ -152,105 +189,39 @@ std::vector<MaterialSlot> readMaterials(const TomlTable& table) {
     return materials;
 }
 
-// The label 'ambient' belongs to the ambient term of the illumination formula (docs/design.md).
-constexpr std::string_view kAmbientLabel = "ambient";
+// The loader's side of SceneBuilder: light types add to the scene being read.
+class LoadingScene final : public SceneBuilder {
+public:
+    explicit LoadingScene(Scene& scene) : scene_(scene) {}
 
-std::string readLightName(const TomlTable& table) {
-    auto name = table.find("name");
-    if (!name) return {};
-    const std::string light = readName(*name);
-    if (light == kAmbientLabel) {
-        name->fail("expected a light name other than \"ambient\", which is reserved for the ambient term");
+    void addLight(LightSlot light) override { scene_.lights.push_back(std::move(light)); }
+    std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) override {
+        PhongMaterial material;
+        material.name = "area-light-" + std::to_string(scene_.materials.size());
+        material.emission = radiance;
+        scene_.materials.push_back(material);
+        scene_.objects.push_back({std::move(name), static_cast<std::uint32_t>(scene_.materials.size() - 1), true});
+        return static_cast<std::uint32_t>(scene_.objects.size() - 1);
     }
-    return light;
-}
+    void addSphere(const Sphere& sphere) override { scene_.spheres.push_back(sphere); }
+    void addTriangle(const Triangle& triangle) override { scene_.triangles.push_back(triangle); }
+    void warn(std::string located) override { scene_.warnings.push_back(std::move(located)); }
 
-// The smallest non-zero attenuation coefficient: 1 / c stays within kMaxMagnitude.
-constexpr float kMinAttenuation = 1e-6f;
-
-void readPointLight(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"name", "type", "position", "intensity", "attenuation"});
-    PointLight light;
-    light.name = readLightName(table);
-    light.location = table.required("position").vec3();
-    if (auto intensity = table.find("intensity")) light.intensity = intensity->rgb();
-    if (auto attenuation = table.find("attenuation")) {
-        light.attenuation = attenuation->vec3(nonNegative);
-        if (light.attenuation == Vec3(0.0f)) {
-            attenuation->fail("expected c0, c1, c2 not all zero (1 / (c0 + c1 d + c2 d^2) would "
-                              "divide by zero), got " + formatVec3(light.attenuation));
-        }
-        // A coefficient of 1e-30 would make the light 1e30 times brighter: overflow, not light.
-        for (int i = 0; i < 3; ++i) {
-            if (light.attenuation[i] > 0.0f && light.attenuation[i] < kMinAttenuation) {
-                attenuation->fail("expected c0, c1, c2 each 0 or at least 1e-6 (1 / (c0 + c1 d + c2 d^2) "
-                                  "would overflow), got " + formatVec3(light.attenuation));
-            }
-        }
-    }
-    scene.lights.push_back(std::move(light));
-}
-
-// An emitter whose area is below kMinSampledEmitterArea is legal but cannot be light-sampled (its
-// density per unit area would not be a float): said once, where it is declared. LightSet then
-// leaves it to the rays that hit it.
-void warnIfTooSmallToSample(const TomlValue& where, const char* what, double area, const Rgb& emission, Scene& scene) {
-    if (isBlack(emission) || area >= kMinSampledEmitterArea) return;
-    scene.warnings.push_back(where.located(std::string("the emitting ") + what + " has an area of " + formatNumber(area) +
-                                           ", below the smallest a light can sample (" +
-                                           formatNumber(kMinSampledEmitterArea) +
-                                           "): its light is seen where a ray hits it but never sampled"));
-}
-
-// An area light is an emissive object: a material of its own that only emits, and the shapes
-// that carry it. Its label is the light's name, or "area-light-K" for the K-th unnamed one.
-std::uint32_t addEmitterObject(const TomlTable& table, Scene& scene) {
-    PhongMaterial material;
-    material.name = "area-light-" + std::to_string(scene.materials.size());
-    material.emission = table.required("radiance").rgb();
-    scene.materials.push_back(material);
-    scene.objects.push_back({readLightName(table), static_cast<std::uint32_t>(scene.materials.size() - 1), true});
-    return static_cast<std::uint32_t>(scene.objects.size() - 1);
-}
-
-// A parallelogram corner + s edge1 + t edge2 (s, t in [0, 1]) emitting on the side of
-// edge1 x edge2, as two triangles.
-void readQuadLight(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"name", "type", "corner", "edge1", "edge2", "radiance"});
-    const Vec3 corner = table.required("corner").vec3();
-    const Vec3 edge1 = table.required("edge1").vec3();
-    const Vec3 edge2 = table.required("edge2").vec3();
-    if (glm::length(glm::cross(edge1, edge2)) == 0.0f) {
-        table.required("edge2").fail("expected an edge not parallel to edge1 (the quad has no area), got " +
-                                     formatVec3(edge2));
-    }
-    const std::uint32_t object = addEmitterObject(table, scene);
-    warnIfTooSmallToSample(table.required("edge2"), "quad", glm::length(glm::cross(glm::dvec3(edge1), glm::dvec3(edge2))),
-                           scene.materials.back()->emission, scene);
-    scene.triangles.push_back({corner, corner + edge1, corner + edge1 + edge2, object});
-    scene.triangles.push_back({corner, corner + edge1 + edge2, corner + edge2, object});
-}
-
-// A sphere emitting on both sides of its surface.
-void readSphereLight(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"name", "type", "center", "radius", "radiance"});
-    Sphere sphere;
-    sphere.center = table.required("center").vec3();
-    sphere.radius = table.required("radius").number(positive);
-    sphere.object = addEmitterObject(table, scene);
-    warnIfTooSmallToSample(table.required("radius"), "sphere", surfaceArea(sphere), scene.materials.back()->emission, scene);
-    scene.spheres.push_back(sphere);
-}
-
-// The light types a scene names with `type = "..."`: a new one is its own file plus its row here.
-// The first is the default. Quad and sphere lights are emissive shapes; the others SceneLights.
-struct LightType {
-    std::string_view name;
-    void (*read)(const TomlTable& table, Scene& scene);
+private:
+    Scene& scene_;
 };
-constexpr LightType kLightTypes[] = {{"point", readPointLight}, {"quad", readQuadLight}, {"sphere", readSphereLight}};
 
-void readLight(const TomlTable& table, Scene& scene) { typeNamedIn(table, kLightTypes, "light type").read(table, scene); }
+void readLight(const TomlTable& table, Scene& scene) {
+    const LightType& type = typeNamedIn(table, LightRegistry::instance(), "light type");
+    const ParameterValues values = readValues(table, type.schema);
+    LoadingScene builder(scene);
+    asSceneError([&] { type.addTo(values, builder); });
+}
+
+// A shape that emits but is too small to be light-sampled is said once, where it is declared.
+void warnIfTooSmallToSample(const TomlValue& where, const char* what, double area, const Rgb& emission, Scene& scene) {
+    if (auto warning = tooSmallToSampleWarning(what, area, emission)) scene.warnings.push_back(where.located(*warning));
+}
 
 std::uint32_t findMaterial(const TomlValue& reference,
                            const std::vector<MaterialSlot>& materials) {

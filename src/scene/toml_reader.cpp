@@ -1,7 +1,6 @@
 #include "scene/toml_reader.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 
@@ -10,50 +9,19 @@
 
 namespace lightpath {
 
+std::string positionOf(const toml::source_region& where) {
+    const std::string file = where.path ? *where.path : std::string("<scene>");
+    return file + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
+}
+
 std::string locatedMessage(const toml::source_region& where, std::string_view keyPath,
                            std::string_view message) {
-    const std::string file = where.path ? *where.path : std::string("<scene>");
-    return file + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column) + ": " +
-           std::string(keyPath) + ": " + std::string(message);
+    return positionOf(where) + ": " + std::string(keyPath) + ": " + std::string(message);
 }
 
 void failAt(const toml::source_region& where, std::string_view keyPath,
             std::string_view message) {
     throw SceneError(locatedMessage(where, keyPath, message));
-}
-
-std::string formatNumber(double value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    // The shortest text that reads back as the same double: 0.1 prints as "0.1", -1.0 as "-1".
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
-namespace {
-
-// The shortest text that reads back as the same float: 1e-30f prints as "1e-30", not as the
-// double it widens to (1.0000000031710769e-30).
-std::string formatFloat(float value) {
-    if (!std::isfinite(value)) return formatNumber(value);
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
-
-}  // namespace
-
-std::string formatVec3(const Vec3& v) {
-    // Appended piece by piece: `"[" + std::string` trips a false -Wrestrict in g++ 12.
-    std::string text = "[";
-    text += formatFloat(v.x);
-    text += ", ";
-    text += formatFloat(v.y);
-    text += ", ";
-    text += formatFloat(v.z);
-    text += "]";
-    return text;
 }
 
 std::string describe(const toml::node& node) {
@@ -100,6 +68,8 @@ std::vector<std::pair<const toml::key*, const toml::node*>> inFileOrder(const to
 
 TomlValue::TomlValue(const toml::node& node, std::string keyPath)
     : node_(&node), keyPath_(std::move(keyPath)) {}
+
+std::string TomlValue::position() const { return positionOf(node_->source()); }
 
 std::string TomlValue::located(std::string_view message) const {
     return locatedMessage(node_->source(), keyPath_, message);
@@ -198,6 +168,12 @@ std::string TomlTable::keyPathOf(std::string_view key) const {
 }
 
 void TomlTable::allowOnly(std::initializer_list<std::string_view> allowed) const {
+    allowOnly(std::vector<std::string_view>(allowed));
+}
+
+std::string TomlTable::position() const { return positionOf(table_->source()); }
+
+void TomlTable::allowOnly(const std::vector<std::string_view>& allowed) const {
     const std::vector<std::string> known(allowed.begin(), allowed.end());
     for (const auto& [key, node] : inFileOrder(*table_)) {
         if (std::find(known.begin(), known.end(), key->str()) != known.end()) continue;

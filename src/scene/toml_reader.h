@@ -14,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "math/types.h"
+#include "schema/format.h"
 
 namespace lightpath {
 
@@ -23,9 +24,6 @@ std::string locatedMessage(const toml::source_region& where, std::string_view ke
 [[noreturn]] void failAt(const toml::source_region& where, std::string_view keyPath,
                          std::string_view message);
 
-// How an error message names a number ("-1", "0.25", "nan", "inf") or a vector ("[0, 0, 0]").
-std::string formatNumber(double value);
-std::string formatVec3(const Vec3& v);
 
 // How an error message names what it found: "-1", "a string", "an array of 2 elements", ...
 std::string describe(const toml::node& node);
@@ -77,6 +75,8 @@ public:
     // An array of tables ([[name]] sections).
     std::vector<TomlTable> tables() const;
 
+    // "FILE:LINE:COLUMN" of this value.
+    std::string position() const;
     // "FILE:LINE:COLUMN: KEY_PATH: MESSAGE" at this value: for warnings, and thrown by fail().
     std::string located(std::string_view message) const;
     [[noreturn]] void fail(std::string_view message) const;
@@ -97,6 +97,9 @@ public:
 
     // Refuses the first key (in file order) that is not in `allowed`, suggesting a near one.
     void allowOnly(std::initializer_list<std::string_view> allowed) const;
+    void allowOnly(const std::vector<std::string_view>& allowed) const;
+    // "FILE:LINE:COLUMN" of this table.
+    std::string position() const;
 
     std::optional<TomlValue> find(std::string_view key) const;
     // Like find(), but a missing key is an error located at this table.

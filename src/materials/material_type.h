@@ -1,0 +1,22 @@
+#pragma once
+// A material type a scene names with `[materials.NAME] type = "..."`: its schema and how to make
+// it from checked values. Each material's .cpp registers its own with LIGHTPATH_REGISTER_MATERIAL.
+#include "materials/material.h"
+#include "schema/parameter_values.h"
+#include "schema/registry.h"
+
+namespace lightpath {
+
+struct MaterialType {
+    TypeSchema schema;
+    int rank = 0;  // listing order (lecture order); rank 0 is the default type
+    // May refuse a combination with values.fail(key, ...); the loader sets the name.
+    MaterialSlot (*make)(const ParameterValues& values) = nullptr;
+};
+
+using MaterialRegistry = TypeRegistry<MaterialType>;
+
+}  // namespace lightpath
+
+#define LIGHTPATH_REGISTER_MATERIAL(...) \
+    namespace { const ::lightpath::Registrar<::lightpath::MaterialType> LIGHTPATH_SCHEMA_CONCAT(kMaterialRegistrar, __LINE__){__VA_ARGS__}; }

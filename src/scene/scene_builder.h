@@ -1,0 +1,40 @@
+#pragma once
+// What a [[lights]] type may add to the scene being loaded: a light without a shape (point), or an
+// emissive object and its shapes (quad, sphere). An interface, so light types (src/lights/) add
+// to the scene without knowing the loader; the loader implements it.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "geometry/shapes.h"
+#include "math/types.h"
+#include "scene/light.h"
+#include "schema/format.h"
+
+namespace lightpath {
+
+class SceneBuilder {
+public:
+    virtual ~SceneBuilder() = default;
+
+    virtual void addLight(LightSlot light) = 0;
+    // An area light's object: a material of its own that only emits `radiance`, labelled `name` or,
+    // unnamed, by that material's name "area-light-K". Returns the object index shapes store.
+    virtual std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) = 0;
+    virtual void addSphere(const Sphere& sphere) = 0;
+    virtual void addTriangle(const Triangle& triangle) = 0;
+    // A located warning ("FILE:LINE:COL: KEY: ..."), printed by the command line.
+    virtual void warn(std::string located) = 0;
+};
+
+// An emitter whose area is below kMinSampledEmitterArea is legal but cannot be light-sampled (its
+// density per unit area would not be a float): said once, where it is declared. LightSet then
+// leaves it to the rays that hit it. Nothing when it emits nothing or is large enough.
+inline std::optional<std::string> tooSmallToSampleWarning(const char* what, double area, const Rgb& emission) {
+    if (isBlack(emission) || area >= kMinSampledEmitterArea) return std::nullopt;
+    return std::string("the emitting ") + what + " has an area of " + formatNumber(area) +
+           ", below the smallest a light can sample (" + formatNumber(kMinSampledEmitterArea) +
+           "): its light is seen where a ray hits it but never sampled";
+}
+
+}  // namespace lightpath

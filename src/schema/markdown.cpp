@@ -1,0 +1,36 @@
+#include "schema/markdown.h"
+
+namespace lightpath {
+
+std::string allowedText(const Parameter& p) {
+    const std::string range = p.range.isAny() ? "any" : "`" + p.range.describe() + "`";
+    switch (p.type) {
+        case ParameterType::Colour: return "each channel " + range;
+        case ParameterType::Point: return p.range.isAny() ? "any" : "each " + range;
+        case ParameterType::Vector: return "non-zero";
+        case ParameterType::Name: return "a name (see Conventions)";
+        case ParameterType::Boolean: return "`true` or `false`";
+        case ParameterType::Text: return "any";
+        case ParameterType::Number:
+        case ParameterType::Integer: return range;
+    }
+    return range;
+}
+
+std::string defaultCell(const Parameter& p) {
+    if (p.required) return "**required**";
+    if (p.defaultText.empty()) return "none";
+    return "`" + std::string(p.defaultText) + "`";
+}
+
+std::string markdownTable(const TypeSchema& schema) {
+    std::string table = "| key | type | unit | default | allowed | meaning |\n| --- | --- | --- | --- | --- | --- |\n";
+    for (const Parameter& p : schema.parameters) {
+        table += "| `" + std::string(p.name) + "` | " + std::string(typeName(p.type)) + " | " +
+                 (p.unit.empty() ? std::string("–") : std::string(p.unit)) + " | " + defaultCell(p) + " | " +
+                 allowedText(p) + " | " + std::string(p.doc) + " |\n";
+    }
+    return table;
+}
+
+}  // namespace lightpath

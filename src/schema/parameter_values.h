@@ -1,0 +1,65 @@
+#pragma once
+// The values one declaration gives a type, checked against its schema, each remembering where it
+// came from, so that a type's make() can refuse a combination with a located error.
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "math/types.h"
+#include "schema/type_schema.h"
+
+namespace lightpath {
+
+class ParameterValues {
+public:
+    // Every parameter at its default (defaults are parsed from Parameter::defaultText).
+    explicit ParameterValues(const TypeSchema& schema);
+
+    const TypeSchema& schema() const { return *schema_; }
+    bool has(std::string_view name) const;  // given explicitly
+
+    float number(std::string_view name) const;
+    int integer(std::string_view name) const;
+    bool boolean(std::string_view name) const;
+    Rgb colour(std::string_view name) const;
+    Vec3 vec3(std::string_view name) const;  // a Point or a Vector
+    const std::string& text(std::string_view name) const;  // a Name or a Text
+
+    // Set programmatically (conformance kit, loaders): checks type and range, throws SchemaError.
+    void set(std::string_view name, double value);       // Number
+    void set(std::string_view name, int value);          // Integer, or a Number
+    void set(std::string_view name, bool value);         // Boolean
+    void set(std::string_view name, const Vec3& value);  // Colour, Point, Vector
+    void set(std::string_view name, std::string value);  // Name, Text
+    void set(std::string_view name, const char* value) { set(name, std::string(value)); }
+
+    // Where the declaration is ("FILE:LINE:COL" and its key path, "lights[0]"), for errors about
+    // keys it leaves out; and where one value was read.
+    void locateDeclaration(std::string position, std::string keyPath);
+    void locate(std::string_view name, std::string position, std::string keyPath);
+
+    // "FILE:LINE:COL: KEY_PATH: MESSAGE" at `name` (at the declaration when it was not given;
+    // "NAME: MESSAGE" when nothing is located).
+    std::string located(std::string_view name, std::string_view message) const;
+    [[noreturn]] void fail(std::string_view name, std::string_view message) const;
+
+private:
+    using Value = std::variant<float, int, bool, Vec3, std::string>;
+    struct Slot {
+        Value value;
+        bool given = false;
+        std::string position, keyPath;
+    };
+    std::size_t indexOf(std::string_view name) const;
+    const Value& valueOf(std::string_view name, ParameterType expected) const;
+    void store(std::string_view name, Value value, std::initializer_list<ParameterType> accepted);
+
+    const TypeSchema* schema_;  // not owned: schemas are static
+    std::vector<Slot> slots_;   // one per schema parameter, in its order
+    std::string position_, keyPath_;
+};
+
+}  // namespace lightpath

@@ -1,0 +1,23 @@
+// Every shipped integrator registers itself (its own .cpp) and survives static linking into this
+// binary, in the lecture's order; materials and lights too.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "integrators/registry.h"
+#include "lights/light_type.h"
+#include "materials/material_type.h"
+
+namespace lightpath {
+
+TEST_CASE("every shipped type is registered in the render tests") {
+    CHECK(integratorNames() ==
+          std::vector<std::string>{"raycast", "raster", "whitted", "path", "radiosity", "bdpt"});
+    CHECK(findIntegrator("whitted")->shadowRays == ShadowRays::Optional);
+    CHECK(std::string(findIntegrator("radiosity")->schema.events) == "ED*L");
+    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
+    CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
+}
+
+}  // namespace lightpath
