@@ -22,6 +22,11 @@ const state = {
   sendTimer: 0,
   sendSequence: 0,
   automatonGeneration: 0,
+  latestGeneration: 0,   // the newest generation the server has told of (PUT answers, progress)
+  started: new Map(),    // generation -> performance.now() when the page asked for it
+  finished: new Map(),   // generation -> performance.now() when the page saw it done
+  ticker: 0,             // redraws the status line each second while a pass is awaited
+  lastProgress: null,
 };
 
 const $ = (id) => document.getElementById(id);
@@ -69,6 +74,7 @@ function scheduleSend() {
 
 async function sendSettings() {
   const sequence = ++state.sendSequence;
+  const askedAt = performance.now();
   const answer = await getJson("/api/settings", {
     method: "PUT", headers: { "Content-Type": "application/json" }, body: JSON.stringify(state.draft),
   });
@@ -77,13 +83,59 @@ async function sendSettings() {
   $("request-error").hidden = true;
   if (!answer.ok) {
     showRequestError(answer.body);
+    markStaleTiles();
     return;
   }
   const namesChanged = JSON.stringify(answer.body.settings.lpes.map((e) => e.name)) !==
                        JSON.stringify(state.settings.lpes.map((e) => e.name));
   state.settings = answer.body.settings;
+  if (!state.started.has(answer.body.generation)) state.started.set(answer.body.generation, askedAt);
   showWarnings(answer.body.warnings);
+  showNotices(answer.body.notices || []);
   if (namesChanged) buildTiles(false);
+  markStaleTiles();
+  newGeneration(answer.body.generation);
+}
+
+// The server may take a value other than the one sent (the rasteriser's spp): say so.
+function showNotices(notices) {
+  $("notices").replaceChildren(...notices.map((n) => element("li", {}, "note: " + n)));
+}
+
+// A tile whose expression (or name) is not what the server renders keeps the image of the one
+// before: marked, so it is never read as this expression's light.
+function markStaleTiles() {
+  document.querySelectorAll(".tile.aov").forEach((tile, i) => {
+    const rendered = state.settings.lpes[i];
+    const matches = rendered !== undefined && rendered.name === tile.querySelector(".name").value &&
+                    rendered.expression === tile.querySelector(".expression").value;
+    tile.classList.toggle("stale-image", !matches);
+  });
+}
+
+// Anything the page shows of an older render (the explained pixel's table and drawn paths) is
+// dropped as soon as a newer generation exists, and the pixel is explained again for it.
+function newGeneration(generation) {
+  if (generation <= state.latestGeneration) return;
+  state.latestGeneration = generation;
+  if (state.pixel && (!state.explained || state.explained.generation !== generation)) {
+    clearExplanation();
+    if (state.pixel) explain(...state.pixel);
+  }
+}
+
+function clearExplanation() {
+  state.explained = null;
+  state.selected = -1;
+  $("explain-table").tBodies[0].replaceChildren();
+  delete $("explain-table").dataset.generation;
+  $("sums-table").tBodies[0].replaceChildren();
+  $("rejected").replaceChildren();
+  $("copied").textContent = "";
+  $("pixel-summary").textContent = "(explaining it again for the new render…)";
+  $("overlay").replaceChildren();
+  drawTopView();
+  highlightAutomaton();
 }
 
 function showRequestError(error) {
@@ -128,10 +180,16 @@ function makeTile(kind, name, expression) {
   const head = element("div", { class: "head" });
   if (kind === "aov") {
     const nameInput = element("input", { class: "name", value: name, spellcheck: "false", "aria-label": "AOV name" });
-    const expressionInput = element("input", { class: "expression", value: expression, spellcheck: "false", "aria-label": "light path expression" });
+    // A textarea, so that the whole expression shows (wrapped, growing in height); one line only.
+    const expressionInput = element("textarea", { class: "expression", rows: 1, spellcheck: "false", "aria-label": "light path expression" });
+    expressionInput.value = expression;
+    expressionInput.addEventListener("keydown", (event) => { if (event.key === "Enter") event.preventDefault(); });
     const remove = element("button", { type: "button", title: "remove this AOV" }, "×");
     nameInput.addEventListener("input", scheduleSend);
-    expressionInput.addEventListener("input", scheduleSend);
+    expressionInput.addEventListener("input", () => {
+      if (/[\r\n]/.test(expressionInput.value)) expressionInput.value = expressionInput.value.replace(/[\r\n]+/g, " ");
+      scheduleSend();
+    });
     remove.addEventListener("click", () => { tile.remove(); scheduleSend(); });
     head.append(nameInput, expressionInput, remove);
   } else {
@@ -141,7 +199,8 @@ function makeTile(kind, name, expression) {
   const png = element("a", { class: "png", href: `/api/image/${name}.png`, download: `${name}.png` }, "PNG");
   head.append(png);
   const image = element("img", { alt: name });
-  tile.append(head, image, element("pre", { class: "error", hidden: "" }), element("div", { class: "warning", hidden: "" }));
+  const stale = element("div", { class: "stale" }, "not this expression's image: the server has not taken it");
+  tile.append(head, stale, image, element("pre", { class: "error", hidden: "" }), element("div", { class: "warning", hidden: "" }));
   return tile;
 }
 
@@ -190,16 +249,47 @@ function applySettingsToControls() {
 
 // ---- progress: long polls of /api/progress ----
 
+// Seconds since the page asked for `p`'s generation (or, for one it did not ask for, since the
+// server started it): a preprocess such as radiosity's solve is in it, which the server's
+// rendering time leaves out.
+function wallSeconds(p) {
+  if (!state.started.has(p.generation)) state.started.set(p.generation, performance.now() - 1000 * p.seconds);
+  if (p.done && !state.finished.has(p.generation)) state.finished.set(p.generation, performance.now());
+  const end = state.finished.get(p.generation) ?? performance.now();
+  return (end - state.started.get(p.generation)) / 1000;
+}
+
+function showStatus() {
+  const p = state.lastProgress;
+  if (!p) return;
+  const s = p.settings;
+  const wall = wallSeconds(p).toFixed(1);
+  const timing = $("timing");
+  timing.hidden = p.done;
+  if (p.passes === 0) {
+    // The first pass (after any preprocess) has no fraction to show: an indeterminate bar and the
+    // seconds counting up, so a long solve is seen to be working.
+    timing.removeAttribute("value");
+    $("status").textContent = `preparing and rendering ${s.width}×${s.height} with ${s.integrator}… ${wall} s`;
+  } else {
+    timing.max = s.spp;
+    timing.value = p.samples;
+    $("status").textContent = `${s.integrator}, ${s.width}×${s.height}: pass ${p.passes}, ${p.samples} spp of ${s.spp}` +
+      `${p.done ? " (done)" : "…"} in ${wall} s (rendering ${p.seconds.toFixed(2)} s)`;
+  }
+  clearInterval(state.ticker);
+  if (!p.done) state.ticker = setInterval(showStatus, 1000);
+}
+
 function showProgress(p) {
   const newer = p.generation !== state.generation || p.passes !== state.passes;
   state.generation = p.generation;
   state.passes = p.passes;
   state.layers = p.layers;
-  const s = p.settings;
-  $("status").textContent = p.passes === 0
-    ? `rendering ${s.width}×${s.height} with ${s.integrator}…`
-    : `${s.integrator}, ${s.width}×${s.height}: pass ${p.passes}, ${p.samples} spp of ${s.spp}` +
-      `${p.done ? " (done)" : "…"} in ${p.seconds.toFixed(2)} s`;
+  state.lastProgress = p;
+  $("stage").style.setProperty("--aspect", p.settings.width / p.settings.height);
+  newGeneration(p.generation);
+  showStatus();
   if (p.passes === 0) {
     $("sum-check").className = "";
     $("sum-check").textContent = "";
@@ -235,11 +325,13 @@ function groupContributions(contributions) {
   const groups = new Map();
   for (const c of contributions) {
     const g = groups.get(c.tuple);
+    const strategy = c.strategy ? `(${c.strategy.s}, ${c.strategy.t})${c.strategy.splatted ? " splatted" : ""}` : null;
     if (g) {
       g.count += 1;
       for (let i = 0; i < 3; i++) g.rgb[i] += c.rgb[i];
+      if (strategy && !g.strategies.includes(strategy)) g.strategies.push(strategy);
     } else {
-      groups.set(c.tuple, { ...c, rgb: [...c.rgb], count: 1 });
+      groups.set(c.tuple, { ...c, rgb: [...c.rgb], count: 1, strategies: strategy ? [strategy] : [] });
     }
   }
   // Largest first, as `lightpath explain` sorts them.
@@ -248,11 +340,14 @@ function groupContributions(contributions) {
 }
 
 async function explain(x, y) {
+  state.pixel = [x, y];
   const answer = await getJson(`/api/explain?x=${x}&y=${y}`);
   if (!answer.ok) {
     showRequestError(answer.body);
     return;
   }
+  // An answer for a render older than one the page knows of is stale already.
+  if (answer.body.generation < state.latestGeneration) return;
   state.explained = answer.body;
   state.explained.groups = groupContributions(answer.body.contributions);
   state.pixel = [x, y];
@@ -289,10 +384,11 @@ function drawExplanation() {
     const row = element("tr", { "data-index": i });
     if (i === state.selected) row.classList.add("selected");
     const touched = g.vertices.slice(1).map((v) => v.touched).join(", ");
-    const rgb = element("td", { class: "mono" });
+    const rgb = element("td", { class: "mono rgb" });
     rgb.append(swatch(g.rgb), formatRgb(g.rgb));
     row.append(element("td", {}, g.count > 1 ? `${i + 1} (×${g.count})` : `${i + 1}`),
                element("td", { class: "mono", title: g.tuple }, g.compact),
+               element("td", { class: "mono strategy-col" }, g.strategies.join(", ")),
                element("td", { class: "mono lpe" }, g.lpe), element("td", {}, touched), rgb,
                element("td", {}, g.aovs.join(", ")),
                element("td", { class: "mono factors" }, formatFactors(g.factors)));
@@ -300,6 +396,7 @@ function drawExplanation() {
     return row;
   });
   $("explain-table").tBodies[0].replaceChildren(...rows);
+  $("explain-table").classList.toggle("no-strategy", !groups.some((g) => g.strategies.length > 0));
   $("explain-table").dataset.generation = state.explained.generation;
   $("sums-table").tBodies[0].replaceChildren(...state.explained.sums.map((s) => {
     const rgb = element("td", { class: "mono" });
@@ -430,8 +527,7 @@ async function loadAutomaton() {
 }
 
 function highlightAutomaton() {
-  if (!state.explained) return;
-  const groups = state.explained.groups;
+  const groups = state.explained ? state.explained.groups : [];
   const visited = new Set(groups.flatMap((g) => g.states));
   const onPath = new Set(state.selected >= 0 ? groups[state.selected].states : []);
   for (const node of document.querySelectorAll("#automaton g.node")) {
@@ -475,6 +571,7 @@ async function start() {
   applySettingsToControls();
   buildTiles(true);
   showWarnings(current.body.warnings);
+  state.latestGeneration = current.body.generation;
   for (const id of ["integrator", "spp", "width", "height", "max-depth"]) $(id).addEventListener("change", scheduleSend);
   $("exposure").addEventListener("input", () => {
     state.exposure = Number($("exposure").value);

@@ -170,8 +170,12 @@ Response Api::route(const Request& request, const Target& target) {
 
     if (path == "/api/settings") {  // PUT or POST
         allowParameters(target, {});
-        const auto job = session_.update(applySettings(session_.job()->settings, request.body));
-        return jsonResponse({{"generation", job->generation}, {"settings", toJson(job->settings)}, {"warnings", job->warnings}});
+        std::vector<std::string> notices;
+        const auto job = session_.update(applySettings(session_.job()->settings, request.body, &notices));
+        return jsonResponse({{"generation", job->generation},
+                             {"settings", toJson(job->settings)},
+                             {"warnings", job->warnings},
+                             {"notices", notices}});
     }
 
     if (path == "/api/progress") {

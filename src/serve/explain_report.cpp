@@ -95,7 +95,12 @@ json explainPixel(const Job& job, int x, int y) {
                                  {"factors", factors},
                                  {"states", states},
                                  {"vertices", vertices},
-                                 {"segments", segments}});
+                                 {"segments", segments},
+                                 // bdpt: the strategy (s light vertices, t eye vertices) that made it
+                                 {"strategy", c.lightVertices < 0 ? json(nullptr)
+                                                                  : json{{"s", int{c.lightVertices}},
+                                                                         {"t", int{c.eyeVertices}},
+                                                                         {"splatted", c.splatted}}}});
     }
     json layerSums = json::array();
     for (std::size_t l = 0; l < layers.size(); ++l) {

@@ -79,7 +79,7 @@ Settings defaultSettings(const Scene& scene) {
     return settings;
 }
 
-Settings applySettings(const Settings& current, const std::string& body) {
+Settings applySettings(const Settings& current, const std::string& body, std::vector<std::string>* notices) {
     const json request = json::parse(body, nullptr, false);
     if (request.is_discarded()) throw RequestError(400, "", "malformed JSON: expected an object such as {\"spp\": 16}");
     if (!request.is_object()) throw RequestError(400, "", "expected a JSON object, got " + describe(request));
@@ -125,11 +125,16 @@ Settings applySettings(const Settings& current, const std::string& body) {
             throw RequestError(400, "lpes[" + std::to_string(i) + "].expression",
                                aov.name + ": " + refusalMessage(aov, integrator, judgement->reason));
     }
-    // The rasteriser samples each pixel once, at its centre (Integrator::samplesPixelCentres).
+    // The rasteriser samples each pixel once, at its centre (Integrator::samplesPixelCentres): any
+    // other target is taken as 1, with a notice, so that switching to it from the page's default
+    // 16 spp is not refused halfway.
     if (const IntegratorInfo* info = findIntegrator(settings.integrator);
-        info && settings.samplesPerPixel != 1 && info->make()->samplesPixelCentres())
-        throw RequestError(400, "spp", "spp: the " + settings.integrator + " integrator samples each pixel once, at its "
-                                       "centre: expected 1, got " + std::to_string(settings.samplesPerPixel));
+        info && settings.samplesPerPixel != 1 && info->make()->samplesPixelCentres()) {
+        if (notices)
+            notices->push_back("spp: the " + settings.integrator + " integrator samples each pixel once, at its centre: "
+                               "spp 1 instead of " + std::to_string(settings.samplesPerPixel));
+        settings.samplesPerPixel = 1;
+    }
     const std::int64_t pixelLayers =
         std::int64_t{settings.width} * settings.height * static_cast<std::int64_t>(settings.lpes.size() + 2);
     if (pixelLayers > kMaxPixelLayers)

@@ -37,8 +37,11 @@ Settings defaultSettings(const Scene& scene);
 
 // `current` with the fields of `body` (a JSON object; absent fields keep their value) applied.
 // Throws RequestError (400) for malformed JSON, an unknown field, a wrong type or a value out of
-// range, naming the field and what was expected.
-Settings applySettings(const Settings& current, const std::string& body);
+// range, naming the field and what was expected. A value that an integrator cannot use but has one
+// answer for (spp for the rasteriser, which samples pixel centres) is replaced, and `notices`
+// (when given) says so.
+Settings applySettings(const Settings& current, const std::string& body,
+                       std::vector<std::string>* notices = nullptr);
 
 nlohmann::json toJson(const Settings& settings);
 

@@ -11,6 +11,7 @@ temporary folder that is removed however the test ends, once every Chromium proc
 import argparse
 import base64
 import json
+import math
 import os
 import re
 import shutil
@@ -131,19 +132,23 @@ class Chromium:
             raise AssertionError(f"{expression[:200]}: {result['exceptionDetails'].get('exception', {}).get('description')}")
         return result["result"].get("value")
 
-    def wait_for(self, condition, what):
-        """Resolves in the page as soon as `condition` (a JS expression) is truthy; fails after WAIT_LIMIT."""
+    def wait_for(self, condition, what, limit=WAIT_LIMIT):
+        """Resolves in the page as soon as `condition` (a JS expression) is truthy; fails after `limit` s."""
         script = f"""new Promise((resolve, reject) => {{
             const started = performance.now();
             (function check() {{
                 let value;
                 try {{ value = ({condition}); }} catch (e) {{ value = undefined; }}
                 if (value) resolve(value);
-                else if (performance.now() - started > {WAIT_LIMIT * 1000}) reject(new Error("timed out waiting: " + {json.dumps(what)}));
+                else if (performance.now() - started > {limit * 1000}) reject(new Error("timed out waiting: " + {json.dumps(what)}));
                 else setTimeout(check, 25);
             }})();
         }})"""
-        value = self.evaluate(script)
+        self.socket.settimeout(limit + 30)  # the answer comes when the page's promise resolves
+        try:
+            value = self.evaluate(script)
+        finally:
+            self.socket.settimeout(WAIT_LIMIT)
         print(f"  ok: {what}")
         return value
 
@@ -151,6 +156,20 @@ class Chromium:
         """Selects the text of the input `element` (a JS expression) and types `text` over it."""
         self.evaluate(f"(() => {{ const e = {element}; e.focus(); e.select(); return true; }})()")
         self.call("Input.insertText", text=text)
+
+    def set_viewport(self, width, height):
+        self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1, mobile=False)
+        self.wait_for(f"innerWidth === {width} && innerHeight === {height}", f"a {width}×{height} window")
+
+    def click_pixel(self, x, y, width, height):
+        """Clicks the centre of image pixel (x, y) of a width×height render, where the page shows it."""
+        box = self.evaluate("(() => { const r = document.getElementById('beauty').getBoundingClientRect(); "
+                            "return [r.left, r.top, r.width, r.height]; })()")
+        # Mouse events carry whole CSS pixels: the first whole coordinate inside the image pixel.
+        def inside(start, size, pixel, count):
+            return next(c for c in range(math.floor(start + pixel * size / count), math.ceil(start + (pixel + 1) * size / count) + 1)
+                        if math.floor((c - start) / size * count) == pixel)
+        self.click(inside(box[0], box[2], x, width), inside(box[1], box[3], y, height))
 
     def click(self, x, y):
         for kind in ("mousePressed", "mouseReleased"):
@@ -196,6 +215,119 @@ def find_mirror_pixel(server, width, height):
                 if status == 200 and any("RS'mirror-ball'" in c["tuple"] for c in e["contributions"]):
                     return x, y
     raise AssertionError("no pixel of the mirror ball found")
+
+
+# The expression issue 29 saw cut to `ES*(D|G)(` in an input 75 px wide.
+LONG_LPE = "ES*(D|G)(D|G|S)+L"
+
+
+def select_integrator(browser, name):
+    browser.evaluate(f"(() => {{ const s = document.getElementById('integrator'); s.value = {json.dumps(name)}; "
+                     "s.dispatchEvent(new Event('change')); return true; })()")
+
+
+def check_layout(browser, width, height, shots, projector):
+    """At the current window: nothing wider than the window, every LPE shown whole, the explain
+    table and an error message wrapped inside it; at projector size, body text of at least 20 px."""
+    print(f"layout at {width}×{height}")
+    browser.set_viewport(width, height)
+    overflow = browser.evaluate("[document.documentElement.scrollWidth, innerWidth]")
+    assert overflow[0] <= overflow[1], f"the page scrolls sideways at {width}×{height}: {overflow[0]} px wide in {overflow[1]}"
+    cut = browser.evaluate("[...document.querySelectorAll('.tile.aov .expression')].filter(e => "
+                           "e.scrollWidth > e.clientWidth || e.scrollHeight > e.clientHeight + 1)"
+                           ".map(e => [e.value, e.scrollWidth, e.clientWidth, e.scrollHeight, e.clientHeight])")
+    assert not cut, f"LPE inputs that do not show their whole expression at {width}×{height}: {cut}"
+    table = browser.evaluate("(() => { const t = document.getElementById('explain-scroll'); const r = t.getBoundingClientRect(); "
+                             "return [t.scrollWidth, t.clientWidth, r.left, r.right, document.querySelectorAll('#explain-table tbody tr').length]; })()")
+    assert table[4] > 0 and table[0] <= table[1] and table[2] >= 0 and table[3] <= width, \
+        f"the explain table does not fit the {width}-pixel window: {table}"
+    error = browser.evaluate(f"(() => {{ const p = {tile('raytrace')}.querySelector('pre.error'); "
+                             "return [p.hidden, p.scrollWidth, p.clientWidth]; })()")
+    assert not error[0] and error[1] <= error[2], f"the syntax error is not wrapped in full under its input: {error}"
+    if projector:
+        sizes = browser.evaluate("""(() => {
+            const sizes = {};
+            for (const selector of ['body', 'header label', '#status', '.tile .expression', '.tile .name', 'pre.error',
+                                    '#explain-table td', '#explain-table th', '#sum-check', '.hint', '#presets button'])
+              for (const e of document.querySelectorAll(selector))
+                sizes[selector] = Math.min(sizes[selector] ?? Infinity, parseFloat(getComputedStyle(e).fontSize));
+            return sizes; })()""")
+        small = {k: v for k, v in sizes.items() if v < 20}
+        assert len(sizes) == 11 and not small, f"text under 20 px at {width}×{height}: {small or sizes}"
+    browser.screenshot(os.path.join(shots, f"serve-{width}x{height}.png"))
+
+
+def lecture_hall(browser, x, y, shots):
+    """Issue 29: the page on a projector (1920×1080) and a laptop (1280×720), and state that is
+    never stale."""
+    browser.set_viewport(1920, 1080)
+    print("the long expression in every LPE input, a broken one in raytrace's")
+    browser.evaluate("document.querySelector('button[data-preset=classes]').click(), true")
+    browser.wait_for("document.querySelectorAll('.tile.aov').length === 5", "the classes set's five tiles")
+    for name in browser.evaluate("[...document.querySelectorAll('.tile.aov')].map(t => t.dataset.layer)"):
+        if name != "raytrace":
+            browser.type_into(f"{tile(name)}.querySelector('.expression')", LONG_LPE)
+    browser.type_into(f"{tile('raytrace')}.querySelector('.expression')", "E(D|G L" + " (D|G|S)" * 12)
+    broken = tile('raytrace')
+    browser.wait_for(f"{broken}.classList.contains('stale-image') && "
+                     f"getComputedStyle({broken}.querySelector('.stale')).display !== 'none' && "
+                     f"!{broken}.querySelector('pre.error').hidden", "the broken LPE's tile marked as not its image")
+
+    print("explain a pixel, then switch integrator: the table and the paths are never the old render's")
+    browser.click_pixel(x, y, 640, 480)
+    browser.wait_for("document.querySelectorAll('#explain-table tbody tr').length > 0 && "
+                     "document.getElementById('explain-table').dataset.generation === String(state.latestGeneration) && "
+                     "document.querySelectorAll('#overlay g.path').length > 0", f"pixel {x},{y} explained")
+    check_layout(browser, 1920, 1080, shots, projector=True)
+    check_layout(browser, 1280, 720, shots, projector=False)
+    browser.set_viewport(1920, 1080)
+    browser.type_into(f"{broken}.querySelector('.expression')", LONG_LPE)
+    browser.wait_for("document.querySelectorAll('.tile.stale-image').length === 0 && "
+                     f"state.settings.lpes.every(e => e.expression === {json.dumps(LONG_LPE)}) && "
+                     "document.getElementById('explain-table').dataset.generation === String(state.latestGeneration)",
+                     "every tile's expression taken, and the pixel explained for it")
+    before = browser.evaluate("state.latestGeneration")
+    select_integrator(browser, "bdpt")
+    # Checked in the same task as the page learns of the new render: nothing of the old one remains.
+    stale = browser.wait_for(f"state.latestGeneration > {before} && JSON.stringify({{"
+                             "table: document.getElementById('explain-table').dataset.generation ?? null, "
+                             "rows: document.querySelectorAll('#explain-table tbody tr').length, "
+                             "paths: document.querySelectorAll('#overlay g.path, #top-view g.path').length, "
+                             "generation: state.latestGeneration})", "the page told of the bdpt render")
+    stale = json.loads(stale)
+    assert stale["table"] in (None, str(stale["generation"])) and (stale["table"] or not stale["rows"] and not stale["paths"]), \
+        f"the explain table or the drawn paths are the old render's after the switch: {stale}"
+    browser.wait_for("document.getElementById('explain-table').dataset.generation === String(state.latestGeneration) && "
+                     "document.getElementById('pixel-summary').textContent.startsWith('(bdpt') && "
+                     "document.querySelectorAll('#overlay g.path').length > 0", "the pixel explained again under bdpt")
+    strategies = browser.evaluate("[...document.querySelectorAll('#explain-table tbody td.strategy-col')]"
+                                  ".map(td => [td.textContent, getComputedStyle(td).display])")
+    assert strategies and all(re.fullmatch(r"\(\d+, \d+\)( splatted)?(, \(\d+, \d+\)( splatted)?)*", text) and display != "none"
+                              for text, display in strategies), f"bdpt rows without their strategy (s, t): {strategies}"
+
+    print("switch to raster at the page's 16 spp")
+    assert browser.evaluate("document.getElementById('spp').value") == "16"
+    select_integrator(browser, "raster")
+    browser.wait_for("/^raster, 640×480: pass 1, 1 spp of 1 \\(done\\)/.test(document.getElementById('status').textContent)",
+                     "the raster render done at 1 spp")
+    assert browser.evaluate("document.getElementById('request-error').hidden"), "the raster switch was refused"
+    assert "spp 1 instead of 16" in browser.evaluate("document.getElementById('notices').textContent")
+
+    print("radiosity: its solve shows progress and is counted in the time shown")
+    select_integrator(browser, "radiosity")
+    # Records the longest wait the page showed while preparing, until the render is done.
+    done = browser.wait_for(r"""(() => {
+        const status = document.getElementById('status').textContent;
+        const preparing = /^preparing and rendering .* radiosity… ([0-9.]+) s$/.exec(status);
+        const bar = document.getElementById('timing');
+        if (preparing && !bar.hidden && !bar.hasAttribute('value'))
+          window.longestPreparing = Math.max(window.longestPreparing ?? 0, Number(preparing[1]));
+        return /^radiosity, .*\(done\) in ([0-9.]+) s/.exec(status)?.[1];
+    })()""", "the radiosity render done", limit=900)
+    longest = browser.evaluate("window.longestPreparing ?? null")
+    assert longest is not None, "no progress was shown while radiosity prepared"
+    assert float(done) >= longest, f"the time shown ({done} s) leaves out the {longest} s of preparing"
+    browser.call("Emulation.clearDeviceMetricsOverride")
 
 
 def main():
@@ -246,9 +378,7 @@ def run(args, profile):
 
         print("click a mirror pixel and see a path through a mirror reflection")
         x, y = find_mirror_pixel(server, 640, 480)
-        box = browser.evaluate("(() => { const r = document.getElementById('beauty').getBoundingClientRect(); "
-                               "return [r.left, r.top, r.width, r.height]; })()")
-        browser.click(box[0] + (x + 0.5) * box[2] / 640, box[1] + (y + 0.5) * box[3] / 480)
+        browser.click_pixel(x, y, 640, 480)
         browser.wait_for(f"document.getElementById('pixel-label').textContent === '{x},{y}'", f"pixel {x},{y} explained")
         browser.wait_for("[...document.querySelectorAll('#explain-table tbody td[title]')]"
                          ".some(td => td.title.includes(\"RS'mirror-ball'\"))", "a path with RS off the mirror ball in the table")
@@ -282,6 +412,9 @@ def run(args, profile):
                              "r.querySelector('td[title]').title.includes(\"RS'mirror-ball'\")).click(), true")
             browser.wait_for("document.querySelector('#automaton g.node.on-path')", "the selected path's states")
             browser.screenshot(args.screenshot, scale=0.7)  # small enough for the repository
+
+        with tempfile.TemporaryDirectory(prefix="lightpath-serve-shots-") as shots:
+            lecture_hall(browser, x, y, shots)
 
         browser.call("Runtime.evaluate", expression="1")  # collect events still queued
         if browser.errors:
