@@ -1,17 +1,30 @@
 #pragma once
 // A material type a scene names with `[materials.NAME] type = "..."`: its schema and how to make
 // it from checked values. Each material's .cpp registers its own with LIGHTPATH_REGISTER_MATERIAL.
+#include <array>
+
 #include "materials/material.h"
 #include "schema/parameter_values.h"
 #include "schema/registry.h"
 
 namespace lightpath {
 
+// What a material promises beyond the interface; the conformance kit (tests/conformance/) holds
+// every registered type to it.
+struct MaterialPromises {
+    // f(wo, wi) == f(wi, wo) (Helmholtz reciprocity), per smooth lobe in kSmoothLobes' order.
+    std::array<bool, kSmoothLobes.size()> reciprocal{};
+    // Whether it reflects at most what arrives, from every direction, for these values (e.g.
+    // kd + ks <= 1); null: never promised.
+    bool (*conservesEnergy)(const ParameterValues& values) = nullptr;
+};
+
 struct MaterialType {
     TypeSchema schema;
     int rank = 0;  // listing order (lecture order); rank 0 is the default type
     // May refuse a combination with values.fail(key, ...); the loader sets the name.
     MaterialSlot (*make)(const ParameterValues& values) = nullptr;
+    MaterialPromises promises;
 };
 
 using MaterialRegistry = TypeRegistry<MaterialType>;

@@ -105,4 +105,9 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
       {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
        "emitted radiance: the surface is an area light"}},
      "<R[DG]>"},
-    1, lightpath::makeModifiedPhong})
+    1, lightpath::makeModifiedPhong,
+    // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.
+    {{true, true}, [](const lightpath::ParameterValues& v) {
+         const lightpath::Rgb sum = v.colour("kd") + v.colour("ks");
+         return sum.r <= 1.0f && sum.g <= 1.0f && sum.b <= 1.0f;
+     }}})

@@ -1,34 +1,125 @@
 #include "cases.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
-#include "materials/modified_phong_material.h"
-#include "materials/phong_material.h"
+#include "lights/light_type.h"
+#include "materials/material_type.h"
 #include "scene/scene_loader.h"
+#include "schema/format.h"
 
 namespace lightpath::conformance {
 namespace {
 
-MaterialCase phong(std::string parameters, Rgb kd, Rgb ks, float n, Rgb kr = Rgb{0.0f}, Rgb kt = Rgb{0.0f},
-                   float ior = 1.5f, bool fresnel = false) {
-    PhongMaterial m;
-    m.kd = kd;
-    m.ks = ks;
-    m.n = n;
-    m.kr = kr;
-    m.kt = kt;
-    m.ior = ior;
-    m.fresnel = fresnel;
-    return {"phong: " + std::move(parameters), MaterialSlot(std::move(m)), materialClaims("phong")};
+// Cases drawn for every registered type, on top of the hand-picked ones below: a type the kit has
+// never heard of is checked as soon as it registers.
+constexpr int kDrawsPerMaterialType = 4;
+constexpr int kDrawsPerLightType = 2;
+constexpr int kTriesPerDraw = 20;  // draws a type refuses as a combination (values.fail) are redrawn
+
+using Value = std::variant<double, Vec3, bool>;
+struct Setting {
+    std::string_view key;
+    Value value;
+};
+
+std::string describe(const Value& value) {
+    if (const double* x = std::get_if<double>(&value)) return formatNumber(*x);
+    if (const Vec3* v = std::get_if<Vec3>(&value)) return formatVec3(*v);
+    return std::get<bool>(value) ? "true" : "false";
 }
 
-MaterialCase modifiedPhong(std::string parameters, Rgb kd, Rgb ks, float n) {
-    ModifiedPhongMaterial m;
-    m.kd = kd;
-    m.ks = ks;
-    m.n = n;
-    return {"modified-phong: " + std::move(parameters), MaterialSlot(std::move(m)), materialClaims("modified-phong")};
+void apply(ParameterValues& values, const Setting& setting) {
+    std::visit([&](const auto& v) { values.set(setting.key, v); }, setting.value);
+}
+
+// A seed from the type's name (FNV-1a): the same draws on every machine and in every run.
+std::uint32_t seedOf(std::string_view name) {
+    std::uint32_t hash = 2166136261u;
+    for (const char c : name) hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
+    return hash;
+}
+
+// A value within the parameter's range, from what a lecture scene uses where the range is
+// open-ended: colours (reflectances, radiances) in [0, 1], numbers up to four times their default
+// (at least 2 above the lower bound), points and vectors within 1 of the origin. Names and texts
+// keep their defaults.
+std::optional<Value> draw(const Parameter& p, std::mt19937& rng) {
+    const auto within = [&](double low, double high, bool lowExclusive) {
+        const double from = std::isfinite(p.range.low) ? std::max(low, p.range.low) : low;
+        const double to = std::isfinite(p.range.high) ? std::min(high, p.range.high) : high;
+        double x = std::uniform_real_distribution<double>(from, to)(rng);
+        if (lowExclusive && x <= from) x = from + 0.01 * (to - from);
+        return x;
+    };
+    switch (p.type) {
+        case ParameterType::Colour: {
+            Vec3 c;
+            for (int i = 0; i < 3; ++i) c[i] = float(within(0.0, 1.0, p.range.lowExclusive));
+            return c;
+        }
+        case ParameterType::Number:
+        case ParameterType::Integer: {
+            const double low = std::isfinite(p.range.low) ? p.range.low : -2.0;
+            const double fallback = p.defaultText.empty() ? 0.0 : std::stod(std::string(p.defaultText));
+            const double x = within(low, std::max(4.0 * fallback, low + 2.0), p.range.lowExclusive);
+            if (p.type == ParameterType::Integer) return double(std::lround(x));
+            return x;
+        }
+        case ParameterType::Boolean: return std::bernoulli_distribution(0.5)(rng);
+        case ParameterType::Point:
+        case ParameterType::Vector: {
+            Vec3 v;
+            do {
+                for (int i = 0; i < 3; ++i) v[i] = float(within(-1.0, 1.0, p.range.lowExclusive));
+            } while (p.type == ParameterType::Vector && glm::length(v) < 0.1f);
+            return v;
+        }
+        case ParameterType::Name:
+        case ParameterType::Text: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::vector<Setting> drawSettings(const TypeSchema& schema, std::mt19937& rng) {
+    std::vector<Setting> settings;
+    for (const Parameter& p : schema.parameters)
+        if (auto value = draw(p, rng)) settings.push_back({p.name, *value});
+    return settings;
+}
+
+std::string nameOf(std::string_view type, const std::vector<Setting>& settings) {
+    std::string name = std::string(type) + ":";
+    for (const Setting& s : settings) name += " " + std::string(s.key) + " = " + describe(s.value) + ",";
+    if (!settings.empty()) name.pop_back();
+    return name;
+}
+
+// The case of `type` with `settings` applied to its defaults; nothing when the type refuses them.
+std::optional<MaterialCase> materialCase(const MaterialType& type, const std::vector<Setting>& settings) {
+    ParameterValues values(type.schema);
+    try {
+        for (const Setting& s : settings) apply(values, s);
+        return MaterialCase{nameOf(type.schema.name, settings), type.make(values), materialClaims(type, values)};
+    } catch (const std::exception&) {  // SchemaError, or the type's own refusal of the combination
+        return std::nullopt;
+    }
+}
+
+MaterialCase handPicked(std::string_view typeName, const std::vector<Setting>& settings) {
+    const MaterialType* type = MaterialRegistry::instance().find(typeName);
+    if (!type) throw std::logic_error("conformance: no material type \"" + std::string(typeName) + "\"");
+    std::optional<MaterialCase> c = materialCase(*type, settings);
+    if (!c) throw std::logic_error("conformance: " + nameOf(typeName, settings) + " is refused");
+    return std::move(*c);
 }
 
 // The part of a light scene every case shares: a camera (the loader requires one), nothing else.
@@ -43,32 +134,51 @@ LightCase lightCase(std::string name, const std::string& toml) {
     return {std::move(name), loadSceneFromText(std::string(kCamera) + toml, "conformance-light.toml")};
 }
 
+// One [[lights]] declaration of `type` with `settings`, as a scene file writes it.
+std::string lightDeclaration(std::string_view type, const std::vector<Setting>& settings) {
+    std::string toml = "[[lights]]\ntype = \"" + std::string(type) + "\"\n";
+    for (const Setting& s : settings) toml += std::string(s.key) + " = " + describe(s.value) + "\n";
+    return toml;
+}
+
 }  // namespace
 
-MaterialClaims materialClaims(std::string_view type) {
-    // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so
-    // f itself carries 1/cos theta_i and is not. Phong does not conserve energy by design
-    // (docs/design.md).
-    if (type == "phong") return {{true, false}, false};
-    // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.
-    if (type == "modified-phong") return {{true, true}, true};
-    return {};
+MaterialClaims materialClaims(const MaterialType& type, const ParameterValues& values) {
+    MaterialClaims claims;
+    for (std::size_t l = 0; l < kSmoothLobes.size(); ++l) claims.reciprocal[l] = type.promises.reciprocal[l];
+    claims.conservesEnergy = type.promises.conservesEnergy && type.promises.conservesEnergy(values);
+    return claims;
 }
 
 void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit) {
-    visit(phong("kd = 0.8", Rgb{0.8f}, Rgb{0.0f}, 1.0f));
-    visit(phong("ks = 0.9, n = 1", Rgb{0.0f}, Rgb{0.9f}, 1.0f));
-    visit(phong("ks = 0.5, n = 60", Rgb{0.0f}, Rgb{0.5f}, 60.0f));
-    visit(phong("kd = [0.7, 0.2, 0.1], ks = [0.1, 0.1, 0.6], n = 5", {0.7f, 0.2f, 0.1f}, {0.1f, 0.1f, 0.6f}, 5.0f));
-    visit(phong("kd = 0.3, kr = 0.5 (a mirror)", Rgb{0.3f}, Rgb{0.0f}, 20.0f, Rgb{0.5f}));
-    visit(phong("kt = 0.9, kr = 0.1, ior = 1.5 (glass)", Rgb{0.0f}, Rgb{0.0f}, 20.0f, Rgb{0.1f}, Rgb{0.9f}, 1.5f));
-    visit(phong("kt = 1, ior = 1.33, fresnel = true", Rgb{0.0f}, Rgb{0.0f}, 20.0f, Rgb{0.0f}, Rgb{1.0f}, 1.33f, true));
-    visit(phong("kd = 0.2, ks = 0.2, n = 30, kt = 0.5, ior = 2.4, fresnel = true", Rgb{0.2f}, Rgb{0.2f}, 30.0f,
-                Rgb{0.0f}, Rgb{0.5f}, 2.4f, true));
-    visit(modifiedPhong("kd = 0.9", Rgb{0.9f}, Rgb{0.0f}, 20.0f));
-    visit(modifiedPhong("ks = 0.95, n = 1", Rgb{0.0f}, Rgb{0.95f}, 1.0f));
-    visit(modifiedPhong("kd = [0.5, 0.2, 0], ks = [0.5, 0.3, 0.8], n = 20", {0.5f, 0.2f, 0.0f}, {0.5f, 0.3f, 0.8f}, 20.0f));
-    visit(modifiedPhong("kd = 0.1, ks = 0.8, n = 200", Rgb{0.1f}, Rgb{0.8f}, 200.0f));
+    // Hand-picked: the lecture's materials (matte, highlights of every width, mirror, glass,
+    // Fresnel glass, a diamond-like index).
+    using V = Vec3;
+    visit(handPicked("phong", {{"kd", V{0.8f}}}));
+    visit(handPicked("phong", {{"ks", V{0.9f}}, {"n", 1.0}}));
+    visit(handPicked("phong", {{"ks", V{0.5f}}, {"n", 60.0}}));
+    visit(handPicked("phong", {{"kd", V{0.7f, 0.2f, 0.1f}}, {"ks", V{0.1f, 0.1f, 0.6f}}, {"n", 5.0}}));
+    visit(handPicked("phong", {{"kd", V{0.3f}}, {"kr", V{0.5f}}}));
+    visit(handPicked("phong", {{"kt", V{0.9f}}, {"kr", V{0.1f}}, {"ior", 1.5}}));
+    visit(handPicked("phong", {{"kt", V{1.0f}}, {"ior", 1.33}, {"fresnel", true}}));
+    visit(handPicked("phong", {{"kd", V{0.2f}}, {"ks", V{0.2f}}, {"n", 30.0}, {"kt", V{0.5f}}, {"ior", 2.4}, {"fresnel", true}}));
+    visit(handPicked("modified-phong", {{"kd", V{0.9f}}}));
+    visit(handPicked("modified-phong", {{"ks", V{0.95f}}, {"n", 1.0}}));
+    visit(handPicked("modified-phong", {{"kd", V{0.5f, 0.2f, 0.0f}}, {"ks", V{0.5f, 0.3f, 0.8f}}, {"n", 20.0}}));
+    visit(handPicked("modified-phong", {{"kd", V{0.1f}}, {"ks", V{0.8f}}, {"n", 200.0}}));
+
+    // Drawn: every registered type, its defaults and kDrawsPerMaterialType sets within its schema.
+    for (const MaterialType* type : MaterialRegistry::instance().entries()) {
+        visit(*materialCase(*type, {}));
+        std::mt19937 rng(seedOf(type->schema.name));
+        for (int d = 0; d < kDrawsPerMaterialType; ++d) {
+            std::optional<MaterialCase> c;
+            for (int t = 0; t < kTriesPerDraw && !c; ++t) c = materialCase(*type, drawSettings(type->schema, rng));
+            if (!c) throw std::runtime_error("conformance: material type \"" + std::string(type->schema.name) +
+                                             "\" refused " + std::to_string(kTriesPerDraw) + " draws within its schema");
+            visit(*c);
+        }
+    }
 }
 
 void forEachLightCase(const std::function<void(const LightCase&)>& visit) {
@@ -112,6 +222,24 @@ center = [0, 0, -3]
 radius = 1
 material = "lamp"
 )"));
+
+    // Drawn: every registered type, kDrawsPerLightType declarations within its schema.
+    for (const LightType* type : LightRegistry::instance().entries()) {
+        std::mt19937 rng(seedOf(type->schema.name));
+        for (int d = 0; d < kDrawsPerLightType; ++d) {
+            std::optional<LightCase> c;
+            for (int t = 0; t < kTriesPerDraw && !c; ++t) {
+                const std::vector<Setting> settings = drawSettings(type->schema, rng);
+                try {
+                    c = lightCase(nameOf(type->schema.name, settings), lightDeclaration(type->schema.name, settings));
+                } catch (const SceneError&) {  // a combination the type refuses
+                }
+            }
+            if (!c) throw std::runtime_error("conformance: light type \"" + std::string(type->schema.name) +
+                                             "\" refused " + std::to_string(kTriesPerDraw) + " draws within its schema");
+            visit(*c);
+        }
+    }
 }
 
 }  // namespace lightpath::conformance

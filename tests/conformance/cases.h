@@ -1,15 +1,15 @@
 #pragma once
-// What the conformance kit runs its checks over: one function per family lists every case. Until
-// the type registry (issue #30, src/schema/) lands, the material and light lists name the shipped
-// types with representative parameter sets; then each body becomes "for every registered type, K
-// parameter sets drawn within each Parameter's Range" and nothing else in the kit changes.
-// Integrators are already a table: the kit iterates integrators() (src/integrators/registry.h).
+// What the conformance kit runs its checks over: one function per family lists every case. Each
+// registered material and light type (src/schema/) is checked at its defaults and at parameter sets
+// drawn within its schema's ranges, besides hand-picked cases of the shipped types; integrators
+// are every row of integrators() (src/integrators/registry.h).
 #include <functional>
 #include <string>
 #include <string_view>
 
 #include "integrators/registry.h"
 #include "materials/material.h"
+#include "materials/material_type.h"
 #include "scene/scene.h"
 
 namespace lightpath::conformance {
@@ -35,8 +35,8 @@ struct LightCase {
     Scene scene;
 };
 
-// What each material type claims, by its `type = "..."` name; nothing for a type it does not know.
-MaterialClaims materialClaims(std::string_view type);
+// What a material type promises (MaterialType::promises) for these values.
+MaterialClaims materialClaims(const MaterialType& type, const ParameterValues& values);
 
 void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit);
 void forEachLightCase(const std::function<void(const LightCase&)>& visit);
