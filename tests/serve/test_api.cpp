@@ -422,3 +422,34 @@ TEST_CASE("serve: concurrent requests") {
     REQUIRE(last);
     CHECK(last->status == 200);
 }
+
+TEST_CASE("serve: a change of settings runs the integrator's preprocess once: one radiosity solve for every pass") {
+    ServerFixture fixture("cornell-original.toml");
+    // The worker renders one job after another: once this one is done no other renderer is built.
+    const auto small = fixture.session.update(applySettings(fixture.session.job()->settings, settingsFor(16, 12, 1).dump()));
+    fixture.waitUntilDone(small->generation);
+    const std::uint64_t before = Renderer::preprocessesRun();
+    // Pass 0 at the pixel centres, then jittered passes of kSamplesPerPass samples.
+    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings,
+                                                          settingsFor(16, 12, 2 * kSamplesPerPass, "radiosity").dump()));
+    const json done = fixture.waitUntilDone(job->generation);
+    CHECK(done["passes"] == 3);
+    CHECK(Renderer::preprocessesRun() - before == 1);
+}
+
+TEST_CASE("serve: only the newest explanation runs: a newer one, a change of settings and shutdown cancel it") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto first = fixture.session.startExplaining();
+    CHECK_FALSE(first->load());
+    const auto second = fixture.session.startExplaining();
+    CHECK(first->load());
+    CHECK_FALSE(second->load());
+    fixture.session.update(applySettings(fixture.session.job()->settings, settingsFor(16, 12, 1).dump()));
+    CHECK(second->load());
+    const auto third = fixture.session.startExplaining();
+    CHECK_FALSE(third->load());
+    fixture.session.stop();
+    CHECK(third->load());
+    CHECK(fixture.session.startExplaining()->load());  // after shutdown none starts
+    CHECK(fixture.session.stopping());
+}
