@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
-#include "cli/lpe_feasibility.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
+#include "config/lpe_feasibility.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "lpe/analysis.h"

@@ -11,9 +11,9 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
-#include "cli/render_setup.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
+#include "config/render_setup.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
 #include "io/text_file.h"

@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "bench/timing.h"
+#include "util/timing.h"
 #include "integrators/registry.h"
 #include "render/memory_limit.h"
-#include "render/progress.h"
+#include "util/progress.h"
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
 #include "util/worker_threads.h"

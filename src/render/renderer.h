@@ -15,7 +15,7 @@
 #include "film/film.h"
 #include "film/splat_film.h"
 #include "geometry/numerics.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
@@ -56,7 +56,7 @@ struct RenderOptions {
     // Set (e.g. by a Ctrl-C handler) to stop the workers after their current tile.
     const std::atomic<bool>* cancel = nullptr;
     Accelerator accelerator = Accelerator::Bvh;
-    bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
+    bool progress = false;  // a progress bar on stderr (only if it is a terminal; util/progress.h)
     RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity
     // Called on the calling thread once every worker thread of render() exists. Creating a thread
     // waits for a dlopen() in progress on another thread (glibc's loader lock): a library loaded in

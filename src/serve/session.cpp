@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cli/render_setup.h"
+#include "config/render_setup.h"
 #include "lpe/error.h"
 #include "render/memory_limit.h"
 #include "serve/request_error.h"

@@ -4,7 +4,7 @@
 
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
-#include "integrators/path_record.h"
+#include "transport/path_event.h"
 #include "serve/request_error.h"
 
 namespace lightpath::serve {

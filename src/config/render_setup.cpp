@@ -1,13 +1,13 @@
-#include "cli/render_setup.h"
+#include "config/render_setup.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
 
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
-#include "cli/lpe_feasibility.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
+#include "config/lpe_feasibility.h"
 #include "film/aov_presets.h"
 #include "integrators/event_symbols.h"
 #include "integrators/registry.h"
