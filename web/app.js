@@ -264,6 +264,13 @@ async function explain(x, y) {
   drawExplanation();
 }
 
+// The product's factors joined by ×, then the values it is not multiplied by (the pdfs MIS weighs).
+function formatFactors(factors) {
+  const product = factors.filter((f) => f.inProduct !== false).map(formatFactor).join(" × ");
+  const values = factors.filter((f) => f.inProduct === false).map(formatFactor).join(", ");
+  return values ? `${product}; ${values}` : product;
+}
+
 function formatFactor(f) {
   const [r, g, b] = f.rgb.map((v) => Number(v.toPrecision(4)));
   return r === g && g === b ? `${f.name} ${r}` : `${f.name} (${r} ${g} ${b})`;
@@ -288,7 +295,7 @@ function drawExplanation() {
                element("td", { class: "mono", title: g.tuple }, g.compact),
                element("td", { class: "mono lpe" }, g.lpe), element("td", {}, touched), rgb,
                element("td", {}, g.aovs.join(", ")),
-               element("td", { class: "mono factors" }, g.factors.map(formatFactor).join(" × ")));
+               element("td", { class: "mono factors" }, formatFactors(g.factors)));
     row.addEventListener("click", () => selectPath(i));
     return row;
   });

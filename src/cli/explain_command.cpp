@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "config/exit_codes.h"
 #include "config/render_setup.h"
@@ -186,9 +187,11 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
                     joined(aovNames(aovs, g.accepted), ", ").c_str());
         for (std::size_t v = 0; v < std::min(g.factors.size(), kFactorRows); ++v) {
             if (g.factors[v].empty()) continue;
-            std::vector<std::string> words;
-            for (const TermFactor& f : g.factors[v]) words.push_back(formatFactor(f));
+            // The product's factors, then the values it depends on but is not multiplied by (pdfs).
+            std::vector<std::string> words, values;
+            for (const TermFactor& f : g.factors[v]) (f.inProduct ? words : values).push_back(formatFactor(f));
             std::printf("     factors: %s\n", joined(words, " x ").c_str());
+            if (!values.empty()) std::printf("     values:  %s\n", joined(values, ", ").c_str());
         }
         if (g.factors.size() > kFactorRows) std::printf("     (factors of the first %zu of %zu samples shown)\n", kFactorRows, g.factors.size());
         std::vector<std::string> strategies;  // the distinct ones, in the order found
@@ -282,7 +285,13 @@ void printJson(const ExplainCommand& command, const Scene& scene, const RenderOp
         json << "],\n     \"contributions\": [";
         for (std::size_t v = 0; v < g.values.size(); ++v) {
             json << (v ? ", " : "") << "{\"rgb\": " << jsonRgb(g.values[v]) << ", \"factors\": {";
-            for (std::size_t f = 0; f < g.factors[v].size(); ++f) json << (f ? ", " : "") << jsonFactor(g.factors[v][f]);
+            bool firstFactor = true;
+            for (const TermFactor& f : g.factors[v])
+                if (f.inProduct) json << (std::exchange(firstFactor, false) ? "" : ", ") << jsonFactor(f);
+            json << "}, \"values\": {";
+            firstFactor = true;
+            for (const TermFactor& f : g.factors[v])
+                if (!f.inProduct) json << (std::exchange(firstFactor, false) ? "" : ", ") << jsonFactor(f);
             json << "}, \"strategy\": " << jsonStrategy(g.strategies[v]) << ", " << jsonGeometry(camera, g.positions[v])
                  << "}";
         }

@@ -11,7 +11,7 @@
 
 #include "config/cli_errors.h"
 #include "config/exit_codes.h"
-#include "config/lpe_feasibility.h"
+#include "config/lpe_verdict.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "lpe/analysis.h"
@@ -64,8 +64,22 @@ std::string readingNote(const std::string& expression, const Warnings& warn, con
     return "  read as " + reading.text + " (" + notes + ")";
 }
 
+// The one judge (config/lpe_verdict.h), as render applies it: refuses (exit 2) an expression no path
+// of `integrator` (null: of any integrator) can ever match, warns of one that needs a volume.
+void judge(const std::vector<lpe::NamedExpression>& expressions, const IntegratorInfo* integrator,
+           const std::string& command, const Warnings& warn) {
+    for (const auto& e : expressions) {
+        const Judgement judgement = judgeExpression(e, integrator);
+        if (judgement.verdict == Verdict::Refused)
+            throw CLI::RuntimeError(command + ": " + e.name + ": " + refusalMessage(e, integrator, judgement.reason),
+                                    kExitBadInput);
+        if (judgement.verdict == Verdict::BlackHere) warn(warningMessage(e, judgement));
+    }
+}
+
 struct MatchOptions {
     std::vector<std::string> arguments;  // EXPRESSION PATH..., or PATH... with --set
+    std::string integrator;              // judge the expression as render does under it
     std::string set;
     bool trace = false;
     bool quiet = false;
@@ -96,6 +110,7 @@ void runMatch(const MatchOptions& options) {
     if (pathTexts.empty())
         throw CLI::RuntimeError("lpe match: expected an expression (or --set NAME) and at least one path", kExitBadInput);
     const lpe::Automaton automaton = lpe::Automaton::compile(expressions);
+    if (!options.integrator.empty()) judge(expressions, findIntegrator(options.integrator), "lpe match", Warnings(options.quiet));
     // Read every path first: a typo in the last one should not leave half a report.
     std::vector<lpe::Path> paths;
     for (const std::string& text : pathTexts) paths.push_back(lpe::parsePath(text));
@@ -136,7 +151,7 @@ std::vector<lpe::NamedExpression> expressionsOf(const SetOptions& options) {
         expressions.push_back(namedExpression(options.expressions[i], i));
     }
     if (expressions.empty()) {
-        throw CLI::RuntimeError("lpe: give at least one expression or --set classes|taxonomy", kExitBadInput);
+        throw CLI::RuntimeError("lpe: give at least one expression or --set classes|taxonomy|bounces", kExitBadInput);
     }
     return expressions;
 }
@@ -202,9 +217,12 @@ void printIntegrator(const std::vector<lpe::NamedExpression>& expressions, const
     const IntegratorInfo* info = findIntegrator(name);
     std::cout << "--integrator " << info->name << " renders " << info->pathLanguage << ":\n";
     for (const auto& e : expressions) {
-        const auto why = whyNeverFilled(e.expression, *info);
+        const Judgement judgement = judgeExpression(e, info);
         std::cout << "  " << e.name << std::string(width + 2 - e.name.size(), ' ')
-                  << (why ? "never filled: " + *why : std::string("can be filled")) << '\n';
+                  << (judgement.verdict == Verdict::Fillable ? std::string("can be filled")
+                      : judgement.verdict == Verdict::BlackHere ? "black: " + judgement.reason
+                                                                : "never filled: " + judgement.reason)
+                  << '\n';
     }
 }
 
@@ -213,8 +231,12 @@ void runCheck(const SetOptions& options) {
     const auto preset = findAovPreset(options.set);
     const std::string universe =
         !options.universe.empty() ? options.universe : preset ? preset->universe : "E.*L";
-    const lpe::SetReport report = lpe::analyse(expressions, universe);
     const Warnings warn(options.quiet);
+    // Judged as render judges them, under --integrator or else under any integrator; an expression
+    // over a --universe of the user's own is the engine's alone (any event strings).
+    const IntegratorInfo* integrator = options.integrator.empty() ? nullptr : findIntegrator(options.integrator);
+    if (integrator || options.universe.empty()) judge(expressions, integrator, "lpe check", warn);
+    const lpe::SetReport report = lpe::analyse(expressions, universe);
 
     std::size_t width = 0;
     for (const auto& e : expressions) width = std::max(width, e.name.size());
@@ -281,6 +303,9 @@ void addLpeCommand(CLI::App& app) {
         ->check(oneOf(presets));
     matchCommand->add_flag("--trace", match->trace,
                            "also print the automaton states each path passes through, numbered as lpe dot draws them");
+    matchCommand->add_option("--integrator", match->integrator,
+                             "refuse the expression, as render would, if this integrator can never fill it")
+        ->check(oneOf(integratorNames()));
     matchCommand->add_flag("--quiet", match->quiet, "no warnings");
     matchCommand->footer(
         "Prints `match` or `no match` and the path, one line per path; first, when lightpath reads the\n"
@@ -300,7 +325,9 @@ void addLpeCommand(CLI::App& app) {
     addSetArguments(*checkCommand, *check);
     checkCommand->add_option("--universe", check->universe,
                              "the paths the set should split (default E.*L; E(D|G|S)*L with --set classes)");
-    checkCommand->add_option("--integrator", check->integrator, "also say which expressions this integrator can ever fill")
+    checkCommand->add_option("--integrator", check->integrator,
+                             "refuse, as render does, an expression this integrator can never fill (default: "
+                             "one no integrator can fill), and say which of a --set's it fills")
         ->check(oneOf(integratorNames()));
     checkCommand->add_flag("--quiet", check->quiet, "no warnings");
     checkCommand->footer(
@@ -308,7 +335,9 @@ void addLpeCommand(CLI::App& app) {
         "containment with a shortest path of the larger that the smaller lacks. Every overlapping pair\n"
         "is shown with a shortest path both accept, the gap with a shortest path of the universe none\n"
         "accepts. A set is a partition when there is neither: its AOVs then sum exactly to the beauty.\n"
-        "--integrator NAME says which expressions that integrator can ever fill, and why not the others.\n"
+        "An expression no integrator can ever fill is refused (exit 2) as render refuses it; with\n"
+        "--integrator NAME, one that integrator cannot fill (docs/lpe.md, \"No silent black AOVs\"), and\n"
+        "a --set's AOVs are listed as filled or not. With only --universe, expressions are plain languages.\n"
         "Unnamed expressions are called lpe1, lpe2, ...\n\n"
         "Examples:\n"
         "  lightpath lpe check --set classes\n"

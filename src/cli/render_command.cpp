@@ -13,6 +13,7 @@
 
 #include "config/cli_errors.h"
 #include "config/exit_codes.h"
+#include "config/lpe_verdict.h"
 #include "config/render_setup.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
@@ -158,6 +159,10 @@ void run(const RenderCommand& command) {
                            {"lightpath:max_depth", std::to_string(options.maxDepth)},
                            {"lightpath:seconds", std::to_string(result.stats.seconds)}};
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
+    // A preset's AOV this integrator cannot fill is written black, so the set still sums to the
+    // beauty; said here and in --stats, not as a warning (config/lpe_verdict.h).
+    const std::vector<BlackAov> black = blackPresetAovs(aovs.expressions(), *findIntegrator(options.integrator));
+    for (const BlackAov& b : black) metadata.emplace_back("lightpath:black:" + b.name, b.reason);
     WriteStats write;
     const auto writeStart = std::chrono::steady_clock::now();
     try {
@@ -177,6 +182,10 @@ void run(const RenderCommand& command) {
     if (command.stats) {
         printStats(result.stats, write);
         printAcceleratorStats(command.setup.accel, result.stats.accelerator);
+        for (const BlackAov& b : black)
+            std::printf("black AOV     %s, as --integrator %s always leaves it (%s); written, so the AOVs still "
+                        "sum to the beauty\n",
+                        b.name.c_str(), options.integrator.c_str(), b.reason.c_str());
         if (result.stats.radiosity) printRadiosityStats(*result.stats.radiosity);
     }
 }

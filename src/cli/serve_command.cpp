@@ -26,6 +26,7 @@ struct ServeCommand {
     std::string scenePath;
     std::string host = "127.0.0.1";
     int port = 8080;
+    int threads = 0;
     bool open = false;
 };
 
@@ -53,7 +54,7 @@ void openBrowser(const std::string& url) {
 void run(const ServeCommand& command) {
     RenderSetup setup;
     setup.scenePath = command.scenePath;
-    serve::Session session(setup.loadScene(), command.scenePath);
+    serve::Session session(setup.loadScene(), command.scenePath, command.threads);
     serve::Server server(session);
     int port = 0;
     try {
@@ -104,6 +105,10 @@ void addServeCommand(CLI::App& app) {
     sub->add_option("--host", command->host,
                     "Address to listen on. Anything but 127.0.0.1 exposes the server, which has no authentication, "
                     "to everyone who can reach that address")
+        ->capture_default_str();
+    sub->add_option("--threads", command->threads,
+                    "Render threads (0 = all cores; fewer leave the projector's browser a core)")
+        ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     sub->add_flag("--open", command->open, "Open the page in the default browser (xdg-open)");
     sub->footer(

@@ -17,8 +17,6 @@ using lpe::EventType;
 const std::vector<EventType> kLightEvents = {EventType::Emitter};
 const std::vector<EventType> kObjectEvents = {EventType::Reflection, EventType::Transmission, EventType::ObjectEmission};
 
-// The same as kRenderedPaths with volume events let in: to tell "needs V" from other reasons.
-constexpr const char* kPathsWithVolumes = "E<[RTV][DGSs]>*[LOB]";
 // Any event sequence that ends at an emitter or the background.
 constexpr const char* kEndsAtEmitter = ".*[LOB]";
 
@@ -51,8 +49,10 @@ std::string integratorsThatCan(const std::string& expression, const lpe::LabelPl
     return names;
 }
 
+}  // namespace
+
 // Why `expression` matches no path lightpath renders at all.
-std::string neverRendered(const std::string& expression) {
+std::string whyNeverRendered(const std::string& expression) {
     if (const auto spelling = lpe::labelledEventSpelling(expression); spelling && possible({*spelling, kRenderedPaths})) {
         return "a letter followed by a label is two events (L'key' is a light, then an event labelled key); "
                "did you mean " + quotedExpression(*spelling) + "?";
@@ -72,6 +72,8 @@ std::string neverRendered(const std::string& expression) {
     return "matches no path lightpath renders: a path is E, then reflections and transmissions "
            "(<[RT][DGSs]>), then one light, emitting object or background ([LOB])";
 }
+
+namespace {
 
 // "R, T and L events (<R.'panel'>, <T.'panel'>, <L.'panel'>)": the events `label` is on in the
 // scene, each written as the expression that names it there.
@@ -132,7 +134,7 @@ lpe::LabelPlacement labelPlacement(const Scene& scene) {
 
 std::optional<std::string> whyNeverFilled(const std::string& expression, const IntegratorInfo& integrator,
                                           const Scene* scene) {
-    if (!possible({expression, kRenderedPaths})) return neverRendered(expression);
+    if (!possible({expression, kRenderedPaths})) return whyNeverRendered(expression);
 
     const std::vector<std::string> languages = {kRenderedPaths, integrator.pathLanguage};
     if (!possible({expression, kRenderedPaths, integrator.pathLanguage})) {

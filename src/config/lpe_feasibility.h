@@ -12,10 +12,16 @@
 
 namespace lightpath {
 
+// Every path lightpath would render if it had media: kRenderedPaths with volume events let in.
+inline constexpr const char* kPathsWithVolumes = "E<[RTV][DGSs]>*[LOB]";
+
 // Which events carry each label of `scene`: a light's name (and "ambient") only L events, an
 // object's label (its name, else its material's) R and T events, and L for a [[lights]] quad or
 // sphere, O for another emitting surface.
 lpe::LabelPlacement labelPlacement(const Scene& scene);
+
+// Why `expression` matches no path of kRenderedPaths, with a fix ("did you mean ...").
+std::string whyNeverRendered(const std::string& expression);
 
 // Nothing when `expression` can accept some path `integrator` produces (in `scene`, if given);
 // otherwise why not, with a fix, e.g. "never reaches a light: ...". Throws lpe::SyntaxError.

@@ -7,7 +7,7 @@
 
 #include "config/cli_errors.h"
 #include "config/exit_codes.h"
-#include "config/lpe_feasibility.h"
+#include "config/lpe_verdict.h"
 #include "film/aov_presets.h"
 #include "integrators/event_symbols.h"
 #include "integrators/registry.h"
@@ -17,7 +17,6 @@
 #include "lpe/reading.h"
 #include "render/memory_limit.h"
 #include "scene/scene_loader.h"
-#include "scene/spelling.h"
 
 namespace lightpath {
 namespace {
@@ -43,7 +42,7 @@ void RenderSetup::addOptions(CLI::App& command) {
     for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
     presets.emplace_back("none");
     command.add_option("--aovs", aovs, "Predefined AOV set: classes (the partition of docs/design.md), taxonomy (the lecture's four "
-                                       "methods, overlapping) or none")
+                                       "methods, overlapping), bounces (by the number of events: emission, bounce1 .. bounce4plus) or none")
         ->check(oneOf(presets));
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
@@ -152,42 +151,19 @@ std::vector<lpe::NamedExpression> RenderSetup::expressions() const {
     return set;
 }
 
-namespace {
-
-// A label that names no light, object or material of the scene selects nothing: almost always a
-// typo ('kee' for 'key'), which would silently leave an AOV black.
-void refuseUnknownLabels(const lpe::Automaton& automaton, const std::vector<lpe::NamedExpression>& set,
-                         const Scene& scene, const std::string& scenePath) {
-    const std::vector<std::string> known = sceneLabels(scene);
-    for (const std::string& label : automaton.labels()) {
-        if (std::binary_search(known.begin(), known.end(), label)) continue;
-        std::string option = "--lpe";
-        for (const auto& e : set)
-            if (e.expression.find("'" + label + "'") != std::string::npos) option += " " + e.name;
-        badInput(option + ": " + scenePath + ": " + unknownNameMessage("label", label, known, ListKnown::always));
-    }
-}
-
-}  // namespace
-
-// No silent black AOVs: an --lpe expression no path of this integrator in this scene can match is
-// refused before the render, with the reason; a preset's AOV that stays black under this
-// integrator (raytrace under raycast) is what the preset is for, and gets a warning.
+// The one judge (config/lpe_verdict.h) decides: an --lpe no path of this integrator can match in any
+// scene is refused before the render, with the reason; one only black in this scene (a label it
+// lacks, a volume) is rendered with one short warning; a preset's AOV the integrator cannot fill is
+// written black and said in --stats, not warned about.
 void RenderSetup::refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const Scene& scene,
                                     const std::function<void(const std::string&)>& warn) const {
     const IntegratorInfo* info = findIntegrator(integrator);
     if (!info) badInput("--integrator: " + choiceMessage(integrator, integratorNames()));
-    const std::size_t presetCount = set.size() - lpes.size();
-    for (std::size_t i = 0; i < set.size(); ++i) {
-        const auto& e = set[i];
-        const auto why = whyNeverFilled(e.expression, *info, &scene);
-        if (!why) continue;
-        if (i < presetCount || neverFilledIsWarning) {
-            warn("AOV " + e.name + " (" + e.expression + ") stays black under --integrator " + integrator + ": " + *why);
-        } else {
-            badInput("--lpe " + e.name + ": '" + e.expression + "' can never match under --integrator " + integrator +
-                     ": " + *why);
-        }
+    for (const auto& e : set) {
+        const Judgement judgement = judgeExpression(e, info, &scene);
+        if (judgement.verdict == Verdict::Refused)
+            badInput("--lpe " + e.name + ": " + refusalMessage(e, info, judgement.reason));
+        if (judgement.verdict != Verdict::PresetBlack && !judgement.reason.empty()) warn(warningMessage(e, judgement));
     }
 }
 
@@ -203,21 +179,30 @@ AovSet RenderSetup::buildAovSet(const Scene& scene, std::vector<std::string>* wa
     } catch (const std::exception& e) {
         badInput(std::string("--lpe: ") + e.what());
     }
-    refuseUnknownLabels(aovs->automaton(), set, scene, scenePath);
     const Warnings printed(quiet);
     const auto warn = [&](const std::string& message) {
         if (warnings != nullptr) warnings->push_back(message);
         else printed(message);
     };
     refuseNeverFilled(set, scene, warn);
+    // Presets never warn about themselves: the taxonomy's AOVs overlap on purpose.
     for (const auto& e : set)
-        for (const std::string& warning : lpe::readExpression(e.expression).warnings) warn("--lpe " + e.name + ": " + warning);
+        if (!isPresetMember(e))
+            for (const std::string& warning : lpe::readExpression(e.expression).warnings) warn("--lpe " + e.name + ": " + warning);
     if (set.size() > 1) {
-        // Overlapping AOVs count the same light twice; say so with a path both accept.
-        for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps)
-            warn("AOVs " + set[o.first].name + " and " + set[o.second].name + " overlap: both accept " +
-                 lpe::toCompactString(o.example) + " (" + lpe::toExpressionString(o.example) +
-                 "); their sum counts such light twice");
+        // Overlapping AOVs count the same light twice; say so with a path both accept. Not among a
+        // preset's own AOVs, nor for an AOV black in this scene (it counts nothing).
+        const IntegratorInfo* info = findIntegrator(integrator);
+        const auto blackHere = [&](const lpe::NamedExpression& e) {
+            return judgeExpression(e, info, &scene).verdict == Verdict::BlackHere;
+        };
+        for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps) {
+            const auto& a = set[o.first];
+            const auto& b = set[o.second];
+            if ((isPresetMember(a) && isPresetMember(b)) || blackHere(a) || blackHere(b)) continue;
+            warn("AOVs " + a.name + " and " + b.name + " overlap: both accept " + lpe::toCompactString(o.example) + " (" +
+                 lpe::toExpressionString(o.example) + "); their sum counts such light twice");
+        }
     }
     return std::move(*aovs);
 }
@@ -231,8 +216,8 @@ void RenderSetup::warnEmptyAovs(const Film& film, const AovSet& aovs, const Scen
         for (int y = 0; y < film.height() && empty; ++y)
             for (int x = 0; x < film.width() && empty; ++x) empty = isBlack(film.at(layer, x, y));
         const auto& e = aovs.expressions()[o];
-        // AOVs that can never be filled were refused or warned about before the render.
-        if (!empty || !info || whyNeverFilled(e.expression, *info, &scene)) continue;
+        // AOVs that can never be filled here were refused, warned about or noted before the render.
+        if (!empty || !info || judgeExpression(e, info, &scene).verdict != Verdict::Fillable) continue;
         warn("AOV " + e.name + " (" + e.expression + ") received nothing in this render: --integrator " + integrator +
              " can produce its paths, but none reached it at " + std::to_string(film.width()) + "x" +
              std::to_string(film.height()) + ", " + std::to_string(samplesPerPixel) + " spp, --max-depth " +

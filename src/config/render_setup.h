@@ -33,8 +33,9 @@ struct RenderSetup {
     std::string shadows;             // "on", "off" or empty (the integrator's own)
     std::string accel = "bvh";       // bvh, embree or none (brute force)
     bool quiet = false;              // no progress bar, no warnings
-    // `serve`: an --lpe that no path of the integrator can fill is a warning (its tile stays black
-    // while the lecturer switches integrators), not an error.
+    // No longer read: serve refuses what the command line refuses (config/lpe_verdict.h, one judge);
+    // a preset's AOV the integrator cannot fill stays black there as here. Set by serve's session
+    // until that line goes.
     bool neverFilledIsWarning = false;
     std::string robust = "on";       // on: robust numerics (default); off: the lecture's naive ones
     std::string sphereTest, triangleTest, rayOffset;  // per-method choices; empty: as --robust says
@@ -50,8 +51,9 @@ struct RenderSetup {
 
     Scene loadScene() const;                           // with --resolution applied
     std::vector<lpe::NamedExpression> expressions() const;
-    // Warns when AOVs overlap (on stderr, or into `warnings` when given); refuses a label that
-    // names nothing in `scene`. Refuses an AOV that can never be filled (cli/lpe_feasibility.h).
+    // Judges every AOV (config/lpe_verdict.h): refuses one no path of the integrator can ever fill;
+    // warns (on stderr, or into `warnings` when given) of one black in `scene`, of a label the scene
+    // lacks, and of overlaps, except among a preset's own AOVs.
     AovSet buildAovSet(const Scene& scene, std::vector<std::string>* warnings = nullptr) const;
     RenderOptions renderOptions() const;
     // Refuses (exit 2) a render whose pixel memory, plus `outputBytes` to write its files, is more

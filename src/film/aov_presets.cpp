@@ -23,10 +23,18 @@ const std::vector<lpe::NamedExpression>& taxonomySet() {
     return set;
 }
 
+const std::vector<lpe::NamedExpression>& bouncesSet() {
+    static const std::vector<lpe::NamedExpression> set = {
+        {"emission", "EL"}, {"bounce1", "E.L"}, {"bounce2", "E..L"}, {"bounce3", "E...L"}, {"bounce4plus", "E.{4,}L"},
+    };
+    return set;
+}
+
 const std::vector<AovPreset>& aovPresets() {
     static const std::vector<AovPreset> presets = {
         {"classes", classesSet, "E(D|G|S)*L"},
         {"taxonomy", taxonomySet, "E.*L"},
+        {"bounces", bouncesSet, "E.*L"},
     };
     return presets;
 }

@@ -15,6 +15,9 @@ namespace lightpath {
 const std::vector<lpe::NamedExpression>& classesSet();
 // The lecture's taxonomy of tracing (Magnusson): ray casting, ray tracing, radiosity, path tracing.
 const std::vector<lpe::NamedExpression>& taxonomySet();
+// The light by the number of events between the eye and the emitter: emission, bounce1 .. bounce3,
+// bounce4plus. A partition of E.*L, so its AOVs sum to the beauty under every integrator.
+const std::vector<lpe::NamedExpression>& bouncesSet();
 
 struct AovPreset {
     const char* name;

@@ -21,6 +21,9 @@ namespace lightpath {
 struct TermFactor {
     const char* name = "";
     Rgb value{0.0f};
+    // False for a value the estimate depends on but is not multiplied by (the two pdfs MIS weighs):
+    // `explain` shows those apart, so the factors read as the product they are.
+    bool inProduct = true;
 };
 inline constexpr std::size_t kMaxTermFactors = 6;
 

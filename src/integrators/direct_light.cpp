@@ -37,8 +37,8 @@ std::size_t termFactors(const ShadingPoint& p, Lobe lobe, const LightSample& sam
         factors[n++] = {"f cos", p.bsdf.eval(lobe, p.wo, sample.wi)};
         factors[n++] = {"Li/pdf", incident};
         if (weighting == DirectLightWeighting::MultipleImportance) {
-            factors[n++] = {"light pdf", Rgb{lightPdf}};
-            factors[n++] = {"bsdf pdf", Rgb{p.bsdf.pdf(lobe, p.wo, sample.wi)}};
+            factors[n++] = {"light pdf", Rgb{lightPdf}, false};
+            factors[n++] = {"bsdf pdf", Rgb{p.bsdf.pdf(lobe, p.wo, sample.wi)}, false};
             factors[n++] = {"mis weight", Rgb{weight}};
         }
     }
@@ -226,8 +226,15 @@ void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, f
 void addBackground(const Ray& ray, const Rgb& throughput, PathState& path) {
     const Rgb& background = path.context.scene.background;
     if (isBlack(background) && path.context.skipEnabled) return;
-    path.emit({lpe::EventType::Background, lpe::Scatter::None, Subject::None, 0, ray.at(kBackgroundDistance)},
-              throughput * background);
+    const PathEvent event{lpe::EventType::Background, lpe::Scatter::None, Subject::None, 0, ray.at(kBackgroundDistance)};
+    if (!path.explaining()) {
+        path.emit(event, throughput * background);
+        return;
+    }
+    // The background seen in a mirror is kr times it: `throughput` is the kr/kt product (and, for
+    // the path tracer, the sampled bounces' f cos / pdf).
+    const TermFactor factors[] = {{"Lb", background}, {"throughput", throughput}};
+    path.emit(event, throughput * background, std::span(factors, throughput == Rgb{1.0f} ? 1 : 2));
 }
 
 }  // namespace lightpath

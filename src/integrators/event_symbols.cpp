@@ -30,7 +30,12 @@ lpe::Event lpeEventOf(const Scene& scene, const PathEvent& e) {
 
 std::string subjectName(const Scene& scene, const PathEvent& event) {
     switch (event.subject) {
-        case Subject::None: return event.type == lpe::EventType::Background ? "background" : "camera";
+        case Subject::None:
+            if (event.type == lpe::EventType::Background) return "background";
+            if (event.type == lpe::EventType::Camera) return "camera";
+            // A scattering event with no surface: radiosity's bounce between the surface seen and
+            // the light, a sum over every patch (docs/integrators.md).
+            return "every patch";
         case Subject::Ambient: return kAmbientLabel;
         case Subject::SceneLight: {
             const std::string& name = scene.lights[event.index]->name;

@@ -47,7 +47,8 @@ std::vector<std::string> sceneLabels(const Scene& scene);
 lpe::Event lpeEventOf(const Scene& scene, const PathEvent& event);
 
 // What an event touched, as a student reads it: the object's or light's name ("camera",
-// "background", "ambient" for those).
+// "background", "ambient" for those; "every patch" for radiosity's unlabelled bounces, each a sum
+// over the patches).
 std::string subjectName(const Scene& scene, const PathEvent& event);
 
 }  // namespace lightpath

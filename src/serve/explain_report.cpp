@@ -86,7 +86,8 @@ json explainPixel(const Job& job, int x, int y, const std::atomic<bool>* cancel)
         json factors = json::array();
         for (std::size_t f = 0; f < c.factorCount; ++f)
             factors.push_back({{"name", c.factors[f].name},
-                               {"rgb", json::array({c.factors[f].value.r, c.factors[f].value.g, c.factors[f].value.b})}});
+                               {"rgb", json::array({c.factors[f].value.r, c.factors[f].value.g, c.factors[f].value.b})},
+                               {"inProduct", c.factors[f].inProduct}});
         contributions.push_back({{"compact", lpe::toCompactString(path)},
                                  {"tuple", lpe::toTupleString(path)},
                                  {"lpe", lpe::toExpressionString(path)},

@@ -57,17 +57,12 @@ std::vector<lpe::NamedExpression> lightGroups(const Scene& scene) {
 }
 
 // Light by the number of scattering events between the eye and the emitter: a partition of E.*L.
-std::vector<lpe::NamedExpression> bounceSet() {
-    return {{"emission", "EL"}, {"bounce1", "E.L"}, {"bounce2", "E..L"}, {"bounce3", "E...L"}, {"bounce4plus", "E.{4,}L"}};
-}
-
 }  // namespace
 
 std::vector<std::pair<std::string, std::vector<lpe::NamedExpression>>> presets(const Scene& scene) {
     std::vector<std::pair<std::string, std::vector<lpe::NamedExpression>>> sets;
     for (const AovPreset& preset : aovPresets()) sets.emplace_back(preset.name, preset.expressions());
     sets.emplace_back("lights", lightGroups(scene));
-    sets.emplace_back("bounces", bounceSet());
     return sets;
 }
 

@@ -58,9 +58,10 @@ const Renderer& Job::renderer() const {
     return *renderer_;
 }
 
-Session::Session(Scene scene, std::string scenePath)
+Session::Session(Scene scene, std::string scenePath, int threads)
     : scene_(std::move(scene)),
       scenePath_(std::move(scenePath)),
+      threads_(threads),
       geometry_(Renderer::buildGeometry(scene_, RenderSetup{}.renderOptions())) {
     job_ = prepare(defaultSettings(scene_), 1);
     progress_.job = job_;
@@ -127,6 +128,7 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
     scene.camera.height = settings.height;
     RenderOptions options = setup.renderOptions();
     options.progress = false;
+    options.threads = threads_;
     // A session holds up to five films of this size at once (the previous job's image, the one
     // shown, the sum of the passes, the pass being rendered and its new mean): refused here, not
     // by std::bad_alloc on the render thread.
@@ -159,6 +161,7 @@ std::shared_ptr<const Job> Session::update(const Settings& settings) {
         job_->cancel();
         if (explaining_) explaining_->store(true);  // it explains the old settings' image
         job_ = next;
+        idle_ = false;
     }
     changed_.notify_all();
     return next;
@@ -204,6 +207,11 @@ Progress Session::waitForProgress(std::uint64_t generation, int pass, double tim
     return progress_;
 }
 
+void Session::waitUntilIdle() const {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return workerDone_ || idle_; });
+}
+
 void Session::publish(const Progress& progress) {
     {
         std::lock_guard lock(mutex_);
@@ -229,7 +237,13 @@ void Session::work() {
         std::shared_ptr<Job> job;
         {
             std::unique_lock lock(mutex_);
-            changed_.wait(lock, [&] { return stopping_ || job_ != rendered; });
+            changed_.wait(lock, [&] {
+                if (stopping_ || job_ != rendered) return true;
+                idle_ = true;  // the current job is rendered to its end or given up: say so once blocked
+                changed_.notify_all();
+                return false;
+            });
+            idle_ = false;
             if (stopping_) return;
             job = job_;
             if (progress_.image) previous_ = progress_;

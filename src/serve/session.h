@@ -36,7 +36,7 @@ public:
     const Settings settings;
     const Scene scene;  // the loaded scene at this job's resolution
     const AovSet aovs;
-    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (cli/render_setup.h)
+    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (config/render_setup.h)
 
     // The one renderer of these settings (one preprocess: radiosity solves once per change). It
     // renders pass 0 and `explain` with one sample through each pixel centre (as `lightpath
@@ -70,7 +70,8 @@ struct Progress {
 class Session {
 public:
     // `scene` is the scene the command line named, loaded once; nothing else is ever read.
-    Session(Scene scene, std::string scenePath);
+    // `threads`: render threads per pass (0: one per core).
+    Session(Scene scene, std::string scenePath, int threads = 0);
     ~Session();
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
@@ -97,6 +98,11 @@ public:
     std::shared_ptr<std::atomic<bool>> startExplaining();
     bool stopping() const;
 
+    // Waits until the worker has finished with the current job (rendered it to its target or given
+    // it up) and waits for a change: then no render code runs until the next update. The fuzz
+    // target needs this to see the same code run for the same input on any machine.
+    void waitUntilIdle() const;
+
     // Stops the worker (cancelling its render and any explanation); later updates are refused.
     void stop();
     // The same, but waits at most `seconds` for the worker: building a renderer's acceleration
@@ -112,6 +118,7 @@ private:
 
     const Scene scene_;
     const std::string scenePath_;
+    const int threads_;
     // Settings change the camera, the AOVs and the integrator, never the shapes or the numerics:
     // the BVH is built once.
     const std::shared_ptr<const SceneGeometry> geometry_;
@@ -125,6 +132,7 @@ private:
     std::shared_ptr<std::atomic<bool>> explaining_;  // the newest explanation's cancel flag
     bool stopping_ = false;
     bool workerDone_ = false;
+    bool idle_ = false;  // the worker waits for a change, the current job finished
     std::thread worker_;
 };
 

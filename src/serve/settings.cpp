@@ -1,7 +1,9 @@
 #include "serve/settings.h"
 
 #include <algorithm>
+#include <optional>
 
+#include "config/lpe_verdict.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "transport/path_event.h"
@@ -107,6 +109,21 @@ Settings applySettings(const Settings& current, const std::string& body) {
         } else {
             settings.lpes = expressionsOf(value);
         }
+    }
+    // The command line's one judge (config/lpe_verdict.h): what render refuses under this integrator
+    // is refused here. A syntax error is left to the session, which reports its column.
+    const IntegratorInfo* integrator = findIntegrator(settings.integrator);
+    for (std::size_t i = 0; i < settings.lpes.size(); ++i) {
+        const lpe::NamedExpression& aov = settings.lpes[i];
+        std::optional<Judgement> judgement;
+        try {
+            judgement = judgeExpression(aov, integrator);
+        } catch (const std::exception&) {
+            continue;
+        }
+        if (judgement->verdict == Verdict::Refused)
+            throw RequestError(400, "lpes[" + std::to_string(i) + "].expression",
+                               aov.name + ": " + refusalMessage(aov, integrator, judgement->reason));
     }
     // The rasteriser samples each pixel once, at its centre (Integrator::samplesPixelCentres).
     if (const IntegratorInfo* info = findIntegrator(settings.integrator);

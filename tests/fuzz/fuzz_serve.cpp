@@ -14,6 +14,11 @@
 // Hermetic: the scene is the text below, "living" in a directory that does not exist. Every input
 // starts from the same settings (a 6x4 image), so one input cannot leave a large render running
 // for the next.
+// Reproducible: libFuzzer's coverage feedback must see the same code run for the same input on any
+// machine, so the session renders on one thread, every render an input starts is waited for to its
+// end (a cancelled one would stop wherever the scheduler left it), and settings that would make
+// that wait long (more than kMaxSamples camera samples) are refused as inputs (return -1) before
+// they are handled.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -25,6 +30,7 @@
 #include "scene/scene_loader.h"
 #include "serve/api.h"
 #include "serve/session.h"
+#include "serve/settings.h"
 
 namespace {
 
@@ -34,6 +40,7 @@ using fuzz::broken;
 using nlohmann::json;
 
 constexpr std::size_t kMaxInput = 16 * 1024;
+constexpr std::int64_t kMaxSamples = 16 * 16 * 16;  // width x height x spp of a render waited for
 constexpr int kPort = 8080;
 
 constexpr std::string_view kScene = R"(
@@ -75,7 +82,7 @@ material = "floor"
 )";
 
 struct Server {
-    Session session{loadSceneFromText(kScene, "/nonexistent-fuzz/serve.toml"), "/nonexistent-fuzz/serve.toml"};
+    Session session{loadSceneFromText(kScene, "/nonexistent-fuzz/serve.toml"), "/nonexistent-fuzz/serve.toml", 1};
     Api api{session};
     const Settings start = session.job()->settings;
     Server() { api.listenOn("127.0.0.1", kPort); }
@@ -137,13 +144,27 @@ bool mayChangeSettings(const Request& request, int status) {
     return types == 1 && hostCount <= 1 && originCount <= 1;
 }
 
+// Settings the request would start a render with that takes longer than the fuzzer should wait.
+bool startsLongRender(const Request& request, const Settings& current) {
+    if ((request.method != "PUT" && request.method != "POST") || request.target.find("settings") == std::string::npos)
+        return false;
+    try {
+        const Settings next = applySettings(current, request.body);
+        return std::int64_t{next.width} * next.height * next.samplesPerPixel > kMaxSamples;
+    } catch (const std::exception&) {
+        return false;  // refused: starts nothing
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size > kMaxInput) return 0;
     Server& s = server();
     const auto before = s.session.update(s.start);
+    s.session.waitUntilIdle();
     const Request request = parse(fuzz::asText(data, size));
+    if (startsLongRender(request, s.start)) return -1;
 
     Response response;
     try {
@@ -166,5 +187,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (s.session.job() != before && !mayChangeSettings(request, response.status))
         broken(what + ": the settings changed, but the request may not change them");
+    s.session.waitUntilIdle();
     return 0;
 }

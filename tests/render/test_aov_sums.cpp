@@ -14,6 +14,7 @@
 #include "render/renderer.h"
 #include "lights/point_light.h"
 #include "shipped_scenes.h"
+#include "../support/film_checks.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"
 
@@ -36,22 +37,7 @@ Film renderSmall(const std::filesystem::path& file, const AovSet& aovs, const st
 }
 
 // Sum of every layer but the beauty, against the beauty, per pixel and channel.
-void checkLayersSumToBeauty(const Film& film) {
-    double worst = 0.0;
-    for (int y = 0; y < film.height(); ++y) {
-        for (int x = 0; x < film.width(); ++x) {
-            Rgb sum{0.0f};
-            for (std::size_t l = 1; l < film.layerCount(); ++l) sum += film.at(l, x, y);
-            const Rgb beauty = film.at(0, x, y);
-            for (int c = 0; c < 3; ++c) {
-                const double error = std::fabs(double(sum[c]) - double(beauty[c]));
-                const double tolerance = 1e-5 * std::fabs(double(beauty[c])) + 1e-7;
-                worst = std::max(worst, error / tolerance);
-            }
-        }
-    }
-    CHECK(worst <= 1.0);
-}
+void checkLayersSumToBeauty(const Film& film) { CHECK(test::worstSumError(film) <= 1.0); }
 
 TEST_CASE("every shipped scene and integrator: the classes AOVs sum to the beauty and rest is zero") {
     const AovSet aovs(classesSet());

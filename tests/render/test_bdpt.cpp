@@ -20,7 +20,7 @@
 #include "scene/scene_loader.h"
 #include "render_world.h"
 #include "scene_builder.h"
-#include "statistics.h"
+#include "../support/statistics.h"
 
 namespace lightpath {
 namespace {

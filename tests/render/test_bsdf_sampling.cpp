@@ -1,7 +1,6 @@
 // chi-square tests of the path tracer's importance sampling against its evaluated densities, the
-// way Nori's chi2test does it: histogram many sampled directions over (cos theta, phi) cells,
-// integrate pdf() over the same cells for the expected counts, pool sparse cells, and judge the
-// statistic with a significance level corrected for the number of tests (Sidak).
+// way Nori's chi2test does it (tests/support/direction_chi_square.h), with a significance level
+// corrected for the number of tests (Sidak).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -12,7 +11,7 @@
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
 #include "sampling/warp.h"
-#include "statistics.h"
+#include "../support/direction_chi_square.h"
 
 namespace lightpath {
 namespace {
@@ -37,71 +36,22 @@ M makeMaterial(Rgb kd, Rgb ks, float n) {
     return m;
 }
 
-// Bin of a direction in the frame of the normal +z: cos theta in [-1, 1], phi in [0, 2 pi).
-int binOf(const Vec3& w) {
-    const int c = std::clamp(static_cast<int>((w.z + 1.0f) * 0.5f * kCosBins), 0, kCosBins - 1);
-    float phi = std::atan2(w.y, w.x);
-    if (phi < 0.0f) phi += 2.0f * kPi;
-    const int p = std::clamp(static_cast<int>(phi / (2.0f * kPi) * kPhiBins), 0, kPhiBins - 1);
-    return c * kPhiBins + p;
-}
-
 // p-value that directions drawn by `sampling` follow the density `density` claims.
 double chiSquarePValue(const Bsdf& sampling, const Bsdf& density, float cosOut) {
     const float sinOut = std::sqrt(1.0f - cosOut * cosOut);
     const Vec3 wo{sinOut, 0, cosOut};
-
-    // Observed: sampled directions; the last cell counts samples that returned nothing.
-    std::vector<double> observed(kCosBins * kPhiBins + 1, 0.0);
-    std::mt19937_64 rng(12345);
+    test::DirectionHistogram histogram;
+    histogram.cosBins = kCosBins;
+    histogram.phiBins = kPhiBins;
+    histogram.samples = kSamples;
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    for (int i = 0; i < kSamples; ++i) {
-        const auto s = sampling.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
-        observed[s ? binOf(s->wi) : kCosBins * kPhiBins] += 1.0;
-    }
-
-    // Expected: the density integrated over each cell (midpoint rule on a fine grid; dw = dcos dphi).
-    std::vector<double> expected(observed.size(), 0.0);
-    constexpr int kSub = 12;
-    double total = 0.0;
-    for (int c = 0; c < kCosBins; ++c) {
-        for (int p = 0; p < kPhiBins; ++p) {
-            double integral = 0.0;
-            for (int a = 0; a < kSub; ++a) {
-                for (int b = 0; b < kSub; ++b) {
-                    const double z = -1.0 + 2.0 * (c + (a + 0.5) / kSub) / kCosBins;
-                    const double phi = 2.0 * M_PI * (p + (b + 0.5) / kSub) / kPhiBins;
-                    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-                    const Vec3 wi{float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)};
-                    integral += density.pdf(Lobe::Diffuse, wo, wi) + density.pdf(Lobe::Highlight, wo, wi);
-                }
-            }
-            const double cell = integral * (2.0 / kCosBins) * (2.0 * M_PI / kPhiBins) / (kSub * kSub);
-            expected[c * kPhiBins + p] = cell * kSamples;
-            total += cell;
-        }
-    }
-    expected.back() = std::max(0.0, 1.0 - total) * kSamples;
-
-    // Pool cells expecting fewer than 5 samples into one, as Pearson's test requires.
-    double statistic = 0.0, pooledObserved = 0.0, pooledExpected = 0.0;
-    int cells = 0;
-    for (std::size_t i = 0; i < observed.size(); ++i) {
-        if (expected[i] < 5.0) {
-            pooledObserved += observed[i];
-            pooledExpected += expected[i];
-            continue;
-        }
-        statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-        ++cells;
-    }
-    if (pooledExpected >= 5.0) {
-        statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
-        ++cells;
-    } else if (pooledObserved > 10.0) {
-        return 0.0;  // samples where the density says there are (almost) none
-    }
-    return test::chiSquarePValue(statistic, cells - 1);
+    return test::directionChiSquarePValue(
+        histogram,
+        [&](std::mt19937_64& rng) -> std::optional<Vec3> {
+            const auto s = sampling.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
+            return s ? std::optional<Vec3>(s->wi) : std::nullopt;
+        },
+        [&](const Vec3& wi) { return double(density.pdf(Lobe::Diffuse, wo, wi)) + density.pdf(Lobe::Highlight, wo, wi); });
 }
 
 TEST_CASE("chi-square: Lambert and Blinn highlight sampling follow their densities") {

@@ -12,6 +12,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"
+#include "../support/film_checks.h"
 
 namespace lightpath {
 namespace {
@@ -63,25 +64,13 @@ struct Verdict {
 
 Verdict inspect(const Film& film) {
     Verdict verdict;
-    for (int y = 0; y < film.height(); ++y) {
-        for (int x = 0; x < film.width(); ++x) {
-            Rgb sum{0.0f};
-            for (std::size_t l = 0; l < film.layerCount(); ++l) {
-                const Rgb v = film.at(l, x, y);
-                for (int c = 0; c < 3; ++c) {
-                    verdict.finite = verdict.finite && std::isfinite(v[c]);
-                    verdict.nonNegative = verdict.nonNegative && v[c] >= 0.0f;
-                }
-                if (l > 0) sum += v;
-            }
-            const Rgb beauty = film.at(0, x, y);
-            for (int c = 0; c < 3; ++c) {
-                const double tolerance = 1e-5 * std::fabs(double(beauty[c])) + 1e-7;
-                verdict.worstSumError =
-                    std::max(verdict.worstSumError, std::fabs(double(sum[c]) - double(beauty[c])) / tolerance);
-            }
+    for (const Rgb& v : film.interleaved()) {
+        for (int c = 0; c < 3; ++c) {
+            verdict.finite = verdict.finite && std::isfinite(v[c]);
+            verdict.nonNegative = verdict.nonNegative && v[c] >= 0.0f;
         }
     }
+    verdict.worstSumError = test::worstSumError(film);
     return verdict;
 }
 

@@ -13,6 +13,7 @@
 #include "lights/area_light.h"
 #include "render/renderer.h"
 #include "render_world.h"
+#include "../support/film_checks.h"
 #include "scene/scene_loader.h"
 
 namespace lightpath {
@@ -28,16 +29,7 @@ RenderResult renderWith(const Scene& scene, const AovSet& aovs, const std::strin
     return Renderer(scene, aovs, options).render();
 }
 
-bool finiteNonNegative(const Film& film) {
-    for (std::size_t l = 0; l < film.layerCount(); ++l)
-        for (int y = 0; y < film.height(); ++y)
-            for (int x = 0; x < film.width(); ++x)
-                for (int c = 0; c < 3; ++c) {
-                    const float v = film.at(l, x, y)[c];
-                    if (!std::isfinite(v) || v < 0.0f) return false;
-                }
-    return true;
-}
+using test::finiteNonNegative;
 
 std::string number(double v) {
     char text[32];

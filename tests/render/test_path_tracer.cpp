@@ -9,7 +9,7 @@
 #include "film/aov_set.h"
 #include "render/renderer.h"
 #include "scene_builder.h"
-#include "statistics.h"
+#include "../support/statistics.h"
 #include "film/aov_presets.h"
 
 namespace lightpath {

@@ -2,7 +2,7 @@
 // tabulated values.
 #include <doctest/doctest.h>
 
-#include "statistics.h"
+#include "../support/statistics.h"
 
 namespace lightpath::test {
 

@@ -19,7 +19,7 @@
 #include "lights/point_light.h"
 #include "shipped_scenes.h"
 #include "scene/scene_loader.h"
-#include "statistics.h"
+#include "../support/statistics.h"
 
 namespace lightpath {
 namespace {

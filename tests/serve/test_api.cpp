@@ -105,9 +105,9 @@ TEST_CASE("serve: the page's files and the scene description") {
     CHECK(found);
     std::vector<std::string> presets;
     for (const json& p : s["presets"]) presets.push_back(p["name"]);
-    CHECK(presets == std::vector<std::string>{"classes", "taxonomy", "lights", "bounces"});
+    CHECK(presets == std::vector<std::string>{"classes", "taxonomy", "bounces", "lights"});
     // The light groups: the ambient term, the lamp and the background, each its own AOV.
-    CHECK(s["presets"][2]["lpes"] == json::parse(R"([{"name":"ambient","expression":"E.*<L.'ambient'>"},
+    CHECK(s["presets"][3]["lpes"] == json::parse(R"([{"name":"ambient","expression":"E.*<L.'ambient'>"},
         {"name":"lamp","expression":"E.*<L.'lamp'>"},{"name":"background","expression":"E.*B"}])"));
 }
 
@@ -254,7 +254,8 @@ TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton state
         REQUIRE(!c["factors"].empty());
         for (int channel = 0; channel < 3; ++channel) {
             double product = 1.0;
-            for (const json& f : c["factors"]) product *= f["rgb"][channel].get<double>();
+            for (const json& f : c["factors"])
+                if (f["inProduct"].get<bool>()) product *= f["rgb"][channel].get<double>();
             CHECK(product == doctest::Approx(c["rgb"][channel].get<double>()).epsilon(1e-4));
         }
     }
@@ -301,8 +302,11 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
         {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"EL\", \"extra\": 1}]}", 400, "lpes[0].extra", "unknown field"},
         {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"E(D|G L\"}]}", 400, "lpes[0].expression",
          "a: LPE syntax error at column 8: expected '\\)'"},
-        {"{\"lpes\": [{\"name\": \"ok\", \"expression\": \"EL\"}, {\"name\": \"key\", \"expression\": \"E.*<L'kee'>\"}]}", 400,
-         "lpes[1].expression", "unknown label \"kee\". did you mean \"key\""},
+        // Refused as the command line refuses it (config/lpe_verdict.h): ED never reaches a light.
+        {"{\"lpes\": [{\"name\": \"ok\", \"expression\": \"EL\"}, {\"name\": \"never\", \"expression\": \"ED\"}]}", 400,
+         "lpes[1].expression", "^never: 'ED' can never match under --integrator whitted: never reaches a light"},
+        {"{\"integrator\": \"raycast\", \"lpes\": [{\"name\": \"s\", \"expression\": \"ES+(D|G)L\"}]}", 400,
+         "lpes[0].expression", "ray casting follows no specular bounce"},
         {"{\"lpes\": [{\"name\": \"rest\", \"expression\": \"EL\"}]}", 400, "lpes", "reserved"},
         {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"E{2000000}L\"}]}", 400, "lpes", ""},
     };
@@ -360,18 +364,19 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
     CHECK(json::parse(after->body)["settings"] == before);
 }
 
-TEST_CASE("serve: warnings for an expression that never matches and for overlapping ones") {
-    ServerFixture fixture("mirror-sphere.toml");
-    const auto r = fixture.put({{"lpes", json::parse(R"([{"name": "never", "expression": "ED"},
+TEST_CASE("serve: warnings for an expression black in this scene and for overlapping ones") {
+    ServerFixture fixture("lecture-room.toml");
+    const auto r = fixture.put({{"lpes", json::parse(R"([{"name": "key", "expression": "E.*<L'kee'>"},
         {"name": "all", "expression": "E.*L"}, {"name": "direct", "expression": "E(D|G)L"}])")}});
     REQUIRE(r);
     REQUIRE(r->status == 200);
     const json warnings = json::parse(r->body)["warnings"];
     CAPTURE(warnings.dump());
-    // "ED" ends at a surface, never at a light: a warning (the command line would refuse it);
+    // The scene has no label kee: black here, rendered, as the command line does;
     // "E.*L" and "E(D|G)L" share EDL.
     REQUIRE(warnings.size() == 2);
-    CHECK(std::regex_search(warnings[0].get<std::string>(), std::regex("^AOV never \\(ED\\) stays black under --integrator whitted: never reaches a light")));
+    CHECK(std::regex_search(warnings[0].get<std::string>(),
+                            std::regex("^AOV key \\(E\\.\\*<L'kee'>\\) stays black: this scene has no label \"kee\"; did you mean \"key\"")));
     CHECK(warnings[1] == "AOVs all and direct overlap: both accept EDL (E <RD> <L>); their sum counts such light twice");
 }
 

@@ -1,0 +1,84 @@
+#include "config/lpe_verdict.h"
+
+#include <algorithm>
+
+#include "config/lpe_feasibility.h"
+#include "film/aov_presets.h"
+#include "integrators/event_symbols.h"
+#include "lpe/analysis.h"
+#include "scene/spelling.h"
+
+namespace lightpath {
+namespace {
+
+bool possible(const std::vector<std::string>& expressions, const lpe::LabelPlacement& placement = {}) {
+    return lpe::commonPath(expressions, placement).has_value();
+}
+
+// The languages an expression must share a path with: what lightpath renders (with `volumes`, as
+// it would with media) and, when one is named, what the integrator follows.
+std::vector<std::string> languages(const std::string& expression, const IntegratorInfo* integrator, bool volumes) {
+    std::vector<std::string> all = {expression, volumes ? kPathsWithVolumes : kRenderedPaths};
+    if (integrator) all.emplace_back(integrator->pathLanguage);
+    return all;
+}
+
+}  // namespace
+
+bool isPresetMember(const lpe::NamedExpression& aov) {
+    for (const AovPreset& preset : aovPresets())
+        for (const auto& member : preset.expressions())
+            if (member.name == aov.name && member.expression == aov.expression) return true;
+    return false;
+}
+
+Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const Scene* scene) {
+    const std::string& expression = aov.expression;
+    // Never, in any scene: no path of the integrator, volumes let in, has it.
+    if (!possible(languages(expression, integrator, true))) {
+        if (!possible(languages(expression, nullptr, true))) return {Verdict::Refused, whyNeverRendered(expression)};
+        const std::string why = *whyNeverFilled(expression, *integrator);
+        return {isPresetMember(aov) ? Verdict::PresetBlack : Verdict::Refused,
+                isPresetMember(aov) ? std::string(integrator->limitation) : why};
+    }
+    if (!possible(languages(expression, integrator, false)))
+        return {Verdict::BlackHere, "it needs a volume event (V), and lightpath renders no media yet"};
+    if (!scene) return {};
+
+    // In this scene: a label it names that labels nothing here is on no event at all.
+    const std::vector<std::string> known = sceneLabels(*scene);
+    lpe::LabelPlacement placement = labelPlacement(*scene);
+    std::string unknown;
+    const lpe::Automaton automaton = lpe::Automaton::compile({{aov.name, expression}});
+    for (const std::string& label : automaton.labels()) {
+        if (std::binary_search(known.begin(), known.end(), label)) continue;
+        placement[label] = {};
+        if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
+    }
+    const bool fillable = possible(languages(expression, integrator, false), placement);
+    if (fillable) return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+    if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
+    const IntegratorInfo& language = integrator ? *integrator : *findIntegrator("path");
+    return {Verdict::BlackHere, whyNeverFilled(expression, language, scene).value_or("no path of this scene carries its labels")};
+}
+
+std::string refusalMessage(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const std::string& reason) {
+    const std::string under = integrator ? "under --integrator " + std::string(integrator->name) : "under any integrator";
+    return "'" + aov.expression + "' can never match " + under + ": " + reason;
+}
+
+std::string warningMessage(const lpe::NamedExpression& aov, const Judgement& judgement) {
+    if (judgement.verdict == Verdict::Fillable) return "--lpe " + aov.name + ": " + judgement.reason;
+    return "AOV " + aov.name + " (" + aov.expression + ") stays black: " + judgement.reason;
+}
+
+std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator) {
+    std::vector<BlackAov> black;
+    for (const auto& aov : set) {
+        const Judgement judgement = judgeExpression(aov, &integrator);
+        if (judgement.verdict == Verdict::PresetBlack) black.push_back({aov.name, judgement.reason});
+    }
+    return black;
+}
+
+}  // namespace lightpath

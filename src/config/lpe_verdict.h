@@ -1,0 +1,55 @@
+#pragma once
+// The one judge of an AOV expression. Every command that takes expressions asks it, so they accept
+// and refuse the same ones for the same integrator: render and explain (RenderSetup::buildAovSet),
+// serve (serve::applySettings, before a job is prepared), lpe check and lpe match --integrator.
+//
+//   refused      no path of the integrator matches it in any scene (lpe_feasibility.h says why);
+//   black here   it could match, but not in this scene (a label the scene lacks or places
+//                elsewhere) or not yet (it needs a volume event, and lightpath renders no media):
+//                rendered black, with one short warning;
+//   preset black an AOV of a preset (`classes`, `taxonomy`, by name and expression) that this
+//                integrator cannot fill: written black so the preset still sums to the beauty, and
+//                said in --stats and the EXR header, never as a warning (docs/lpe.md);
+//   fillable     otherwise; a label the scene lacks still gets a warning (a typo in [^'kee']).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "integrators/registry.h"
+#include "lpe/automaton.h"
+#include "scene/scene.h"
+
+namespace lightpath {
+
+enum class Verdict { Fillable, BlackHere, PresetBlack, Refused };
+
+struct Judgement {
+    Verdict verdict = Verdict::Fillable;
+    // Refused, BlackHere, PresetBlack: why; Fillable: a warning about the scene's labels, or empty.
+    std::string reason;
+};
+
+// `integrator` null: every integrator (refused only when none can fill it); `scene` null: judged
+// without a scene, which can only refuse, never find an AOV black in this scene (volumes aside).
+// Throws lpe::SyntaxError.
+Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator,
+                          const Scene* scene = nullptr);
+
+// Is `aov` a member of a preset (same name and expression)?
+bool isPresetMember(const lpe::NamedExpression& aov);
+
+// "'E.*L'key'' can never match under --integrator whitted: <reason>": the refusal every command
+// prints after the expression's name ("--lpe k: ", "lpe check: k: ").
+std::string refusalMessage(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const std::string& reason);
+// "AOV k (EXPR) stays black: <reason>" for BlackHere, "--lpe k: <reason>" for a Fillable warning.
+std::string warningMessage(const lpe::NamedExpression& aov, const Judgement& judgement);
+
+// The preset AOVs of `set` that `integrator` cannot fill, each with the integrator's limitation:
+// for --stats and the EXR header.
+struct BlackAov {
+    std::string name;
+    std::string reason;
+};
+std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator);
+
+}  // namespace lightpath

@@ -1,0 +1,62 @@
+#pragma once
+// What the conformance kit runs its checks over: one function per family lists every case. Until
+// the type registry (issue #30, src/schema/) lands, the material and light lists name the shipped
+// types with representative parameter sets; then each body becomes "for every registered type, K
+// parameter sets drawn within each Parameter's Range" and nothing else in the kit changes.
+// Integrators are already a table: the kit iterates integrators() (src/integrators/registry.h).
+#include <functional>
+#include <string>
+#include <string_view>
+
+#include "integrators/registry.h"
+#include "materials/material.h"
+#include "scene/scene.h"
+
+namespace lightpath::conformance {
+
+// What a material promises beyond the interface, which the checks hold it to.
+struct MaterialClaims {
+    // f(wo, wi) == f(wi, wo) for this smooth reflection lobe (Helmholtz reciprocity).
+    bool reciprocal[2] = {false, false};  // by kSmoothLobes: Diffuse, Highlight
+    // Reflects at most what arrives, in every direction: a white furnace estimate of its albedo
+    // stays <= 1 (for parameters that ask for it, e.g. kd + ks <= 1).
+    bool conservesEnergy = false;
+};
+
+struct MaterialCase {
+    std::string name;  // "type: parameters", for messages
+    MaterialSlot material;
+    MaterialClaims claims;
+};
+
+// A scene holding one light (and nothing else) as its type puts it there.
+struct LightCase {
+    std::string name;
+    Scene scene;
+};
+
+// What each material type claims, by its `type = "..."` name; nothing for a type it does not know.
+MaterialClaims materialClaims(std::string_view type);
+
+void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit);
+void forEachLightCase(const std::function<void(const LightCase&)>& visit);
+
+}  // namespace lightpath::conformance
+
+namespace lightpath::conformance {
+
+// The scenes the integrator checks render: every kind of event (diffuse, glossy, mirror, glass,
+// point and area lights, an emitting object, the ambient term, the background), small.
+Scene integratorScene();
+// The same without what only some methods gather (the ambient term, the sky): where every
+// integrator's light on the paths it shares with the path tracer is the path tracer's. Its key
+// light is a small sphere just behind the camera: the shadows it casts are hidden behind what
+// casts them (the rasteriser has no shadows). No mirror or glass: their light under a small light is
+// too noisy for the path tracer to be a sharp reference in a suite of seconds (tests/render/
+// test_transport.cpp compares Whitted's on every shipped scene).
+Scene agreementScene();
+// How far an integrator's image mean may be from the path tracer's by design, relative: 0 for an
+// unbiased method. Until the registry's rows carry it, the kit names the one approximation.
+double agreementAllowance(const IntegratorInfo& integrator);
+
+}  // namespace lightpath::conformance

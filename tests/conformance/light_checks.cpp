@@ -1,0 +1,192 @@
+#include "light_checks.h"
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "monte_carlo.h"
+#include "statistics.h"
+
+namespace lightpath::conformance {
+namespace {
+
+constexpr int kSamples = 100000;
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteNonNegative(const Rgb& v) { return finite(v) && v.r >= 0.0f && v.g >= 0.0f && v.b >= 0.0f; }
+bool close(float a, float b, float relative) { return std::fabs(a - b) <= relative * std::fabs(b) + 1e-6f; }
+bool close(const Rgb& a, const Rgb& b, float relative) {
+    return close(a.r, b.r, relative) && close(a.g, b.g, relative) && close(a.b, b.b, relative);
+}
+double sum(const Rgb& v) { return double(v.r) + v.g + v.b; }
+
+using test::Moments;
+using test::momentsOf;
+
+// The hit of a ray from `receiver` along `direction` when it is on `light`.
+std::optional<SurfaceHit> hitOnLight(const Light& light, const LightWorld& world, const Vec3& receiver, const Vec3& direction) {
+    Ray ray;
+    ray.origin = receiver;
+    ray.direction = direction;
+    const std::optional<SurfaceHit> hit = world.geometry.intersect(ray);
+    if (!hit || world.lights.lightOfObject(hit->object) != &light) return std::nullopt;
+    return hit;
+}
+
+// Whether `samples` estimate `expected`: Student's t-test, or within float rounding of it (1e-4
+// relative) for an estimator with (almost) no variance, which the test would judge on its last bits.
+bool estimates(const std::vector<double>& samples, double expected, double& p) {
+    p = test::studentTTest(samples, expected);
+    return p > kLightAlpha || std::fabs(momentsOf(samples).mean - expected) <= 1e-4 * std::fabs(expected);
+}
+
+}  // namespace
+
+LightWorld::LightWorld(const Scene& s)
+    : scene(s),
+      geometry(s.spheres, s.planes, s.triangles, {}, Accelerator::Bvh, s.triangleNormals),
+      lights(s, geometry) {}
+
+CheckResult checkLightDensity(const Light& light, const LightWorld& world, const Vec3& receiver) {
+    CheckResult result;
+    std::mt19937_64 rng(61);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    // pdf() over uniform directions: its integral over the sphere of directions.
+    std::vector<double> normalisation, seen;
+    for (int i = 0; i < kSamples; ++i) {
+        const Vec3 w = test::uniformSphereDirection(rng);
+        const auto hit = hitOnLight(light, world, receiver, w);
+        normalisation.push_back(hit ? 4.0 * M_PI * light.pdf(receiver, hit->point, hit->normal) : 0.0);
+        seen.push_back(hit ? 4.0 * M_PI : 0.0);
+    }
+    double pNormalised = 0.0;
+    if (!estimates(normalisation, 1.0, pNormalised))
+        result.fail("from ", receiver.x, " ", receiver.y, " ", receiver.z, ": pdf() integrates to ",
+                    momentsOf(normalisation).mean, " over the light's solid angle, not 1 (p = ", pNormalised, ")");
+    // 1 / pdf over sample()'s points: the solid angle it samples.
+    std::vector<double> inverse;
+    for (int i = 0; i < kSamples; ++i) {
+        const LightSample s = light.sample(receiver, {uniform(rng), uniform(rng)});
+        inverse.push_back(s.pdf > 0.0f ? 1.0 / s.pdf : 0.0);
+    }
+    const Moments a = momentsOf(inverse), b = momentsOf(seen);
+    const double pSolidAngle = test::welchTTest(a.mean, a.variance, a.count, b.mean, b.variance, b.count);
+    if (!(pSolidAngle > kLightAlpha))
+        result.fail("from ", receiver.x, " ", receiver.y, " ", receiver.z, ": sample()'s 1/pdf averages ", a.mean,
+                    " sr, but rays see ", b.mean, " sr of the light (p = ", pSolidAngle, ")");
+    return result;
+}
+
+CheckResult checkLightSamples(const Light& light, const LightWorld& world, const Vec3& receiver) {
+    CheckResult result;
+    std::mt19937_64 rng(67);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (int i = 0; i < 4000; ++i) {
+        const LightSample s = light.sample(receiver, {uniform(rng), uniform(rng)});
+        if (!(finiteNonNegative(s.weight) && std::isfinite(s.pdf) && s.pdf >= 0.0f && finite(s.point) &&
+              std::isfinite(s.distance))) {
+            result.fail("a sample has weight ", s.weight.g, ", pdf ", s.pdf, ", distance ", s.distance);
+            continue;
+        }
+        if (light.isDelta()) {
+            if (s.pdf != 0.0f) result.fail("a delta light's sample has pdf ", s.pdf, ", not 0");
+        } else if (s.pdf == 0.0f) {
+            continue;  // nothing sampled (a receiver behind a one-sided emitter); its weight is unused
+        }
+        if (std::fabs(glm::length(s.wi) - 1.0f) > 1e-4f || !close(s.distance, glm::length(s.point - receiver), 1e-4f) ||
+            glm::length(receiver + s.distance * s.wi - s.point) > 1e-3f * (1.0f + s.distance))
+            result.fail("wi and distance do not lead from the receiver to the sampled point");
+        if (light.isDelta()) continue;
+        const float pdf = light.pdf(receiver, s.point, s.normal);
+        if (!close(pdf, s.pdf, 1e-3f)) result.fail("a sample's pdf is ", s.pdf, " but pdf() of its point says ", pdf);
+        const auto hit = hitOnLight(light, world, receiver, s.wi);
+        if (!hit || !close(hit->t, s.distance, 1e-3f)) {
+            result.fail("a ray along a sample's wi does not meet the light at its distance ", s.distance);
+            continue;
+        }
+        const Rgb expected = light.radiance(*hit, -s.wi) / s.pdf;
+        if (!close(s.weight, expected, 1e-3f))
+            result.fail("a sample's weight is ", s.weight.g, " but radiance / pdf is ", expected.g);
+    }
+    return result;
+}
+
+CheckResult checkDeltaLightIntensity(const Light& light) {
+    CheckResult result;
+    std::mt19937_64 rng(71);
+    const Vec3 position = light.sample(Vec3{0.0f}, {0.5f, 0.5f}).point;
+    constexpr float kDistance = 2.0f;
+    std::vector<double> flux;
+    for (int i = 0; i < kSamples / 10; ++i) {
+        const LightSample s = light.sample(position + kDistance * test::uniformSphereDirection(rng), {0.5f, 0.5f});
+        flux.push_back(4.0 * M_PI * sum(s.weight) / light.falloff(kDistance));
+    }
+    const double expected = sum(light.power());
+    double p = 0.0;
+    if (!estimates(flux, expected, p))
+        result.fail("radiant intensity over the sphere is ", momentsOf(flux).mean, " W but power() says ", expected,
+                    " (p = ", p, ")");
+    return result;
+}
+
+CheckResult checkLightPower(const Light& light) {
+    CheckResult result;
+    std::mt19937_64 rng(73);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    std::vector<double> flux;
+    for (int i = 0; i < kSamples; ++i) {
+        const EmittedRay e = light.sampleEmission({uniform(rng), uniform(rng)}, {uniform(rng), uniform(rng)});
+        if (!(finiteNonNegative(e.radiance) && std::isfinite(e.pdfPosition) && std::isfinite(e.pdfDirection) &&
+              finite(e.ray.origin) && std::fabs(glm::length(e.ray.direction) - 1.0f) < 1e-4f)) {
+            result.fail("an emitted ray has radiance ", e.radiance.g, ", densities ", e.pdfPosition, " and ",
+                        e.pdfDirection, ", |direction| ", glm::length(e.ray.direction));
+            flux.push_back(0.0);
+            continue;
+        }
+        if (!close(e.pdfDirection, light.pdfEmissionDirection(e.normal, e.ray.direction), 1e-3f))
+            result.fail("an emitted ray's direction density is ", e.pdfDirection, " but pdfEmissionDirection says ",
+                        light.pdfEmissionDirection(e.normal, e.ray.direction));
+        if (!close(e.pdfPosition, light.pdfEmissionPosition(), 1e-4f))
+            result.fail("an emitted ray's position density is ", e.pdfPosition, " but pdfEmissionPosition says ",
+                        light.pdfEmissionPosition());
+        if (!(e.pdfPosition > 0.0f && e.pdfDirection > 0.0f)) {
+            flux.push_back(0.0);
+            continue;
+        }
+        // A point light has no normal: its radiance field is an intensity, no cosine.
+        const double cosine = e.normal == Vec3{0.0f} ? 1.0 : std::fabs(glm::dot(e.normal, e.ray.direction));
+        flux.push_back(sum(e.radiance) * cosine / (double(e.pdfPosition) * e.pdfDirection));
+    }
+    const double expected = sum(light.power());
+    double p = 0.0;
+    if (!(finiteNonNegative(light.power()) && estimates(flux, expected, p)))
+        result.fail("power() is ", expected, " W but sampleEmission() estimates ", momentsOf(flux).mean, " W (p = ", p, ")");
+    return result;
+}
+
+std::vector<Vec3> receiversOf(const Light& light) {
+    const float size = 1.0f / std::sqrt(light.pdfEmissionPosition());
+    std::vector<Vec3> receivers;
+    for (const Vec2 u : {Vec2{0.3f, 0.7f}, Vec2{0.8f, 0.2f}, Vec2{0.55f, 0.45f}}) {
+        const EmittedRay e = light.sampleEmission(u, Vec2{u.y, u.x});
+        for (const float distance : {0.1f, 2.0f}) receivers.push_back(e.ray.at(distance * size));
+    }
+    return receivers;
+}
+
+CheckResult checkLightCase(const LightCase& c) {
+    const LightWorld world(c.scene);
+    CheckResult result;
+    if (world.lights.all().empty()) result.fail("the case's scene has no light");
+    for (const auto& light : world.lights.all()) {
+        result.merge(checkLightPower(*light));
+        if (light->isDelta()) result.merge(checkDeltaLightIntensity(*light));
+        for (const Vec3& receiver : receiversOf(*light)) {
+            result.merge(checkLightSamples(*light, world, receiver));
+            if (!light->isDelta()) result.merge(checkLightDensity(*light, world, receiver));
+        }
+    }
+    return result;
+}
+
+}  // namespace lightpath::conformance

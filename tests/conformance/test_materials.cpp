@@ -1,0 +1,78 @@
+// Every material case (cases.cpp) through every material check (material_checks.h).
+#include <doctest/doctest.h>
+
+#include "material_checks.h"
+
+namespace lightpath::conformance {
+namespace {
+
+// Runs `check` over every case, each failure reported with the case's name.
+template <typename Check>
+void forEveryMaterial(Check&& check) {
+    int cases = 0;
+    forEachMaterialCase([&](const MaterialCase& c) {
+        ++cases;
+        const CheckResult result = check(c);
+        INFO(c.name << ":\n" << result.failures);
+        CHECK(result.passed);
+    });
+    CHECK(cases > 0);
+}
+
+TEST_CASE("materials: sample() follows pdf() in every smooth lobe (chi-square)") {
+    forEveryMaterial([](const MaterialCase& c) {
+        CheckResult result;
+        for (const Lobe lobe : kSmoothLobes)
+            if (c.material->has(lobe))
+                for (const Vec3& wo : outgoingDirections()) result.merge(checkSamplingMatchesPdf(*c.material, lobe, wo));
+        return result;
+    });
+}
+
+TEST_CASE("materials: every sample's weight is eval / pdf, per lobe and through the Bsdf") {
+    forEveryMaterial([](const MaterialCase& c) {
+        CheckResult result;
+        for (const Vec3& wo : outgoingDirections()) result.merge(checkSampleWeights(*c.material, wo));
+        return result;
+    });
+}
+
+TEST_CASE("materials: the Bsdf's one-sample estimate is unbiased, delta branches included") {
+    forEveryMaterial([](const MaterialCase& c) {
+        CheckResult result;
+        for (const Vec3& wo : outgoingDirections())
+            for (const bool entering : {true, false}) result.merge(checkBsdfUnbiased(*c.material, wo, entering));
+        return result;
+    });
+}
+
+TEST_CASE("materials: reciprocal lobes are reciprocal where the type claims it") {
+    forEveryMaterial([](const MaterialCase& c) {
+        CheckResult result;
+        for (std::size_t l = 0; l < kSmoothLobes.size(); ++l)
+            if (c.claims.reciprocal[l] && c.material->has(kSmoothLobes[l]))
+                result.merge(checkReciprocity(*c.material, kSmoothLobes[l]));
+        return result;
+    });
+}
+
+TEST_CASE("materials: white furnace <= 1 where energy conservation is claimed, albedo() near each lobe's reflectance") {
+    forEveryMaterial([](const MaterialCase& c) {
+        CheckResult result;
+        if (c.claims.conservesEnergy) result.merge(checkEnergyConservation(*c.material));
+        for (const Lobe lobe : kSmoothLobes)
+            if (c.material->has(lobe)) result.merge(checkLobeAlbedo(*c.material, lobe));
+        return result;
+    });
+}
+
+TEST_CASE("materials: finite, non-negative values everywhere, delta branches in the right directions") {
+    forEveryMaterial([](const MaterialCase& c) {
+        CheckResult result = checkFiniteNonNegative(*c.material);
+        result.merge(checkSpecularBranches(*c.material));
+        return result;
+    });
+}
+
+}  // namespace
+}  // namespace lightpath::conformance

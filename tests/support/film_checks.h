@@ -1,0 +1,36 @@
+#pragma once
+// What every render promises of its film (docs/design.md): the AOVs and `rest` sum to the beauty,
+// and no value is NaN, infinite or negative. One reading for the suites that check it.
+#include <algorithm>
+#include <cmath>
+
+#include "film/film.h"
+
+namespace lightpath::test {
+
+// The largest |sum of layers 1.. - beauty| over pixels and channels, in units of the tolerance
+// 1e-5 |beauty| + 1e-7 (float rounding of the sums): at most 1 passes.
+inline double worstSumError(const Film& film) {
+    double worst = 0.0;
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            Rgb sum{0.0f};
+            for (std::size_t l = 1; l < film.layerCount(); ++l) sum += film.at(l, x, y);
+            const Rgb beauty = film.at(0, x, y);
+            for (int c = 0; c < 3; ++c) {
+                const double error = std::fabs(double(sum[c]) - double(beauty[c]));
+                worst = std::max(worst, error / (1e-5 * std::fabs(double(beauty[c])) + 1e-7));
+            }
+        }
+    }
+    return worst;
+}
+
+// Every value of every layer finite and >= 0.
+inline bool finiteNonNegative(const Film& film) {
+    return std::all_of(film.interleaved().begin(), film.interleaved().end(), [](const Rgb& v) {
+        return std::isfinite(v.r) && std::isfinite(v.g) && std::isfinite(v.b) && v.r >= 0.0f && v.g >= 0.0f && v.b >= 0.0f;
+    });
+}
+
+}  // namespace lightpath::test
