@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "bench/timing.h"
+#include "util/timing.h"
 #include "film/aov_set.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"

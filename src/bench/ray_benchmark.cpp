@@ -9,9 +9,9 @@
 
 #include "accel/simd_path.h"
 #include "bench/ray_sets.h"
-#include "bench/timing.h"
+#include "util/timing.h"
 #include "film/aov_set.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "lights/point_light.h"
 #include "math/random.h"
 #include "render/renderer.h"

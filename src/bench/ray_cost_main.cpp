@@ -11,8 +11,8 @@
 
 #include "accel/simd_path.h"
 #include "bench/ray_sets.h"
-#include "bench/timing.h"
-#include "geometry/scene_geometry.h"
+#include "util/timing.h"
+#include "accel/scene_geometry.h"
 #include "scene/scene_loader.h"
 
 namespace lightpath {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "math/ray.h"
 #include "scene/scene.h"
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <thread>
 
-#include "bench/timing.h"
+#include "util/timing.h"
 #include "film/aov_set.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"

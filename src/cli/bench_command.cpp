@@ -10,7 +10,7 @@
 #include "bench/ray_benchmark.h"
 #include "bench/skip_benchmark.h"
 #include "cli/bench_error_command.h"
-#include "cli/exit_codes.h"
+#include "config/exit_codes.h"
 #include "cli/shipped_scenes.h"
 #include "io/text_file.h"
 #include "scene/scene_loader.h"

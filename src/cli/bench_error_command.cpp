@@ -10,7 +10,7 @@
 
 #include "bench/error_benchmark.h"
 #include "bench/machine.h"
-#include "cli/exit_codes.h"
+#include "config/exit_codes.h"
 #include "cli/shipped_scenes.h"
 #include "io/text_file.h"
 

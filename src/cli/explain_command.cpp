@@ -9,8 +9,8 @@
 #include <sstream>
 #include <utility>
 
-#include "cli/exit_codes.h"
-#include "cli/render_setup.h"
+#include "config/exit_codes.h"
+#include "config/render_setup.h"
 #include "integrators/event_symbols.h"
 #include "io/text_file.h"
 #include "lpe/path_string.h"

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
-#include "cli/lpe_verdict.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
+#include "config/lpe_verdict.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "lpe/analysis.h"
@@ -64,7 +64,7 @@ std::string readingNote(const std::string& expression, const Warnings& warn, con
     return "  read as " + reading.text + " (" + notes + ")";
 }
 
-// The one judge (cli/lpe_verdict.h), as render applies it: refuses (exit 2) an expression no path
+// The one judge (config/lpe_verdict.h), as render applies it: refuses (exit 2) an expression no path
 // of `integrator` (null: of any integrator) can ever match, warns of one that needs a volume.
 void judge(const std::vector<lpe::NamedExpression>& expressions, const IntegratorInfo* integrator,
            const std::string& command, const Warnings& warn) {

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/exit_codes.h"
+#include "config/exit_codes.h"
 #include "cli/lpe_command.h"
-#include "cli/render_setup.h"
+#include "config/render_setup.h"
 #include "film/aov_set.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"

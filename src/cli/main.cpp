@@ -12,8 +12,8 @@
 
 #include "cli/bench_command.h"
 #include "cli/bracket_arguments.h"
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
 #include "cli/explain_command.h"
 #include "cli/lpe_command.h"
 #include "cli/render_command.h"

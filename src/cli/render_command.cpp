@@ -11,10 +11,10 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
-#include "cli/lpe_verdict.h"
-#include "cli/render_setup.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
+#include "config/lpe_verdict.h"
+#include "config/render_setup.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
 #include "io/text_file.h"
@@ -160,7 +160,7 @@ void run(const RenderCommand& command) {
                            {"lightpath:seconds", std::to_string(result.stats.seconds)}};
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
     // A preset's AOV this integrator cannot fill is written black, so the set still sums to the
-    // beauty; said here and in --stats, not as a warning (cli/lpe_verdict.h).
+    // beauty; said here and in --stats, not as a warning (config/lpe_verdict.h).
     const std::vector<BlackAov> black = blackPresetAovs(aovs.expressions(), *findIntegrator(options.integrator));
     for (const BlackAov& b : black) metadata.emplace_back("lightpath:black:" + b.name, b.reason);
     WriteStats write;

@@ -11,8 +11,8 @@
 #include <memory>
 #include <thread>
 
-#include "cli/exit_codes.h"
-#include "cli/render_setup.h"
+#include "config/exit_codes.h"
+#include "config/render_setup.h"
 #include "io/image_module.h"
 #include "serve/server.h"
 #include "serve/session.h"

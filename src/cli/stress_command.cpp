@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "bench/machine.h"
-#include "cli/exit_codes.h"
+#include "config/exit_codes.h"
 #include "io/text_file.h"
 #include "stress/stress_suite.h"
 

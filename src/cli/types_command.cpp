@@ -8,7 +8,7 @@
 
 #include "cli/exit_codes.h"
 #include "integrators/registry.h"
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 #include "materials/material_type.h"
 #include "scene/spelling.h"
 #include "schema/markdown.h"

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string_view>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "integrators/event_symbols.h"
 #include "integrators/path_state.h"
 #include "integrators/radiosity_options.h"

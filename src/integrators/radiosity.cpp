@@ -10,7 +10,7 @@
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
 #include "math/random.h"
-#include "render/progress.h"
+#include "util/progress.h"
 #include "sampling/warp.h"
 #include "util/parallel_chunks.h"
 

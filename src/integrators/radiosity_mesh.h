@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "geometry/surface_hit.h"
 #include "math/types.h"
 #include "scene/scene.h"

@@ -26,7 +26,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "geometry/surface_hit.h"
 #include "integrators/integrator.h"
 #include "scene/camera.h"

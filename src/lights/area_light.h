@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "lights/light.h"
 
 namespace lightpath {

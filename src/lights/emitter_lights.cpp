@@ -2,7 +2,7 @@
 // material only emits, and its geometry. LightSet samples them like any emitting surface.
 #include <glm/geometric.hpp>
 
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 
 namespace lightpath {
 namespace {

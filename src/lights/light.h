@@ -5,7 +5,7 @@
 // shapeless light is one file implementing this and scene/light.h's SceneLight, plus its row in
 // the loader's light types.
 #include "geometry/surface_hit.h"
-#include "integrators/path_record.h"
+#include "transport/path_event.h"
 #include "math/ray.h"
 #include "math/types.h"
 

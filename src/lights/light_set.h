@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "lights/area_light.h"
 #include "lights/light.h"
 #include "scene/scene.h"

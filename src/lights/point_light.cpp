@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 #include "sampling/warp.h"
 
 namespace lightpath {

@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "bench/timing.h"
+#include "util/timing.h"
 #include "integrators/registry.h"
 #include "render/memory_limit.h"
-#include "render/progress.h"
+#include "util/progress.h"
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
 #include "util/worker_threads.h"
@@ -19,6 +19,7 @@ namespace lightpath {
 namespace {
 
 constexpr int kTileSize = 16;
+std::atomic<std::uint64_t> preprocessesRun_{0};  // Renderer::preprocessesRun
 // State that one worker writes while another reads or writes nearby keeps a cache line to itself:
 // two cores writing one line pass it back and forth (false sharing).
 constexpr std::size_t kCacheLine = 64;
@@ -68,12 +69,9 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
                                     "compare it with --integrator raycast --shadows off");
     context_.filter = &filter_;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
-    if (integrator_->samplesPixelCentres() && (options.samplesPerPixel != 1 || options.targetError > 0.0))
-        throw std::invalid_argument("the " + options.integrator + " integrator samples each pixel once, at its centre: "
-                                    "use --spp 1 and no --target-error");
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)
         throw std::invalid_argument("max depth " + std::to_string(options.maxDepth) + " is outside 0.." + std::to_string(kMaxDepth));
-    if (options.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+    checkSamplesPerPixel(options.samplesPerPixel);
     if (!options.writeBeauty && aovs.expressions().empty())
         throw std::invalid_argument("nothing to render: no beauty and no AOVs requested");
     writtenLayers_ = writtenLayers(aovs, options.writeBeauty);
@@ -84,7 +82,17 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
         refuseBeyondMemory(bytes, "the " + options.integrator + " integrator's preprocess for " +
                                       pixelMemory(scene, aovs, options).describe());
     integrator_->preprocess(context_);
+    preprocessesRun_.fetch_add(1, std::memory_order_relaxed);
 }
+
+void Renderer::checkSamplesPerPixel(int samplesPerPixel) const {
+    if (integrator_->samplesPixelCentres() && (samplesPerPixel != 1 || options_.targetError > 0.0))
+        throw std::invalid_argument("the " + options_.integrator + " integrator samples each pixel once, at its centre: "
+                                    "use --spp 1 and no --target-error");
+    if (samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be at least 1");
+}
+
+std::uint64_t Renderer::preprocessesRun() { return preprocessesRun_.load(std::memory_order_relaxed); }
 
 std::vector<std::size_t> Renderer::writtenLayers(const AovSet& aovs, bool writeBeauty) {
     // One contiguous run (render() copies it as a block): every layer, or all but beauty and rest.
@@ -136,8 +144,7 @@ constexpr int kAdaptiveMinimum = 8;
 
 }  // namespace
 
-int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layers, PathState& path) const {
-    const int spp = options_.samplesPerPixel;
+int Renderer::renderPixel(int x, int y, std::uint64_t seed, int spp, std::span<Rgb> layers, PathState& path) const {
     const bool adaptive = options_.targetError > 0.0;
     double sum = 0.0, sumOfSquares = 0.0;
     int taken = 0;
@@ -174,10 +181,10 @@ int Renderer::renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layer
     return taken;
 }
 
-void Renderer::addSplats(const SplatFilm& splats, Film& film) const {
+void Renderer::addSplats(const SplatFilm& splats, int samplesPerPixel, Film& film) const {
     // Every pixel sample traced one light path, so the splats of the whole image are divided by
     // the samples per pixel, like each pixel's own mean (Veach 1997, 10.3.4.3).
-    const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
+    const float weight = 1.0f / static_cast<float>(samplesPerPixel);
     for (int y = 0; y < film.height(); ++y) {
         for (int x = 0; x < film.width(); ++x) {
             const std::span<Rgb> pixel = film.pixel(x, y);
@@ -197,9 +204,12 @@ std::vector<std::string> Renderer::layerNames() const {
     return names;
 }
 
-RenderResult Renderer::render() const { return render(options_.seed); }
+RenderResult Renderer::render() const { return render(options_.seed, options_.samplesPerPixel); }
 
-RenderResult Renderer::render(std::uint64_t seed) const {
+RenderResult Renderer::render(std::uint64_t seed) const { return render(seed, options_.samplesPerPixel); }
+
+RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
+    checkSamplesPerPixel(samplesPerPixel);
     const auto started = std::chrono::steady_clock::now();
     const double startedCpu = threadCpuSeconds();
     const int width = camera_.width(), height = camera_.height();
@@ -258,7 +268,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
                         return;
                     }
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
-                    renderPixel(x, y, seed, layers, path);
+                    renderPixel(x, y, seed, samplesPerPixel, layers, path);
                     std::ranges::copy(written, film.pixel(x, y).begin());
                 }
             }
@@ -272,7 +282,7 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     const double afterWorkersCpu = threadCpuSeconds();
     // Tiles no worker took (a cancelled render) are still unset.
     for (int tile = nextTile.value.load(); tile < tileCount; ++tile) clearTileFrom(tile, (tile % tilesX) * kTileSize, (tile / tilesX) * kTileSize);
-    if (splats) addSplats(*splats, film);
+    if (splats) addSplats(*splats, samplesPerPixel, film);
 
     RenderStats stats;
     for (const RayCounters& c : counters) stats.rays += c;
@@ -287,7 +297,11 @@ RenderResult Renderer::render(std::uint64_t seed) const {
     return {std::move(film), stats, cancelled()};
 }
 
-std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector<Rejection>* rejections) const {
+std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector<Rejection>* rejections,
+                                                       const ExplainOptions& options) const {
+    const int spp = options.samplesPerPixel > 0 ? options.samplesPerPixel : options_.samplesPerPixel;
+    checkSamplesPerPixel(spp);
+    const auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed); };
     if (x < 0 || y < 0 || x >= camera_.width() || y >= camera_.height())
         throw std::invalid_argument("pixel " + std::to_string(x) + "," + std::to_string(y) +
                                     " is outside the " + std::to_string(camera_.width()) + "x" +
@@ -298,7 +312,7 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector
     RayCounters counters;
     PathState path(context_, sink, counters);
     sink.logSplatsAt(x, y);
-    renderPixel(x, y, options_.seed, layers, path);
+    renderPixel(x, y, options_.seed, spp, layers, path);
     if (integrator_->splats()) {
         // Light tracing lands on this pixel from any pixel's sample: trace every pixel's paths
         // (one thread, the whole image's work) and keep the splats that land here.
@@ -309,7 +323,8 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector
         for (int py = 0; py < camera_.height(); ++py) {
             for (int px = 0; px < camera_.width(); ++px) {
                 if (px == x && py == y) continue;
-                renderPixel(px, py, options_.seed, layers, otherPath);
+                if (cancelled()) throw ExplainCancelled();
+                renderPixel(px, py, options_.seed, spp, layers, otherPath);
                 for (LoggedContribution& c : other)
                     if (c.splatted) log.push_back(c);
                 other.clear();
@@ -317,7 +332,7 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector
         }
     }
     // Logged values are per sample; scale them like the pixel so they sum to it.
-    const float weight = 1.0f / static_cast<float>(options_.samplesPerPixel);
+    const float weight = 1.0f / static_cast<float>(spp);
     for (LoggedContribution& c : log) c.value *= weight;
     return log;
 }

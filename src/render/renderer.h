@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,7 @@
 #include "film/film.h"
 #include "film/splat_film.h"
 #include "geometry/numerics.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
@@ -55,7 +56,7 @@ struct RenderOptions {
     // Set (e.g. by a Ctrl-C handler) to stop the workers after their current tile.
     const std::atomic<bool>* cancel = nullptr;
     Accelerator accelerator = Accelerator::Bvh;
-    bool progress = false;  // a progress bar on stderr (only if it is a terminal; render/progress.h)
+    bool progress = false;  // a progress bar on stderr (only if it is a terminal; util/progress.h)
     RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity
     // Called on the calling thread once every worker thread of render() exists. Creating a thread
     // waits for a dlopen() in progress on another thread (glibc's loader lock): a library loaded in
@@ -95,6 +96,20 @@ struct PixelMemory {
     std::string describe() const;
 };
 
+// What Renderer::explainPixel may be asked beyond the pixel.
+struct ExplainOptions {
+    int samplesPerPixel = 0;  // 0: RenderOptions::samplesPerPixel
+    // Set to abandon the explanation: checked before each other pixel light tracing traces (one
+    // pixel's own samples are bounded work, and always answered).
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// Thrown by Renderer::explainPixel when ExplainOptions::cancel was set before it finished.
+class ExplainCancelled : public std::runtime_error {
+public:
+    ExplainCancelled() : std::runtime_error("the explanation was cancelled") {}
+};
+
 struct RenderResult {
     Film film;
     RenderStats stats;
@@ -122,18 +137,28 @@ public:
     // can refine an image pass by pass, averaging them, without rebuilding the acceleration
     // structure (`lightpath serve`).
     RenderResult render(std::uint64_t seed) const;
+    // The same with `samplesPerPixel` instead of RenderOptions::samplesPerPixel: one renderer (one
+    // preprocess, e.g. one radiosity solve) serves a pass at the pixel centres and jittered passes.
+    // Throws std::invalid_argument for a count the integrator cannot take.
+    RenderResult render(std::uint64_t seed, int samplesPerPixel) const;
+    // How many renderers have run their integrator's preprocess in this process: what a caller
+    // that must build one renderer, not two, is checked by.
+    static std::uint64_t preprocessesRun();
     // The layers render() produces, in order.
     std::vector<std::string> layerNames() const;
     // Every contribution to pixel (x, y), in the order the integrator produced them.
-    // With `rejections`, also the terms that added nothing there, and why.
-    std::vector<LoggedContribution> explainPixel(int x, int y, std::vector<Rejection>* rejections = nullptr) const;
+    // With `rejections`, also the terms that added nothing there, and why. Under light tracing this
+    // traces every pixel's paths on the calling thread; `options.cancel` stops it (ExplainCancelled).
+    std::vector<LoggedContribution> explainPixel(int x, int y, std::vector<Rejection>* rejections = nullptr,
+                                                 const ExplainOptions& options = {}) const;
 
 private:
     // Samples one pixel into `layers` (their mean); returns the number of samples taken.
-    int renderPixel(int x, int y, std::uint64_t seed, std::span<Rgb> layers, PathState& path) const;
+    int renderPixel(int x, int y, std::uint64_t seed, int samplesPerPixel, std::span<Rgb> layers, PathState& path) const;
+    void checkSamplesPerPixel(int samplesPerPixel) const;
     bool cancelled() const;  // RenderOptions::cancel is set
     // Light tracing's contributions, added to the film once every tile is done.
-    void addSplats(const SplatFilm& splats, Film& film) const;
+    void addSplats(const SplatFilm& splats, int samplesPerPixel, Film& film) const;
 
     const Scene& scene_;
     const AovSet& aovs_;

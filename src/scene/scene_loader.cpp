@@ -9,7 +9,7 @@
 #include <sstream>
 #include <system_error>
 
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 #include "materials/material_type.h"
 #include "materials/phong_material.h"
 #include "schema/schema_error.h"

@@ -229,7 +229,14 @@ Response Api::route(const Request& request, const Target& target) {
         allowParameters(target, {"x", "y"});
         const int x = integerParameter(target, "x", -1000000, 1000000);
         const int y = integerParameter(target, "y", -1000000, 1000000);
-        return jsonResponse(explainPixel(*session_.job(), x, y));
+        const std::shared_ptr<std::atomic<bool>> cancel = session_.startExplaining();
+        try {
+            return jsonResponse(explainPixel(*session_.job(), x, y, cancel.get()));
+        } catch (const ExplainCancelled&) {
+            if (session_.stopping()) throw RequestError(503, "", "the server is stopping");
+            throw RequestError(409, "", "the explanation of pixel " + std::to_string(x) + "," + std::to_string(y) +
+                                            " was cancelled: a newer explanation or a change of settings replaced it");
+        }
     }
 
     allowParameters(target, {"generation"});  // /api/automaton.svg, the last route

@@ -30,13 +30,14 @@ json projectedSegment(const PinholeCamera& camera, Vec3 a, Vec3 b) {
 
 }  // namespace
 
-json explainPixel(const Job& job, int x, int y) {
+json explainPixel(const Job& job, int x, int y, const std::atomic<bool>* cancel) {
     const int width = job.settings.width, height = job.settings.height;
     if (x < 0 || y < 0 || x >= width || y >= height)
         throw RequestError(400, "x,y", "pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
                                            std::to_string(width) + "x" + std::to_string(height) + " image");
     std::vector<Rejection> rejections;
-    const std::vector<LoggedContribution> log = job.centreRenderer().explainPixel(x, y, &rejections);
+    const std::vector<LoggedContribution> log =
+        job.renderer().explainPixel(x, y, &rejections, {.samplesPerPixel = 1, .cancel = cancel});
     const lpe::Automaton& automaton = job.aovs.automaton();
     const PinholeCamera camera(job.scene.camera);
     const std::vector<std::string> layers = job.aovs.layerNames();

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "cli/render_setup.h"
+#include "config/render_setup.h"
 #include "lpe/error.h"
 #include "render/memory_limit.h"
 #include "serve/request_error.h"
@@ -47,24 +47,15 @@ Job::Job(std::uint64_t generation, Settings settings, Scene scene, AovSet aovs, 
     options_.cancel = &cancelled_;
 }
 
-const Renderer& Job::centreRenderer() const {
-    std::call_once(centreOnce_, [this] {
-        RenderOptions options = options_;
-        options.samplesPerPixel = 1;
-        centre_ = std::make_unique<Renderer>(scene, aovs, options, geometry_);
-    });
-    return *centre_;
-}
-
 int Job::samplesPerPass() const { return std::min(kSamplesPerPass, settings.samplesPerPixel); }
 
-const Renderer& Job::passRenderer() const {
-    std::call_once(passOnce_, [this] {
+const Renderer& Job::renderer() const {
+    std::call_once(rendererOnce_, [this] {
         RenderOptions options = options_;
         options.samplesPerPixel = samplesPerPass();
-        pass_ = std::make_unique<Renderer>(scene, aovs, options, geometry_);
+        renderer_ = std::make_unique<Renderer>(scene, aovs, options, geometry_);
     });
-    return *pass_;
+    return *renderer_;
 }
 
 Session::Session(Scene scene, std::string scenePath, int threads)
@@ -85,6 +76,7 @@ bool Session::stopWithin(double seconds) {
     std::unique_lock lock(mutex_);
     stopping_ = true;
     if (job_) job_->cancel();
+    if (explaining_) explaining_->store(true);
     changed_.notify_all();
     const auto finished = [this] { return workerDone_; };
     if (std::isinf(seconds)) changed_.wait(lock, finished);
@@ -167,11 +159,26 @@ std::shared_ptr<const Job> Session::update(const Settings& settings) {
         // Two updates racing: the one that asked later wins, whichever finished preparing first.
         if (job_->generation > next->generation) return job_;
         job_->cancel();
+        if (explaining_) explaining_->store(true);  // it explains the old settings' image
         job_ = next;
         idle_ = false;
     }
     changed_.notify_all();
     return next;
+}
+
+std::shared_ptr<std::atomic<bool>> Session::startExplaining() {
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    std::lock_guard lock(mutex_);
+    if (explaining_) explaining_->store(true);
+    if (stopping_) cancel->store(true);
+    explaining_ = cancel;
+    return cancel;
+}
+
+bool Session::stopping() const {
+    std::lock_guard lock(mutex_);
+    return stopping_;
 }
 
 std::shared_ptr<const Job> Session::job() const {
@@ -252,7 +259,7 @@ void Session::work() {
 void Session::renderJob(const std::shared_ptr<Job>& job) {
     Progress progress;
     progress.job = job;
-    RenderResult first = job->centreRenderer().render(0);
+    RenderResult first = job->renderer().render(0, 1);
     if (first.cancelled) return;
     progress.image = std::make_shared<Film>(first.film);
     progress.passes = 1;
@@ -267,7 +274,7 @@ void Session::renderJob(const std::shared_ptr<Job>& job) {
     const int passes = (job->settings.samplesPerPixel + perPass - 1) / perPass;
     std::optional<Film> sum;
     for (int pass = 1; pass <= passes && !progress.done; ++pass) {
-        RenderResult result = job->passRenderer().render(static_cast<std::uint64_t>(pass));
+        RenderResult result = job->renderer().render(static_cast<std::uint64_t>(pass), perPass);
         if (result.cancelled) return;
         if (!sum) {
             sum.emplace(std::move(result.film));

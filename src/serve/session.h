@@ -36,12 +36,13 @@ public:
     const Settings settings;
     const Scene scene;  // the loaded scene at this job's resolution
     const AovSet aovs;
-    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (cli/render_setup.h)
+    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (config/render_setup.h)
 
-    // One sample through the pixel centre: pass 0, and `explain` (as `lightpath explain` does).
-    const Renderer& centreRenderer() const;
-    // kSamplesPerPass jittered samples (or the target, if fewer): passes 1, 2, ...
-    const Renderer& passRenderer() const;
+    // The one renderer of these settings (one preprocess: radiosity solves once per change). It
+    // renders pass 0 and `explain` with one sample through each pixel centre (as `lightpath
+    // explain` does) and passes 1, 2, ... with samplesPerPass() jittered samples.
+    const Renderer& renderer() const;
+    // kSamplesPerPass (or the target, if fewer).
     int samplesPerPass() const;
 
     void cancel() { cancelled_.store(true); }
@@ -51,8 +52,8 @@ private:
     RenderOptions options_;
     std::shared_ptr<const SceneGeometry> geometry_;
     std::atomic<bool> cancelled_{false};
-    mutable std::once_flag centreOnce_, passOnce_;
-    mutable std::unique_ptr<Renderer> centre_, pass_;
+    mutable std::once_flag rendererOnce_;
+    mutable std::unique_ptr<Renderer> renderer_;
 };
 
 // What the page shows: the mean of the passes so far.
@@ -91,12 +92,18 @@ public:
     // timeout passes (the caller's bound on a request's time); returns the progress then.
     Progress waitForProgress(std::uint64_t generation, int pass, double timeoutSeconds) const;
 
+    // Starts an explanation: the flag it returns is set when a newer explanation starts, the
+    // settings change or the server stops, and stops it (Renderer::explainPixel's cancel). Under
+    // light tracing an explanation traces the whole image on the HTTP thread: only the newest runs.
+    std::shared_ptr<std::atomic<bool>> startExplaining();
+    bool stopping() const;
+
     // Waits until the worker has finished with the current job (rendered it to its target or given
     // it up) and waits for a change: then no render code runs until the next update. The fuzz
     // target needs this to see the same code run for the same input on any machine.
     void waitUntilIdle() const;
 
-    // Stops the worker (cancelling its render); later updates are refused.
+    // Stops the worker (cancelling its render and any explanation); later updates are refused.
     void stop();
     // The same, but waits at most `seconds` for the worker: building a renderer's acceleration
     // structure cannot be cancelled. Returns false if the worker is still busy (then only process
@@ -122,6 +129,7 @@ private:
     std::uint64_t lastGeneration_ = 1;  // handed out in the order updates arrive
     Progress progress_;
     Progress previous_;  // the last progress with an image, of an older generation
+    std::shared_ptr<std::atomic<bool>> explaining_;  // the newest explanation's cancel flag
     bool stopping_ = false;
     bool workerDone_ = false;
     bool idle_ = false;  // the worker waits for a change, the current job finished

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <optional>
 
-#include "cli/lpe_verdict.h"
+#include "config/lpe_verdict.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
-#include "integrators/path_record.h"
+#include "transport/path_event.h"
 #include "serve/request_error.h"
 
 namespace lightpath::serve {
@@ -110,7 +110,7 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
             settings.lpes = expressionsOf(value);
         }
     }
-    // The command line's one judge (cli/lpe_verdict.h): what render refuses under this integrator
+    // The command line's one judge (config/lpe_verdict.h): what render refuses under this integrator
     // is refused here. A syntax error is left to the session, which reports its column.
     const IntegratorInfo* integrator = findIntegrator(settings.integrator);
     for (std::size_t i = 0; i < settings.lpes.size(); ++i) {

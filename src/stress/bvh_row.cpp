@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "stress/sampling.h"
 
 namespace lightpath {

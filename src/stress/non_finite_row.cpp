@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "film/aov_set.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "geometry/spawn_ray.h"
 #include "lights/point_light.h"
 #include "materials/phong_material.h"

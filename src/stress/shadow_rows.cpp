@@ -1,6 +1,6 @@
 #include "stress/shadow_rows.h"
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "geometry/spawn_ray.h"
 #include "stress/sampling.h"
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "geometry/intersect.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "geometry/spawn_ray.h"
 #include "stress/exact_reference.h"
 #include "stress/sampling.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "math/random.h"
 
 namespace lightpath::test {

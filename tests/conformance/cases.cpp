@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 #include "materials/material_type.h"
 #include "scene/scene_loader.h"
 #include "schema/format.h"

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -616,6 +617,45 @@ TEST_CASE("bdpt: at 1 spp, splats and eye samples estimate the same pixel mean")
     CAPTURE(centre);
     REQUIRE(std::fabs(box[0] / centre - 1.0) > 0.04);
     checkSpot(spotPixels(spot, "bdpt", PixelFilterKind::Box, 1, 4096), box, centre);
+}
+
+
+TEST_CASE("bdpt: one renderer renders at one sample per pixel exactly as a renderer built for one does, splats included") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
+    scene.camera.width = 24;
+    scene.camera.height = 18;
+    const AovSet aovs(std::vector<lpe::NamedExpression>{{"caustic", "E(D|G)S+L"}});
+    RenderOptions options;
+    options.integrator = "bdpt";
+    options.threads = 1;
+    options.samplesPerPixel = 1;
+    const Film single = Renderer(scene, aovs, options).render(3).film;
+    options.samplesPerPixel = 4;
+    const Renderer four(scene, aovs, options);
+    const Film overridden = four.render(3, 1).film;
+    const auto a = single.interleaved(), b = overridden.interleaved();
+    CHECK(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+    CHECK_THROWS_AS(four.render(3, 0), std::invalid_argument);
+}
+
+TEST_CASE("bdpt: an explanation stops when cancelled: its light tracing would trace every pixel on one thread") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
+    scene.camera.width = 24;
+    scene.camera.height = 18;
+    const AovSet aovs(std::vector<lpe::NamedExpression>{{"caustic", "E(D|G)S+L"}});
+    RenderOptions options;
+    options.integrator = "bdpt";
+    options.threads = 1;
+    const Renderer renderer(scene, aovs, options);
+    std::atomic<bool> cancel{false};
+    const auto answered = renderer.explainPixel(12, 9, nullptr, {.cancel = &cancel});
+    CHECK_FALSE(answered.empty());
+    cancel = true;
+    CHECK_THROWS_AS(renderer.explainPixel(12, 9, nullptr, {.cancel = &cancel}), ExplainCancelled);
+    // Without light tracing an explanation is the pixel's own samples: bounded, always answered.
+    options.integrator = "path";
+    const Renderer path(scene, aovs, options);
+    CHECK_NOTHROW(path.explainPixel(12, 9, nullptr, {.cancel = &cancel}));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "integrators/registry.h"
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 #include "materials/material_type.h"
 
 namespace lightpath {

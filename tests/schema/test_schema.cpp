@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "lights/light_type.h"
+#include "scene/light_type.h"
 #include "materials/material_type.h"
 #include "schema/markdown.h"
 #include "schema/parameter_values.h"

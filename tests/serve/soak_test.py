@@ -71,7 +71,7 @@ def next_request():
     if roll < 0.30:
         return ("http", "PUT", "/api/settings", settings(), {200})
     if roll < 0.45:
-        return ("http", "GET", f"/api/explain?x={rng.randint(0, 15)}&y={rng.randint(0, 11)}", None, {200})
+        return ("http", "GET", f"/api/explain?x={rng.randint(0, 15)}&y={rng.randint(0, 11)}", None, {200, 409})
     if roll < 0.55:
         return ("http", "GET", "/api/image/beauty.png?exposure=0.5", None, {200, 503})
     if roll < 0.62:

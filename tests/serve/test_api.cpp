@@ -301,7 +301,7 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
         {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"EL\", \"extra\": 1}]}", 400, "lpes[0].extra", "unknown field"},
         {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"E(D|G L\"}]}", 400, "lpes[0].expression",
          "a: LPE syntax error at column 8: expected '\\)'"},
-        // Refused as the command line refuses it (cli/lpe_verdict.h): ED never reaches a light.
+        // Refused as the command line refuses it (config/lpe_verdict.h): ED never reaches a light.
         {"{\"lpes\": [{\"name\": \"ok\", \"expression\": \"EL\"}, {\"name\": \"never\", \"expression\": \"ED\"}]}", 400,
          "lpes[1].expression", "^never: 'ED' can never match under --integrator whitted: never reaches a light"},
         {"{\"integrator\": \"raycast\", \"lpes\": [{\"name\": \"s\", \"expression\": \"ES+(D|G)L\"}]}", 400,
@@ -459,4 +459,35 @@ TEST_CASE("serve: concurrent requests") {
     const auto last = fixture.client()->Get("/api/settings");
     REQUIRE(last);
     CHECK(last->status == 200);
+}
+
+TEST_CASE("serve: a change of settings runs the integrator's preprocess once: one radiosity solve for every pass") {
+    ServerFixture fixture("cornell-original.toml");
+    // The worker renders one job after another: once this one is done no other renderer is built.
+    const auto small = fixture.session.update(applySettings(fixture.session.job()->settings, settingsFor(16, 12, 1).dump()));
+    fixture.waitUntilDone(small->generation);
+    const std::uint64_t before = Renderer::preprocessesRun();
+    // Pass 0 at the pixel centres, then jittered passes of kSamplesPerPass samples.
+    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings,
+                                                          settingsFor(16, 12, 2 * kSamplesPerPass, "radiosity").dump()));
+    const json done = fixture.waitUntilDone(job->generation);
+    CHECK(done["passes"] == 3);
+    CHECK(Renderer::preprocessesRun() - before == 1);
+}
+
+TEST_CASE("serve: only the newest explanation runs: a newer one, a change of settings and shutdown cancel it") {
+    ServerFixture fixture("mirror-sphere.toml");
+    const auto first = fixture.session.startExplaining();
+    CHECK_FALSE(first->load());
+    const auto second = fixture.session.startExplaining();
+    CHECK(first->load());
+    CHECK_FALSE(second->load());
+    fixture.session.update(applySettings(fixture.session.job()->settings, settingsFor(16, 12, 1).dump()));
+    CHECK(second->load());
+    const auto third = fixture.session.startExplaining();
+    CHECK_FALSE(third->load());
+    fixture.session.stop();
+    CHECK(third->load());
+    CHECK(fixture.session.startExplaining()->load());  // after shutdown none starts
+    CHECK(fixture.session.stopping());
 }

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/lpe_feasibility.h"
+#include "config/lpe_feasibility.h"
 #include "film/aov_set.h"
 #include "lpe/analysis.h"
 #include "render/renderer.h"

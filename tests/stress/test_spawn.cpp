@@ -9,7 +9,7 @@
 #include <random>
 
 #include "geometry/ray_offset.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "geometry/spawn_ray.h"
 #include "math/float_bits.h"
 #include "reference.h"

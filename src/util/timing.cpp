@@ -1,4 +1,4 @@
-#include "bench/timing.h"
+#include "util/timing.h"
 
 #include <algorithm>
 #include <ctime>

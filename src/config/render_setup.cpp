@@ -1,13 +1,13 @@
-#include "cli/render_setup.h"
+#include "config/render_setup.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
 
-#include "cli/cli_errors.h"
-#include "cli/exit_codes.h"
-#include "cli/lpe_verdict.h"
+#include "config/cli_errors.h"
+#include "config/exit_codes.h"
+#include "config/lpe_verdict.h"
 #include "film/aov_presets.h"
 #include "integrators/event_symbols.h"
 #include "integrators/registry.h"
@@ -151,7 +151,7 @@ std::vector<lpe::NamedExpression> RenderSetup::expressions() const {
     return set;
 }
 
-// The one judge (cli/lpe_verdict.h) decides: an --lpe no path of this integrator can match in any
+// The one judge (config/lpe_verdict.h) decides: an --lpe no path of this integrator can match in any
 // scene is refused before the render, with the reason; one only black in this scene (a label it
 // lacks, a volume) is rendered with one short warning; a preset's AOV the integrator cannot fill is
 // written black and said in --stats, not warned about.

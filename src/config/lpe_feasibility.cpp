@@ -1,9 +1,9 @@
-#include "cli/lpe_feasibility.h"
+#include "config/lpe_feasibility.h"
 
 #include <algorithm>
 
 #include "integrators/event_symbols.h"
-#include "integrators/path_record.h"
+#include "transport/path_event.h"
 #include "lpe/automaton.h"
 #include "lpe/path_string.h"
 #include "lpe/reading.h"

@@ -1,4 +1,4 @@
-#include "cli/cli_errors.h"
+#include "config/cli_errors.h"
 
 #include <algorithm>
 #include <cctype>

@@ -33,7 +33,7 @@ struct RenderSetup {
     std::string shadows;             // "on", "off" or empty (the integrator's own)
     std::string accel = "bvh";       // bvh, embree or none (brute force)
     bool quiet = false;              // no progress bar, no warnings
-    // No longer read: serve refuses what the command line refuses (cli/lpe_verdict.h, one judge);
+    // No longer read: serve refuses what the command line refuses (config/lpe_verdict.h, one judge);
     // a preset's AOV the integrator cannot fill stays black there as here. Set by serve's session
     // until that line goes.
     bool neverFilledIsWarning = false;
@@ -51,7 +51,7 @@ struct RenderSetup {
 
     Scene loadScene() const;                           // with --resolution applied
     std::vector<lpe::NamedExpression> expressions() const;
-    // Judges every AOV (cli/lpe_verdict.h): refuses one no path of the integrator can ever fill;
+    // Judges every AOV (config/lpe_verdict.h): refuses one no path of the integrator can ever fill;
     // warns (on stderr, or into `warnings` when given) of one black in `scene`, of a label the scene
     // lacks, and of overlaps, except among a preset's own AOVs.
     AovSet buildAovSet(const Scene& scene, std::vector<std::string>* warnings = nullptr) const;

@@ -1,4 +1,4 @@
-#include "render/progress.h"
+#include "util/progress.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,8 +1,8 @@
-#include "cli/lpe_verdict.h"
+#include "config/lpe_verdict.h"
 
 #include <algorithm>
 
-#include "cli/lpe_feasibility.h"
+#include "config/lpe_feasibility.h"
 #include "film/aov_presets.h"
 #include "integrators/event_symbols.h"
 #include "lpe/analysis.h"
