@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/exit_codes.h"
+#include "config/exit_codes.h"
 #include "integrators/registry.h"
 #include "scene/light_type.h"
 #include "materials/material_type.h"

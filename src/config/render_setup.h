@@ -33,10 +33,6 @@ struct RenderSetup {
     std::string shadows;             // "on", "off" or empty (the integrator's own)
     std::string accel = "bvh";       // bvh, embree or none (brute force)
     bool quiet = false;              // no progress bar, no warnings
-    // No longer read: serve refuses what the command line refuses (config/lpe_verdict.h, one judge);
-    // a preset's AOV the integrator cannot fill stays black there as here. Set by serve's session
-    // until that line goes.
-    bool neverFilledIsWarning = false;
     std::string robust = "on";       // on: robust numerics (default); off: the lecture's naive ones
     std::string sphereTest, triangleTest, rayOffset;  // per-method choices; empty: as --robust says
     float epsilon = 1e-4f;           // t_min of --ray-offset epsilon

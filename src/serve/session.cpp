@@ -108,7 +108,6 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
     for (const auto& e : settings.lpes) setup.lpes.push_back(e.name + "=" + e.expression);
     setup.maxDepth = settings.maxDepth;
     setup.quiet = true;
-    setup.neverFilledIsWarning = true;  // the tile shows black and says why
     std::vector<std::string> warnings;
     std::optional<AovSet> aovs;
     try {

@@ -9,7 +9,7 @@
 
 #include "cases.h"
 #include "check_result.h"
-#include "geometry/scene_geometry.h"
+#include "accel/scene_geometry.h"
 #include "lights/light.h"
 #include "lights/light_set.h"
 
