@@ -342,6 +342,9 @@ function groupContributions(contributions) {
 async function explain(x, y) {
   state.pixel = [x, y];
   const answer = await getJson(`/api/explain?x=${x}&y=${y}`);
+  // 409: a newer explanation or a settings change replaced this one (docs/serve.md); its own
+  // answer is on the way.
+  if (answer.status === 409) return;
   if (!answer.ok) {
     showRequestError(answer.body);
     return;

@@ -159,6 +159,18 @@ std::vector<lpe::NamedExpression> expressionsOf(const SetOptions& options) {
 // The nest: every strict containment as maximal chains (A ⊂ B ⊂ C), then each covering pair with a
 // shortest path of the larger that the smaller lacks, and the overlapping pairs neither of which
 // contains the other. Nothing when no expression contains another and none overlap.
+// Letters of OSL's alphabet that a gap may hold but no lightpath integrator produces (registry.h's
+// kRenderedPaths): said, so that a gap such as EsL is not read as light the set loses.
+void printUnrenderedEvents(const lpe::Path& path) {
+    const bool straight = std::any_of(path.begin(), path.end(), [](const lpe::Event& e) { return e.scatter == lpe::Scatter::Straight; });
+    const bool volume = std::any_of(path.begin(), path.end(), [](const lpe::Event& e) { return e.type == lpe::EventType::Volume; });
+    if (straight)
+        std::cout << "      s is OSL's straight event (a ray passing through a surface unbent): no lightpath integrator "
+                     "produces one, so no light falls in this gap\n";
+    if (volume)
+        std::cout << "      V is a volume event: lightpath renders no media yet, so no light falls in this gap\n";
+}
+
 void printNest(const std::vector<lpe::NamedExpression>& expressions, const std::string& universe,
                const lpe::SetReport& report) {
     const std::size_t n = expressions.size();
@@ -249,7 +261,10 @@ void runCheck(const SetOptions& options) {
         std::cout << "overlap: " << expressions[o.first].name << " and " << expressions[o.second].name
                   << " both accept " << lpe::toDisplayString(o.example) << '\n';
     }
-    if (report.gap) std::cout << "gap: no expression accepts " << lpe::toDisplayString(*report.gap) << '\n';
+    if (report.gap) {
+        std::cout << "gap: no expression accepts " << lpe::toDisplayString(*report.gap) << '\n';
+        printUnrenderedEvents(*report.gap);
+    }
     std::cout << "partition of " << universe << ": " << (report.partition() ? "yes" : "no") << '\n';
     if (!options.integrator.empty()) printIntegrator(expressions, options.integrator, width);
 }
