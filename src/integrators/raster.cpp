@@ -45,6 +45,11 @@ void ZBuffer::coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragmen
     if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return;  // edge-on: no area on the film
     const double orientation = det > 0.0 ? 1.0 : -1.0;
     const double volume = std::fabs(det);
+    // Wholly behind the eye's plane: no film direction reaches it (the edge functions would refuse
+    // every pixel). Refused here, because such a triangle has no projected bounding box, and
+    // testing the whole film for each facet of a sphere behind the camera took minutes.
+    const glm::dvec3 forward(camera_.forward());
+    if (glm::dot(va, forward) <= 0.0 && glm::dot(vb, forward) <= 0.0 && glm::dot(vc, forward) <= 0.0) return;
 
     // The pixels to test: the projected triangle's bounding box (one pixel of slack for the
     // projection's rounding), or the whole film when a corner is not in front of the eye.
@@ -58,6 +63,7 @@ void ZBuffer::coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragmen
         x1 = std::min(x1, high(std::max({pa->x, pb->x, pc->x})));
         y1 = std::min(y1, high(std::max({pa->y, pb->y, pc->y})));
     }
+    if (x1 >= x0 && y1 >= y0) pixelsTested_ += std::uint64_t(x1 - x0 + 1) * std::uint64_t(y1 - y0 + 1);
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
             const glm::dvec3 d(pixelDirection(x, y));

@@ -59,6 +59,10 @@ public:
     // (the background).
     std::optional<SurfaceHit> surfaceAt(int x, int y) const;
 
+    // How many pixel centres the rasterisation tested against a primitive's coverage: its cost,
+    // which a primitive the camera cannot see must not add to.
+    std::uint64_t pixelsTested() const { return pixelsTested_; }
+
     // The tessellation of spheres: this many sectors around the equator.
     static constexpr float kSphereSectors = 256.0f;
 
@@ -78,6 +82,7 @@ private:
     const PinholeCamera& camera_;
     int width_, height_;
     std::vector<RasterFragment> fragments_;
+    mutable std::uint64_t pixelsTested_ = 0;
 };
 
 // The rasteriser as an integrator: its preprocess fills the z-buffer, and each camera ray (one

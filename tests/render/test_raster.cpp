@@ -17,6 +17,7 @@
 
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
+#include "integrators/raster.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "shipped_scenes.h"
@@ -129,6 +130,25 @@ TEST_CASE("the control: with shadow rays, ray casting differs from the rasterise
                      << " interior pixels differ");
         CHECK(c.interiorDiffering > c.interiorPixels / 20);
     }
+}
+
+TEST_CASE("the rasteriser tests no pixel for a sphere behind the camera, and the pixels of its bounds for one in front") {
+    CameraDescription description;  // at (0, 0, 5) looking down -z
+    description.width = 64;
+    description.height = 48;
+    const PinholeCamera camera(description);
+    const auto tested = [&](Vec3 center) {
+        const SceneGeometry geometry({Sphere{center, 0.5f, 0}}, {}, {});
+        return ZBuffer(geometry, camera).pixelsTested();
+    };
+    // Behind the eye, every facet's corners lie behind its plane: nothing can be covered, and
+    // nothing is tested (each facet once scanned the whole film, 2 x 256 x 128 x 64 x 48 tests).
+    CHECK(tested({0.0f, 0.0f, 8.0f}) == 0);
+    // In front, each facet tests its few-pixel bounding box: between the sphere's image and a
+    // generous multiple of the film, far below one film per facet.
+    const std::uint64_t front = tested({0.0f, 0.0f, 0.0f});
+    CHECK(front > 0);
+    CHECK(front < 1000u * 64u * 48u);
 }
 
 TEST_CASE("the rasteriser refuses what it cannot do, and shadow rays stay on where they must") {
