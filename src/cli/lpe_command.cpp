@@ -311,7 +311,7 @@ void addLpeCommand(CLI::App& app) {
     CLI::App* matchCommand = lpe->add_subcommand("match", "Does each path match the expression?");
     matchCommand->add_option("expression-and-paths", match->arguments,
                              "the light path expression (unless --set), then paths: compact (ESDL), tuples "
-                             "(\"E RS RD'floor' L'key'\") or as explain prints them (\"E <RS> <RD'floor'> <L.'key'>\")");
+                             "(\"E RS RD'floor' L'key'\", or one event: RS) or as explain prints them (\"E <RS> <RD'floor'> <L.'key'>\")");
     std::vector<std::string> presets;
     for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
     matchCommand->add_option("--set", match->set, "match against a predefined set's expressions (every argument is a path)")
