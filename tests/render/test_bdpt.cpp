@@ -620,14 +620,29 @@ TEST_CASE("bdpt: at 1 spp, splats and eye samples estimate the same pixel mean")
 }
 
 
+// The glass ball's caustic at 24 x 18 pixels under bdpt on one thread: small enough to trace
+// every light path of the image in a test.
+struct SmallCaustic {
+    Scene scene = [] {
+        Scene s = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
+        s.camera.width = 24;
+        s.camera.height = 18;
+        return s;
+    }();
+    AovSet aovs{std::vector<lpe::NamedExpression>{{"caustic", "E(D|G)S+L"}}};
+    RenderOptions options = [] {
+        RenderOptions o;
+        o.integrator = "bdpt";
+        o.threads = 1;
+        return o;
+    }();
+};
+
 TEST_CASE("bdpt: one renderer renders at one sample per pixel exactly as a renderer built for one does, splats included") {
-    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
-    scene.camera.width = 24;
-    scene.camera.height = 18;
-    const AovSet aovs(std::vector<lpe::NamedExpression>{{"caustic", "E(D|G)S+L"}});
-    RenderOptions options;
-    options.integrator = "bdpt";
-    options.threads = 1;
+    SmallCaustic small;
+    const Scene& scene = small.scene;
+    const AovSet& aovs = small.aovs;
+    RenderOptions options = small.options;
     options.samplesPerPixel = 1;
     const Film single = Renderer(scene, aovs, options).render(3).film;
     options.samplesPerPixel = 4;
@@ -639,13 +654,10 @@ TEST_CASE("bdpt: one renderer renders at one sample per pixel exactly as a rende
 }
 
 TEST_CASE("bdpt: an explanation stops when cancelled: its light tracing would trace every pixel on one thread") {
-    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/glass-sphere.toml");
-    scene.camera.width = 24;
-    scene.camera.height = 18;
-    const AovSet aovs(std::vector<lpe::NamedExpression>{{"caustic", "E(D|G)S+L"}});
-    RenderOptions options;
-    options.integrator = "bdpt";
-    options.threads = 1;
+    SmallCaustic small;
+    const Scene& scene = small.scene;
+    const AovSet& aovs = small.aovs;
+    RenderOptions options = small.options;
     const Renderer renderer(scene, aovs, options);
     std::atomic<bool> cancel{false};
     const auto answered = renderer.explainPixel(12, 9, nullptr, {.cancel = &cancel});
