@@ -151,7 +151,9 @@ std::vector<lpe::NamedExpression> expressionsOf(const SetOptions& options) {
         expressions.push_back(namedExpression(options.expressions[i], i));
     }
     if (expressions.empty()) {
-        throw CLI::RuntimeError("lpe: give at least one expression or --set classes|taxonomy|bounces", kExitBadInput);
+        std::string sets;
+        for (const std::string& name : aovPresetNames(false)) sets += (sets.empty() ? "" : "|") + name;
+        throw CLI::RuntimeError("lpe: give at least one expression or --set " + sets, kExitBadInput);
     }
     return expressions;
 }
@@ -242,7 +244,7 @@ void runCheck(const SetOptions& options) {
     const std::vector<lpe::NamedExpression> expressions = expressionsOf(options);
     const auto preset = findAovPreset(options.set);
     const std::string universe =
-        !options.universe.empty() ? options.universe : preset ? preset->universe : "E.*L";
+        !options.universe.empty() ? options.universe : preset ? std::string(preset->schema.events) : "E.*L";
     const Warnings warn(options.quiet);
     // Judged as render judges them, under --integrator or else under any integrator; an expression
     // over a --universe of the user's own is the engine's alone (any event strings).
@@ -286,9 +288,7 @@ void runDot(const SetOptions& options) {
 
 void addSetArguments(CLI::App& command, SetOptions& options) {
     command.add_option("expressions", options.expressions, "[name=]EXPR, e.g. raycast='E(D|G)L'");
-    std::vector<std::string> presets;
-    for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
-    command.add_option("--set", options.set, "start from a predefined set")->check(oneOf(presets));
+    command.add_option("--set", options.set, "start from a predefined set")->check(oneOf(aovPresetNames(false)));
 }
 
 }  // namespace
@@ -312,10 +312,8 @@ void addLpeCommand(CLI::App& app) {
     matchCommand->add_option("expression-and-paths", match->arguments,
                              "the light path expression (unless --set), then paths: compact (ESDL), tuples "
                              "(\"E RS RD'floor' L'key'\", or one event: RS) or as explain prints them (\"E <RS> <RD'floor'> <L.'key'>\")");
-    std::vector<std::string> presets;
-    for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
     matchCommand->add_option("--set", match->set, "match against a predefined set's expressions (every argument is a path)")
-        ->check(oneOf(presets));
+        ->check(oneOf(aovPresetNames(false)));
     matchCommand->add_flag("--trace", match->trace,
                            "also print the automaton states each path passes through, numbered as lpe dot draws them");
     matchCommand->add_option("--integrator", match->integrator,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "config/exit_codes.h"
+#include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "scene/light_type.h"
 #include "materials/material_type.h"
@@ -41,6 +42,7 @@ const std::vector<Family>& families() {
         {"material", "[materials.NAME] type = \"...\"", schemasOf<MaterialType>},
         {"light", "[[lights]] type = \"...\"", schemasOf<LightType>},
         {"integrator", "render --integrator ...", schemasOf<IntegratorInfo>},
+        {"preset", "render --aovs ..., lpe check --set ..., serve's AOV menu", schemasOf<AovPreset>},
     };
     return list;
 }
@@ -79,6 +81,18 @@ void printType(const TypeSchema& schema, bool markdown) {
     }
 }
 
+// A preset's AOVs, as `lpe check --set` reads them; one made from the scene says so.
+void printPresetAovs(const TypeSchema& schema) {
+    const AovPreset* preset = schema.family == "preset" ? findAovPreset(schema.name) : nullptr;
+    if (!preset) return;
+    if (preset->fromScene) {
+        std::cout << "aovs: made from the scene (render --aovs " << schema.name << ", serve)\n";
+        return;
+    }
+    std::cout << "aovs:\n";
+    for (const lpe::NamedExpression& aov : preset->expressions()) std::cout << "  " << aov.name << "  " << aov.expression << "\n";
+}
+
 void runTypes(const TypesOptions& options) {
     if (options.family.empty()) {
         for (const Family& family : families()) listFamily(family);
@@ -96,7 +110,11 @@ void runTypes(const TypesOptions& options) {
     }
     std::vector<std::string> typeNames;
     for (const TypeSchema* schema : family->types()) {
-        if (schema->name == options.name) return printType(*schema, options.markdown);
+        if (schema->name == options.name) {
+            printType(*schema, options.markdown);
+            if (!options.markdown) printPresetAovs(*schema);
+            return;
+        }
         typeNames.emplace_back(schema->name);
     }
     unknown(std::string(family->name) + " type", options.name, typeNames);
@@ -107,8 +125,8 @@ void runTypes(const TypesOptions& options) {
 void addTypesCommand(CLI::App& app) {
     auto options = std::make_shared<TypesOptions>();
     CLI::App* command = app.add_subcommand(
-        "types", "List the material, light and integrator types and, for one, its parameters and events");
-    command->add_option("family", options->family, "material, light or integrator");
+        "types", "List the material, light, integrator and AOV preset types and, for one, its parameters and events");
+    command->add_option("family", options->family, "material, light, integrator or preset");
     command->add_option("name", options->name, "a type of that family, e.g. phong");
     command->add_flag("--markdown", options->markdown, "print the type's parameter table as scenes/README.md shows it");
     command->footer("Examples:\n  lightpath types\n  lightpath types light\n  lightpath types material phong --markdown");

@@ -26,8 +26,8 @@ std::vector<std::string> languages(const std::string& expression, const Integrat
 }  // namespace
 
 bool isPresetMember(const lpe::NamedExpression& aov) {
-    for (const AovPreset& preset : aovPresets())
-        for (const auto& member : preset.expressions())
+    for (const AovPreset* preset : aovPresets())
+        for (const auto& member : preset->expressions())
             if (member.name == aov.name && member.expression == aov.expression) return true;
     return false;
 }

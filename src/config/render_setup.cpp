@@ -38,12 +38,9 @@ void RenderSetup::addOptions(CLI::App& command) {
     command.add_option("--lpe", lpes,
                        "An AOV as [name=]EXPR, e.g. --lpe 'direct=E(D|G)L'; repeatable. Replaces the default "
                        "classes set unless --aovs classes is also given");
-    std::vector<std::string> presets;
-    for (const AovPreset& preset : aovPresets()) presets.emplace_back(preset.name);
+    std::vector<std::string> presets = aovPresetNames();
     presets.emplace_back("none");
-    command.add_option("--aovs", aovs, "Predefined AOV set: classes (the partition of docs/design.md), taxonomy (the lecture's four "
-                                       "methods, overlapping), bounces (by the number of events: emission, bounce1 .. bounce4plus) or none")
-        ->check(oneOf(presets));
+    command.add_option("--aovs", aovs, "Predefined AOV set: " + aovPresetHelp())->check(oneOf(presets));
     command.add_option("--spp", samplesPerPixel, "Samples per pixel (1 = through the pixel centre)")
         ->check(CLI::Range(1, kMaxSamplesPerPixel))
         ->capture_default_str();
@@ -143,10 +140,10 @@ Scene RenderSetup::loadScene() const {
     return scene;
 }
 
-std::vector<lpe::NamedExpression> RenderSetup::expressions() const {
+std::vector<lpe::NamedExpression> RenderSetup::expressions(const Scene* scene) const {
     std::vector<lpe::NamedExpression> set;
     const std::string preset = aovs.empty() ? (lpes.empty() ? "classes" : "none") : aovs;
-    if (const auto found = findAovPreset(preset)) set = found->expressions();
+    if (const AovPreset* found = findAovPreset(preset)) set = found->expressions(scene);
     for (std::size_t i = 0; i < lpes.size(); ++i) set.push_back(parseNamedExpression(lpes[i], i + 1));
     return set;
 }
@@ -168,7 +165,7 @@ void RenderSetup::refuseNeverFilled(const std::vector<lpe::NamedExpression>& set
 }
 
 AovSet RenderSetup::buildAovSet(const Scene& scene, std::vector<std::string>* warnings) const {
-    const auto set = expressions();
+    const auto set = expressions(&scene);
     std::optional<AovSet> aovs;
     try {
         aovs.emplace(set);

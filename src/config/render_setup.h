@@ -46,7 +46,8 @@ struct RenderSetup {
     void addOptions(CLI::App& command);
 
     Scene loadScene() const;                           // with --resolution applied
-    std::vector<lpe::NamedExpression> expressions() const;
+    // The --aovs preset's AOVs (made from `scene` for `lights`), then every --lpe.
+    std::vector<lpe::NamedExpression> expressions(const Scene* scene = nullptr) const;
     // Judges every AOV (config/lpe_verdict.h): refuses one no path of the integrator can ever fill;
     // warns (on stderr, or into `warnings` when given) of one black in `scene`, of a label the scene
     // lacks, and of overlaps, except among a preset's own AOVs.

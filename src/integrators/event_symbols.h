@@ -7,6 +7,7 @@
 
 #include "integrators/path_record.h"
 #include "lpe/automaton.h"
+#include "scene/ambient_label.h"
 #include "scene/scene.h"
 
 namespace lightpath {
@@ -35,9 +36,6 @@ private:
     std::vector<lpe::Automaton::LabelClass> lights_;   // per point light
     std::vector<lpe::Automaton::LabelClass> objects_;  // per scene object
 };
-
-// The label of the ambient term's L event (docs/design.md: `<L'ambient'>`).
-inline constexpr const char* kAmbientLabel = "ambient";
 
 // Every label an event of this scene can carry: "ambient", the point lights' names, and each
 // object's label (its name, else its material's; area lights are objects). Sorted, no repeats.

@@ -2,7 +2,7 @@
 // What a surface does with light: the interface every material implements (Nori's BSDF
 // sample/eval/pdf, one material per file). A material is a set of lobes (materials/lobe.h); the
 // per-hit Bsdf chooses among them and weighs the choice, so a material only describes each lobe.
-// Adding a material is its own file plus its entry in the scene loader's table of material types.
+// Adding a material is its own file, which registers its MaterialType (materials/material_type.h).
 #include <memory>
 #include <optional>
 #include <string>

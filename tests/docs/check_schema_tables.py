@@ -7,7 +7,8 @@ import subprocess
 import sys
 
 # The types whose tables scenes/README.md shows.
-TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point")]
+TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point"), ("light", "quad"),
+          ("light", "sphere")]
 
 
 def main():

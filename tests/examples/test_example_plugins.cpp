@@ -1,0 +1,78 @@
+// The example plugins (examples/plugins/, docs/extending.md) work as a user meets them: a scene
+// that names the example material and light loads, renders under the example integrator, and its
+// AOVs sum to the beauty. The conformance kit (conformance_tests, which links them too) holds each
+// to the contract of its family.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "../support/film_checks.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace lightpath {
+namespace {
+
+// A rough floor under a spot light pointing straight down: the cone's edge (30°) meets the floor,
+// 2 m below, at radius 2 tan 30° = 1.155 m; the falloff starts at 2 tan 20° = 0.728 m.
+constexpr const char* kScene = R"(
+[camera]
+eye = [0, 6, 0.001]
+look_at = [0, 0, 0]
+fov = 40
+resolution = [32, 32]
+
+[materials.rough]
+type = "oren-nayar"
+kd = 0.8
+sigma = 30
+
+[[planes]]
+point = [0, 0, 0]
+normal = [0, 1, 0]
+material = "rough"
+
+[[lights]]
+type = "spot"
+name = "spot"
+position = [0, 2, 0]
+direction = [0, -1, 0]
+intensity = 3
+cone_angle = 30
+falloff_start = 20
+)";
+
+Film renderExample(const AovSet& aovs) {
+    const Scene scene = loadSceneFromText(kScene, "example-plugins.toml");
+    RenderOptions options;
+    options.integrator = "direct";
+    options.samplesPerPixel = 2;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+TEST_CASE("the example material and light render under the example integrator; the AOVs sum to the beauty") {
+    const Film film = renderExample(AovSet(classesSet()));
+    CHECK(test::finiteNonNegative(film));
+    CHECK(test::worstSumError(film) <= 1.0);
+    // Under the spot (the image's centre) the floor is lit, outside its cone (a corner) it is black.
+    const Rgb centre = film.at(0, 16, 16), corner = film.at(0, 0, 0);
+    CHECK(centre.g > 0.0f);
+    CHECK(corner == Rgb{0.0f});
+}
+
+// Straight below the spot, wo = wi = the normal: Oren-Nayar's B term vanishes (theta = 0), so the
+// floor reflects kd A / pi times the irradiance pi I / d^2 (lights/point_light.h's radiant intensity
+// pi I): radiance kd A I / d^2, A = 1 - s / (2 (s + 0.33)), s = sigma^2 in radians.
+TEST_CASE("straight below the spot, the rough floor's radiance is kd A I / d^2") {
+    const Film film = renderExample(AovSet(classesSet()));
+    const double sigma = 30.0 * M_PI / 180.0, s = sigma * sigma;
+    const double a = 1.0 - s / (2.0 * (s + 0.33));
+    const double expected = 0.8 * a * 3.0 / (2.0 * 2.0);
+    CHECK(film.at(0, 16, 16).g == doctest::Approx(expected).epsilon(0.01));
+}
+
+}  // namespace
+}  // namespace lightpath
