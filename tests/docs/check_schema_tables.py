@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 # The types whose tables scenes/README.md shows.
-TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point")]
+TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point"), ("shape", "disk")]
 
 
 def main():
