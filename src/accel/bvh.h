@@ -17,31 +17,11 @@
 
 #include "accel/simd.h"
 #include "accel/simd_path.h"
+#include "geometry/bounds.h"
 #include "math/ray.h"
 #include "math/types.h"
 
 namespace lightpath {
-
-struct Bounds {
-    Vec3 lo{std::numeric_limits<float>::infinity()};
-    Vec3 hi{-std::numeric_limits<float>::infinity()};
-
-    void grow(const Vec3& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    void grow(const Bounds& b) {
-        lo = glm::min(lo, b.lo);
-        hi = glm::max(hi, b.hi);
-    }
-    bool empty() const { return lo.x > hi.x; }
-    Vec3 centroid() const { return 0.5f * (lo + hi); }
-    float halfArea() const {
-        if (empty()) return 0.0f;
-        const Vec3 d = hi - lo;
-        return d.x * d.y + d.y * d.z + d.z * d.x;
-    }
-};
 
 // What the builder needs of a primitive: its box and the id the caller's test understands.
 struct BvhPrimitive {

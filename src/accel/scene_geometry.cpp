@@ -51,9 +51,11 @@ bool embreeAvailable() {
 
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
-                             std::vector<TriangleNormals> vertexNormals, unsigned buildThreads)
+                             std::vector<TriangleNormals> vertexNormals, unsigned buildThreads,
+                             std::vector<ShapeRecord> shapes)
     : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
-      vertexNormals_(std::move(vertexNormals)), numerics_(numerics), accelerator_(accelerator) {
+      shapes_(std::move(shapes)), vertexNormals_(std::move(vertexNormals)), numerics_(numerics),
+      accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
         throw std::invalid_argument("vertex normals: expected one entry per triangle");
     if (accelerator_ == Accelerator::BruteForce) return;
@@ -62,17 +64,25 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
     const auto started = std::chrono::steady_clock::now();
     // The boxes are computed by the build's threads as it reads them (no list of them all), and
     // the leaves' triangle blocks filled on as many: on one thread they would cap its scaling.
-    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
-    const std::size_t primitiveCount = spheres_.size() + (accelerator_ == Accelerator::Bvh ? triangles_.size() : 0);
+    // The BVH's primitives: spheres, then registered shapes, then (Bvh only) triangles.
+    const std::uint32_t firstTriangle = this->firstTriangle();
+    const auto analytic = static_cast<std::uint32_t>(spheres_.size() + shapes_.size());
+    const std::size_t primitiveCount = analytic + (accelerator_ == Accelerator::Bvh ? triangles_.size() : 0);
     bvh_ = Bvh(
         primitiveCount,
         [&](std::size_t begin, std::size_t end, BvhPrimitive* out) {
             for (std::size_t i = begin; i < end; ++i) {
                 const auto index = static_cast<std::uint32_t>(i);
-                *out++ = index < spheres_.size()
-                             ? BvhPrimitive{sphereBounds(spheres_[index]), index}
-                             : BvhPrimitive{triangleBounds(triangles_[index - spheres_.size()]),
-                                            firstTriangle + index - static_cast<std::uint32_t>(spheres_.size())};
+                if (index < spheres_.size()) {
+                    *out++ = BvhPrimitive{sphereBounds(spheres_[index]), index};
+                } else if (index < analytic) {
+                    const auto shapeIndex = index - static_cast<std::uint32_t>(spheres_.size());
+                    const ShapeRecord& shape = shapes_[shapeIndex];
+                    *out++ = BvhPrimitive{padded(shape.ops->bounds(shape)), shapeId(shapeIndex)};
+                } else {
+                    *out++ = BvhPrimitive{triangleBounds(triangles_[index - analytic]),
+                                          firstTriangle + index - analytic};
+                }
             }
         },
         buildThreads);
@@ -88,7 +98,7 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
                 if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
                     pack.set(lane, triangles_[ids[slot] - firstTriangle]);
                 else
-                    pack.clear(lane);  // padding, or a sphere: never tested as a triangle
+                    pack.clear(lane);  // padding, a sphere or a registered shape: never tested as a triangle
             }
         });
     }
@@ -116,13 +126,15 @@ float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const 
     id -= static_cast<std::uint32_t>(spheres_.size());
     if (id < planes_.size()) return intersectPlane(ray, planes_[id], ray.tMin);
     id -= static_cast<std::uint32_t>(planes_.size());
+    if (id < shapes_.size()) return shapes_[id].ops->intersect(ray, shapes_[id], ray.tMin, numerics_);
+    id -= static_cast<std::uint32_t>(shapes_.size());
     const Triangle& t = triangles_[id];
     return numerics_.triangle == TriangleTest::Watertight ? intersectTriangle(ray, t, ray.tMin)
                                                           : intersectTriangleMollerTrumbore(ray, t, ray.tMin);
 }
 
 std::uint32_t SceneGeometry::ignoredTriangle(const Ray& ray) const {
-    const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+    const std::uint32_t firstTriangle = this->firstTriangle();
     return ray.ignoredPrimitive != kNoPrimitive && ray.ignoredPrimitive >= firstTriangle
                ? ray.ignoredPrimitive - firstTriangle
                : kNoPrimitive;
@@ -134,9 +146,9 @@ template <typename Keep>
                                   std::uint32_t count, Keep keep) const {
     const std::uint32_t* ids = bvh_.slotIds().data() + firstSlot;
     int triangleLanes = (1 << count) - 1;
-    if (!spheres_.empty() || leafTriangles_.empty()) {
-        // Spheres (and with Embree, only spheres) share the BVH: test them one by one.
-        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+    if (!spheres_.empty() || !shapes_.empty() || leafTriangles_.empty()) {
+        // Spheres and registered shapes (with Embree, only they) share the BVH: test them one by one.
+        const std::uint32_t firstTriangle = this->firstTriangle();
         for (std::uint32_t lane = 0; lane < count; ++lane) {
             if (ids[lane] >= firstTriangle && !leafTriangles_.empty()) continue;
             triangleLanes &= ~(1 << lane);
@@ -205,7 +217,7 @@ std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, co
     for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
     if (embree_) {
-        const auto firstTriangle = static_cast<std::uint32_t>(spheres_.size() + planes_.size());
+        const std::uint32_t firstTriangle = this->firstTriangle();
         const std::uint32_t ignored = ignoredTriangle(ray);
         float t = 0.0f;
         std::uint32_t index = 0;
@@ -286,6 +298,14 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id,
         return hit;
     }
     id -= static_cast<std::uint32_t>(planes_.size());
+    if (id < shapes_.size()) {
+        const ShapeRecord& shape = shapes_[id];
+        hit.shape = ShapeKind::Registered;
+        hit.object = shape.object;
+        shape.ops->describe(shape, hit);
+        return hit;
+    }
+    id -= static_cast<std::uint32_t>(shapes_.size());
     const Triangle& tri = triangles_[id];
     hit.shape = ShapeKind::Triangle;
     hit.normal = triangleNormal(tri);

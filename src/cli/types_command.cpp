@@ -10,6 +10,7 @@
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "scene/light_type.h"
+#include "scene/shape_type.h"
 #include "materials/material_type.h"
 #include "scene/spelling.h"
 #include "schema/markdown.h"
@@ -41,6 +42,7 @@ const std::vector<Family>& families() {
     static const std::vector<Family> list = {
         {"material", "[materials.NAME] type = \"...\"", schemasOf<MaterialType>},
         {"light", "[[lights]] type = \"...\"", schemasOf<LightType>},
+        {"shape", "[[SECTION]] of a shape kind, e.g. [[disks]]", schemasOf<ShapeType>},
         {"integrator", "render --integrator ...", schemasOf<IntegratorInfo>},
         {"preset", "render --aovs ..., lpe check --set ..., serve's AOV menu", schemasOf<AovPreset>},
     };
@@ -125,8 +127,8 @@ void runTypes(const TypesOptions& options) {
 void addTypesCommand(CLI::App& app) {
     auto options = std::make_shared<TypesOptions>();
     CLI::App* command = app.add_subcommand(
-        "types", "List the material, light, integrator and AOV preset types and, for one, its parameters and events");
-    command->add_option("family", options->family, "material, light, integrator or preset");
+        "types", "List the material, light, shape, integrator and AOV preset types and, for one, its parameters and events");
+    command->add_option("family", options->family, "material, light, shape, integrator or preset");
     command->add_option("name", options->name, "a type of that family, e.g. phong");
     command->add_flag("--markdown", options->markdown, "print the type's parameter table as scenes/README.md shows it");
     command->footer("Examples:\n  lightpath types\n  lightpath types light\n  lightpath types material phong --markdown");

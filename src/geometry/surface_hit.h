@@ -5,7 +5,8 @@
 
 namespace lightpath {
 
-enum class ShapeKind : std::uint8_t { Sphere, Plane, Triangle };
+// Registered: a kind of the shape table (geometry/shape.h), which its ShapeOps describe.
+enum class ShapeKind : std::uint8_t { Sphere, Plane, Triangle, Registered };
 
 // The closest intersection of a ray with the scene.
 struct SurfaceHit {
@@ -15,7 +16,7 @@ struct SurfaceHit {
     Vec3 shadingNormal{0.0f};  // unit normal for shading: interpolated vertex normals, else `normal`
     std::uint32_t object = 0;
     ShapeKind shape = ShapeKind::Sphere;
-    std::uint32_t primitive = 0;  // scene-wide primitive id: spheres, then planes, then triangles
+    std::uint32_t primitive = 0;  // scene-wide primitive id (SceneGeometry's codec)
 };
 
 }  // namespace lightpath

@@ -83,6 +83,11 @@ std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane) {
         grow(s.center - Vec3{s.radius});
         grow(s.center + Vec3{s.radius});
     }
+    for (const ShapeRecord& s : scene.shapes) {
+        const Bounds box = s.ops->bounds(s);
+        grow(box.lo);
+        grow(box.hi);
+    }
     for (const Triangle& t : scene.triangles) {
         grow(t.a);
         grow(t.b);
@@ -124,6 +129,12 @@ std::size_t RadiosityMesh::countPatches(const Scene& scene, const SceneGeometry&
     };
     for (const Plane& p : geometry.planes())
         for (const Triangle& t : clipPlane(scene, p)) addTriangle(t);
+    std::vector<Triangle> pieces;
+    for (const ShapeRecord& shape : geometry.shapes()) {
+        pieces.clear();
+        shape.ops->tessellate(shape, patchSize, pieces);
+        for (const Triangle& t : pieces) addTriangle(t);
+    }
     for (const Triangle& t : geometry.triangles()) addTriangle(t);
     return count;
 }
@@ -153,6 +164,16 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
         const Plane& plane = geometry.planes()[i];
         for (const Triangle& t : clipPlane(scene, plane))
             addTriangle(ShapeKind::Plane, geometry.planeId(i), plane.object, t.a, t.b, t.c, welder);
+    }
+    // A registered kind's patches are its tessellation's triangles, each subdivided as a triangle.
+    std::vector<Triangle> pieces;
+    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
+        begin(geometry.shapeId(i));
+        const ShapeRecord& shape = geometry.shapes()[i];
+        pieces.clear();
+        shape.ops->tessellate(shape, patchSize, pieces);
+        for (const Triangle& t : pieces)
+            addTriangle(ShapeKind::Registered, geometry.shapeId(i), shape.object, t.a, t.b, t.c, welder);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) {
         begin(geometry.triangleId(i));
@@ -254,15 +275,29 @@ PatchPoint RadiosityMesh::samplePoint(std::uint32_t patch, Vec2 u) const {
 
 std::optional<PatchLookup> RadiosityMesh::lookup(const SurfaceHit& hit) const {
     if (hit.primitive + 1 >= sourceStart_.size()) return std::nullopt;
-    for (std::uint32_t s = sourceStart_[hit.primitive]; s < sourceStart_[hit.primitive + 1]; ++s) {
+    const std::uint32_t first = sourceStart_[hit.primitive], last = sourceStart_[hit.primitive + 1];
+    for (std::uint32_t s = first; s < last; ++s) {
         const Source& source = sources_[s];
         if (source.shape == ShapeKind::Sphere) return lookupSphere(source, hit.point);
         if (auto found = lookupTriangle(source, hit.point)) return found;
     }
-    return std::nullopt;
+    // A curved outline's hit may lie just outside its tessellation (between a chord and the
+    // arc): the nearest piece's patch, its coordinates clamped onto it.
+    if (first == last || sources_[first].shape != ShapeKind::Registered) return std::nullopt;
+    std::uint32_t nearest = first;
+    float nearestDistance = std::numeric_limits<float>::infinity();
+    for (std::uint32_t s = first; s < last; ++s) {
+        const Source& source = sources_[s];
+        const float distance = glm::length(hit.point - (source.a + source.b + source.c) / 3.0f);
+        if (distance < nearestDistance) {
+            nearestDistance = distance;
+            nearest = s;
+        }
+    }
+    return lookupTriangle(sources_[nearest], hit.point, false);
 }
 
-std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, const Vec3& point) const {
+std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, const Vec3& point, bool strict) const {
     // The point's coordinates (s, t) along the edges b - a and c - a (least squares, so a point
     // slightly off the plane still projects onto it).
     const Vec3 e1 = source.b - source.a, e2 = source.c - source.a, d = point - source.a;
@@ -272,7 +307,8 @@ std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, c
     if (!(denominator > 0.0)) return std::nullopt;
     double s = (d11 * d20 - d01 * d21) / denominator, t = (d00 * d21 - d01 * d20) / denominator;
     constexpr double kSlack = 1e-4;  // hits on an edge, within roundoff
-    if (source.shape == ShapeKind::Plane && (s < -kSlack || t < -kSlack || s + t > 1.0 + kSlack)) return std::nullopt;
+    const bool oneOfMany = source.shape == ShapeKind::Plane || source.shape == ShapeKind::Registered;
+    if (strict && oneOfMany && (s < -kSlack || t < -kSlack || s + t > 1.0 + kSlack)) return std::nullopt;
     s = std::max(s, 0.0);
     t = std::max(t, 0.0);
     if (s + t > 1.0) {

@@ -3,7 +3,8 @@
 // elements of about one patch size. Triangles are subdivided uniformly into n^2 sub-triangles
 // (n = ceil(longest edge / size)); spheres into equal-area cells of constant cos(theta) and phi
 // bands (Archimedes: bands of equal height have equal area); infinite planes are first clipped to
-// a rectangle over the scene's bounds. Each patch has two sides, each its own unknown.
+// a rectangle over the scene's bounds; registered kinds (geometry/shape.h) are first tessellated.
+// Each patch has two sides, each its own unknown.
 //
 // The mesh also answers the display's question: which patch, and which of its vertices with what
 // weights, lies under a hit point (Gouraud interpolation of vertex radiosities).
@@ -80,7 +81,8 @@ private:
     void addTriangle(ShapeKind shape, std::uint32_t primitive, std::uint32_t object, const Vec3& a, const Vec3& b,
                      const Vec3& c, VertexWelder& welder);
     void addSphere(std::uint32_t sphereIndex);
-    std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point) const;
+    // strict: nullopt for a point outside the source's triangle (when its primitive has several).
+    std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict = true) const;
     PatchLookup lookupSphere(const Source& source, const Vec3& point) const;
 
     const SceneGeometry& geometry_;

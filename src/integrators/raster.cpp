@@ -19,6 +19,7 @@ ZBuffer::ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera)
     // The lecture's loops, in the rasteriser's order: for each primitive, for each pixel it covers.
     for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i) rasteriseSphere(i);
     for (std::uint32_t i = 0; i < geometry.planes().size(); ++i) rasterisePlane(i);
+    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) rasteriseShape(i);
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) rasteriseTriangle(i);
 }
 
@@ -129,6 +130,30 @@ void ZBuffer::rasteriseSphere(std::uint32_t index) {
             coverTriangle(p00, p10, p11, fragment);
             coverTriangle(p00, p11, p01, fragment);
         }
+    }
+}
+
+void ZBuffer::rasteriseShape(std::uint32_t index) {
+    // Any registered kind: its bounding box's 12 triangles cover every pixel it can cover, and
+    // each such pixel takes the shape's own hit under its centre, once (as for sphere impostors):
+    // exactly ray casting's first hits, with no facets to approximate a curved outline.
+    const ShapeRecord& shape = geometry_.shapes()[index];
+    const std::uint32_t id = geometry_.shapeId(index);
+    const Bounds box = shape.ops->bounds(shape);
+    const auto corner = [&](int i) {
+        return Vec3{i & 1 ? box.hi.x : box.lo.x, i & 2 ? box.hi.y : box.lo.y, i & 4 ? box.hi.z : box.lo.z};
+    };
+    const auto fragment = [&](int x, int y, float, const Vec3&) {
+        if (fragments_[this->index(x, y)].primitive == id) return;
+        const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+        const float t = geometry_.intersectPrimitive(ray, id);
+        if (t != kNoHit) test(x, y, t, id, Vec3{0.0f});
+    };
+    // Each face of the box as two triangles: the faces x, y, z = lo and = hi.
+    constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+    for (const auto& face : kFaces) {
+        coverTriangle(corner(face[0]), corner(face[1]), corner(face[2]), fragment);
+        coverTriangle(corner(face[0]), corner(face[2]), corner(face[3]), fragment);
     }
 }
 

@@ -74,6 +74,7 @@ private:
     void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const;
     void rasteriseSphere(std::uint32_t index);
     void rasterisePlane(std::uint32_t index);
+    void rasteriseShape(std::uint32_t index);
     void rasteriseTriangle(std::uint32_t index);
     // The depth test: keeps the fragment if it is nearer than what the pixel holds.
     void test(int x, int y, float t, std::uint32_t primitive, const Vec3& barycentrics);

@@ -19,6 +19,8 @@ constexpr double kOnSphereUlps = 8.0;
 float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
     const auto ref = geometry.decodePrimitive(primitive);
     if (ref.shape == ShapeKind::Sphere) return static_cast<float>(surfaceArea(geometry.spheres()[ref.index]));
+    if (const ShapeRecord* shape = geometry.registeredShape(primitive))
+        return static_cast<float>(shape->ops->area(*shape));
     const Triangle& t = geometry.triangles()[ref.index];
     // In float while its squared cross product is a normal float (as every shipped mesh's is, so
     // their areas, and images, stay bit-identical), else in double: a sliver's area is small, not 0.
@@ -28,23 +30,32 @@ float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
     return static_cast<float>(surfaceArea(t));
 }
 
+// Emits from both sides of its surface: a sphere, or a registered kind that encloses a volume.
+bool emitsTwoSided(const SceneGeometry& geometry, std::uint32_t primitive) {
+    if (geometry.decodePrimitive(primitive).shape == ShapeKind::Sphere) return true;
+    const ShapeRecord* shape = geometry.registeredShape(primitive);
+    return shape != nullptr && shape->ops->closed;
+}
+
 }  // namespace
 
 AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const SceneGeometry& geometry,
                                  const std::vector<std::uint32_t>& primitives)
     : Light(event), emission_(emission), geometry_(geometry) {
-    std::size_t sphereCount = 0;
+    std::size_t twoSidedCount = 0;
     for (std::uint32_t primitive : primitives) {
         const float area = shapeArea(geometry, primitive);
         if (!(area > 0.0f)) continue;  // a zero-area triangle emits nothing and cannot be sampled
         area_ += area;
         shapes_.push_back({primitive, area_});
-        sphereCount += geometry.decodePrimitive(primitive).shape == ShapeKind::Sphere;
+        twoSidedCount += emitsTwoSided(geometry, primitive);
     }
-    if (sphereCount != 0 && sphereCount != shapes_.size())
-        throw std::invalid_argument("an area light is spheres or triangles, not both");
-    spheres_ = sphereCount != 0;
-    if (shapes_.size() == 1 && spheres_) sphere_ = geometry.spheres()[geometry.decodePrimitive(shapes_[0].primitive).index];
+    if (twoSidedCount != 0 && twoSidedCount != shapes_.size())
+        throw std::invalid_argument("an area light is closed shapes (spheres) or open ones (triangles), not both");
+    spheres_ = twoSidedCount != 0;
+    const bool oneSphere =
+        shapes_.size() == 1 && geometry.decodePrimitive(shapes_[0].primitive).shape == ShapeKind::Sphere;
+    if (oneSphere) sphere_ = geometry.spheres()[geometry.decodePrimitive(shapes_[0].primitive).index];
     sampleable_ = area_ >= kMinSampledEmitterArea;
 }
 
@@ -84,6 +95,10 @@ AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
         const Sphere& sphere = geometry_.spheres()[ref.index];
         const Vec3 n = sampleUniformSphere(u);
         return {sphere.center + sphere.radius * n, n};
+    }
+    if (const ShapeRecord* shape = geometry_.registeredShape(it->primitive)) {
+        const AreaSample p = shape->ops->sampleArea(*shape, u);
+        return {p.point, p.normal};
     }
     const Triangle& t = geometry_.triangles()[ref.index];
     const Vec3 b = sampleUniformTriangle(u);
@@ -171,7 +186,7 @@ float AreaLightSource::pdfEmissionDirection(const Vec3& normal, const Vec3& dire
 }
 
 Rgb AreaLightSource::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
-    if (hit.shape != ShapeKind::Sphere && glm::dot(hit.normal, towardViewer) <= 0.0f) return Rgb{0.0f};
+    if (!spheres_ && glm::dot(hit.normal, towardViewer) <= 0.0f) return Rgb{0.0f};
     return emission_;
 }
 

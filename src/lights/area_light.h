@@ -54,7 +54,7 @@ private:
     std::vector<Shape> shapes_;
     float area_ = 0.0f;
     bool sampleable_ = false;
-    bool spheres_ = false;          // its shapes are spheres, which emit on both sides
+    bool spheres_ = false;          // its shapes are closed (spheres): they emit on both sides
     std::optional<Sphere> sphere_;  // the light is this one sphere: cone-sampled from outside
 };
 

@@ -16,6 +16,8 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
     auto emits = [&](std::uint32_t object) { return emissionEventOf(scene, object).has_value(); };
     for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i)
         if (emits(geometry.spheres()[i].object)) primitives[geometry.spheres()[i].object].push_back(geometry.sphereId(i));
+    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i)
+        if (emits(geometry.shapes()[i].object)) primitives[geometry.shapes()[i].object].push_back(geometry.shapeId(i));
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i)
         if (emits(geometry.triangles()[i].object)) primitives[geometry.triangles()[i].object].push_back(geometry.triangleId(i));
     for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/shape.h"
 #include "geometry/shapes.h"
 #include "math/types.h"
 #include "scene/camera.h"
@@ -12,8 +13,8 @@
 
 namespace lightpath {
 
-// One named thing in the scene file: a sphere, a plane, a triangle, or the part of a mesh with
-// one material. Its label in light paths is its name, or its material's name when it has none.
+// One named thing in the scene file: a sphere, a plane, a shape of a registered kind (a disk), a
+// triangle, or the part of a mesh with one material. Its label in light paths is its name, or its material's name when it has none.
 struct SceneObject {
     std::string name;
     std::uint32_t material = 0;
@@ -35,6 +36,7 @@ struct Scene {
 
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
+    std::vector<ShapeRecord> shapes;  // of the registered kinds (geometry/shape.h), e.g. disks
     std::vector<Triangle> triangles;
     // Empty when no triangle has vertex normals, else one entry per triangle (meshes' `vn`).
     std::vector<TriangleNormals> triangleNormals;

@@ -1,15 +1,18 @@
 #pragma once
 // What a [[lights]] type may add to the scene being loaded: a light without a shape (point), or an
-// emissive object and its shapes (quad, sphere). An interface, so light types (src/lights/) add
-// to the scene without knowing the loader; the loader implements it.
+// emissive object and its shapes (quad, sphere); and what a shape type (src/shapes/) adds: an
+// object and its shape. An interface, so types add to the scene without knowing the loader; the
+// loader implements it.
 #include <cstdint>
 #include <optional>
 #include <string>
 
+#include "geometry/shape.h"
 #include "geometry/shapes.h"
 #include "math/types.h"
 #include "scene/light.h"
 #include "schema/format.h"
+#include "schema/parameter_values.h"
 
 namespace lightpath {
 
@@ -23,6 +26,12 @@ public:
     virtual std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) = 0;
     virtual void addSphere(const Sphere& sphere) = 0;
     virtual void addTriangle(const Triangle& triangle) = 0;
+    // A shape declaration's object, from its `name` (optional) and `material` (a material of the
+    // scene, else a located error at `material`). Returns the object index its shapes store.
+    virtual std::uint32_t addShapeObject(const ParameterValues& values) = 0;
+    // The emission of object `object`'s material (for tooSmallToSampleWarning).
+    virtual Rgb emissionOf(std::uint32_t object) const = 0;
+    virtual void addShape(const ShapeRecord& shape) = 0;
     // A located warning ("FILE:LINE:COL: KEY: ..."), printed by the command line.
     virtual void warn(std::string located) = 0;
 };

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "scene/light_type.h"
+#include "scene/shape_type.h"
 #include "materials/material_type.h"
 #include "materials/phong_material.h"
 #include "schema/schema_error.h"
@@ -122,20 +123,24 @@ void readParameter(const TomlValue& value, const Parameter& parameter, Parameter
     values.locate(name, value.position(), value.keyPath());
 }
 
+// Whether a declaration names its type with a `type` key (materials, lights) or by its section
+// (shapes: `[[disks]]`).
+enum class TypeKey : bool { allowed, absent };
+
 // The keys a declaration of `schema` may have, in the order messages list them: a leading `name`,
-// then `type`, then the rest.
-std::vector<std::string_view> allowedKeys(const TypeSchema& schema) {
+// then `type` (when allowed), then the rest.
+std::vector<std::string_view> allowedKeys(const TypeSchema& schema, TypeKey typeKey) {
     std::vector<std::string_view> keys;
     for (const Parameter& p : schema.parameters) keys.push_back(p.name);
     const auto at = !keys.empty() && keys.front() == "name" ? keys.begin() + 1 : keys.begin();
-    keys.insert(at, "type");
+    if (typeKey == TypeKey::allowed) keys.insert(at, "type");
     return keys;
 }
 
 // A declaration's values: every key allowed by its type's schema, each read and checked, defaults
 // for the rest; a missing required key is an error at the table.
-ParameterValues readValues(const TomlTable& table, const TypeSchema& schema) {
-    table.allowOnly(allowedKeys(schema));
+ParameterValues readValues(const TomlTable& table, const TypeSchema& schema, TypeKey typeKey = TypeKey::allowed) {
+    table.allowOnly(allowedKeys(schema, typeKey));
     ParameterValues values(schema);
     values.locateDeclaration(table.position(), table.keyPath());
     for (const Parameter& parameter : schema.parameters) {
@@ -205,6 +210,11 @@ public:
     }
     void addSphere(const Sphere& sphere) override { scene_.spheres.push_back(sphere); }
     void addTriangle(const Triangle& triangle) override { scene_.triangles.push_back(triangle); }
+    std::uint32_t addShapeObject(const ParameterValues& values) override;
+    Rgb emissionOf(std::uint32_t object) const override {
+        return scene_.materials[scene_.objects[object].material]->emission;
+    }
+    void addShape(const ShapeRecord& shape) override { scene_.shapes.push_back(shape); }
     void warn(std::string located) override { scene_.warnings.push_back(std::move(located)); }
 
 private:
@@ -233,6 +243,30 @@ std::uint32_t findMaterial(const TomlValue& reference,
     }
     std::sort(known.begin(), known.end());
     reference.fail(unknownNameMessage("material", name, known, ListKnown::always));
+}
+
+std::uint32_t LoadingScene::addShapeObject(const ParameterValues& values) {
+    SceneObject object;
+    if (values.has("name")) object.name = values.text("name");
+    const std::string& material = values.text("material");
+    const auto named = [&](const MaterialSlot& m) { return m->name == material; };
+    const auto found = std::find_if(scene_.materials.begin(), scene_.materials.end(), named);
+    if (found == scene_.materials.end()) {
+        std::vector<std::string> known;
+        for (const MaterialSlot& m : scene_.materials) known.push_back(m->name);
+        std::sort(known.begin(), known.end());
+        values.fail("material", unknownNameMessage("material", material, known, ListKnown::always));
+    }
+    object.material = static_cast<std::uint32_t>(found - scene_.materials.begin());
+    scene_.objects.push_back(object);
+    return static_cast<std::uint32_t>(scene_.objects.size() - 1);
+}
+
+// A [[SECTION]] of a registered shape kind, read through its schema.
+void readShape(const TomlTable& table, const ShapeType& type, Scene& scene) {
+    const ParameterValues values = readValues(table, type.schema, TypeKey::absent);
+    LoadingScene builder(scene);
+    asSceneError([&] { type.addTo(values, builder); });
 }
 
 // Every shape is one scene object: its name (optional) and material are read here; the returned
@@ -455,7 +489,12 @@ Scene loadScene(const std::filesystem::path& path) {
 Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path) {
     const toml::table document = parseText(text, path);
     const TomlTable root(document, "");
-    root.allowOnly({"camera", "world", "materials", "lights", "spheres", "planes", "triangles", "meshes"});
+    // The registered shape kinds' sections come after the planes: their objects are numbered there.
+    std::vector<std::string_view> sections{"camera", "world", "materials", "lights", "spheres", "planes"};
+    const std::vector<const ShapeType*> shapeTypes = ShapeRegistry::instance().entries();
+    for (const ShapeType* type : shapeTypes) sections.push_back(type->section);
+    sections.insert(sections.end(), {"triangles", "meshes"});
+    root.allowOnly(sections);
 
     Scene scene;
     scene.source = path;
@@ -465,13 +504,16 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
         scene.materials = readMaterials(materials->table());
     }
     forEachSection(root, "lights", [&](const TomlTable& light) { readLight(light, scene); });
-    // Objects are numbered spheres first, then planes, then triangles, each in file order.
+    // Objects are numbered spheres first, then planes, then each registered shape kind's (by rank),
+    // then triangles, each in file order.
     forEachSection(root, "spheres", [&](const TomlTable& sphere) {
         scene.spheres.push_back(readSphere(sphere, scene));
     });
     forEachSection(root, "planes", [&](const TomlTable& plane) {
         scene.planes.push_back(readPlane(plane, scene));
     });
+    for (const ShapeType* type : shapeTypes)
+        forEachSection(root, type->section, [&](const TomlTable& shape) { readShape(shape, *type, scene); });
     forEachSection(root, "triangles", [&](const TomlTable& triangle) {
         scene.triangles.push_back(readTriangle(triangle, scene));
     });

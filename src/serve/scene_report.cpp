@@ -34,6 +34,10 @@ json describeScene(const Scene& scene, const std::string& scenePath) {
         high[object] = glm::max(high[object], b);
     };
     for (const Sphere& s : scene.spheres) grow(s.object, s.center - Vec3{s.radius}, s.center + Vec3{s.radius});
+    for (const ShapeRecord& s : scene.shapes) {
+        const Bounds box = s.ops->bounds(s);
+        grow(s.object, box.lo, box.hi);
+    }
     for (const Triangle& t : scene.triangles) {
         grow(t.object, glm::min(t.a, glm::min(t.b, t.c)), glm::max(t.a, glm::max(t.b, t.c)));
     }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scene/light_type.h"
+#include "scene/shape_type.h"
 #include "materials/material_type.h"
 #include "scene/scene_loader.h"
 #include "schema/format.h"
@@ -23,6 +24,7 @@ namespace {
 // never heard of is checked as soon as it registers.
 constexpr int kDrawsPerMaterialType = 4;
 constexpr int kDrawsPerLightType = 2;
+constexpr int kDrawsPerShapeType = 3;
 constexpr int kTriesPerDraw = 20;  // draws a type refuses as a combination (values.fail) are redrawn
 
 using Value = std::variant<double, Vec3, bool>;
@@ -236,6 +238,31 @@ material = "lamp"
                 }
             }
             if (!c) throw std::runtime_error("conformance: light type \"" + std::string(type->schema.name) +
+                                             "\" refused " + std::to_string(kTriesPerDraw) + " draws within its schema");
+            visit(*c);
+        }
+    }
+    // Every registered shape kind as an emitting object.
+    forEachShapeCase([&](const ShapeCase& c) { visit(LightCase{c.name, c.scene}); });
+}
+
+void forEachShapeCase(const std::function<void(const ShapeCase&)>& visit) {
+    for (const ShapeType* type : ShapeRegistry::instance().entries()) {
+        std::mt19937 rng(seedOf(type->schema.name));
+        for (int d = 0; d < kDrawsPerShapeType; ++d) {
+            std::optional<ShapeCase> c;
+            for (int t = 0; t < kTriesPerDraw && !c; ++t) {
+                const std::vector<Setting> settings = drawSettings(type->schema, rng);
+                std::string toml = "[materials.lamp]\nemission = 2\n[[" + std::string(type->section) +
+                                   "]]\nmaterial = \"lamp\"\n";
+                for (const Setting& s : settings) toml += std::string(s.key) + " = " + describe(s.value) + "\n";
+                try {
+                    Scene scene = loadSceneFromText(std::string(kCamera) + toml, "conformance-shape.toml");
+                    if (scene.shapes.size() == 1) c = ShapeCase{nameOf(type->schema.name, settings), std::move(scene)};
+                } catch (const SceneError&) {  // a combination the type refuses
+                }
+            }
+            if (!c) throw std::runtime_error("conformance: shape type \"" + std::string(type->schema.name) +
                                              "\" refused " + std::to_string(kTriesPerDraw) + " draws within its schema");
             visit(*c);
         }

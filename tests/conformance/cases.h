@@ -41,6 +41,16 @@ MaterialClaims materialClaims(const MaterialType& type, const ParameterValues& v
 void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit);
 void forEachLightCase(const std::function<void(const LightCase&)>& visit);
 
+// One shape of a registered kind (scene/shape_type.h), drawn within its schema, in a scene of its
+// own whose material emits: the shape checks take `shape`, and the light checks the scene (every
+// kind can be an emitter), so a kind gets both by registering.
+struct ShapeCase {
+    std::string name;
+    Scene scene;
+    const ShapeRecord& shape() const { return scene.shapes.front(); }
+};
+void forEachShapeCase(const std::function<void(const ShapeCase&)>& visit);
+
 }  // namespace lightpath::conformance
 
 namespace lightpath::conformance {

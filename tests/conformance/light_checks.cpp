@@ -44,7 +44,7 @@ bool estimates(const std::vector<double>& samples, double expected, double& p) {
 
 LightWorld::LightWorld(const Scene& s)
     : scene(s),
-      geometry(s.spheres, s.planes, s.triangles, {}, Accelerator::Bvh, s.triangleNormals),
+      geometry(s.spheres, s.planes, s.triangles, {}, Accelerator::Bvh, s.triangleNormals, 0, s.shapes),
       lights(s, geometry) {}
 
 CheckResult checkLightDensity(const Light& light, const LightWorld& world, const Vec3& receiver) {

@@ -17,7 +17,8 @@ struct RenderWorld {
                          const RadiosityOptions& radiosity = {}, int threads = 0)
         : scene(std::move(s)),
           aovs(std::move(set)),
-          geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh, scene.triangleNormals),
+          geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh, scene.triangleNormals, 0,
+                   scene.shapes),
           symbols(scene, aovs.automaton()),
           analysis(scene),
           lights(scene, geometry),

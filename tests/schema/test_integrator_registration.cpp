@@ -7,6 +7,7 @@
 
 #include "integrators/registry.h"
 #include "scene/light_type.h"
+#include "scene/shape_type.h"
 #include "materials/material_type.h"
 
 namespace lightpath {
@@ -18,6 +19,7 @@ TEST_CASE("every shipped type is registered in the render tests") {
     CHECK(std::string(findIntegrator("radiosity")->schema.events) == "ED*L");
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
+    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"disk"});
 }
 
 }  // namespace lightpath

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene/light_type.h"
+#include "scene/shape_type.h"
 #include "materials/material_type.h"
 #include "schema/markdown.h"
 #include "schema/parameter_values.h"
@@ -110,9 +111,10 @@ TEST_CASE("a registry lists by rank then name and refuses a duplicate") {
     CHECK_THROWS_AS(registry.add({{"test", "a", "", {}, ""}, 2}), std::logic_error);
 }
 
-TEST_CASE("every shipped material and light type is registered in this binary") {
+TEST_CASE("every shipped material, light and shape type is registered in this binary") {
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
+    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"disk"});
 }
 
 }  // namespace

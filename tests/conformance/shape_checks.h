@@ -1,0 +1,24 @@
+#pragma once
+// The standard checks every registered shape kind gets (docs/extending.md), on shapes drawn
+// within its schema (cases.h, forEachShapeCase): intersect against area by the Cauchy-Crofton
+// formula (isotropic uniform lines through a ball of radius R cross a surface of area A on average
+// A / (2 pi R^2) times), area samples uniform (the share of samples in a half-space against the
+// share of crossings there), samples and hits on the surface with unit normals, and the
+// tessellation's area converging to the area. Statistical checks use fixed seeds and allow 5
+// standard errors.
+#include "check_result.h"
+#include "geometry/shape.h"
+
+namespace lightpath::conformance {
+
+// intersect() against area(): crossings counted along many lines, and every hit inside bounds().
+CheckResult checkShapeCrossings(const ShapeRecord& shape);
+// sampleArea() against intersect(): the share of samples in random half-spaces is the share of
+// the surface there (by crossings), and a ray aimed at a sample from outside meets the surface there.
+CheckResult checkShapeSampling(const ShapeRecord& shape);
+// describe(): unit normals, the point on the surface (a short ray along the normal finds it).
+CheckResult checkShapeHits(const ShapeRecord& shape);
+// tessellate(): its area within 1% of area() at a fine edge length, closer than at a coarse one.
+CheckResult checkShapeTessellation(const ShapeRecord& shape);
+
+}  // namespace lightpath::conformance

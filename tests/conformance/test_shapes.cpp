@@ -1,0 +1,36 @@
+// Every registered shape kind's cases (cases.cpp) through every shape check (shape_checks.h). The
+// light checks run the same cases as emitting objects (test_lights.cpp).
+#include <doctest/doctest.h>
+
+#include "cases.h"
+#include "shape_checks.h"
+#include "scene/shape_type.h"
+
+namespace lightpath::conformance {
+namespace {
+
+template <typename Check>
+void forEveryShape(Check&& check) {
+    int shapes = 0;
+    forEachShapeCase([&](const ShapeCase& c) {
+        ++shapes;
+        const CheckResult result = check(c.shape());
+        INFO(c.name << ":\n" << result.failures);
+        CHECK(result.passed);
+    });
+    CHECK(shapes >= int(ShapeRegistry::instance().entries().size()));
+    CHECK(ShapeRegistry::instance().find("disk") != nullptr);
+}
+
+TEST_CASE("shapes: lines cross each as often as its area says (Cauchy-Crofton), hits within bounds") {
+    forEveryShape(checkShapeCrossings);
+}
+
+TEST_CASE("shapes: area samples are uniform by area and lie on the surface") { forEveryShape(checkShapeSampling); }
+
+TEST_CASE("shapes: hits have unit normals and lie on the surface") { forEveryShape(checkShapeHits); }
+
+TEST_CASE("shapes: the tessellation's area converges to the area") { forEveryShape(checkShapeTessellation); }
+
+}  // namespace
+}  // namespace lightpath::conformance
