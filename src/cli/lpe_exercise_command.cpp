@@ -15,7 +15,7 @@
 
 #include "config/exit_codes.h"
 #include "cli/lpe_command.h"
-#include "config/render_setup.h"
+#include "config/render_config.h"
 #include "film/aov_set.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
@@ -125,7 +125,7 @@ Rgb withoutRounding(Rgb difference, Rgb beauty) {
 // union of the two is beauty - rest, and what only yours accepts is beauty - rest - answer (and
 // likewise the other way): exact, with no expression for a difference of languages needed.
 void renderDifference(const Exercise& exercise, const std::string& yours, const ExerciseOptions& options) {
-    RenderSetup setup;
+    RenderConfig setup;
     setup.scenePath = exercise.scene;
     setup.integrator = exercise.integrator;
     setup.resolution = options.resolution;

@@ -33,7 +33,7 @@ struct IntegratorInfo {
     std::unique_ptr<Integrator> (*make)();
     ShadowRays shadowRays = ShadowRays::Always;
     // The same name, summary and path language (as its events), and the integrator's own parameters:
-    // each is a flag of render, explain and bench (--NAME) and a key of `lightpath types integrator`.
+    // each is a flag of render and explain (--NAME) and a key of `lightpath types integrator`.
     TypeSchema schema;
     int rank = 0;  // listing order; rank 0 is the default
 };
