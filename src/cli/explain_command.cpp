@@ -9,8 +9,8 @@
 #include <sstream>
 #include <utility>
 
+#include "cli/render_flags.h"
 #include "config/exit_codes.h"
-#include "config/render_setup.h"
 #include "integrators/event_symbols.h"
 #include "io/text_file.h"
 #include "lpe/path_string.h"
@@ -19,7 +19,7 @@ namespace lightpath {
 namespace {
 
 struct ExplainCommand {
-    RenderSetup setup;
+    RenderFlags flags;
     std::string pixel;
     bool all = false;   // also the paths whose contributions sum to zero
     bool json = false;  // the documented JSON (docs/lpe.md) instead of text
@@ -176,7 +176,7 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
     for (const PathGroup& g : groups) (isBlack(g.sum) ? zero : shown) += 1;
     if (command.all) shown += zero;
     std::printf("pixel %d,%d of %s (%s, %d spp): %zu contribution%s on %zu path%s\n\n", x, y,
-                command.setup.scenePath.c_str(), options.integrator.c_str(), options.samplesPerPixel, contributions,
+                command.flags.config().scenePath.c_str(), options.integrator.c_str(), options.samplesPerPixel, contributions,
                 contributions == 1 ? "" : "s", groups.size(), groups.size() == 1 ? "" : "s");
     std::size_t row = 0;
     for (const PathGroup& g : groups) {
@@ -250,7 +250,7 @@ void printJson(const ExplainCommand& command, const Scene& scene, const RenderOp
                int x, int y, const std::vector<PathGroup>& groups, const std::vector<RejectionGroup>& rejections) {
     const PinholeCamera camera(scene.camera);
     std::ostringstream json;
-    json << "{\n  \"schema\": \"lightpath-explain-1\",\n  \"scene\": " << jsonString(command.setup.scenePath)
+    json << "{\n  \"schema\": \"lightpath-explain-1\",\n  \"scene\": " << jsonString(command.flags.config().scenePath)
          << ",\n  \"integrator\": " << jsonString(options.integrator) << ",\n  \"spp\": " << options.samplesPerPixel
          << ",\n  \"pixel\": [" << x << ", " << y << "],\n  \"layers\": [";
     const auto layers = aovs.layerNames();
@@ -307,20 +307,21 @@ void printJson(const ExplainCommand& command, const Scene& scene, const RenderOp
 }
 
 void run(const ExplainCommand& command) {
+    const RenderConfig& config = command.flags.config();
     int x = 0, y = 0;
     char comma = 0, extra = 0;
     if (std::sscanf(command.pixel.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',')
         throw CLI::RuntimeError("--pixel: expected X,Y such as 320,240, got \"" + command.pixel + "\"", kExitBadInput);
-    const Scene scene = command.setup.loadScene();
-    const AovSet aovs = command.setup.buildAovSet(scene);
-    const RenderOptions options = command.setup.renderOptions();
+    const Scene scene = config.loadScene();
+    const AovSet aovs = config.buildAovSet(scene);
+    const RenderOptions options = config.renderOptions();
     std::vector<LoggedContribution> log;
     std::vector<Rejection> rejections;
     try {
         // explain makes no film: only what the integrator keeps per pixel (the z-buffer) must fit.
         PixelMemory memory = Renderer::pixelMemory(scene, aovs, options);
         memory.film = memory.splats = 0;
-        command.setup.refuseBeyondMemory(memory);
+        config.refuseBeyondMemory(memory);
         log = Renderer(scene, aovs, options).explainPixel(x, y, &rejections);
     } catch (const std::invalid_argument& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
@@ -339,7 +340,7 @@ void run(const ExplainCommand& command) {
 void addExplainCommand(CLI::App& app) {
     auto command = std::make_shared<ExplainCommand>();
     CLI::App* sub = app.add_subcommand("explain", "Print every contribution to one pixel with its light path and AOVs");
-    command->setup.addOptions(*sub);
+    command->flags.addOptions(*sub);
     sub->add_option("--pixel", command->pixel, "Pixel X,Y (0,0 is the top-left corner)")->required();
     sub->add_flag("--all", command->all, "Also show the paths whose contributions sum to zero");
     sub->add_flag("--json", command->json, "Print JSON for tools (schema in docs/lpe.md) instead of text");
@@ -352,7 +353,12 @@ void addExplainCommand(CLI::App& app) {
         "Examples:\n"
         "  lightpath explain scenes/lecture-room.toml --pixel 320,240\n"
         "  lightpath explain scenes/mirror-sphere.toml --pixel 300,200 --lpe \"mirror=E<RS>+.*\"");
-    sub->callback([command] { run(*command); });
+    sub->callback([command] {
+        reportingConfigErrors([&] {
+            command->flags.apply();
+            run(*command);
+        });
+    });
 }
 
 }  // namespace lightpath

@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "config/cli_errors.h"
+#include "cli/parse_errors.h"
+#include "config/messages.h"
 #include "config/exit_codes.h"
 #include "config/lpe_verdict.h"
 #include "film/aov_presets.h"

@@ -15,7 +15,7 @@
 
 #include "config/exit_codes.h"
 #include "cli/lpe_command.h"
-#include "config/render_setup.h"
+#include "config/render_config.h"
 #include "film/aov_set.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
@@ -125,15 +125,15 @@ Rgb withoutRounding(Rgb difference, Rgb beauty) {
 // union of the two is beauty - rest, and what only yours accepts is beauty - rest - answer (and
 // likewise the other way): exact, with no expression for a difference of languages needed.
 void renderDifference(const Exercise& exercise, const std::string& yours, const ExerciseOptions& options) {
-    RenderSetup setup;
-    setup.scenePath = exercise.scene;
-    setup.integrator = exercise.integrator;
-    setup.resolution = options.resolution;
-    setup.samplesPerPixel = options.samplesPerPixel;
-    setup.quiet = true;
-    const Scene scene = setup.loadScene();
+    RenderConfig config;
+    config.scenePath = exercise.scene;
+    config.integrator = exercise.integrator;
+    config.resolution = options.resolution;
+    config.samplesPerPixel = options.samplesPerPixel;
+    config.quiet = true;
+    const Scene scene = config.loadScene();
     const AovSet aovs({{"yours", yours}, {"answer", exercise.answer}});
-    const RenderResult result = Renderer(scene, aovs, setup.renderOptions()).render();
+    const RenderResult result = Renderer(scene, aovs, config.renderOptions()).render();
     const Film& film = result.film;
     // Layers: beauty, yours, answer, rest (AovSet::layerNames).
     Film difference(film.width(), film.height(), {"beauty", "yours-only", "answer-only"});

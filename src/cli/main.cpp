@@ -12,7 +12,9 @@
 
 #include "cli/bench_command.h"
 #include "cli/bracket_arguments.h"
-#include "config/cli_errors.h"
+#include "cli/parse_errors.h"
+#include "config/config_error.h"
+#include "config/messages.h"
 #include "config/exit_codes.h"
 #include "cli/explain_command.h"
 #include "cli/lpe_command.h"
@@ -70,6 +72,10 @@ int run(int argc, char** argv) {
         // Wrong arguments are bad input, whatever CLI11's own code for them; CLI11's message gets
         // the prefix and a did-you-mean like every other error.
         std::cerr << lightpath::withoutMarks(lightpath::parseErrorMessage(app, e)) << "\n";
+        return lightpath::kExitBadInput;
+    } catch (const lightpath::ConfigError& e) {
+        // An option a command did not report itself (cli/render_flags.h does): bad input all the same.
+        std::cerr << "lightpath: " << lightpath::withoutMarks(e.what()) << "\n";
         return lightpath::kExitBadInput;
     } catch (const lightpath::MemoryLimitError& e) {
         // A render the commands did not check first (bench): refused all the same, as bad input.

@@ -11,10 +11,10 @@
 #include <iostream>
 #include <memory>
 
-#include "config/cli_errors.h"
+#include "cli/render_flags.h"
 #include "config/exit_codes.h"
 #include "config/lpe_verdict.h"
-#include "config/render_setup.h"
+#include "config/messages.h"
 #include "io/image_module.h"
 #include "io/image_writer.h"
 #include "io/text_file.h"
@@ -23,7 +23,7 @@ namespace lightpath {
 namespace {
 
 struct RenderCommand {
-    RenderSetup setup;
+    RenderFlags flags;
     std::string output;
     std::string readyFile;  // created once Ctrl-C is handled and rendering begins (scripts, tests)
     bool stats = false;
@@ -107,11 +107,12 @@ std::atomic<bool> interrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
 void run(const RenderCommand& command) {
+    const RenderConfig& config = command.flags.config();
     std::signal(SIGINT, [](int) { interrupted.store(true); });
-    setActivity("loading " + command.setup.scenePath);
-    const Scene scene = command.setup.loadScene();
-    const AovSet aovs = command.setup.buildAovSet(scene);
-    RenderOptions options = command.setup.renderOptions();
+    setActivity("loading " + config.scenePath);
+    const Scene scene = config.loadScene();
+    const AovSet aovs = config.buildAovSet(scene);
+    RenderOptions options = config.renderOptions();
     options.cancel = &interrupted;
     options.onWorkersStarted = preloadImageModule;
     PixelMemory memory;
@@ -129,7 +130,7 @@ void run(const RenderCommand& command) {
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(std::string("-o: ") + e.what(), kExitBadInput);
     }
-    command.setup.refuseBeyondMemory(
+    config.refuseBeyondMemory(
         memory, encodingBytes(command.output, memory.width, memory.height, memory.layers.size(), options.threads));
     setActivity("preparing to render " + memory.describe());
     std::unique_ptr<Renderer> renderer;
@@ -153,7 +154,7 @@ void run(const RenderCommand& command) {
     setActivity("rendering " + memory.describe());
     const RenderResult result = renderer->render();
     if (result.cancelled) throw CLI::RuntimeError("interrupted: no image written", kExitInterrupted);
-    ImageMetadata metadata{{"lightpath:scene", command.setup.scenePath},
+    ImageMetadata metadata{{"lightpath:scene", config.scenePath},
                            {"lightpath:integrator", options.integrator},
                            {"lightpath:spp", std::to_string(options.samplesPerPixel)},
                            {"lightpath:max_depth", std::to_string(options.maxDepth)},
@@ -178,10 +179,10 @@ void run(const RenderCommand& command) {
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
-    command.setup.warnEmptyAovs(result.film, aovs, scene);
+    config.warnEmptyAovs(result.film, aovs, scene);
     if (command.stats) {
         printStats(result.stats, write);
-        printAcceleratorStats(command.setup.accel, result.stats.accelerator);
+        printAcceleratorStats(config.accel, result.stats.accelerator);
         for (const BlackAov& b : black)
             std::printf("black AOV     %s, as --integrator %s always leaves it (%s); written, so the AOVs still "
                         "sum to the beauty\n",
@@ -195,7 +196,7 @@ void run(const RenderCommand& command) {
 void addRenderCommand(CLI::App& app) {
     auto command = std::make_shared<RenderCommand>();
     CLI::App* sub = app.add_subcommand("render", "Render a scene into a beauty image and its light path AOVs");
-    command->setup.addOptions(*sub);
+    command->flags.addOptions(*sub);
     sub->add_option("-o,--output", command->output,
                     "Output: NAME.exr (one multi-layer EXR) or NAME.png (NAME.png + NAME.<aov>.png)")
         ->required();
@@ -212,7 +213,12 @@ void addRenderCommand(CLI::App& app) {
         "  lightpath render scenes/szymczak-three-lights.toml -o out/s.png --lpe \"ambient=E.*<L.'ambient'>\"\n"
         "      --lpe \"red=E.*<L.'red-lamp'>\"\n"
         "  lightpath render scenes/glass-sphere.toml -o out/g.png --spp 16 --resolution 320x240");
-    sub->callback([command] { run(*command); });
+    sub->callback([command] {
+        reportingConfigErrors([&] {
+            command->flags.apply();
+            run(*command);
+        });
+    });
 }
 
 }  // namespace lightpath

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "config/exit_codes.h"
-#include "config/render_setup.h"
+#include "config/render_config.h"
 #include "io/image_module.h"
 #include "serve/server.h"
 #include "serve/session.h"
@@ -52,9 +52,9 @@ void openBrowser(const std::string& url) {
 }
 
 void run(const ServeCommand& command) {
-    RenderSetup setup;
-    setup.scenePath = command.scenePath;
-    serve::Session session(setup.loadScene(), command.scenePath, command.threads);
+    RenderConfig config;
+    config.scenePath = command.scenePath;
+    serve::Session session(config.loadScene(), command.scenePath, command.threads);
     serve::Server server(session);
     int port = 0;
     try {

@@ -1,6 +1,6 @@
 #pragma once
 // The one judge of an AOV expression. Every command that takes expressions asks it, so they accept
-// and refuse the same ones for the same integrator: render and explain (RenderSetup::buildAovSet),
+// and refuse the same ones for the same integrator: render and explain (RenderConfig::buildAovSet),
 // serve (serve::applySettings, before a job is prepared), lpe check and lpe match --integrator.
 //
 //   refused      no path of the integrator matches it in any scene (lpe_feasibility.h says why);

@@ -19,6 +19,7 @@
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "scene/scene_analysis.h"
+#include "schema/parameter_values.h"
 
 namespace lightpath {
 
@@ -53,6 +54,9 @@ struct RenderContext {
     // The pixel filter the renderer spreads each pixel's samples with; light tracing weighs its
     // splats by it. Null: the box.
     const PixelFilter* filter = nullptr;
+    // The integrator's own parameters (its registry row's schema) as the user gave them; null when
+    // the caller set `radiosity` above directly (tests), which then stand.
+    const ParameterValues* parameters = nullptr;
 };
 
 class Integrator {

@@ -1,6 +1,5 @@
 #include "integrators/radiosity.h"
 
-#include "integrators/registry.h"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -9,6 +8,7 @@
 
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
+#include "integrators/registry.h"
 #include "math/random.h"
 #include "util/progress.h"
 #include "sampling/warp.h"
@@ -74,9 +74,19 @@ PathEvent unlabelledDiffuse(const Vec3& position) {
 
 }  // namespace
 
+RadiosityOptions radiosityOptions(const ParameterValues& parameters, RadiosityOptions base) {
+    base.patchSize = parameters.number("patch-size");
+    base.patchBudget = static_cast<std::size_t>(parameters.integer("patches"));
+    base.formFactorRays = parameters.integer("form-factor-rays");
+    base.lightSamples = parameters.integer("light-samples");
+    base.display = parameters.text("radiosity-display") == "flat" ? RadiosityDisplay::Flat : RadiosityDisplay::Smooth;
+    return base;
+}
+
 void RadiosityIntegrator::preprocess(const RenderContext& context) {
     const auto started = std::chrono::steady_clock::now();
-    const RadiosityOptions& options = context.radiosity;
+    options_ = context.parameters ? radiosityOptions(*context.parameters, context.radiosity) : context.radiosity;
+    const RadiosityOptions& options = options_;
     display_ = options.display;
     stats_ = {};
     const float patchSize = options.patchSize > 0.0f
@@ -149,7 +159,7 @@ std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context
 }
 
 void RadiosityIntegrator::computeFormFactors(const RenderContext& context, ProgressBar& progress) {
-    const std::uint32_t side = strataPerSide(context.radiosity.formFactorRays);
+    const std::uint32_t side = strataPerSide(options_.formFactorRays);
     const std::uint32_t rays = side * side;
     const std::uint32_t elements = elementCount();
     const auto& patches = mesh_->patches();
@@ -209,7 +219,7 @@ void RadiosityIntegrator::computeFormFactors(const RenderContext& context, Progr
 
 void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted,
                                             ProgressBar& progress) {
-    const std::uint32_t side = strataPerSide(context.radiosity.lightSamples);
+    const std::uint32_t side = strataPerSide(options_.lightSamples);
     const std::uint32_t samples = side * side;
     const auto lights = context.lights.all();
     const auto& patches = mesh_->patches();
@@ -303,7 +313,7 @@ void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<
         const double added = flux(k);
         solution += added;
         stats_.residual = solution > 0.0 ? added / solution : 0.0;
-        if (stats_.residual < context.radiosity.tolerance) break;
+        if (stats_.residual < options_.tolerance) break;
     }
 }
 
@@ -394,4 +404,15 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
     "radiosity", "diffuse patches, form factors by ray casting, solved bounce by bounce (Jacobi)", "ED*L",
     "radiosity follows diffuse bounces only: no highlight, mirror or refraction",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::RadiosityIntegrator>()); },
-    lightpath::ShadowRays::Always, 4))
+    lightpath::ShadowRays::Always, 4,
+    {{.name = "patch-size", .type = lightpath::ParameterType::Number, .unit = "scene units", .range = lightpath::kPositive,
+      .doc = "target patch edge (default: the finest size within --patches)", .excludes = "patches"},
+     {.name = "patches", .type = lightpath::ParameterType::Integer, .defaultText = "4096",
+      .range = {1.0, static_cast<double>(lightpath::kMaxPatches)},
+      .doc = "the most patches; the finest patch size within it"},
+     {.name = "form-factor-rays", .type = lightpath::ParameterType::Integer, .defaultText = "256", .range = {1.0, 65536.0},
+      .doc = "hemisphere rays per side of each patch (a square number, stratified)"},
+     {.name = "light-samples", .type = lightpath::ParameterType::Integer, .defaultText = "64", .range = {1.0, 65536.0},
+      .doc = "shadow rays per side of each patch and light"},
+     {.name = "radiosity-display", .type = lightpath::ParameterType::Name, .defaultText = "smooth",
+      .doc = "smooth (vertex radiosities interpolated, Gouraud) or flat (one value per patch)", .choices = "smooth|flat"}}))

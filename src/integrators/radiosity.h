@@ -37,6 +37,10 @@ struct RadiosityStats {
     double seconds = 0.0;              // meshing, form factors, direct light and the solve
 };
 
+// `base` with the parameters of radiosity's schema (its registry row: --patch-size, --patches,
+// --form-factor-rays, --light-samples, --radiosity-display) that `parameters` holds.
+RadiosityOptions radiosityOptions(const ParameterValues& parameters, RadiosityOptions base = {});
+
 class RadiosityIntegrator final : public Integrator {
 public:
     void preprocess(const RenderContext& context) override;
@@ -74,6 +78,7 @@ private:
     void computeVertexValues();
 
     std::optional<RadiosityMesh> mesh_;
+    RadiosityOptions options_;  // of this render: the context's, with its parameters applied
     RadiosityDisplay display_ = RadiosityDisplay::Smooth;
     std::vector<Rgb> reflectance_;  // per patch: the material's kd
     // Form factors, one sparse row per element: targets_[rowStart_[e] .. rowStart_[e+1]).

@@ -32,18 +32,23 @@ struct IntegratorInfo {
     const char* limitation;
     std::unique_ptr<Integrator> (*make)();
     ShadowRays shadowRays = ShadowRays::Always;
-    // The same name, summary and path language (as its events) for `lightpath types`; no parameters yet.
+    // The same name, summary and path language (as its events), and the integrator's own parameters:
+    // each is a flag of render and explain (--NAME) and a key of `lightpath types integrator`.
     TypeSchema schema;
     int rank = 0;  // listing order; rank 0 is the default
 };
 
 using IntegratorRegistry = TypeRegistry<IntegratorInfo>;
 
-// A row whose schema repeats its name, summary and path language.
+// A row whose schema repeats its name, summary and path language, with the integrator's parameters
+// (read in preprocess from RenderContext::parameters).
 inline IntegratorInfo integratorRow(const char* name, const char* summary, const char* pathLanguage,
                                     const char* limitation, std::unique_ptr<Integrator> (*make)(),
-                                    ShadowRays shadowRays, int rank) {
-    return {name, summary, pathLanguage, limitation, make, shadowRays, TypeSchema{"integrator", name, summary, {}, pathLanguage},
+                                    ShadowRays shadowRays, int rank, std::vector<Parameter> parameters = {}) {
+    return {name,       summary,
+            pathLanguage, limitation,
+            make,       shadowRays,
+            TypeSchema{"integrator", name, summary, std::move(parameters), pathLanguage},
             rank};
 }
 

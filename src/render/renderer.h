@@ -57,7 +57,10 @@ struct RenderOptions {
     const std::atomic<bool>* cancel = nullptr;
     Accelerator accelerator = Accelerator::Bvh;
     bool progress = false;  // a progress bar on stderr (only if it is a terminal; util/progress.h)
-    RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity
+    RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity, when set directly
+    // The integrator's own parameters (its schema's; config/render_config.h fills them): when
+    // set, they replace the integrator's defaults and `radiosity` above.
+    std::optional<ParameterValues> integratorParameters;
     // Called on the calling thread once every worker thread of render() exists. Creating a thread
     // waits for a dlopen() in progress on another thread (glibc's loader lock): a library loaded in
     // the background during the render (the image module) must start loading here, or the second

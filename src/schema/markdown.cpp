@@ -8,7 +8,12 @@ std::string allowedText(const Parameter& p) {
         case ParameterType::Colour: return "each channel " + range;
         case ParameterType::Point: return p.range.isAny() ? "any" : "each " + range;
         case ParameterType::Vector: return "non-zero";
-        case ParameterType::Name: return "a name (see Conventions)";
+        case ParameterType::Name: {
+            if (p.choices.empty()) return "a name (see Conventions)";
+            std::string words;
+            for (const std::string& word : choicesOf(p)) words += (words.empty() ? "`" : ", `") + word + "`";
+            return words;
+        }
         case ParameterType::Boolean: return "`true` or `false`";
         case ParameterType::Text: return "any";
         case ParameterType::Number:

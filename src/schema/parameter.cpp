@@ -20,6 +20,17 @@ std::string_view typeName(ParameterType type) {
     return "value";
 }
 
+std::vector<std::string> choicesOf(const Parameter& parameter) {
+    std::vector<std::string> words;
+    std::string_view rest = parameter.choices;
+    while (!rest.empty()) {
+        const std::size_t bar = rest.find('|');
+        words.emplace_back(rest.substr(0, bar));
+        rest = bar == std::string_view::npos ? std::string_view() : rest.substr(bar + 1);
+    }
+    return words;
+}
+
 bool Range::isAny() const { return std::isinf(low) && low < 0 && std::isinf(high) && high > 0; }
 
 std::string Range::describe() const {

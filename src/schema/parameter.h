@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace lightpath {
 
@@ -52,6 +53,11 @@ struct Parameter {
     Range range;
     std::string_view doc;          // one line: what it means
     bool required = false;
+    std::string_view choices;      // the words a Name accepts, "smooth|flat"; empty: any name
+    std::string_view excludes;     // a parameter of the same schema that may not be given with this one
 };
+
+// The words of `choices`, in order ("smooth|flat" -> smooth, flat).
+std::vector<std::string> choicesOf(const Parameter& parameter);
 
 }  // namespace lightpath

@@ -133,6 +133,11 @@ void ParameterValues::set(std::string_view name, std::string value) {
         (value.empty() || !std::all_of(value.begin(), value.end(), isLabelCharacter))) {
         throw SchemaError(std::string(name) + ": expected a name of letters, digits, '_', '-' or '.', got \"" + value + "\"");
     }
+    if (const auto words = choicesOf(p); !words.empty() && std::find(words.begin(), words.end(), value) == words.end()) {
+        std::string expected;
+        for (const std::string& word : words) expected += (expected.empty() ? "" : ", ") + word;
+        throw SchemaError(std::string(name) + ": expected one of " + expected + ", got \"" + value + "\"");
+    }
     store(name, std::move(value), {ParameterType::Name, ParameterType::Text});
 }
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "config/render_setup.h"
+#include "config/render_config.h"
 #include "lpe/error.h"
 #include "render/memory_limit.h"
 #include "serve/request_error.h"
@@ -62,7 +62,7 @@ Session::Session(Scene scene, std::string scenePath, int threads)
     : scene_(std::move(scene)),
       scenePath_(std::move(scenePath)),
       threads_(threads),
-      geometry_(Renderer::buildGeometry(scene_, RenderSetup{}.renderOptions())) {
+      geometry_(Renderer::buildGeometry(scene_, RenderConfig{}.renderOptions())) {
     job_ = prepare(defaultSettings(scene_), 1);
     progress_.job = job_;
     worker_ = std::thread([this] { work(); });
@@ -101,31 +101,20 @@ std::shared_ptr<Job> Session::prepare(const Settings& settings, std::uint64_t ge
         throw RequestError(400, "lpes", e.what());
     }
 
-    RenderSetup setup;  // the command line's own checks and warnings
-    setup.scenePath = scenePath_;
-    setup.integrator = settings.integrator;
-    setup.aovs = "none";
-    for (const auto& e : settings.lpes) setup.lpes.push_back(e.name + "=" + e.expression);
-    setup.maxDepth = settings.maxDepth;
-    setup.quiet = true;
+    const RenderConfig config = renderConfig(settings, scenePath_);  // the command line's own checks and warnings
     std::vector<std::string> warnings;
     std::optional<AovSet> aovs;
     try {
-        aovs.emplace(setup.buildAovSet(scene_, &warnings));
-    } catch (const std::exception& e) {
-        std::string field = "lpes";
-        const std::string message = e.what();
-        for (std::size_t i = 0; i < settings.lpes.size(); ++i)
-            if (message.rfind("--lpe " + settings.lpes[i].name + ":", 0) == 0 ||
-                message.rfind("--lpe " + settings.lpes[i].name + " ", 0) == 0)
-                field = "lpes[" + std::to_string(i) + "].expression";
-        throw RequestError(400, field, message);
+        config.validate();
+        aovs.emplace(config.buildAovSet(scene_, &warnings));
+    } catch (const ConfigError& e) {
+        throw requestError(e, settings);
     }
 
     Scene scene = scene_;
     scene.camera.width = settings.width;
     scene.camera.height = settings.height;
-    RenderOptions options = setup.renderOptions();
+    RenderOptions options = config.renderOptions();
     options.progress = false;
     options.threads = threads_;
     // A session holds up to five films of this size at once (the previous job's image, the one

@@ -36,7 +36,7 @@ public:
     const Settings settings;
     const Scene scene;  // the loaded scene at this job's resolution
     const AovSet aovs;
-    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (config/render_setup.h)
+    const std::vector<std::string> warnings;  // overlaps, AOVs that stay black, readings (config/render_config.h)
 
     // The one renderer of these settings (one preprocess: radiosity solves once per change). It
     // renders pass 0 and `explain` with one sample through each pixel centre (as `lightpath

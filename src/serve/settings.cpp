@@ -1,9 +1,13 @@
 #include "serve/settings.h"
 
 #include <algorithm>
+#include <iterator>
+#include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include "config/lpe_verdict.h"
+#include "config/render_options.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "transport/path_event.h"
@@ -14,7 +18,22 @@ namespace {
 
 using nlohmann::json;
 
-const std::vector<std::string> kFields{"integrator", "spp", "width", "height", "maxDepth", "lpes"};
+// Each JSON field and the render option it sets (config/render_options.h).
+struct Field {
+    std::string_view json;
+    std::string_view option;
+};
+constexpr Field kFields[] = {{"integrator", "integrator"}, {"spp", "spp"},        {"width", "resolution"},
+                             {"height", "resolution"},     {"maxDepth", "max-depth"}, {"lpes", "lpe"}};
+
+const Parameter& optionOf(std::string_view json) {
+    for (const Field& f : kFields)
+        if (f.json == json) return *renderOptionsSchema().find(f.option);
+    throw std::logic_error("serve: no render option behind the field " + std::string(json));
+}
+
+// An integer field: the range of its render option, no wider than the session's `limit`.
+int integerOption(const json& value, const std::string& field, int limit);
 
 [[noreturn]] void bad(const std::string& field, const std::string& message) {
     throw RequestError(400, field, field + ": " + message);
@@ -33,6 +52,11 @@ int integerIn(const json& value, const std::string& field, int low, int high) {
                                                     : value.get<std::int64_t>() >= low && value.get<std::int64_t>() <= high;
     if (!inRange) bad(field, expected + ", got " + describe(value));
     return static_cast<int>(value.get<std::int64_t>());
+}
+
+int integerOption(const json& value, const std::string& field, int limit) {
+    const Range& range = optionOf(field).range;
+    return integerIn(value, field, static_cast<int>(range.low), std::min(limit, static_cast<int>(range.high)));
 }
 
 std::string stringOf(const json& value, const std::string& field, std::size_t maxLength) {
@@ -85,9 +109,9 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
     if (!request.is_object()) throw RequestError(400, "", "expected a JSON object, got " + describe(request));
     Settings settings = current;
     for (const auto& [key, value] : request.items()) {
-        if (std::find(kFields.begin(), kFields.end(), key) == kFields.end()) {
+        if (std::none_of(std::begin(kFields), std::end(kFields), [&](const Field& f) { return f.json == key; })) {
             std::string known;
-            for (const std::string& f : kFields) known += (known.empty() ? "" : ", ") + f;
+            for (const Field& f : kFields) known += (known.empty() ? "" : ", ") + std::string(f.json);
             bad(key, "unknown field; expected one of " + known);
         }
         if (key == "integrator") {
@@ -99,13 +123,13 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
                 bad(key, "unknown integrator \"" + settings.integrator + "\"; expected one of " + known);
             }
         } else if (key == "spp") {
-            settings.samplesPerPixel = integerIn(value, key, 1, kMaxSamples);
+            settings.samplesPerPixel = integerOption(value, key, kMaxSamples);
         } else if (key == "width") {
-            settings.width = integerIn(value, key, 1, kMaxSide);
+            settings.width = integerIn(value, key, 1, std::min(kMaxSide, kMaxResolution));
         } else if (key == "height") {
-            settings.height = integerIn(value, key, 1, kMaxSide);
+            settings.height = integerIn(value, key, 1, std::min(kMaxSide, kMaxResolution));
         } else if (key == "maxDepth") {
-            settings.maxDepth = integerIn(value, key, 0, kMaxDepth);
+            settings.maxDepth = integerOption(value, key, std::numeric_limits<int>::max());
         } else {
             settings.lpes = expressionsOf(value);
         }
@@ -122,8 +146,7 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
             continue;
         }
         if (judgement->verdict == Verdict::Refused)
-            throw RequestError(400, "lpes[" + std::to_string(i) + "].expression",
-                               aov.name + ": " + refusalMessage(aov, integrator, judgement->reason));
+            throw requestError(lpeError(aov.name, refusalMessage(aov, integrator, judgement->reason)), settings);
     }
     // The rasteriser samples each pixel once, at its centre (Integrator::samplesPixelCentres): any
     // other target is taken as 1, with a notice, so that switching to it from the page's default
@@ -143,6 +166,33 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
                                " pixels times " + std::to_string(settings.lpes.size() + 2) + " layers is " +
                                std::to_string(pixelLayers) + "; expected at most " + std::to_string(kMaxPixelLayers));
     return settings;
+}
+
+RenderConfig renderConfig(const Settings& settings, const std::string& scenePath) {
+    RenderConfig config;
+    config.scenePath = scenePath;
+    config.integrator = settings.integrator;
+    config.aovs = "none";
+    for (const auto& e : settings.lpes) config.lpes.push_back(e.name + "=" + e.expression);
+    config.samplesPerPixel = settings.samplesPerPixel;
+    config.maxDepth = settings.maxDepth;
+    config.quiet = true;
+    return config;
+}
+
+RequestError requestError(const ConfigError& error, const Settings& settings) {
+    const std::string& option = error.field();
+    std::string field = option, label = option;
+    if (option.rfind("lpe:", 0) == 0) {
+        label = option.substr(4);
+        field = "lpes";
+        for (std::size_t i = 0; i < settings.lpes.size(); ++i)
+            if (settings.lpes[i].name == label) field = "lpes[" + std::to_string(i) + "].expression";
+    } else {
+        for (const Field& f : kFields)
+            if (f.option == option) field = label = f.option == "resolution" ? "width,height" : std::string(f.json);
+    }
+    return RequestError(400, field, label.empty() ? error.message() : label + ": " + error.message());
 }
 
 nlohmann::json toJson(const Settings& settings) {

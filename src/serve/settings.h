@@ -1,15 +1,19 @@
 #pragma once
 // What the page can change: the integrator, the progressive render's sample target, the
-// resolution, the depth and the list of LPEs. Parsed from the JSON of PUT /api/settings
-// (docs/serve.md) and checked against the limits below before anything is rendered.
+// resolution, the depth and the list of LPEs: a subset of the render configuration
+// (config/render_config.h) in JSON. Parsed from PUT /api/settings (docs/serve.md), each field's
+// type and range read from the render options' schema and narrowed by the session's limits below,
+// then checked by the configuration's one validate() before anything is rendered.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "config/render_config.h"
 #include "lpe/automaton.h"
 #include "scene/scene.h"
+#include "serve/request_error.h"
 
 namespace lightpath::serve {
 
@@ -44,5 +48,14 @@ Settings applySettings(const Settings& current, const std::string& body,
                        std::vector<std::string>* notices = nullptr);
 
 nlohmann::json toJson(const Settings& settings);
+
+// The render configuration of `settings` on the scene file `scenePath`: no preset but the lpes,
+// quiet (warnings are collected for the page).
+RenderConfig renderConfig(const Settings& settings, const std::string& scenePath);
+
+// A ConfigError as a 400 naming its field as the JSON spells it ("maxDepth", "lpes[1].expression",
+// "width,height" for the resolution), read from ConfigError::field(); its message after that field's
+// label ("spp: ...", the AOV's name for an expression).
+RequestError requestError(const ConfigError& error, const Settings& settings);
 
 }  // namespace lightpath::serve

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "config/lpe_verdict.h"
-#include "config/render_setup.h"
+#include "config/render_config.h"
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
 #include "integrators/registry.h"
@@ -123,7 +123,7 @@ TEST_CASE("every preset on every shipped scene: the command line, serve and lpe 
             CAPTURE(name);
             // The command line's --aovs, serve's menu and `lpe check --set` (no scene: the scene-made
             // preset is not offered there) read the same registry entry.
-            RenderSetup setup;
+            RenderConfig setup;
             setup.aovs = name;
             const std::vector<lpe::NamedExpression> set = setup.expressions(&scene);
             REQUIRE(!set.empty());

@@ -1,15 +1,10 @@
-#include "config/cli_errors.h"
+#include "cli/parse_errors.h"
 
 #include <algorithm>
 #include <cctype>
-#include <iostream>
 #include <sstream>
 
-#include "scene/spelling.h"
-
-#ifndef LIGHTPATH_VERSION
-#error "LIGHTPATH_VERSION comes from the project's VERSION in CMakeLists.txt"
-#endif
+#include "config/messages.h"
 
 namespace lightpath {
 namespace {
@@ -17,21 +12,6 @@ namespace {
 std::string lowered(std::string word) {
     std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
     return word;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string text;
-    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
-    return text;
-}
-
-// The nearest of `names` to `word`, case ignored; nothing when none is a likely typo.
-std::optional<std::string> nearest(const std::string& word, const std::vector<std::string>& names) {
-    std::vector<std::string> lowerNames;
-    for (const std::string& name : names) lowerNames.push_back(lowered(name));
-    const auto match = closestMatch(lowered(word), lowerNames);
-    if (!match) return std::nullopt;
-    return names[static_cast<std::size_t>(std::find(lowerNames.begin(), lowerNames.end(), *match) - lowerNames.begin())];
 }
 
 // What users of other renderers type for lightpath's options (pbrt, Mitsuba, Cycles, POV-Ray,
@@ -105,12 +85,6 @@ std::vector<std::string> candidatesOf(const CLI::App& app) {
 
 }  // namespace
 
-std::string choiceMessage(const std::string& word, const std::vector<std::string>& names) {
-    std::string message = word + " is not one of " + joined(names);
-    if (const auto match = nearest(word, names)) message += "; did you mean " + *match + "?";
-    return message;
-}
-
 CLI::Validator oneOf(std::vector<std::string> names) {
     std::string description = "{";
     for (const std::string& name : names) description += (description.size() > 1 ? "," : "") + name;
@@ -146,38 +120,9 @@ std::string parseErrorMessage(const CLI::App& app, const CLI::ParseError& error)
     for (const std::string& word : words)
         if (!suggestion) suggestion = synonym(word.substr(0, word.find('=')), candidates);
     for (const std::string& word : words)
-        if (!suggestion) suggestion = nearest(word.substr(0, word.find('=')), candidates);
+        if (!suggestion) suggestion = nearestName(word.substr(0, word.find('=')), candidates);
     if (suggestion) message += "; did you mean " + *suggestion + "?";
     return message + "\nRun with --help for more information.";
-}
-
-namespace {
-std::string& activityText() {
-    static std::string text;
-    return text;
-}
-}  // namespace
-
-void setActivity(std::string activity) { activityText() = std::move(activity); }
-const std::string& activity() { return activityText(); }
-
-std::string versionText() {
-    std::string text = "lightpath " LIGHTPATH_VERSION "\nbuild: ";
-#ifdef LIGHTPATH_HAS_EMBREE
-    text += "Embree on (--accel embree)";
-#else
-    text += "Embree off (built without libembree-dev; --accel embree unavailable)";
-#endif
-#ifdef NDEBUG
-    text += ", release (assertions off)";
-#else
-    text += ", debug (assertions on)";
-#endif
-    return text;
-}
-
-void Warnings::operator()(const std::string& message) const {
-    if (!quiet_) std::cerr << "warning: " << message << "\n";
 }
 
 }  // namespace lightpath
