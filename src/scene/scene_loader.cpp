@@ -13,6 +13,7 @@
 #include "scene/shape_type.h"
 #include "materials/material_type.h"
 #include "materials/phong_material.h"
+#include "schema/parameter.h"
 #include "schema/schema_error.h"
 #include "scene/obj_loader.h"
 #include "scene/spelling.h"
@@ -20,19 +21,6 @@
 
 namespace lightpath {
 namespace {
-
-// Names become labels in light path expressions, written between single quotes (<L'key'>), so
-// they are kept to characters that can always be typed there.
-bool isLabelCharacter(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-' || c == '.';
-}
-
-bool isValidName(std::string_view name) {
-    return !name.empty() && std::all_of(name.begin(), name.end(), isLabelCharacter);
-}
-
-constexpr std::string_view kNameCharacters = "letters, digits, '_', '-' or '.'";
 
 std::string readName(const TomlValue& value) {
     std::string name = value.string();

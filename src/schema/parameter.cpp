@@ -1,10 +1,19 @@
 #include "schema/parameter.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "schema/format.h"
 
 namespace lightpath {
+
+bool isValidName(std::string_view name) {
+    const auto isNameCharacter = [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+               c == '.';
+    };
+    return !name.empty() && std::all_of(name.begin(), name.end(), isNameCharacter);
+}
 
 std::string_view typeName(ParameterType type) {
     switch (type) {

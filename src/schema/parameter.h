@@ -24,6 +24,11 @@ enum class ParameterType : std::uint8_t {
 // How docs name a type: "number", "RGB or number", "point", ...
 std::string_view typeName(ParameterType type);
 
+// A Name's characters. Names become labels in light path expressions, written between single
+// quotes (<L'key'>), so they are kept to characters that can always be typed there.
+inline constexpr std::string_view kNameCharacters = "letters, digits, '_', '-' or '.'";
+bool isValidName(std::string_view name);
+
 // What a Number/Integer/Colour channel (or a Point component) must satisfy.
 struct Range {
     double low = -std::numeric_limits<double>::infinity();

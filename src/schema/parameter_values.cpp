@@ -10,11 +10,6 @@
 namespace lightpath {
 namespace {
 
-bool isLabelCharacter(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-' || c == '.';
-}
-
 // The numbers of a default as docs print it: "0.5", "[1, 0, 0]"; one number is grey.
 Vec3 parseTriple(std::string_view text) {
     std::string cleaned(text);
@@ -129,9 +124,9 @@ void ParameterValues::set(std::string_view name, const Vec3& value) {
 
 void ParameterValues::set(std::string_view name, std::string value) {
     const Parameter& p = schema_->parameters[indexOf(name)];
-    if (p.type == ParameterType::Name &&
-        (value.empty() || !std::all_of(value.begin(), value.end(), isLabelCharacter))) {
-        throw SchemaError(std::string(name) + ": expected a name of letters, digits, '_', '-' or '.', got \"" + value + "\"");
+    if (p.type == ParameterType::Name && !isValidName(value)) {
+        throw SchemaError(std::string(name) + ": expected a name of " + std::string(kNameCharacters) + ", got \"" + value +
+                          "\"");
     }
     if (const auto words = choicesOf(p); !words.empty() && std::find(words.begin(), words.end(), value) == words.end()) {
         std::string expected;
