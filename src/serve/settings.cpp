@@ -109,7 +109,8 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
     if (!request.is_object()) throw RequestError(400, "", "expected a JSON object, got " + describe(request));
     Settings settings = current;
     for (const auto& [key, value] : request.items()) {
-        if (std::none_of(std::begin(kFields), std::end(kFields), [&](const Field& f) { return f.json == key; })) {
+        const std::string& field = key;  // clang 14 cannot capture a structured binding
+        if (std::none_of(std::begin(kFields), std::end(kFields), [&](const Field& f) { return f.json == field; })) {
             std::string known;
             for (const Field& f : kFields) known += (known.empty() ? "" : ", ") + std::string(f.json);
             bad(key, "unknown field; expected one of " + known);
