@@ -26,17 +26,13 @@
 #include "scene/scene_loader.h"
 #include "serve/scene_report.h"
 
+#include "../support/shipped_scenes.h"
+
 using namespace lightpath;
 
 namespace {
 
-std::vector<std::filesystem::path> shippedScenes() {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes"))
-        if (entry.path().extension() == ".toml") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+using test::shippedScenes;
 
 bool sameSet(const std::vector<lpe::NamedExpression>& a, const std::vector<lpe::NamedExpression>& b) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {

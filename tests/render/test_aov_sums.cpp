@@ -13,7 +13,7 @@
 #include "film/aov_set.h"
 #include "render/renderer.h"
 #include "lights/point_light.h"
-#include "shipped_scenes.h"
+#include "../support/shipped_scenes.h"
 #include "../support/film_checks.h"
 #include "scene/scene_loader.h"
 #include "film/aov_presets.h"

@@ -20,7 +20,7 @@
 #include "integrators/raster.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
-#include "shipped_scenes.h"
+#include "../support/shipped_scenes.h"
 
 namespace lightpath {
 namespace {

@@ -17,7 +17,7 @@
 #include "film/aov_set.h"
 #include "render/renderer.h"
 #include "lights/point_light.h"
-#include "shipped_scenes.h"
+#include "../support/shipped_scenes.h"
 #include "scene/scene_loader.h"
 #include "../support/statistics.h"
 

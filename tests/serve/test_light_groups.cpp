@@ -17,17 +17,13 @@
 #include "scene/scene_loader.h"
 #include "serve/scene_report.h"
 
+#include "../support/shipped_scenes.h"
+
 using namespace lightpath;
 
 namespace {
 
-std::vector<std::filesystem::path> shippedScenes() {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(LIGHTPATH_SOURCE_DIR "/scenes"))
-        if (entry.path().extension() == ".toml") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+using test::shippedScenes;
 
 std::vector<lpe::NamedExpression> lightsPreset(const Scene& scene) {
     for (const auto& [name, set] : serve::presets(scene))
