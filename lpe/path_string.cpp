@@ -118,26 +118,16 @@ bool lossless(const Event& event) {
     return event.type == EventType::Reflection || event.scatter == Scatter::None;
 }
 
-// A word that is one scattering event as a tuple: R, T or V, then its scattering ("RS", "TD").
-// As compact Heckbert it would be an event with no scattering followed by a reflection, which no
-// renderer records: a reader asking whether `RS` matches means the one event.
-bool isOneTuple(std::string_view word) {
-    EventType type{};
-    Scatter how{};
-    return word.size() == 2 && eventType(word[0], type) && scatters(type) && !noScatter(word[1]) &&
-           scatter(word[1], how);
-}
-
 }  // namespace
 
-// Leading and trailing whitespace is ignored; whitespace between events, a quote or '<' anywhere,
-// or a word that is one scattering event (isOneTuple) selects the tuple form.
+// Leading and trailing whitespace is ignored; whitespace between events or a quote anywhere
+// selects the tuple form.
 Path parsePath(std::string_view text) {
     std::size_t first = 0, past = text.size();
     while (first < past && isSpace(text[first])) ++first;
     while (past > first && isSpace(text[past - 1])) --past;
     const std::string_view body = text.substr(first, past - first);
-    const bool tuples = isOneTuple(body) ||
+    const bool tuples =
         std::any_of(body.begin(), body.end(), [](char c) { return isSpace(c) || c == '\'' || c == '<'; });
     PathParser parser(text, first, past);
     return tuples ? parser.tuples() : parser.compact();

@@ -14,9 +14,6 @@ namespace lpe {
 //                                volume event with no scattering.
 //   tuples:           "C TS TS RD'1' L'key'" -- type letter, scattering letter (`_`, `x` or nothing
 //                                for none), optional quoted label; events separated by spaces.
-//                                One word of a type that scatters and its scattering, "RS" or
-//                                "TD", is that one event (as compact it would be a path no
-//                                renderer records).
 //   expression:       "E <TS> <RD'1'> <L.'key'>" -- what toExpressionString prints.
 // Throws SyntaxError naming the position.
 Path parsePath(std::string_view text);
@@ -24,7 +21,8 @@ Path parsePath(std::string_view text);
 // "ESDL": loses transmission vs reflection and labels (a T event prints its scattering letter).
 std::string toCompactString(const Path& path);
 // "E RS RD'floor' L'key'": lossless, parsePath(toTupleString(p)) == p, for every path a renderer
-// records, a lone event included. Labels cannot contain '.
+// records (two events or more). A lone unlabelled event such as "RS" reads back as the compact
+// path R S: one word without spaces or quotes is compact. Labels cannot contain '.
 std::string toTupleString(const Path& path);
 // "E <RS> <RD'floor'> <L.'key'>": an expression that, pasted into --lpe, matches exactly this path
 // (each event as an OSL tuple; OSL's <L.'key'> for labelled non-scattering events). Reads back

@@ -99,6 +99,20 @@ std::string stateTrace(const lpe::Automaton& automaton, const lpe::Path& path) {
     return trace;
 }
 
+// A path argument of `lpe match`. One word of a scattering type and its scattering ("RS", "TD") is
+// that one event, as a reader asking whether `[SG]` matches RS means it; lpe::parsePath reads the
+// word as compact Heckbert (R with no scattering, then S), a path no renderer records.
+lpe::Path readMatchPath(const std::string& text) {
+    std::size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
+    if (first != std::string::npos && last == first + 1) {
+        const auto type = lpe::eventTypeOf(text[first]);
+        const auto scatter = lpe::scatterOf(text[last]);
+        if (type && lpe::scatters(*type) && scatter && *scatter != lpe::Scatter::None)
+            return lpe::parsePath("<" + text.substr(first, 2) + ">");
+    }
+    return lpe::parsePath(text);
+}
+
 void runMatch(const MatchOptions& options) {
     std::vector<lpe::NamedExpression> expressions;
     std::vector<std::string> pathTexts = options.arguments;
@@ -114,7 +128,7 @@ void runMatch(const MatchOptions& options) {
     if (!options.integrator.empty()) judge(expressions, findIntegrator(options.integrator), "lpe match", Warnings(options.quiet));
     // Read every path first: a typo in the last one should not leave half a report.
     std::vector<lpe::Path> paths;
-    for (const std::string& text : pathTexts) paths.push_back(lpe::parsePath(text));
+    for (const std::string& text : pathTexts) paths.push_back(readMatchPath(text));
     if (options.set.empty()) {
         const std::string note = readingNote(expressions.front().expression, Warnings(options.quiet), "");
         if (!note.empty()) std::cout << expressions.front().expression << note << '\n';
