@@ -67,6 +67,7 @@ json describeScene(const Scene& scene, const std::string& scenePath) {
             {"objects", objects},
             {"lights", lights},
             {"integrators", integratorNames()},
+            {"integratorParameters", integratorParametersJson()},
             {"presets", sets},
             {"limits", {{"side", kMaxSide}, {"spp", kMaxSamples}, {"lpes", kMaxExpressions}, {"samplesPerPass", kSamplesPerPass}}}};
 }
