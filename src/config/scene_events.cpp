@@ -1,0 +1,188 @@
+#include "config/scene_events.h"
+
+#include <functional>
+
+#include "lpe/analysis.h"
+#include "materials/material_type.h"
+#include "materials/scatter_events.h"
+#include "scene/ambient_label.h"
+#include "scene/emission.h"
+
+namespace lightpath {
+namespace {
+
+bool sameEvent(const ScatterEvent& a, const ScatterEvent& b) { return a.type == b.type && a.scatter == b.scatter; }
+
+bool hasEvent(const SceneEvents& events, const ScatterEvent& event) {
+    for (const ScatterEvent& e : events.scatter)
+        if (sameEvent(e, event)) return true;
+    return false;
+}
+
+void addEvent(SceneEvents& events, const ScatterEvent& event) {
+    if (!hasEvent(events, event)) events.scatter.push_back(event);
+}
+
+std::string tuple(const ScatterEvent& e) { return std::string("<") + lpe::letter(e.type) + lpe::letter(e.scatter) + ">"; }
+
+bool smooth(const ScatterEvent& e) { return e.scatter == lpe::Scatter::Diffuse || e.scatter == lpe::Scatter::Glossy; }
+
+std::string alternation(const std::vector<std::string>& parts) {
+    std::string text;
+    for (const std::string& p : parts) text += (text.empty() ? "(" : "|") + p;
+    return text.empty() ? text : text + ")";
+}
+
+// A light that is not the ambient term (every light but 'ambient' is one a scene declares).
+constexpr const char* kDeclaredLight = "<L.[^'ambient']>";
+
+// What the scene lacks for a path, as one change to SceneEvents, with its cause and fix.
+struct Lack {
+    std::string cause;
+    std::function<void(SceneEvents&)> add;
+};
+
+// The phong keys (the default material, docs/design.md's units) that give a lobe its event.
+std::string phongKeys(const ScatterEvent& e) {
+    using lpe::EventType, lpe::Scatter;
+    if (e.type == EventType::Reflection && e.scatter == Scatter::Diffuse) return " (kd and ka are 0 in every material): give one kd";
+    if (e.type == EventType::Reflection && e.scatter == Scatter::Glossy) return " (ks is 0 in every material): give one ks";
+    if (e.type == EventType::Reflection && e.scatter == Scatter::Specular) return " (kr and kt are 0 in every material): give one kr";
+    if (e.type == EventType::Transmission && e.scatter == Scatter::Specular) return " (kt is 0 in every material): give one kt";
+    return "";
+}
+
+std::string lobeName(const ScatterEvent& e) {
+    using lpe::EventType, lpe::Scatter;
+    const bool reflection = e.type == EventType::Reflection;
+    switch (e.scatter) {
+        case Scatter::Diffuse: return reflection ? "diffuse" : "diffuse transmission";
+        case Scatter::Glossy: return reflection ? "glossy" : "glossy transmission";
+        case Scatter::Specular: return reflection ? "mirror" : "refraction";
+        default: return "straight " + std::string(reflection ? "reflection" : "transmission");
+    }
+}
+
+// No material in the scene scatters by `e`: what to say, from the material types' schemas (the
+// events each declares, `lightpath types material`).
+std::string missingLobe(const ScatterEvent& e) {
+    std::string types;
+    for (const MaterialType* type : MaterialRegistry::instance().entries())
+        if (lpe::commonPath({"E" + tuple(e) + "L", "E(" + std::string(type->schema.events) + ")L"}))
+            types += (types.empty() ? "" : " or ") + std::string(type->schema.name);
+    const std::string cause = "no material has a " + lobeName(e) + " lobe " + tuple(e);
+    if (types.empty()) return cause + ", and no material type has one (lightpath types material lists their events)";
+    const std::string keys = phongKeys(e);
+    return cause + (keys.empty() ? ": a material of type " + types + " can have one" : keys);
+}
+
+// Every single addition that could make a path possible, in the order their causes are named.
+std::vector<Lack> lacksOf(const SceneEvents& events) {
+    std::vector<Lack> lacks;
+    for (const auto type : {lpe::EventType::Reflection, lpe::EventType::Transmission})
+        for (const auto scatter : {lpe::Scatter::Diffuse, lpe::Scatter::Glossy, lpe::Scatter::Specular, lpe::Scatter::Straight}) {
+            const ScatterEvent e{type, scatter};
+            if (!hasEvent(events, e)) lacks.push_back({missingLobe(e), [e](SceneEvents& s) { addEvent(s, e); }});
+        }
+    const bool anyLight = events.hittableLight || events.shapelessLight;
+    const std::string unlit = "this scene has no light ([[lights]]): add one";
+    if (!events.hittableLight)
+        lacks.push_back({anyLight ? "no light a ray can hit: a point light is reached only by a light sample from a "
+                                    "diffuse or glossy surface; add a [[lights]] quad or sphere"
+                                  : unlit,
+                         [](SceneEvents& s) { s.hittableLight = true; }});
+    if (!events.shapelessLight && !anyLight) lacks.push_back({unlit, [](SceneEvents& s) { s.shapelessLight = true; }});
+    if (!events.objectEmission)
+        lacks.push_back({"no surface emits (O): no material has an emission (a [[lights]] quad or sphere ends its paths "
+                         "with L); give a material emission, or write L",
+                         [](SceneEvents& s) { s.objectEmission = true; }});
+    if (!events.background)
+        lacks.push_back({"the background is black (B): set [world] background", [](SceneEvents& s) { s.background = true; }});
+    if (!events.ambientLight || !events.ambientReflectance)
+        lacks.push_back({!events.ambientLight ? "no ambient light (L'ambient'): set [world] ambient"
+                                              : "no material reflects the ambient light (ka is 0 in every material): give one ka",
+                         [](SceneEvents& s) {
+                             s.ambientLight = s.ambientReflectance = true;
+                             addEvent(s, eventOf(Lobe::Diffuse));
+                         }});
+    return lacks;
+}
+
+bool possibleIn(const std::vector<std::string>& languages, const std::string& expression, const SceneEvents& events) {
+    const std::optional<std::string> scene = sceneLanguage(events);
+    if (!scene) return false;
+    std::vector<std::string> all = languages;
+    all.push_back(expression);
+    all.push_back(*scene);
+    return lpe::commonPath(all).has_value();
+}
+
+}  // namespace
+
+SceneEvents sceneEventsOf(const Scene& scene) {
+    SceneEvents events;
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        const Material& material = *scene.materials[scene.objects[i].material];
+        for (const ScatterEvent& e : scatterEventsOf(material)) addEvent(events, e);
+        events.ambientReflectance |= !isBlack(material.ambientReflectance());
+        if (const auto emission = emissionEventOf(scene, i)) {
+            if (*emission == lpe::EventType::Emitter) events.hittableLight = true;
+            else events.objectEmission = true;
+        }
+    }
+    events.shapelessLight = !scene.lights.empty();
+    events.ambientLight = !isBlack(scene.ambient);
+    events.background = !isBlack(scene.background);
+    return events;
+}
+
+std::optional<std::string> sceneLanguage(const SceneEvents& events) {
+    std::vector<std::string> scatter, smoothScatter;
+    for (const ScatterEvent& e : events.scatter) {
+        scatter.push_back(tuple(e));
+        if (smooth(e)) smoothScatter.push_back(tuple(e));
+    }
+    const std::string any = scatter.empty() ? "" : alternation(scatter) + "*";
+    std::vector<std::string> paths;
+    // Emitters a ray can hit: after any events, or none.
+    std::vector<std::string> hit;
+    if (events.hittableLight) hit.emplace_back(kDeclaredLight);
+    if (events.objectEmission) hit.emplace_back("O");
+    if (events.background) hit.emplace_back("B");
+    if (!hit.empty()) paths.push_back("E" + any + alternation(hit));
+    // A point light is never hit: only a light sample from a diffuse or glossy event reaches it,
+    // from the eye's side or (bdpt) the light's, so some such event is on the path.
+    if (events.shapelessLight && !smoothScatter.empty())
+        paths.push_back("E" + any + alternation(smoothScatter) + any + kDeclaredLight);
+    // The ambient term ka Ia, recorded after the diffuse event (direct_light.cpp).
+    if (events.ambientLight && events.ambientReflectance)
+        paths.push_back("E" + any + "<RD><L.'" + kAmbientLabel + "'>");
+    if (paths.empty()) return std::nullopt;
+    std::string language;
+    for (const std::string& p : paths) language += (language.empty() ? "" : "|") + ("(" + p + ")");
+    return language;
+}
+
+std::optional<std::string> whyNotInScene(const std::string& expression, const std::vector<std::string>& languages,
+                                         const Scene& scene) {
+    const SceneEvents events = sceneEventsOf(scene);
+    if (possibleIn(languages, expression, events)) return std::nullopt;
+    const std::vector<Lack> lacks = lacksOf(events);
+    for (const Lack& lack : lacks) {
+        SceneEvents more = events;
+        lack.add(more);
+        if (possibleIn(languages, expression, more)) return "in this scene " + lack.cause;
+    }
+    for (std::size_t i = 0; i < lacks.size(); ++i)
+        for (std::size_t j = i + 1; j < lacks.size(); ++j) {
+            SceneEvents more = events;
+            lacks[i].add(more);
+            lacks[j].add(more);
+            if (possibleIn(languages, expression, more))
+                return "in this scene " + lacks[i].cause + "; and " + lacks[j].cause;
+        }
+    const std::optional<std::string> language = sceneLanguage(events);
+    return "no path of this scene has it: every path here is one of " + language.value_or("none (nothing emits)");
+}
+
+}  // namespace lightpath
