@@ -62,7 +62,12 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
     }
     const bool fillable = possible(languages(expression, integrator, false), placement);
-    if (fillable) return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+    if (fillable) {
+        // On the events each labelled object and light produces (a mirror named by a floor's label).
+        if (auto why = whyNotOnItsLabels(expression, languages(expression, integrator, false), *scene))
+            return {isPresetMember(aov, scene) ? Verdict::PresetBlack : Verdict::BlackHere, *why};
+        return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+    }
     if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
     const IntegratorInfo& language = integrator ? *integrator : *findIntegrator("path");
     return {Verdict::BlackHere, whyNeverFilled(expression, language, scene).value_or("no path of this scene carries its labels")};

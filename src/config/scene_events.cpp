@@ -1,8 +1,11 @@
 #include "config/scene_events.h"
 
+#include <algorithm>
 #include <functional>
+#include <map>
 
 #include "lpe/analysis.h"
+#include "lpe/automaton.h"
 #include "materials/material_type.h"
 #include "materials/scatter_events.h"
 #include "scene/ambient_label.h"
@@ -117,7 +120,107 @@ bool possibleIn(const std::vector<std::string>& languages, const std::string& ex
     return lpe::commonPath(all).has_value();
 }
 
+// The events each label is on: an object's (its name, else its material's) scatter events, and
+// the ends of paths, each already written as a tuple with its label.
+struct LabelledEvents {
+    std::map<std::string, std::vector<ScatterEvent>> scatter;
+    std::vector<std::string> hit;        // <L.'panel'>, <O.'lamp'>, B
+    std::vector<std::string> shapeless;  // <L.'key'>: after a diffuse or glossy event only
+    std::vector<std::string> ambientAfter;  // <RD'wall'> of each object with ka, when the scene has ambient light
+};
+
+// `<RD'floor'>`; an empty label is any label.
+std::string labelled(const std::string& head, const std::string& label) {
+    return "<" + head + (label.empty() ? "" : "'" + label + "'") + ">";
+}
+
+std::optional<LabelledEvents> labelledEventsOf(const Scene& scene) {
+    LabelledEvents events;
+    bool quotable = true;
+    const auto quoted = [&quotable](const std::string& label) {
+        quotable = quotable && label.find('\'') == std::string::npos;
+        return label;
+    };
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        const std::string label = quoted(scene.labelOf(i));
+        const Material& material = *scene.materials[scene.objects[i].material];
+        auto& own = events.scatter[label];
+        for (const ScatterEvent& e : scatterEventsOf(material))
+            if (std::none_of(own.begin(), own.end(), [&](const ScatterEvent& o) { return sameEvent(o, e); })) own.push_back(e);
+        if (const auto emission = emissionEventOf(scene, i))
+            events.hit.push_back(labelled(std::string(1, lpe::letter(*emission)) + ".", label));
+        if (!isBlack(scene.ambient) && !isBlack(material.ambientReflectance()))
+            events.ambientAfter.push_back(labelled("RD", label));
+    }
+    for (const LightSlot& light : scene.lights)
+        events.shapeless.push_back(light->name.empty() ? kDeclaredLight : labelled("L.", quoted(light->name)));
+    if (!isBlack(scene.background)) events.hit.emplace_back("B");
+    if (!quotable) return std::nullopt;
+    return events;
+}
+
+std::optional<std::string> labelledLanguage(const LabelledEvents& events) {
+    std::vector<std::string> scatter, smoothScatter;
+    for (const auto& [label, own] : events.scatter)
+        for (const ScatterEvent& e : own) {
+            const std::string t = labelled(std::string(1, lpe::letter(e.type)) + lpe::letter(e.scatter), label);
+            scatter.push_back(t);
+            if (smooth(e)) smoothScatter.push_back(t);
+        }
+    const std::string any = scatter.empty() ? "" : alternation(scatter) + "*";
+    std::vector<std::string> paths;
+    if (!events.hit.empty()) paths.push_back("E" + any + alternation(events.hit));
+    if (!events.shapeless.empty() && !smoothScatter.empty())
+        paths.push_back("E" + any + alternation(smoothScatter) + any + alternation(events.shapeless));
+    if (!events.ambientAfter.empty())
+        paths.push_back("E" + any + alternation(events.ambientAfter) + "<L.'" + kAmbientLabel + "'>");
+    if (paths.empty()) return std::nullopt;
+    std::string language;
+    for (const std::string& p : paths) language += (language.empty() ? "" : "|") + ("(" + p + ")");
+    return language;
+}
+
+bool possibleOnLabels(const std::vector<std::string>& languages, const std::string& expression,
+                      const LabelledEvents& events) {
+    const std::optional<std::string> scene = labelledLanguage(events);
+    if (!scene) return false;
+    std::vector<std::string> all = languages;
+    all.push_back(expression);
+    all.push_back(*scene);
+    return lpe::commonPath(all).has_value();
+}
+
+std::string eventList(const std::vector<ScatterEvent>& events) {
+    std::string list;
+    for (std::size_t i = 0; i < events.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == events.size() ? " and " : ", ") + tuple(events[i]);
+    return list.empty() ? "nothing" : list;
+}
+
 }  // namespace
+
+std::optional<std::string> whyNotOnItsLabels(const std::string& expression, const std::vector<std::string>& languages,
+                                             const Scene& scene) {
+    const std::optional<LabelledEvents> events = labelledEventsOf(scene);
+    if (!events || possibleOnLabels(languages, expression, *events)) return std::nullopt;
+    const lpe::Automaton automaton = lpe::Automaton::compile({{"x", expression}});
+    for (const std::string& label : automaton.labels()) {
+        const auto own = events->scatter.find(label);
+        if (own == events->scatter.end()) continue;
+        for (const auto type : {lpe::EventType::Reflection, lpe::EventType::Transmission})
+            for (const auto scatter : {lpe::Scatter::Diffuse, lpe::Scatter::Glossy, lpe::Scatter::Specular, lpe::Scatter::Straight}) {
+                const ScatterEvent e{type, scatter};
+                if (std::any_of(own->second.begin(), own->second.end(), [&](const ScatterEvent& o) { return sameEvent(o, e); }))
+                    continue;
+                LabelledEvents more = *events;
+                more.scatter[label].push_back(e);
+                if (possibleOnLabels(languages, expression, more))
+                    return "in this scene " + label + " has no " + lobeName(e) + " lobe " + tuple(e) +
+                           ": its material scatters only by " + eventList(own->second);
+            }
+    }
+    return std::string("in this scene no path has its labels on events their objects and lights produce");
+}
 
 SceneEvents sceneEventsOf(const Scene& scene) {
     SceneEvents events;

@@ -35,4 +35,11 @@ std::optional<std::string> sceneLanguage(const SceneEvents& events);
 std::optional<std::string> whyNotInScene(const std::string& expression, const std::vector<std::string>& languages,
                                          const Scene& scene);
 
+// The same on each thing's own label: nothing when `expression` shares a path with `languages`
+// among the events each object scatters by and each emitter ends a path with, under its label;
+// otherwise which labelled object lacks the event, e.g. "in this scene floor has no mirror lobe <RS>:
+// its material scatters only by <RD>". Nothing, too, when a label cannot be quoted in an LPE.
+std::optional<std::string> whyNotOnItsLabels(const std::string& expression, const std::vector<std::string>& languages,
+                                             const Scene& scene);
+
 }  // namespace lightpath

@@ -165,3 +165,16 @@ TEST_CASE("the ambient term: only raycast, raster and whitted add it, and the li
     const nlohmann::json own = {{"integrator", "path"}, {"lpes", {{{"name", "x"}, {"expression", "E.*<L.'ambient'>"}}}}};
     CHECK_THROWS_AS(serve::applySettings(start, own.dump(), nullptr, &room), serve::RequestError);
 }
+
+TEST_CASE("the scene's events on their labels: an object named in an expression scatters by its own material's lobes") {
+    const Scene room = load(kMatteRoom + withBall("kr = 0.9"));
+    const Judgement floor = judge("E<RS'floor'>.*", room);
+    CHECK(floor.verdict == Verdict::BlackHere);
+    CHECK(floor.reason == "in this scene floor has no mirror lobe <RS>: its material scatters only by <RD>");
+    // The control: the ball is the mirror.
+    CHECK(judge("E<RS'ball'>.*", room).verdict == Verdict::Fillable);
+    CHECK(judge("E<RD'floor'>.*", room).verdict == Verdict::Fillable);
+    const Judgement ball = judge("E<RD'ball'>L", room);
+    CHECK(ball.verdict == Verdict::BlackHere);
+    CHECK(ball.reason == "in this scene ball has no diffuse lobe <RD>: its material scatters only by <RS>");
+}
