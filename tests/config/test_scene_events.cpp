@@ -134,7 +134,7 @@ TEST_CASE("the scene's events: the warning names the cause, a preset's black AOV
 
 TEST_CASE("the ambient term: only raycast, raster and whitted add it, and the lights preset's group stays usable") {
     // The user's own expression is refused under the methods that gather no ambient term ...
-    for (const char* name : {"path", "bdpt", "radiosity"}) {
+    for (const std::string name : {"path", "bdpt", "radiosity"}) {
         CAPTURE(name);
         const Judgement judgement = judgeExpression({"x", "E.*<L'ambient'>"}, findIntegrator(name));
         CHECK(judgement.verdict == Verdict::Refused);
