@@ -26,7 +26,8 @@ void addEvent(SceneEvents& events, const ScatterEvent& event) {
     if (!hasEvent(events, event)) events.scatter.push_back(event);
 }
 
-std::string tuple(const ScatterEvent& e) { return std::string("<") + lpe::letter(e.type) + lpe::letter(e.scatter) + ">"; }
+std::string letters(const ScatterEvent& e) { return {lpe::letter(e.type), lpe::letter(e.scatter)}; }
+std::string tuple(const ScatterEvent& e) { return "<" + letters(e) + ">"; }
 
 bool smooth(const ScatterEvent& e) { return e.scatter == lpe::Scatter::Diffuse || e.scatter == lpe::Scatter::Glossy; }
 
@@ -37,7 +38,35 @@ std::string alternation(const std::vector<std::string>& parts) {
 }
 
 // A light that is not the ambient term (every light but 'ambient' is one a scene declares).
-constexpr const char* kDeclaredLight = "<L.[^'ambient']>";
+const std::string kDeclaredLight = std::string("<L.[^'") + kAmbientLabel + "']>";
+
+// The parts of a scene's paths, each an LPE tuple (labelled or not).
+struct PathParts {
+    std::vector<std::string> scatter;       // every scattering event
+    std::vector<std::string> smooth;        // those of them a light sample can leave from (D, G)
+    std::vector<std::string> hit;           // emitters a ray can hit: area lights, emitting surfaces, B
+    std::vector<std::string> shapeless;     // point lights
+    std::vector<std::string> ambientAfter;  // the <RD> events the ambient term follows
+};
+
+// The one statement of which paths a scene's parts make; none when nothing can end a path.
+std::optional<std::string> pathsOf(const PathParts& parts) {
+    const std::string any = parts.scatter.empty() ? "" : alternation(parts.scatter) + "*";
+    std::vector<std::string> paths;
+    // A ray hits an area light, an emitting surface or the sky after any events, or none.
+    if (!parts.hit.empty()) paths.push_back("E" + any + alternation(parts.hit));
+    // A point light is never hit: only a light sample from a diffuse or glossy event reaches it,
+    // from the eye's side or (bdpt) the light's, so some such event is on the path.
+    if (!parts.shapeless.empty() && !parts.smooth.empty())
+        paths.push_back("E" + any + alternation(parts.smooth) + any + alternation(parts.shapeless));
+    // The ambient term ka Ia, recorded after the diffuse event (integrators/direct_light.cpp).
+    if (!parts.ambientAfter.empty())
+        paths.push_back("E" + any + alternation(parts.ambientAfter) + "<L.'" + kAmbientLabel + "'>");
+    if (paths.empty()) return std::nullopt;
+    std::string language;
+    for (const std::string& p : paths) language += (language.empty() ? "" : "|") + ("(" + p + ")");
+    return language;
+}
 
 // What the scene lacks for a path, as one change to SceneEvents, with its cause and fix.
 struct Lack {
@@ -150,7 +179,7 @@ std::optional<LabelledEvents> labelledEventsOf(const Scene& scene) {
         if (const auto emission = emissionEventOf(scene, i))
             events.hit.push_back(labelled(std::string(1, lpe::letter(*emission)) + ".", label));
         if (!isBlack(scene.ambient) && !isBlack(material.ambientReflectance()))
-            events.ambientAfter.push_back(labelled("RD", label));
+            events.ambientAfter.push_back(labelled(letters(eventOf(Lobe::Diffuse)), label));
     }
     for (const LightSlot& light : scene.lights)
         events.shapeless.push_back(light->name.empty() ? kDeclaredLight : labelled("L.", quoted(light->name)));
@@ -160,24 +189,14 @@ std::optional<LabelledEvents> labelledEventsOf(const Scene& scene) {
 }
 
 std::optional<std::string> labelledLanguage(const LabelledEvents& events) {
-    std::vector<std::string> scatter, smoothScatter;
+    PathParts parts{{}, {}, events.hit, events.shapeless, events.ambientAfter};
     for (const auto& [label, own] : events.scatter)
         for (const ScatterEvent& e : own) {
-            const std::string t = labelled(std::string(1, lpe::letter(e.type)) + lpe::letter(e.scatter), label);
-            scatter.push_back(t);
-            if (smooth(e)) smoothScatter.push_back(t);
+            const std::string t = labelled(letters(e), label);
+            parts.scatter.push_back(t);
+            if (smooth(e)) parts.smooth.push_back(t);
         }
-    const std::string any = scatter.empty() ? "" : alternation(scatter) + "*";
-    std::vector<std::string> paths;
-    if (!events.hit.empty()) paths.push_back("E" + any + alternation(events.hit));
-    if (!events.shapeless.empty() && !smoothScatter.empty())
-        paths.push_back("E" + any + alternation(smoothScatter) + any + alternation(events.shapeless));
-    if (!events.ambientAfter.empty())
-        paths.push_back("E" + any + alternation(events.ambientAfter) + "<L.'" + kAmbientLabel + "'>");
-    if (paths.empty()) return std::nullopt;
-    std::string language;
-    for (const std::string& p : paths) language += (language.empty() ? "" : "|") + ("(" + p + ")");
-    return language;
+    return pathsOf(parts);
 }
 
 bool possibleOnLabels(const std::vector<std::string>& languages, const std::string& expression,
@@ -240,30 +259,17 @@ SceneEvents sceneEventsOf(const Scene& scene) {
 }
 
 std::optional<std::string> sceneLanguage(const SceneEvents& events) {
-    std::vector<std::string> scatter, smoothScatter;
+    PathParts parts;
     for (const ScatterEvent& e : events.scatter) {
-        scatter.push_back(tuple(e));
-        if (smooth(e)) smoothScatter.push_back(tuple(e));
+        parts.scatter.push_back(tuple(e));
+        if (smooth(e)) parts.smooth.push_back(tuple(e));
     }
-    const std::string any = scatter.empty() ? "" : alternation(scatter) + "*";
-    std::vector<std::string> paths;
-    // Emitters a ray can hit: after any events, or none.
-    std::vector<std::string> hit;
-    if (events.hittableLight) hit.emplace_back(kDeclaredLight);
-    if (events.objectEmission) hit.emplace_back("O");
-    if (events.background) hit.emplace_back("B");
-    if (!hit.empty()) paths.push_back("E" + any + alternation(hit));
-    // A point light is never hit: only a light sample from a diffuse or glossy event reaches it,
-    // from the eye's side or (bdpt) the light's, so some such event is on the path.
-    if (events.shapelessLight && !smoothScatter.empty())
-        paths.push_back("E" + any + alternation(smoothScatter) + any + kDeclaredLight);
-    // The ambient term ka Ia, recorded after the diffuse event (direct_light.cpp).
-    if (events.ambientLight && events.ambientReflectance)
-        paths.push_back("E" + any + "<RD><L.'" + kAmbientLabel + "'>");
-    if (paths.empty()) return std::nullopt;
-    std::string language;
-    for (const std::string& p : paths) language += (language.empty() ? "" : "|") + ("(" + p + ")");
-    return language;
+    if (events.hittableLight) parts.hit.push_back(kDeclaredLight);
+    if (events.objectEmission) parts.hit.emplace_back("O");
+    if (events.background) parts.hit.emplace_back("B");
+    if (events.shapelessLight) parts.shapeless.push_back(kDeclaredLight);
+    if (events.ambientLight && events.ambientReflectance) parts.ambientAfter.push_back(tuple(eventOf(Lobe::Diffuse)));
+    return pathsOf(parts);
 }
 
 std::optional<std::string> whyNotInScene(const std::string& expression, const std::vector<std::string>& languages,
