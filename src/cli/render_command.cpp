@@ -160,9 +160,9 @@ void run(const RenderCommand& command) {
                            {"lightpath:max_depth", std::to_string(options.maxDepth)},
                            {"lightpath:seconds", std::to_string(result.stats.seconds)}};
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
-    // A preset's AOV this integrator cannot fill is written black, so the set still sums to the
-    // beauty; said here and in --stats, not as a warning (config/lpe_verdict.h).
-    const std::vector<BlackAov> black = blackPresetAovs(aovs.expressions(), *findIntegrator(options.integrator));
+    // A preset's AOV this integrator or this scene cannot fill is written black, so the set still
+    // sums to the beauty; said here and in --stats, not as a warning (config/lpe_verdict.h).
+    const std::vector<BlackAov> black = blackPresetAovs(aovs.expressions(), *findIntegrator(options.integrator), &scene);
     for (const BlackAov& b : black) metadata.emplace_back("lightpath:black:" + b.name, b.reason);
     WriteStats write;
     const auto writeStart = std::chrono::steady_clock::now();
@@ -183,10 +183,12 @@ void run(const RenderCommand& command) {
     if (command.stats) {
         printStats(result.stats, write);
         printAcceleratorStats(config.accel, result.stats.accelerator);
-        for (const BlackAov& b : black)
-            std::printf("black AOV     %s, as --integrator %s always leaves it (%s); written, so the AOVs still "
-                        "sum to the beauty\n",
-                        b.name.c_str(), options.integrator.c_str(), b.reason.c_str());
+        for (const BlackAov& b : black) {
+            const std::string as = b.inThisScene ? "as this scene leaves it under --integrator " + options.integrator
+                                                 : "as --integrator " + options.integrator + " always leaves it";
+            std::printf("black AOV     %s, %s (%s); written, so the AOVs still sum to the beauty\n", b.name.c_str(),
+                        as.c_str(), b.reason.c_str());
+        }
         if (result.stats.radiosity) printRadiosityStats(*result.stats.radiosity);
     }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "config/lpe_feasibility.h"
+#include "config/scene_events.h"
 #include "film/aov_presets.h"
 #include "integrators/event_symbols.h"
 #include "lpe/analysis.h"
@@ -25,9 +26,9 @@ std::vector<std::string> languages(const std::string& expression, const Integrat
 
 }  // namespace
 
-bool isPresetMember(const lpe::NamedExpression& aov) {
+bool isPresetMember(const lpe::NamedExpression& aov, const Scene* scene) {
     for (const AovPreset* preset : aovPresets())
-        for (const auto& member : preset->expressions())
+        for (const auto& member : preset->expressions(scene))
             if (member.name == aov.name && member.expression == aov.expression) return true;
     return false;
 }
@@ -38,12 +39,17 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
     if (!possible(languages(expression, integrator, true))) {
         if (!possible(languages(expression, nullptr, true))) return {Verdict::Refused, whyNeverRendered(expression)};
         const std::string why = *whyNeverFilled(expression, *integrator);
-        return {isPresetMember(aov) ? Verdict::PresetBlack : Verdict::Refused,
-                isPresetMember(aov) ? std::string(integrator->limitation) : why};
+        const bool member = isPresetMember(aov, scene);
+        return {member ? Verdict::PresetBlack : Verdict::Refused, member ? std::string(integrator->limitation) : why};
     }
     if (!possible(languages(expression, integrator, false)))
         return {Verdict::BlackHere, "it needs a volume event (V), and lightpath renders no media yet"};
     if (!scene) return {};
+
+    // In this scene: what its materials scatter by and its lights and surfaces emit. Black here with
+    // the cause and a fix, as a label the scene lacks is: another scene fills it.
+    if (auto why = whyNotInScene(expression, languages(expression, integrator, false), *scene))
+        return {isPresetMember(aov, scene) ? Verdict::PresetBlack : Verdict::BlackHere, *why};
 
     // In this scene: a label it names that labels nothing here is on no event at all.
     const std::vector<std::string> known = sceneLabels(*scene);
@@ -56,7 +62,12 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
     }
     const bool fillable = possible(languages(expression, integrator, false), placement);
-    if (fillable) return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+    if (fillable) {
+        // On the events each labelled object and light produces (a mirror named by a floor's label).
+        if (auto why = whyNotOnItsLabels(expression, languages(expression, integrator, false), *scene))
+            return {isPresetMember(aov, scene) ? Verdict::PresetBlack : Verdict::BlackHere, *why};
+        return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+    }
     if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
     const IntegratorInfo& language = integrator ? *integrator : *findIntegrator("path");
     return {Verdict::BlackHere, whyNeverFilled(expression, language, scene).value_or("no path of this scene carries its labels")};
@@ -72,11 +83,17 @@ std::string warningMessage(const lpe::NamedExpression& aov, const Judgement& jud
     return "AOV " + aov.name + " (" + aov.expression + ") stays black: " + judgement.reason;
 }
 
-std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator) {
+std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator,
+                                      const Scene* scene) {
     std::vector<BlackAov> black;
     for (const auto& aov : set) {
-        const Judgement judgement = judgeExpression(aov, &integrator);
-        if (judgement.verdict == Verdict::PresetBlack) black.push_back({aov.name, judgement.reason});
+        const Judgement judgement = judgeExpression(aov, &integrator, scene);
+        if (judgement.verdict != Verdict::PresetBlack) continue;
+        // Black for want of something in the scene, or whatever the scene, under this integrator.
+        const bool inThisScene = possible(languages(aov.expression, &integrator, true));
+        const std::string prefix = "in this scene ";
+        const bool said = inThisScene && judgement.reason.rfind(prefix, 0) == 0;
+        black.push_back({aov.name, said ? judgement.reason.substr(prefix.size()) : judgement.reason, inThisScene});
     }
     return black;
 }

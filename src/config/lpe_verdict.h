@@ -4,11 +4,12 @@
 // serve (serve::applySettings, before a job is prepared), lpe check and lpe match --integrator.
 //
 //   refused      no path of the integrator matches it in any scene (lpe_feasibility.h says why);
-//   black here   it could match, but not in this scene (a label the scene lacks or places
-//                elsewhere) or not yet (it needs a volume event, and lightpath renders no media):
+//   black here   it could match, but not in this scene (no material scatters by an event it
+//                needs, no emitter of the kind it ends at: config/scene_events.h; a label the
+//                scene lacks or places elsewhere) or not yet (it needs a volume event, and lightpath renders no media):
 //                rendered black, with one short warning;
-//   preset black an AOV of a preset (`classes`, `taxonomy`, by name and expression) that this
-//                integrator cannot fill: written black so the preset still sums to the beauty, and
+//   preset black an AOV of a preset (`classes`, `taxonomy`, by name and expression; given the
+//                scene, `lights` too) that this integrator, or this scene's events, cannot fill: written black so the preset still sums to the beauty, and
 //                said in --stats and the EXR header, never as a warning (docs/lpe.md);
 //   fillable     otherwise; a label the scene lacks still gets a warning (a typo in [^'kee']).
 #include <optional>
@@ -35,8 +36,9 @@ struct Judgement {
 Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator,
                           const Scene* scene = nullptr);
 
-// Is `aov` a member of a preset (same name and expression)?
-bool isPresetMember(const lpe::NamedExpression& aov);
+// Is `aov` a member of a preset (same name and expression)? The presets made from a scene
+// (`lights`) only when `scene` is given.
+bool isPresetMember(const lpe::NamedExpression& aov, const Scene* scene = nullptr);
 
 // "'E.*L'key'' can never match under --integrator whitted: <reason>": the refusal every command
 // prints after the expression's name ("--lpe k: ", "lpe check: k: ").
@@ -44,12 +46,14 @@ std::string refusalMessage(const lpe::NamedExpression& aov, const IntegratorInfo
 // "AOV k (EXPR) stays black: <reason>" for BlackHere, "--lpe k: <reason>" for a Fillable warning.
 std::string warningMessage(const lpe::NamedExpression& aov, const Judgement& judgement);
 
-// The preset AOVs of `set` that `integrator` cannot fill, each with the integrator's limitation:
-// for --stats and the EXR header.
+// The preset AOVs of `set` that `integrator` (in `scene`, if given) cannot fill, each with the
+// integrator's limitation or what the scene lacks: for --stats and the EXR header.
 struct BlackAov {
     std::string name;
     std::string reason;
+    bool inThisScene = false;  // the integrator could fill it, but not with this scene's events
 };
-std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator);
+std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator,
+                                      const Scene* scene = nullptr);
 
 }  // namespace lightpath

@@ -400,7 +400,8 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
 
 // Every bounce, from the eye and from the lights.
 LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
-    "bdpt", "bidirectional path tracing: also light from the light's side, caustics under point lights", "E.*L",
-    "bidirectional path tracing follows every bounce, from the eye and from the lights",
+    "bdpt", "bidirectional path tracing: also light from the light's side, caustics under point lights",
+    "E.*[<L.[^'ambient']>OB]",
+    "bidirectional path tracing follows every bounce, from the eye and from the lights, but adds no ambient term (ka Ia)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::BdptIntegrator>()); },
     lightpath::ShadowRays::Always, 5))

@@ -70,7 +70,8 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
 
 // It samples every lobe at every bounce.
 LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
-    "path", "path tracing with global illumination (physically based reading)", "E.*L",
-    "path tracing follows every bounce",
+    "path", "path tracing with global illumination (physically based reading)",
+    "E.*[<L.[^'ambient']>OB]",
+    "path tracing follows every bounce but adds no ambient term (ka Ia, which stands in for the indirect light it gathers)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::PathIntegrator>()); },
     lightpath::ShadowRays::Always, 3))

@@ -401,8 +401,8 @@ void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const 
 
 // Its patches' diffuse bounces (ED+L), emitters and the background seen directly (EL).
 LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
-    "radiosity", "diffuse patches, form factors by ray casting, solved bounce by bounce (Jacobi)", "ED*L",
-    "radiosity follows diffuse bounces only: no highlight, mirror or refraction",
+    "radiosity", "diffuse patches, form factors by ray casting, solved bounce by bounce (Jacobi)", "ED*[<L.[^'ambient']>OB]",
+    "radiosity follows diffuse bounces only: no highlight, mirror, refraction or ambient term (ka Ia)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::RadiosityIntegrator>()); },
     lightpath::ShadowRays::Always, 4,
     {{.name = "patch-size", .type = lightpath::ParameterType::Number, .unit = "scene units", .range = lightpath::kPositive,

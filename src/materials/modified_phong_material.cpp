@@ -104,7 +104,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "specular exponent: larger is a tighter highlight"},
       {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
        "emitted radiance: the surface is an area light"}},
-     "<R[DG]>"},
+     "<R[DG]>|O"},
     1, lightpath::makeModifiedPhong,
     // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.
     {{true, true}, [](const lightpath::ParameterValues& v) {

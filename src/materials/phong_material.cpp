@@ -166,7 +166,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "clear glass: the mirror and refracted rays split `kt` by Fresnel's equations"},
       {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
        "emitted radiance: the surface is an area light"}},
-     "<R[DGS]>|<TS>"},
+     "<R[DGS]>|<TS>|O"},
     0, lightpath::makePhong,
     // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so f
     // carries 1/cos theta_i and is not. Not energy-conserving by design (docs/design.md).

@@ -171,7 +171,7 @@ Response Api::route(const Request& request, const Target& target) {
     if (path == "/api/settings") {  // PUT or POST
         allowParameters(target, {});
         std::vector<std::string> notices;
-        const auto job = session_.update(applySettings(session_.job()->settings, request.body, &notices));
+        const auto job = session_.update(applySettings(session_.job()->settings, request.body, &notices, &session_.scene()));
         return jsonResponse({{"generation", job->generation},
                              {"settings", toJson(job->settings)},
                              {"warnings", job->warnings},

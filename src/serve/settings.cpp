@@ -149,7 +149,8 @@ Settings defaultSettings(const Scene& scene) {
     return settings;
 }
 
-Settings applySettings(const Settings& current, const std::string& body, std::vector<std::string>* notices) {
+Settings applySettings(const Settings& current, const std::string& body, std::vector<std::string>* notices,
+                       const Scene* scene) {
     const json request = json::parse(body, nullptr, false);
     if (request.is_discarded()) throw RequestError(400, "", "malformed JSON: expected an object such as {\"spp\": 16}");
     if (!request.is_object()) throw RequestError(400, "", "expected a JSON object, got " + describe(request));
@@ -191,7 +192,7 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
         const lpe::NamedExpression& aov = settings.lpes[i];
         std::optional<Judgement> judgement;
         try {
-            judgement = judgeExpression(aov, integrator);
+            judgement = judgeExpression(aov, integrator, scene);
         } catch (const std::exception&) {
             continue;
         }

@@ -48,9 +48,10 @@ Settings defaultSettings(const Scene& scene);
 // Throws RequestError (400) for malformed JSON, an unknown field, a wrong type or a value out of
 // range, naming the field and what was expected. A value that an integrator cannot use but has one
 // answer for (spp for the rasteriser, which samples pixel centres) is replaced, and `notices`
-// (when given) says so.
+// (when given) says so. Expressions are judged as the command line judges them, on `scene` (the
+// session's) when given, so that its light groups are a preset's: never refused (docs/lpe.md).
 Settings applySettings(const Settings& current, const std::string& body,
-                       std::vector<std::string>* notices = nullptr);
+                       std::vector<std::string>* notices = nullptr, const Scene* scene = nullptr);
 
 nlohmann::json toJson(const Settings& settings);
 
