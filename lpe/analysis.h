@@ -45,5 +45,9 @@ using LabelPlacement = std::map<std::string, std::vector<EventType>, std::less<>
 // A shortest path that every one of `expressions` accepts, built only of events `placement`
 // allows; nothing when they have no such path in common. Throws SyntaxError or LimitError.
 std::optional<Path> commonPath(const std::vector<std::string>& expressions, const LabelPlacement& placement = {});
+// Whether some path matches every one of `expressions` (commonPath finds one).
+inline bool haveCommonPath(const std::vector<std::string>& expressions, const LabelPlacement& placement = {}) {
+    return commonPath(expressions, placement).has_value();
+}
 
 }  // namespace lpe

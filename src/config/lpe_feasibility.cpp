@@ -20,10 +20,6 @@ const std::vector<EventType> kObjectEvents = {EventType::Reflection, EventType::
 // Any event sequence that ends at an emitter or the background.
 constexpr const char* kEndsAtEmitter = ".*[LOB]";
 
-bool possible(const std::vector<std::string>& expressions, const lpe::LabelPlacement& placement = {}) {
-    return lpe::commonPath(expressions, placement).has_value();
-}
-
 std::string quotedExpression(const std::string& text) { return "'" + text + "'"; }
 
 // Is there a `|` outside every group and label? Then appending an event needs parentheses.
@@ -43,7 +39,7 @@ bool alternatesAtTop(const std::string& text) {
 std::string integratorsThatCan(const std::string& expression, const lpe::LabelPlacement& placement) {
     std::string names;
     for (const IntegratorInfo& other : integrators()) {
-        if (possible({expression, kRenderedPaths, other.pathLanguage}, placement))
+        if (lpe::haveCommonPath({expression, kRenderedPaths, other.pathLanguage}, placement))
             names += (names.empty() ? "" : " or ") + std::string("--integrator ") + other.name;
     }
     return names;
@@ -53,20 +49,20 @@ std::string integratorsThatCan(const std::string& expression, const lpe::LabelPl
 
 // Why `expression` matches no path lightpath renders at all.
 std::string whyNeverRendered(const std::string& expression) {
-    if (const auto spelling = lpe::labelledEventSpelling(expression); spelling && possible({*spelling, kRenderedPaths})) {
+    if (const auto spelling = lpe::labelledEventSpelling(expression); spelling && lpe::haveCommonPath({*spelling, kRenderedPaths})) {
         return "a letter followed by a label is two events (L'key' is a light, then an event labelled key); "
                "did you mean " + quotedExpression(*spelling) + "?";
     }
-    if (const auto osl = lpe::oslPrecedenceReading(expression); osl && possible({*osl, kRenderedPaths})) {
+    if (const auto osl = lpe::oslPrecedenceReading(expression); osl && lpe::haveCommonPath({*osl, kRenderedPaths})) {
         return "| binds loosest, as in regular expressions, and so it matches no path; OSL binds | tighter "
                "than concatenation: did you mean " + quotedExpression(*osl) + "?";
     }
-    if (!possible({expression, kEndsAtEmitter})) {
+    if (!lpe::haveCommonPath({expression, kEndsAtEmitter})) {
         return "never reaches a light: every path ends at a light, an emitting object or the background "
                "(L matches all three), e.g. write " +
                quotedExpression((alternatesAtTop(expression) ? "(" + expression + ")" : expression) + "L");
     }
-    if (possible({expression, kPathsWithVolumes})) {
+    if (lpe::haveCommonPath({expression, kPathsWithVolumes})) {
         return "needs a volume event (V), and lightpath renders no volumes: V never occurs";
     }
     return "matches no path lightpath renders: a path is E, then reflections and transmissions "
@@ -99,13 +95,13 @@ std::optional<std::string> misplacedLabel(const std::string& expression, const s
         freed.erase(label);
         std::vector<std::string> all = languages;
         all.push_back(expression);
-        if (!possible(all, freed)) continue;
+        if (!lpe::haveCommonPath(all, freed)) continue;
         const bool isLight =
             std::find(placed->second.begin(), placed->second.end(), EventType::Emitter) != placed->second.end() &&
             std::find(placed->second.begin(), placed->second.end(), EventType::Reflection) == placed->second.end();
         freed[label] = isLight ? kObjectEvents : kLightEvents;
         const std::string is = isLight ? "a light" : "an object";
-        const std::string wanted = possible(all, freed) ? (isLight ? ", not an object" : ", not a light") : "";
+        const std::string wanted = lpe::haveCommonPath(all, freed) ? (isLight ? ", not an object" : ", not a light") : "";
         return label + " is " + is + wanted + ": it labels only " + eventsOf(label, placed->second);
     }
     return std::nullopt;
@@ -134,10 +130,10 @@ lpe::LabelPlacement labelPlacement(const Scene& scene) {
 
 std::optional<std::string> whyNeverFilled(const std::string& expression, const IntegratorInfo& integrator,
                                           const Scene* scene) {
-    if (!possible({expression, kRenderedPaths})) return whyNeverRendered(expression);
+    if (!lpe::haveCommonPath({expression, kRenderedPaths})) return whyNeverRendered(expression);
 
     const std::vector<std::string> languages = {kRenderedPaths, integrator.pathLanguage};
-    if (!possible({expression, kRenderedPaths, integrator.pathLanguage})) {
+    if (!lpe::haveCommonPath({expression, kRenderedPaths, integrator.pathLanguage})) {
         const lpe::Path needed = *lpe::commonPath({expression, kRenderedPaths});
         std::string message = std::string(integrator.limitation) + " (" + integrator.name + " renders only " +
                               integrator.pathLanguage + "; the shortest path this expression needs is " +
@@ -150,7 +146,7 @@ std::optional<std::string> whyNeverFilled(const std::string& expression, const I
     const lpe::LabelPlacement placement = labelPlacement(*scene);
     std::vector<std::string> all = languages;
     all.push_back(expression);
-    if (possible(all, placement)) return std::nullopt;
+    if (lpe::haveCommonPath(all, placement)) return std::nullopt;
     if (auto message = misplacedLabel(expression, languages, placement)) return message;
     return "no path of " + std::string(integrator.name) + " in this scene carries these labels where the expression needs them";
 }

@@ -12,10 +12,6 @@
 namespace lightpath {
 namespace {
 
-bool possible(const std::vector<std::string>& expressions, const lpe::LabelPlacement& placement = {}) {
-    return lpe::commonPath(expressions, placement).has_value();
-}
-
 // The languages an expression must share a path with: what lightpath renders (with `volumes`, as
 // it would with media) and, when one is named, what the integrator follows.
 std::vector<std::string> languages(const std::string& expression, const IntegratorInfo* integrator, bool volumes) {
@@ -36,13 +32,13 @@ bool isPresetMember(const lpe::NamedExpression& aov, const Scene* scene) {
 Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const Scene* scene) {
     const std::string& expression = aov.expression;
     // Never, in any scene: no path of the integrator, volumes let in, has it.
-    if (!possible(languages(expression, integrator, true))) {
-        if (!possible(languages(expression, nullptr, true))) return {Verdict::Refused, whyNeverRendered(expression)};
+    if (!lpe::haveCommonPath(languages(expression, integrator, true))) {
+        if (!lpe::haveCommonPath(languages(expression, nullptr, true))) return {Verdict::Refused, whyNeverRendered(expression)};
         const std::string why = *whyNeverFilled(expression, *integrator);
         const bool member = isPresetMember(aov, scene);
         return {member ? Verdict::PresetBlack : Verdict::Refused, member ? std::string(integrator->limitation) : why};
     }
-    if (!possible(languages(expression, integrator, false)))
+    if (!lpe::haveCommonPath(languages(expression, integrator, false)))
         return {Verdict::BlackHere, "it needs a volume event (V), and lightpath renders no media yet"};
     if (!scene) return {};
 
@@ -61,7 +57,7 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         placement[label] = {};
         if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
     }
-    const bool fillable = possible(languages(expression, integrator, false), placement);
+    const bool fillable = lpe::haveCommonPath(languages(expression, integrator, false), placement);
     if (fillable) {
         // On the events each labelled object and light produces (a mirror named by a floor's label).
         if (auto why = whyNotOnItsLabels(expression, languages(expression, integrator, false), *scene))
@@ -90,7 +86,7 @@ std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& s
         const Judgement judgement = judgeExpression(aov, &integrator, scene);
         if (judgement.verdict != Verdict::PresetBlack) continue;
         // Black for want of something in the scene, or whatever the scene, under this integrator.
-        const bool inThisScene = possible(languages(aov.expression, &integrator, true));
+        const bool inThisScene = lpe::haveCommonPath(languages(aov.expression, &integrator, true));
         const std::string prefix = "in this scene ";
         const bool said = inThisScene && judgement.reason.rfind(prefix, 0) == 0;
         black.push_back({aov.name, said ? judgement.reason.substr(prefix.size()) : judgement.reason, inThisScene});
