@@ -3,9 +3,8 @@
 namespace lightpath {
 
 bool Bsdf::hasSmoothLobe() const {
-    const Lobes all = lobes();
-    for (int l = 0; l < int(all.size()); ++l)
-        if (!all[l].delta() && material_.has(l)) return true;
+    for (int l = 0; l < int(lobes_.size()); ++l)
+        if (!lobes_[l].delta() && material_.has(l)) return true;
     return false;
 }
 
@@ -14,9 +13,8 @@ const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) cons
     probabilitiesWo_ = wo;
     std::array<float, kMaxLobes>& weights = probabilities_;
     weights.fill(0.0f);
-    const Lobes all = lobes();
-    for (int l = 0; l < int(all.size()); ++l)
-        if (!all[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, wo);
+    for (int l = 0; l < int(lobes_.size()); ++l)
+        if (!lobes_[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, wo);
     SpecularBranches branches;
     const int count = material_.specularBranches(side_, wo, branches);
     for (int b = 0; b < count; ++b) weights[branches[b].lobe] = branches[b].albedo;

@@ -23,10 +23,10 @@ public:
     // side is the outside of the material (it refracts from 1 into its index of refraction).
     Bsdf(const Material& material, const Vec3& normal, bool entering,
          TransportMode mode = TransportMode::Radiance)
-        : material_(material), side_{normal, entering, mode} {}
+        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode} {}
 
-    Lobes lobes() const { return material_.lobes(); }
-    const LobeInfo& lobe(int index) const { return lobes()[index]; }
+    Lobes lobes() const { return lobes_; }
+    const LobeInfo& lobe(int index) const { return lobes_[index]; }
     bool has(int lobe) const { return material_.has(lobe); }
     // Whether a smooth (non-delta) lobe scatters anything: light sampling can reach this point.
     bool hasSmoothLobe() const;
@@ -58,6 +58,7 @@ private:
     const std::array<float, kMaxLobes>& lobeProbabilities(const Vec3& wo) const;
 
     const Material& material_;
+    Lobes lobes_;  // asked once per hit: integrators read a lobe's event at every step
     SurfaceSide side_;
     mutable Vec3 probabilitiesWo_{0.0f};
     mutable std::array<float, kMaxLobes> probabilities_{};

@@ -149,6 +149,7 @@ MaterialClaims materialClaims(const MaterialType& type, const ParameterValues& v
     MaterialClaims claims;
     claims.reciprocal = type.promises.reciprocal;
     claims.conservesEnergy = type.promises.conservesEnergy && type.promises.conservesEnergy(values);
+    claims.events = std::string(type.schema.events);
     return claims;
 }
 

@@ -22,6 +22,9 @@ struct MaterialClaims {
     // Reflects at most what arrives, in every direction: a white furnace estimate of its albedo
     // stays <= 1 (for parameters that ask for it, e.g. kd + ks <= 1).
     bool conservesEnergy = false;
+    // The events its schema says it produces (TypeSchema::events, e.g. "<R[DG]>"): every lobe it
+    // declares must scatter by one of them, so `lightpath types` tells the truth.
+    std::string events;
 };
 
 struct MaterialCase {

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "direction_chi_square.h"
+#include "lpe/automaton.h"
+#include "lpe/path_string.h"
 #include "materials/bsdf.h"
 #include "monte_carlo.h"
 #include "statistics.h"
@@ -185,6 +187,21 @@ CheckResult checkLobeAlbedo(const Material& material, int lobe) {
     return result;
 }
 
+CheckResult checkDeclaredLobes(const Material& material, const std::string& events) {
+    CheckResult result;
+    const Lobes lobes = material.lobes();
+    if (lobes.empty() || lobes.size() > std::size_t(kMaxLobes))
+        result.fail(lobes.size(), " lobes declared: a material has 1 to ", kMaxLobes);
+    const lpe::Automaton automaton = lpe::Automaton::compile({{"events", events}});
+    for (int l = 0; l < int(lobes.size()); ++l) {
+        const lpe::Path path{lpe::Event{lobes[l].event.type, lobes[l].event.scatter, ""}};
+        if (!automaton.matches(path, 0))
+            result.fail(nameOf(material, l), ": its event ", lpe::toExpressionString(path),
+                        " is not among the type's declared events ", events);
+    }
+    return result;
+}
+
 CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool entering) {
     CheckResult result;
     const Bsdf bsdf(material, kNormal, entering);
@@ -305,6 +322,7 @@ CheckResult checkMaterial(const MaterialCase& c) {
     CheckResult result;
     result.merge(checkFiniteNonNegative(material));
     result.merge(checkSpecularBranches(material));
+    result.merge(checkDeclaredLobes(material, c.claims.events));
     forEachSmoothLobe(material, [&](int lobe) {
         if (!material.has(lobe)) return;
         for (const Vec3& wo : outgoingDirections()) result.merge(checkSamplingMatchesPdf(material, lobe, wo));

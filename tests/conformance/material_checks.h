@@ -37,6 +37,9 @@ CheckResult checkEnergyConservation(const Material& material);
 // chooses lobes in proportion to it (a lobe it underrates is sampled too rarely, one it calls 0
 // never). Phong's highlight albedo, 8 ks / (n + 1), is 28% above the lobe's reflectance at n = 5.
 CheckResult checkLobeAlbedo(const Material& material, int lobe);
+// The material declares 1 to kMaxLobes lobes, each scattering by an event in `events` (an LPE over
+// one event, the schema's).
+CheckResult checkDeclaredLobes(const Material& material, const std::string& events);
 // The Bsdf's one-sample estimate, E[weight], equals the integral of every smooth lobe's eval (by
 // uniform directions, not the material's own sampling) plus the delta branches' weights.
 CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool entering);

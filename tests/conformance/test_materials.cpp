@@ -77,6 +77,7 @@ TEST_CASE("materials: finite, non-negative values everywhere, delta branches in 
     forEveryMaterial([](const MaterialCase& c) {
         CheckResult result = checkFiniteNonNegative(*c.material);
         result.merge(checkSpecularBranches(*c.material));
+        result.merge(checkDeclaredLobes(*c.material, c.claims.events));
         return result;
     });
 }
