@@ -49,24 +49,27 @@ std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& samp
 // A shading point's smooth lobes (those light sampling can reach, any number the material
 // declares), their events and the automaton state after each, stepped once and shared by its
 // ambient term and every light sample (each term then costs one step per lobe, not two).
+// Plain arrays, filled up to `count`: this is made at every shading point.
 struct SmoothLobeEvents {
     int count = 0;
     int lobes[kMaxLobes];  // each one's index in the material's lobes()
-    PathEvent events[kMaxLobes];
+    bool glossy[kMaxLobes];  // a glossy lobe, as the stats count them
     lpe::Automaton::State after[kMaxLobes];
     int ambient = -1;  // the slot whose event the ambient term ka Ia takes: the first diffuse reflection
+    const ShadingPoint& point;
 
-    SmoothLobeEvents(const ShadingPoint& p, const PathState& path) {
+    SmoothLobeEvents(const ShadingPoint& p, const PathState& path) : point(p) {
         const Lobes all = p.bsdf.lobes();
         for (int l = 0; l < int(all.size()); ++l) {
             if (all[l].delta()) continue;
             lobes[count] = l;
-            events[count] = p.eventOf(l);
-            after[count] = path.stateAfter(events[count]);
+            glossy[count] = all[l].event.scatter == lpe::Scatter::Glossy;
+            after[count] = path.stateAfter(p.eventOf(l));
             if (ambient < 0 && !all[l].transmits() && all[l].event.scatter == lpe::Scatter::Diffuse) ambient = count;
             ++count;
         }
     }
+    PathEvent event(int slot) const { return point.eventOf(lobes[slot]); }
 };
 
 // `explain`: why a light sample added nothing through any lobe.
@@ -95,10 +98,9 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     const bool litSide = (cosTheta > 0.0f || p.terms.smoothTransmission) && sample.distance > 0.0f;
     PathEvent lightEvent = light.event();
     lightEvent.position = sample.point;
-    const PathEvent(&events)[kMaxLobes] = lobes.events;
     if (!litSide && skip) {
         ++counters.shadowBehind;
-        if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, lobes, sample, litSide));
+        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
         return;
     }
     lpe::OutputMask accepted[kMaxLobes];
@@ -124,7 +126,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         value[l] = Rgb{0.0f};
         weights[l] = 1.0f;
         const bool present = p.terms.lobes[lobe];
-        const bool glossy = p.bsdf.lobe(lobe).event.scatter == lpe::Scatter::Glossy;
+        const bool glossy = lobes.glossy[l];
         if (!wanted[l] || !(present || !skip)) {
             if (glossy && !present) ++counters.glossyAbsent;
             continue;
@@ -137,7 +139,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
     if (skip && !anyValue) {
         ++counters.shadowZero;
-        if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, lobes, sample, litSide));
+        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
         return;
     }
 
@@ -149,7 +151,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
                 const auto blocker = ctx.geometry.intersect(shadowRay);
                 const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
                                         blocker ? blocker->object : 0};
-                path.reject(events[0], lightEvent,
+                path.reject(lobes.event(0), lightEvent,
                             "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
                                 (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
                                 formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
@@ -160,13 +162,13 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     for (int l = 0; l < lobes.count; ++l) {
         if (!wanted[l] || (skip && isBlack(value[l]))) continue;
         if (!path.explaining()) {
-            path.emitAccepted(events[l], lightEvent, value[l], accepted[l]);
+            path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
             continue;
         }
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
             termFactors(p, lobes.lobes[l], sample, light, incident, lightPdf, weights[l], weighting, throughput, factors);
-        path.emitAccepted(events[l], lightEvent, value[l], accepted[l], std::span(factors.data(), count));
+        path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
     if (!path.explaining()) return;
     // A lobe that is absent beside one that scatters, in the lecture's order (ks = 0 beside kd):
@@ -176,7 +178,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         const int lobe = lobes.lobes[l];
         if (wanted[l] && !p.terms.lobes[lobe] && earlierPresent) {
             const LobeInfo& info = p.bsdf.lobe(lobe);
-            path.reject(events[l], lightEvent,
+            path.reject(lobes.event(l), lightEvent,
                         std::string("the ") + info.name + " term is zero: " + info.coefficient + " = 0");
         }
         earlierPresent = earlierPresent || p.terms.lobes[lobe];
@@ -206,11 +208,11 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     const Rgb ka = point.material.ambientReflectance();
     const Rgb value = throughput * ka * ctx.scene.ambient;
     if (!path.explaining()) {
-        path.emitAccepted(lobes.events[lobes.ambient], ambient, value, accepted);
+        path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted);
         return;
     }
     const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
-    path.emitAccepted(lobes.events[lobes.ambient], ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
+    path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
 }  // namespace

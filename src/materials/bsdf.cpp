@@ -2,12 +2,6 @@
 
 namespace lightpath {
 
-bool Bsdf::hasSmoothLobe() const {
-    for (int l = 0; l < int(lobes_.size()); ++l)
-        if (!lobes_[l].delta() && material_.has(l)) return true;
-    return false;
-}
-
 const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) const {
     if (wo == probabilitiesWo_) return probabilities_;  // a zero wo never reaches here twice: it is not unit
     probabilitiesWo_ = wo;

@@ -29,7 +29,11 @@ public:
     const LobeInfo& lobe(int index) const { return lobes_[index]; }
     bool has(int lobe) const { return material_.has(lobe); }
     // Whether a smooth (non-delta) lobe scatters anything: light sampling can reach this point.
-    bool hasSmoothLobe() const;
+    bool hasSmoothLobe() const {
+        for (int l = 0; l < int(lobes_.size()); ++l)
+            if (!lobes_[l].delta() && material_.has(l)) return true;
+        return false;
+    }
 
     // f(wo, wi) |cos theta_i| of a smooth lobe; zero where the lobe has no support.
     Rgb eval(int lobe, const Vec3& wo, const Vec3& wi) const { return material_.eval(lobe, side_, wo, wi); }
