@@ -18,23 +18,26 @@ public:
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<OrenNayarMaterial>(*this); }
 
-    bool has(Lobe lobe) const override { return lobe == Lobe::Diffuse && !isBlack(kd); }
+    // One lobe, index 0: a diffuse reflection (<RD>), as Lambert's.
+    static constexpr LobeInfo kLobes[] = {lobes::kDiffuse};
+    Lobes lobes() const override { return kLobes; }
+    bool has(int lobe) const override { return lobe == 0 && !isBlack(kd); }
 
     // f |cos theta_i| = kd / pi (A + B max(0, cos(phi_i - phi_o)) sin(alpha) tan(beta)) cos theta_i,
     // alpha = max(theta_i, theta_o), beta = min(theta_i, theta_o).
-    Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override {
-        if (lobe != Lobe::Diffuse || !side.bothAbove(wo, wi)) return Rgb{0.0f};
+    Rgb eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override {
+        if (lobe != 0 || !side.bothAbove(wo, wi)) return Rgb{0.0f};
         return kd * (roughness(side, wo, wi) * glm::dot(wi, side.normal) / kPi);
     }
 
-    float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override {
-        if (lobe != Lobe::Diffuse || !side.bothAbove(wo, wi)) return 0.0f;
+    float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override {
+        if (lobe != 0 || !side.bothAbove(wo, wi)) return 0.0f;
         return cosineHemispherePdf(glm::dot(wi, side.normal));
     }
 
     // Cosine-weighted, as Lambert's: the weight is eval / pdf = kd (A + B ...).
-    std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override {
-        if (lobe != Lobe::Diffuse || !(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;
+    std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override {
+        if (lobe != 0 || !(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;
         LobeSample s;
         s.wi = Frame(side.normal).toWorld(sampleCosineHemisphere(u));
         const float cosIn = glm::dot(s.wi, side.normal);
@@ -45,12 +48,12 @@ public:
     }
 
     // The reflectance at normal incidence, kd A (theta_o = 0 leaves only the A term).
-    float albedo(Lobe lobe, const SurfaceSide&, const Vec3&) const override {
-        return lobe == Lobe::Diffuse ? maxComponent(kd) * a : 0.0f;
+    float albedo(int lobe, const SurfaceSide&, const Vec3&) const override {
+        return lobe == 0 ? maxComponent(kd) * a : 0.0f;
     }
 
-    int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi, NamedFactors& factors) const override {
-        if (lobe != Lobe::Diffuse) return 0;
+    int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi, NamedFactors& factors) const override {
+        if (lobe != 0) return 0;
         factors = {{{"kd", kd}, {"(A+B...)N.L", Rgb{roughness(side, wo, wi) * glm::dot(side.normal, wi)}}}};
         return 2;
     }

@@ -57,8 +57,8 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
                 n(r.shadowBehind + r.shadowZero + r.shadowDead), n(r.shadowBehind), n(r.shadowZero), n(r.shadowDead));
     std::printf("              reflection %llu, refraction %llu (no requested output can accept)\n",
                 n(r.reflectionDead), n(r.refractionDead));
-    std::printf("highlights    %llu evaluated, %llu skipped (material has ks = 0)\n", n(r.highlightEvaluated),
-                n(r.highlightNoKs));
+    std::printf("glossy terms  %llu evaluated, %llu skipped (the material's glossy lobe is zero, e.g. ks = 0)\n",
+                n(r.glossyEvaluated), n(r.glossyAbsent));
     std::printf("time          %.3f s on %d thread%s (%.3f s CPU): %.0f samples/s, %.2f M rays/s\n", stats.seconds,
                 stats.threads, stats.threads == 1 ? "" : "s", stats.cpuSeconds, static_cast<double>(stats.samples) / stats.seconds,
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);

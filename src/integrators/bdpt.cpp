@@ -91,7 +91,7 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
         v[count - 2].pdfRev = reverseDensity(*step, here, v[count - 2]);
         beta *= step->weight;
         if (!survives(beta, count - 1, sampler)) break;
-        ++(step->lobe == Lobe::Refraction ? path.counters.refraction : path.counters.reflection);
+        ++(here.surface->bsdf.lobe(step->lobe).transmits() ? path.counters.refraction : path.counters.reflection);
         pdf = step->pdf;
         delta = step->delta;
         ray = spawnRay(here.surface->hit, step->wi, ctx.geometry.numerics());
@@ -188,8 +188,8 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
     const BdptVertex eye[1] = {cameraVertex(ctx.camera.eye())};
     Visibility visible(sp.hit, ctx.camera.eye());
     const std::size_t before = path.size();
-    for (const Lobe lobe : kSmoothLobes) {
-        if (!sp.bsdf.has(lobe)) continue;
+    for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
+        if (sp.bsdf.lobe(lobe).delta() || !sp.bsdf.has(lobe)) continue;
         if (!path.push(sp.eventOf(lobe))) continue;
         if (pushLightEvents(path, light, i - 1) && path.wants(lightEvent)) {
             const Rgb f = sp.bsdf.eval(lobe, sp.wo, w);
@@ -227,8 +227,8 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
     y[0].pdfFwd = choice * pdfPosition;
     const PathEvent lightEvent = eventOfLight(y[0]);
     Visibility visible(sp.hit, sample.point);
-    for (const Lobe lobe : kSmoothLobes) {
-        if (!sp.bsdf.has(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
+    for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
+        if (sp.bsdf.lobe(lobe).delta() || !sp.bsdf.has(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
         const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
         if (isBlack(f)) continue;
         const float weight = misWeight(joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1, lightWalks);
@@ -253,13 +253,13 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     const PathEvent lightEvent = eventOfLight(light[0]);
     Visibility visible(ez.hit, y.point);
     const std::size_t before = path.size();
-    for (const Lobe eyeLobe : kSmoothLobes) {
-        if (!ez.bsdf.has(eyeLobe)) continue;
+    for (int eyeLobe = 0; eyeLobe < int(ez.bsdf.lobes().size()); ++eyeLobe) {
+        if (ez.bsdf.lobe(eyeLobe).delta() || !ez.bsdf.has(eyeLobe)) continue;
         const Rgb fz = ez.bsdf.eval(eyeLobe, ez.wo, w);
         if (isBlack(fz) || !path.push(ez.eventOf(eyeLobe))) continue;
         const std::size_t withEye = path.size();
-        for (const Lobe lightLobe : kSmoothLobes) {
-            if (!ly.bsdf.has(lightLobe) || !path.push(ly.eventOf(lightLobe))) continue;
+        for (int lightLobe = 0; lightLobe < int(ly.bsdf.lobes().size()); ++lightLobe) {
+            if (ly.bsdf.lobe(lightLobe).delta() || !ly.bsdf.has(lightLobe) || !path.push(ly.eventOf(lightLobe))) continue;
             if (pushLightEvents(path, light, s - 2) && path.wants(lightEvent)) {
                 const Rgb fy = ly.bsdf.eval(lightLobe, ly.wo, -w);
                 if (!isBlack(fy)) {
@@ -286,10 +286,8 @@ void BdptIntegrator::preprocess(const RenderContext& ctx) {
     // automaton over this scene's own events (every object through every lobe, every light).
     std::vector<PathEvent> scattering, lights;
     for (std::uint32_t object = 0; object < ctx.scene.objects.size(); ++object) {
-        for (int l = 0; l < kLobeCount; ++l) {
-            const ScatterEvent e = eventOf(static_cast<Lobe>(l));
-            scattering.push_back({e.type, e.scatter, Subject::Object, object});
-        }
+        for (const LobeInfo& lobe : ctx.scene.materials[ctx.scene.objects[object].material]->lobes())
+            scattering.push_back({lobe.event.type, lobe.event.scatter, Subject::Object, object});
     }
     for (const auto& light : ctx.lights.all()) lights.push_back(light->event());
     const lpe::Automaton& automaton = ctx.automaton;
@@ -353,7 +351,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             event.position = hit->point;
             if (path.wants(event) && !isBlack(emitter->radiance(*hit, -ray.direction))) {
                 markEmitter(z, *emitter, eye[t - 2]);
-                const float weight = misWeight(joinedDensities({}, Lobe::Diffuse, {eye.data(), std::size_t(t)}, Lobe::Diffuse, ctx),
+                const float weight = misWeight(joinedDensities({}, 0, {eye.data(), std::size_t(t)}, 0, ctx),
                                                0, lightWalks_);
                 z.light = nullptr;
                 path.setStrategy(0, t);
@@ -378,7 +376,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         const Vec2 u = sampler.next2D();
         const auto step = sampledStep(sp, uLobe, u);
         if (!step) break;
-        const bool transmitted = step->lobe == Lobe::Refraction;
+        const bool transmitted = sp.bsdf.lobe(step->lobe).transmits();
         if (!path.push(sp.eventOf(step->lobe))) {
             ++(transmitted ? path.counters.refractionDead : path.counters.reflectionDead);
             break;

@@ -17,11 +17,11 @@ float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVerte
     return pdf;
 }
 
-ScatterStep prescribedStep(const ShadingPoint& vertex, Lobe lobe, const Vec3& wi) {
+ScatterStep prescribedStep(const ShadingPoint& vertex, int lobe, const Vec3& wi) {
     ScatterStep step;
     step.wi = wi;
     step.lobe = lobe;
-    step.delta = isDelta(lobe);
+    step.delta = vertex.bsdf.lobe(lobe).delta();
     if (step.delta) {
         step.pdf = step.pdfRev = 1.0f;
         return step;
@@ -39,7 +39,7 @@ std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, 
     step.wi = sample->wi;
     step.lobe = sample->lobe;
     step.weight = sample->weight;
-    step.delta = isDelta(sample->lobe);
+    step.delta = vertex.bsdf.lobe(sample->lobe).delta();
     // A delta lobe's Dirac is common to every strategy that can make the path (those that do not
     // join at this vertex), so both its densities count as 1 (pbrt-v4's remap0 of the same).
     step.pdf = step.delta ? 1.0f : sample->pdf;
@@ -106,8 +106,8 @@ Vec3 directionTo(const BdptVertex& from, const BdptVertex& to) { return glm::nor
 
 }  // namespace
 
-PathDensities joinedDensities(std::span<const BdptVertex> light, Lobe lightLobe, std::span<const BdptVertex> eye,
-                              Lobe eyeLobe, const RenderContext& context) {
+PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, std::span<const BdptVertex> eye,
+                              int eyeLobe, const RenderContext& context) {
     PathDensities p;
     const int s = static_cast<int>(light.size()), t = static_cast<int>(eye.size());
     p.n = s + t;

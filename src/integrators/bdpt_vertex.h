@@ -57,7 +57,7 @@ struct BdptVertex {
     float pdfRev = 0.0f;  // area density of this vertex sampled from the other side
     // Surface: the lobe the walk left through (the path's event here) and whether it is a delta.
     // Light: delta for a point light. A delta vertex cannot end a subpath that is joined.
-    Lobe lobe = Lobe::Diffuse;
+    int lobe = 0;  // its index in the material's lobes()
     bool delta = false;
     const Light* light = nullptr;  // the light of x0
     // x0's densities per unit area on its light: as light sampling from x1 picks it (next-event
@@ -76,7 +76,7 @@ float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVerte
 // Where one scattering step left a vertex, as the walk sampled it or as a test prescribes it.
 struct ScatterStep {
     Vec3 wi{0.0f};
-    Lobe lobe = Lobe::Diffuse;
+    int lobe = 0;  // its index in the material's lobes()
     Rgb weight{0.0f};      // f |cos| / pdf
     float pdf = 0.0f;      // solid angle, forward; 1 for a delta lobe (its Dirac cancels between strategies)
     float pdfRev = 0.0f;   // solid angle, the same lobe with wo and wi swapped
@@ -85,7 +85,7 @@ struct ScatterStep {
 
 // The step that scatters from `vertex` into `wi` through `lobe`: for a walk that must pass through
 // given points (tests, and the same arithmetic as a sampled step).
-ScatterStep prescribedStep(const ShadingPoint& vertex, Lobe lobe, const Vec3& wi);
+ScatterStep prescribedStep(const ShadingPoint& vertex, int lobe, const Vec3& wi);
 // The step Bsdf::sample takes, with its reverse density; nullopt when it scatters nothing.
 std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, Vec2 u);
 
@@ -122,8 +122,8 @@ struct PathDensities {
 // The densities of the path made by joining light[0..s) and eye[0..t) (either may be empty: s = 0
 // is an eye walk that hit a light, t = 0 is not a strategy of a pinhole), the joined ends scattering
 // through `lightLobe` and `eyeLobe`.
-PathDensities joinedDensities(std::span<const BdptVertex> light, Lobe lightLobe, std::span<const BdptVertex> eye,
-                              Lobe eyeLobe, const RenderContext& context);
+PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, std::span<const BdptVertex> eye,
+                              int eyeLobe, const RenderContext& context);
 
 // The power-heuristic weight of strategy s for `path`: p_s^2 / sum over the strategies that can
 // make it of p_k^2. `lightWalks`: strategies s >= 2 are in use (light subpaths are traced).

@@ -22,7 +22,7 @@ std::string formatted(const char* format, double a, double b = 0.0) {
 // (kd, N.L, I, attenuation; ks, (H.N)^n, I, attenuation), whose product is the value; otherwise
 // the Monte Carlo estimate's (f |cos|, incident light over its density, the two densities, the
 // MIS weight).
-std::size_t termFactors(const ShadingPoint& p, Lobe lobe, const LightSample& sample, const Light& light,
+std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& sample, const Light& light,
                         const Rgb& incident, float lightPdf, float weight, DirectLightWeighting weighting,
                         const Rgb& throughput, std::array<TermFactor, kMaxTermFactors>& factors) {
     std::size_t n = 0;
@@ -46,70 +46,100 @@ std::size_t termFactors(const ShadingPoint& p, Lobe lobe, const LightSample& sam
     return n;
 }
 
-// `explain`: why a light sample added nothing through either lobe.
-std::string zeroReason(const ShadingPoint& p, const LightSample& sample, bool litSide) {
-    if (!litSide) return formatted("the light is behind the surface (N.L = %.3f)", glm::dot(p.normal, sample.wi));
-    if (isBlack(sample.weight)) return "the light sends nothing this way (a one-sided emitter seen from behind, or dark)";
-    if (!p.terms.diffuse && !p.terms.highlight) return "the term is zero: kd = 0 and ks = 0";
-    return "the term is zero here";
-}
-
-// A shading point's two smooth-lobe events and the automaton state after each, stepped once and
-// shared by its ambient term and every light sample (each term then costs one step, not four).
+// A shading point's smooth lobes (those light sampling can reach, any number the material
+// declares), their events and the automaton state after each, stepped once and shared by its
+// ambient term and every light sample (each term then costs one step per lobe, not two).
+// Plain arrays, filled up to `count`: this is made at every shading point.
 struct SmoothLobeEvents {
-    PathEvent events[2];
-    lpe::Automaton::State after[2];
+    int count = 0;
+    int lobes[kMaxLobes];  // each one's index in the material's lobes()
+    bool glossy[kMaxLobes];  // a glossy lobe, as the stats count them
+    lpe::Automaton::State after[kMaxLobes];
+    int ambient = -1;  // the slot whose event the ambient term ka Ia takes: the first diffuse reflection
+    const ShadingPoint& point;
 
-    SmoothLobeEvents(const ShadingPoint& p, const PathState& path)
-        : events{p.eventOf(Lobe::Diffuse), p.eventOf(Lobe::Highlight)},
-          after{path.stateAfter(events[0]), path.stateAfter(events[1])} {}
+    SmoothLobeEvents(const ShadingPoint& p, const PathState& path) : point(p) {
+        const Lobes all = p.bsdf.lobes();
+        for (int l = 0; l < int(all.size()); ++l) {
+            if (all[l].delta()) continue;
+            lobes[count] = l;
+            glossy[count] = all[l].event.scatter == lpe::Scatter::Glossy;
+            after[count] = path.stateAfter(p.eventOf(l));
+            if (ambient < 0 && !all[l].transmits() && all[l].event.scatter == lpe::Scatter::Diffuse) ambient = count;
+            ++count;
+        }
+    }
+    PathEvent event(int slot) const { return point.eventOf(lobes[slot]); }
 };
 
-// One light sample through both smooth lobes, with one shadow ray from `origins` (p's).
+// `explain`: why a light sample added nothing through any lobe.
+std::string zeroReason(const ShadingPoint& p, const SmoothLobeEvents& lobes, const LightSample& sample, bool litSide) {
+    if (!litSide) return formatted("the light is behind the surface (N.L = %.3f)", glm::dot(p.normal, sample.wi));
+    if (isBlack(sample.weight)) return "the light sends nothing this way (a one-sided emitter seen from behind, or dark)";
+    std::string absent;  // "kd = 0 and ks = 0" when no smooth lobe scatters anything
+    for (int l = 0; l < lobes.count; ++l) {
+        if (p.terms.lobes[lobes.lobes[l]]) return "the term is zero here";
+        absent += std::string(absent.empty() ? "" : " and ") + p.bsdf.lobe(lobes.lobes[l]).coefficient + " = 0";
+    }
+    return "the term is zero: " + absent;
+}
+
+// One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
 void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
                     DirectLightWeighting weighting, PathState& path) {
+    if (lobes.count == 0) return;
     const RenderContext& ctx = path.context;
     const bool skip = ctx.skipEnabled;
     RayCounters& counters = path.counters;
-    // The lecture's own-primitive test: p is in the shadow of its own surface iff N.(b - p) <= 0.
+    // The lecture's own-primitive test: p is in the shadow of its own surface iff N.(b - p) <= 0,
+    // unless a smooth lobe transmits: light from behind then passes through (its eval says how much).
     const float cosTheta = glm::dot(p.normal, sample.wi);
-    const bool litSide = cosTheta > 0.0f && sample.distance > 0.0f;
+    const bool litSide = (cosTheta > 0.0f || p.terms.smoothTransmission) && sample.distance > 0.0f;
     PathEvent lightEvent = light.event();
     lightEvent.position = sample.point;
-    const PathEvent(&events)[2] = lobes.events;
     if (!litSide && skip) {
         ++counters.shadowBehind;
-        if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, sample, litSide));
+        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
         return;
     }
-    const lpe::OutputMask accepted[2] = {path.acceptsAfter(lobes.after[0], lightEvent),
-                                         path.acceptsAfter(lobes.after[1], lightEvent)};
-    const bool wanted[2] = {path.wanted(accepted[0]), path.wanted(accepted[1])};
-    if (!wanted[0] && !wanted[1]) {
+    lpe::OutputMask accepted[kMaxLobes];
+    bool wanted[kMaxLobes];
+    bool anyWanted = false;
+    for (int l = 0; l < lobes.count; ++l) {
+        accepted[l] = path.acceptsAfter(lobes.after[l], lightEvent);
+        wanted[l] = path.wanted(accepted[l]);
+        anyWanted = anyWanted || wanted[l];
+    }
+    if (!anyWanted) {
         ++counters.shadowDead;
         return;
     }
 
     const Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
     const float lightPdf = sample.pdf * choiceProbability;
-    Rgb value[2] = {Rgb{0.0f}, Rgb{0.0f}};
-    float weights[2] = {1.0f, 1.0f};
-    for (int l = 0; l < 2; ++l) {
-        const Lobe lobe = kSmoothLobes[l];
-        const bool present = lobe == Lobe::Diffuse ? p.terms.diffuse : p.terms.highlight;
+    Rgb value[kMaxLobes];
+    float weights[kMaxLobes];
+    bool anyValue = false;
+    for (int l = 0; l < lobes.count; ++l) {
+        const int lobe = lobes.lobes[l];
+        value[l] = Rgb{0.0f};
+        weights[l] = 1.0f;
+        const bool present = p.terms.lobes[lobe];
+        const bool glossy = lobes.glossy[l];
         if (!wanted[l] || !(present || !skip)) {
-            if (lobe == Lobe::Highlight && !present) ++counters.highlightNoKs;
+            if (glossy && !present) ++counters.glossyAbsent;
             continue;
         }
-        if (lobe == Lobe::Highlight) ++counters.highlightEvaluated;
+        if (glossy) ++counters.glossyEvaluated;
         if (weighting == DirectLightWeighting::MultipleImportance && lightPdf > 0.0f)
             weights[l] = powerHeuristic(lightPdf, p.bsdf.pdf(lobe, p.wo, sample.wi));
         value[l] = throughput * p.bsdf.eval(lobe, p.wo, sample.wi) * incident * weights[l];
+        anyValue = anyValue || !isBlack(value[l]);
     }
-    if (skip && isBlack(value[0]) && isBlack(value[1])) {
+    if (skip && !anyValue) {
         ++counters.shadowZero;
-        if (path.explaining()) path.reject(events[0], lightEvent, zeroReason(p, sample, litSide));
+        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
         return;
     }
 
@@ -121,7 +151,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
                 const auto blocker = ctx.geometry.intersect(shadowRay);
                 const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
                                         blocker ? blocker->object : 0};
-                path.reject(events[0], lightEvent,
+                path.reject(lobes.event(0), lightEvent,
                             "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
                                 (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
                                 formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
@@ -129,19 +159,30 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
             return;
         }
     }
-    for (int l = 0; l < 2; ++l) {
+    for (int l = 0; l < lobes.count; ++l) {
         if (!wanted[l] || (skip && isBlack(value[l]))) continue;
         if (!path.explaining()) {
-            path.emitAccepted(events[l], lightEvent, value[l], accepted[l]);
+            path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
             continue;
         }
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
-            termFactors(p, kSmoothLobes[l], sample, light, incident, lightPdf, weights[l], weighting, throughput, factors);
-        path.emitAccepted(events[l], lightEvent, value[l], accepted[l], std::span(factors.data(), count));
+            termFactors(p, lobes.lobes[l], sample, light, incident, lightPdf, weights[l], weighting, throughput, factors);
+        path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
-    if (path.explaining() && wanted[1] && !p.terms.highlight && p.terms.diffuse)
-        path.reject(events[1], lightEvent, "the highlight term is zero: ks = 0");
+    if (!path.explaining()) return;
+    // A lobe that is absent beside one that scatters, in the lecture's order (ks = 0 beside kd):
+    // say so, as its term is part of the formula.
+    bool earlierPresent = false;
+    for (int l = 0; l < lobes.count; ++l) {
+        const int lobe = lobes.lobes[l];
+        if (wanted[l] && !p.terms.lobes[lobe] && earlierPresent) {
+            const LobeInfo& info = p.bsdf.lobe(lobe);
+            path.reject(lobes.event(l), lightEvent,
+                        std::string("the ") + info.name + " term is zero: " + info.coefficient + " = 0");
+        }
+        earlierPresent = earlierPresent || p.terms.lobes[lobe];
+    }
 }
 
 void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
@@ -161,16 +202,17 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     const RenderContext& ctx = path.context;
     if (!point.terms.ambient && ctx.skipEnabled) return;
     const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
-    const lpe::OutputMask accepted = path.acceptsAfter(lobes.after[0], ambient);
+    if (lobes.ambient < 0) return;  // no diffuse reflection to carry it
+    const lpe::OutputMask accepted = path.acceptsAfter(lobes.after[lobes.ambient], ambient);
     if (!path.wanted(accepted)) return;
     const Rgb ka = point.material.ambientReflectance();
     const Rgb value = throughput * ka * ctx.scene.ambient;
     if (!path.explaining()) {
-        path.emitAccepted(lobes.events[0], ambient, value, accepted);
+        path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted);
         return;
     }
     const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
-    path.emitAccepted(lobes.events[0], ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
+    path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
 }  // namespace

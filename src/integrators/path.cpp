@@ -46,7 +46,8 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         const Vec2 u = sampler.next2D();
         const auto sample = point.bsdf.sample(point.wo, uLobe, u);
         if (!sample) break;
-        const bool transmitted = sample->lobe == Lobe::Refraction;
+        const LobeInfo& lobe = point.bsdf.lobe(sample->lobe);
+        const bool transmitted = lobe.transmits();
         if (!path.push(point.eventOf(sample->lobe))) {
             ++(transmitted ? path.counters.refractionDead : path.counters.reflectionDead);
             break;
@@ -60,7 +61,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         }
         ++(transmitted ? path.counters.refraction : path.counters.reflection);
         previousPdf = sample->pdf;
-        previousDelta = isDelta(sample->lobe);
+        previousDelta = lobe.delta();
         ray = spawnRay(point.hit, sample->wi, ctx.geometry.numerics());
     }
     while (path.size() > pathStart) path.pop();

@@ -21,9 +21,10 @@ struct alignas(64) RayCounters {
     std::uint64_t reflectionDead = 0;      // automaton state dead after the mirror event
     std::uint64_t refractionDead = 0;      // automaton state dead after the refraction event
 
-    // Highlight terms (H.N)^n evaluated, and skipped because the material's ks is 0.
-    std::uint64_t highlightEvaluated = 0;
-    std::uint64_t highlightNoKs = 0;
+    // Glossy lobes' terms (the highlight's ks (H.N)^n) evaluated, and skipped because the
+    // material's glossy lobe scatters nothing (ks = 0).
+    std::uint64_t glossyEvaluated = 0;
+    std::uint64_t glossyAbsent = 0;
 
     std::uint64_t nonFinite = 0;  // contributions dropped because they were NaN or infinite
     std::uint64_t eventOverflow = 0;  // events refused because the path's event stack was full
@@ -41,8 +42,8 @@ struct alignas(64) RayCounters {
         shadowDead += o.shadowDead;
         reflectionDead += o.reflectionDead;
         refractionDead += o.refractionDead;
-        highlightEvaluated += o.highlightEvaluated;
-        highlightNoKs += o.highlightNoKs;
+        glossyEvaluated += o.glossyEvaluated;
+        glossyAbsent += o.glossyAbsent;
         nonFinite += o.nonFinite;
         eventOverflow += o.eventOverflow;
         return *this;

@@ -22,9 +22,9 @@ struct ShadingPoint {
     const MaterialTerms& terms;  // which of the material's terms are non-zero
     Bsdf bsdf;
 
-    // The event of scattering here through `lobe`, labelled by the object.
-    PathEvent eventOf(Lobe lobe) const {
-        const ScatterEvent e = lightpath::eventOf(lobe);
+    // The event of scattering here through `lobe` (an index in the material's lobes()), labelled by the object.
+    PathEvent eventOf(int lobe) const {
+        const ScatterEvent e = bsdf.lobe(lobe).event;
         return {e.type, e.scatter, Subject::Object, hit.object, hit.point};
     }
 };

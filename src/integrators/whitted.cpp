@@ -25,7 +25,7 @@ void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, 
     std::array<SpecularBranch, 2> branches;
     const int count = point.bsdf.specularBranches(point.wo, branches);
     for (int b = 0; b < count; ++b) {
-        const bool reflection = branches[b].lobe == Lobe::Mirror;
+        const bool reflection = !point.bsdf.lobe(branches[b].lobe).transmits();
         if (!path.push(point.eventOf(branches[b].lobe))) {
             ++(reflection ? path.counters.reflectionDead : path.counters.refractionDead);
             continue;

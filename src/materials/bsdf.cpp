@@ -2,16 +2,16 @@
 
 namespace lightpath {
 
-const std::array<float, kLobeCount>& Bsdf::lobeProbabilities(const Vec3& wo) const {
+const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) const {
     if (wo == probabilitiesWo_) return probabilities_;  // a zero wo never reaches here twice: it is not unit
     probabilitiesWo_ = wo;
-    std::array<float, kLobeCount>& weights = probabilities_;
-    weights = {0.0f, 0.0f, 0.0f, 0.0f};
-    for (Lobe lobe : kSmoothLobes)
-        if (material_.has(lobe)) weights[static_cast<int>(lobe)] = material_.albedo(lobe, side_, wo);
+    std::array<float, kMaxLobes>& weights = probabilities_;
+    weights.fill(0.0f);
+    for (int l = 0; l < int(lobes_.size()); ++l)
+        if (!lobes_[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, wo);
     SpecularBranches branches;
     const int count = material_.specularBranches(side_, wo, branches);
-    for (int b = 0; b < count; ++b) weights[static_cast<int>(branches[b].lobe)] = branches[b].albedo;
+    for (int b = 0; b < count; ++b) weights[branches[b].lobe] = branches[b].albedo;
     float total = 0.0f;
     for (float w : weights) total += w;
     if (total > 0.0f)
@@ -19,31 +19,33 @@ const std::array<float, kLobeCount>& Bsdf::lobeProbabilities(const Vec3& wo) con
     return weights;
 }
 
-float Bsdf::pdf(Lobe lobe, const Vec3& wo, const Vec3& wi) const {
-    if (isDelta(lobe)) return 0.0f;
-    const float probability = lobeProbabilities(wo)[static_cast<int>(lobe)];
+float Bsdf::pdf(int lobe, const Vec3& wo, const Vec3& wi) const {
+    if (this->lobe(lobe).delta()) return 0.0f;
+    const float probability = lobeProbabilities(wo)[lobe];
     return probability == 0.0f ? 0.0f : probability * material_.pdf(lobe, side_, wo, wi);
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, Vec2 u) const {
     const auto& probabilities = lobeProbabilities(wo);
+    // Over every slot, not only the material's lobes: a uLobe past the rounded total lands on an
+    // empty slot and scatters nothing, as it always has.
     int chosen = 0;
     float cumulative = probabilities[0];
-    while (chosen < kLobeCount - 1 && uLobe >= cumulative) cumulative += probabilities[++chosen];
+    while (chosen < kMaxLobes - 1 && uLobe >= cumulative) cumulative += probabilities[++chosen];
     const float probability = probabilities[chosen];
     if (probability == 0.0f) return std::nullopt;
 
-    const Lobe lobe = static_cast<Lobe>(chosen);
-    if (isDelta(lobe)) {
+    if (lobe(chosen).delta()) {
         SpecularBranches branches;
         const int count = material_.specularBranches(side_, wo, branches);
         for (int b = 0; b < count; ++b)
-            if (branches[b].lobe == lobe) return BsdfSample{branches[b].wi, branches[b].weight / probability, 0.0f, lobe};
+            if (branches[b].lobe == chosen)
+                return BsdfSample{branches[b].wi, branches[b].weight / probability, 0.0f, chosen};
         return std::nullopt;
     }
-    const std::optional<LobeSample> s = material_.sample(lobe, side_, wo, u);
+    const std::optional<LobeSample> s = material_.sample(chosen, side_, wo, u);
     if (!s) return std::nullopt;
-    return BsdfSample{s->wi, s->weight / probability, s->pdf * probability, lobe};
+    return BsdfSample{s->wi, s->weight / probability, s->pdf * probability, chosen};
 }
 
 }  // namespace lightpath

@@ -1,8 +1,8 @@
 #pragma once
 // The one reading of a material that every integrator shares (docs/design.md, "One light
 // transport"): a material's lobes at one surface hit, the choice among them in proportion to
-// their albedo, and the densities that choice implies. Results name their lobe, and so their
-// event (materials/lobe.h): an integrator never maps lobes to events by hand.
+// their albedo, and the densities that choice implies. Results name their lobe (its index in the
+// material's lobes()), and so its event (materials/lobe.h): an integrator never maps lobes to events by hand.
 #include <array>
 #include <optional>
 
@@ -14,7 +14,7 @@ struct BsdfSample {
     Vec3 wi{0.0f};      // unit, world space, away from the surface
     Rgb weight{0.0f};   // f |cos theta_i| / pdf: what the path throughput is multiplied by
     float pdf = 0.0f;   // solid-angle density, the lobe choice included; 0 for a delta lobe
-    Lobe lobe = Lobe::Diffuse;
+    int lobe = 0;       // its index in the material's lobes()
 };
 
 class Bsdf {
@@ -23,15 +23,22 @@ public:
     // side is the outside of the material (it refracts from 1 into its index of refraction).
     Bsdf(const Material& material, const Vec3& normal, bool entering,
          TransportMode mode = TransportMode::Radiance)
-        : material_(material), side_{normal, entering, mode} {}
+        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode} {}
 
-    bool has(Lobe lobe) const { return material_.has(lobe); }
-    bool hasSmoothLobe() const { return has(Lobe::Diffuse) || has(Lobe::Highlight); }
+    Lobes lobes() const { return lobes_; }
+    const LobeInfo& lobe(int index) const { return lobes_[index]; }
+    bool has(int lobe) const { return material_.has(lobe); }
+    // Whether a smooth (non-delta) lobe scatters anything: light sampling can reach this point.
+    bool hasSmoothLobe() const {
+        for (int l = 0; l < int(lobes_.size()); ++l)
+            if (!lobes_[l].delta() && material_.has(l)) return true;
+        return false;
+    }
 
-    // f(wo, wi) |cos theta_i| of a smooth lobe; zero when either direction is below the surface.
-    Rgb eval(Lobe lobe, const Vec3& wo, const Vec3& wi) const { return material_.eval(lobe, side_, wo, wi); }
+    // f(wo, wi) |cos theta_i| of a smooth lobe; zero where the lobe has no support.
+    Rgb eval(int lobe, const Vec3& wo, const Vec3& wi) const { return material_.eval(lobe, side_, wo, wi); }
     // The density of sample() returning wi through `lobe` (a smooth one), its choice included.
-    float pdf(Lobe lobe, const Vec3& wo, const Vec3& wi) const;
+    float pdf(int lobe, const Vec3& wo, const Vec3& wi) const;
     // One lobe in proportion to its weight, then a direction within it; nullopt when the material
     // scatters nothing or the direction falls below the surface.
     std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, Vec2 u) const;
@@ -42,7 +49,7 @@ public:
         return material_.specularBranches(side_, wo, branches);
     }
     // pi eval(), the lobe's term under a point light, as the lecture's named factors; returns how many.
-    int factors(Lobe lobe, const Vec3& wo, const Vec3& wi, NamedFactors& factors) const {
+    int factors(int lobe, const Vec3& wo, const Vec3& wi, NamedFactors& factors) const {
         return material_.factors(lobe, side_, wo, wi, factors);
     }
 
@@ -52,12 +59,13 @@ private:
     // Probability of choosing each lobe for wo, in proportion to its albedo. Integrators ask
     // for the same wo again and again (pdf per lobe in next-event estimation, then sample), so
     // the last answer is kept: for Fresnel glass it costs a Fresnel evaluation.
-    const std::array<float, kLobeCount>& lobeProbabilities(const Vec3& wo) const;
+    const std::array<float, kMaxLobes>& lobeProbabilities(const Vec3& wo) const;
 
     const Material& material_;
+    Lobes lobes_;  // asked once per hit: integrators read a lobe's event at every step
     SurfaceSide side_;
     mutable Vec3 probabilitiesWo_{0.0f};
-    mutable std::array<float, kLobeCount> probabilities_{};
+    mutable std::array<float, kMaxLobes> probabilities_{};
 };
 
 }  // namespace lightpath

@@ -3,37 +3,49 @@
 // scatters by (pbrt-v4's BxDFFlags play this role). An integrator never maps lobes to events by hand.
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include "lpe/event.h"
 #include "math/types.h"
 
 namespace lightpath {
 
-// A lobe names the kind of scattering, not the formula behind it: a material provides the formula.
-//   Diffuse     <RD>   e.g. Lambert's kd / pi
-//   Highlight   <RG>   a glossy reflection, e.g. Phong's highlight ks (H.N)^n / pi
-//   Mirror      <RS>   a perfect reflection, a delta
-//   Refraction  <TS>   a perfect refraction, a delta
-enum class Lobe : std::uint8_t { Diffuse, Highlight, Mirror, Refraction };
-inline constexpr int kLobeCount = 4;
-// The lobes with a density, which light sampling can reach: one shadow ray serves both.
-inline constexpr std::array<Lobe, 2> kSmoothLobes{Lobe::Diffuse, Lobe::Highlight};
-
 // The event a lobe scatters by: its type (reflection or transmission) and scattering letter.
 struct ScatterEvent {
     lpe::EventType type;
     lpe::Scatter scatter;
 };
-constexpr ScatterEvent eventOf(Lobe lobe) {
-    switch (lobe) {
-        case Lobe::Diffuse: return {lpe::EventType::Reflection, lpe::Scatter::Diffuse};
-        case Lobe::Highlight: return {lpe::EventType::Reflection, lpe::Scatter::Glossy};
-        case Lobe::Mirror: return {lpe::EventType::Reflection, lpe::Scatter::Specular};
-        case Lobe::Refraction: return {lpe::EventType::Transmission, lpe::Scatter::Specular};
-    }
-    return {lpe::EventType::Reflection, lpe::Scatter::Diffuse};
-}
-constexpr bool isDelta(Lobe lobe) { return lobe == Lobe::Mirror || lobe == Lobe::Refraction; }
+
+// A lobe is data its material declares (pbrt-v4's BxDFFlags play this role): the event it scatters
+// by, from which an integrator reads all it needs (a delta lobe is S, a transmission lobe passes to
+// the other side), and the names `explain` and the stats print. A material lists its lobes once
+// (Material::lobes()); everything else names a lobe by its index in that list.
+struct LobeInfo {
+    ScatterEvent event;
+    const char* name = "";         // "diffuse", "highlight": for messages
+    const char* coefficient = "";  // the parameter whose zero removes it ("kd", "ks"): `explain`'s reasons
+
+    // A Dirac: Heckbert's S is the specular (delta) scattering that light sampling cannot reach.
+    constexpr bool delta() const { return event.scatter == lpe::Scatter::Specular; }
+    constexpr bool transmits() const { return event.type == lpe::EventType::Transmission; }
+};
+
+// The most lobes a material may declare: per-hit arrays (lobe probabilities, direct lighting's
+// events) are this size, so the hot loop never allocates.
+inline constexpr int kMaxLobes = 6;
+using Lobes = std::span<const LobeInfo>;
+
+// The lobes of the lecture's materials, for materials to list (each material picks its own order).
+namespace lobes {
+//   diffuse     <RD>   e.g. Lambert's kd / pi
+inline constexpr LobeInfo kDiffuse{{lpe::EventType::Reflection, lpe::Scatter::Diffuse}, "diffuse", "kd"};
+//   highlight   <RG>   a glossy reflection, e.g. Phong's highlight ks (H.N)^n / pi
+inline constexpr LobeInfo kHighlight{{lpe::EventType::Reflection, lpe::Scatter::Glossy}, "highlight", "ks"};
+//   mirror      <RS>   a perfect reflection, a delta
+inline constexpr LobeInfo kMirror{{lpe::EventType::Reflection, lpe::Scatter::Specular}, "mirror", "kr"};
+//   refraction  <TS>   a perfect refraction, a delta
+inline constexpr LobeInfo kRefraction{{lpe::EventType::Transmission, lpe::Scatter::Specular}, "refraction", "kt"};
+}  // namespace lobes
 
 // Light arriving at the camera (radiance) or importance arriving at a light (light tracing): only
 // refraction's 1/eta^2 radiance compression tells them apart (Veach 1997, 5.2; pbrt-v4 9.5.2).
@@ -63,7 +75,7 @@ struct LobeSample {
 struct SpecularBranch {
     Vec3 wi{0.0f};
     Rgb weight{0.0f};
-    Lobe lobe = Lobe::Mirror;
+    int lobe = 0;         // the delta lobe's index in the material's lobes()
     float albedo = 0.0f;  // the share of energy it carries (weight without radiance compression)
 };
 using SpecularBranches = std::array<SpecularBranch, 2>;

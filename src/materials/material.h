@@ -1,6 +1,6 @@
 #pragma once
 // What a surface does with light: the interface every material implements (Nori's BSDF
-// sample/eval/pdf, one material per file). A material is a set of lobes (materials/lobe.h); the
+// sample/eval/pdf, one material per file). A material declares its lobes (materials/lobe.h); the
 // per-hit Bsdf chooses among them and weighs the choice, so a material only describes each lobe.
 // Adding a material is its own file, which registers its MaterialType (materials/material_type.h).
 #include <memory>
@@ -22,15 +22,20 @@ public:
 
     virtual std::unique_ptr<Material> clone() const = 0;
 
-    virtual bool has(Lobe lobe) const = 0;
-    // f(wo, wi) |cos theta_i| of a smooth lobe; zero when either direction is below the surface.
-    virtual Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const = 0;
-    // The density of sampleLobe returning wi, within the lobe.
-    virtual float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const = 0;
-    // A direction within a smooth lobe; nullopt when it falls below the surface.
-    virtual std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const = 0;
+    // The lobes this material declares (materials/lobe.h), at most kMaxLobes, the same list for
+    // every instance of its type; `lobe` below is an index into it.
+    virtual Lobes lobes() const = 0;
+    // Whether the lobe scatters anything with these parameters (e.g. kd != 0).
+    virtual bool has(int lobe) const = 0;
+    // f(wo, wi) |cos theta_i| of a smooth lobe; zero where the lobe has no support (a reflection
+    // lobe for wi below the surface, a transmission lobe for wi above it).
+    virtual Rgb eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const = 0;
+    // The density of sample() returning wi, within the lobe.
+    virtual float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const = 0;
+    // A direction within a smooth lobe; nullopt where eval() would be 0.
+    virtual std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const = 0;
     // A smooth lobe's (estimated) albedo from wo: lobes are chosen in proportion to it.
-    virtual float albedo(Lobe lobe, const SurfaceSide& side, const Vec3& wo) const = 0;
+    virtual float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const = 0;
     // The delta lobes' branches from wo, mirror ray first. Returns how many were written.
     virtual int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
         (void)side, (void)wo, (void)branches;
@@ -38,7 +43,7 @@ public:
     }
     // pi eval(), the lobe's term in the lecture's formula under a point light of intensity I (whose
     // radiant intensity is pi I), as named factors (`explain`: kd and N.L); returns how many.
-    virtual int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+    virtual int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                         NamedFactors& factors) const = 0;
 
     // The reflectance of the constant diffuse part, for radiosity; black when there is none.

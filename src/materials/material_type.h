@@ -12,8 +12,8 @@ namespace lightpath {
 // What a material promises beyond the interface; the conformance kit (tests/conformance/) holds
 // every registered type to it.
 struct MaterialPromises {
-    // f(wo, wi) == f(wi, wo) (Helmholtz reciprocity), per smooth lobe in kSmoothLobes' order.
-    std::array<bool, kSmoothLobes.size()> reciprocal{};
+    // f(wo, wi) == f(wi, wo) (Helmholtz reciprocity), per lobe in the order of Material::lobes().
+    std::array<bool, kMaxLobes> reciprocal{};
     // Whether it reflects at most what arrives, from every direction, for these values (e.g.
     // kd + ks <= 1); null: never promised.
     bool (*conservesEnergy)(const ParameterValues& values) = nullptr;

@@ -18,33 +18,33 @@ float cosToMirror(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
 
 }  // namespace
 
-bool ModifiedPhongMaterial::has(Lobe lobe) const {
-    if (lobe == Lobe::Diffuse) return !isBlack(kd);
-    if (lobe == Lobe::Highlight) return !isBlack(ks);
+bool ModifiedPhongMaterial::has(int lobe) const {
+    if (lobe == kDiffuse) return !isBlack(kd);
+    if (lobe == kHighlight) return !isBlack(ks);
     return false;
 }
 
-Rgb ModifiedPhongMaterial::eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+Rgb ModifiedPhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
-    if (lobe == Lobe::Diffuse) return lambert::eval(kd, side, wi);
-    if (lobe == Lobe::Highlight)
+    if (lobe == kDiffuse) return lambert::eval(kd, side, wi);
+    if (lobe == kHighlight)
         return ks * ((n + 2.0f) / (2.0f * kPi) * std::pow(cosToMirror(side, wo, wi), n) * glm::dot(wi, side.normal));
     return Rgb{0.0f};
 }
 
-float ModifiedPhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+float ModifiedPhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return 0.0f;
-    if (lobe == Lobe::Diffuse) return lambert::pdf(side, wi);
+    if (lobe == kDiffuse) return lambert::pdf(side, wi);
     // cos^n about the mirror direction, (n+1)/(2 pi) cos^n(alpha); directions below the surface
     // are lost, so the lobe's density over the hemisphere integrates to at most 1.
-    if (lobe == Lobe::Highlight) return phongLobePdf(cosToMirror(side, wo, wi), n);
+    if (lobe == kHighlight) return phongLobePdf(cosToMirror(side, wo, wi), n);
     return 0.0f;
 }
 
-std::optional<LobeSample> ModifiedPhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo,
+std::optional<LobeSample> ModifiedPhongMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo,
                                                         Vec2 u) const {
-    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, wo, u);
-    if (lobe == Lobe::Highlight) {
+    if (lobe == kDiffuse) return lambert::sample(kd, side, wo, u);
+    if (lobe == kHighlight) {
         if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;  // eval() is 0 there
         LobeSample s;
         s.wi = Frame(reflectAbout(wo, side.normal)).toWorld(samplePhongLobe(u, n));
@@ -58,19 +58,19 @@ std::optional<LobeSample> ModifiedPhongMaterial::sample(Lobe lobe, const Surface
     return std::nullopt;
 }
 
-float ModifiedPhongMaterial::albedo(Lobe lobe, const SurfaceSide&, const Vec3&) const {
-    if (lobe == Lobe::Diffuse) return maxComponent(kd);
-    if (lobe == Lobe::Highlight) return maxComponent(ks);  // exact at normal incidence, less elsewhere
+float ModifiedPhongMaterial::albedo(int lobe, const SurfaceSide&, const Vec3&) const {
+    if (lobe == kDiffuse) return maxComponent(kd);
+    if (lobe == kHighlight) return maxComponent(ks);  // exact at normal incidence, less elsewhere
     return 0.0f;
 }
 
-int ModifiedPhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+int ModifiedPhongMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                                    NamedFactors& factors) const {
-    if (lobe == Lobe::Diffuse) {
+    if (lobe == kDiffuse) {
         factors = lambert::factors(kd, side, wi);
         return 2;
     }
-    if (lobe == Lobe::Highlight) {
+    if (lobe == kHighlight) {
         const float cosIn = glm::dot(side.normal, wi);
         factors = {{{"ks", ks}, {"(n+2)/2 cos^n(a) N.L", Rgb{(n + 2.0f) / 2.0f * std::pow(cosToMirror(side, wo, wi), n) * cosIn}}}};
         return 2;

@@ -7,6 +7,8 @@
 // Normalised so that it reflects exactly kd + ks at normal incidence and never more anywhere:
 // with kd + ks <= 1 per channel it conserves energy, which Szymczak's classic highlight
 // ks (H.N)^n does not. Its lobes are Diffuse (<RD>) and Highlight (<RG>); it has no delta lobes.
+#include <array>
+
 #include "materials/material.h"
 
 namespace lightpath {
@@ -19,12 +21,16 @@ public:
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<ModifiedPhongMaterial>(*this); }
 
-    bool has(Lobe lobe) const override;
-    Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
-    float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
-    std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
-    float albedo(Lobe lobe, const SurfaceSide& side, const Vec3& wo) const override;
-    int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+    // Its lobes, in this order (the indices below): lobes::kDiffuse, lobes::kHighlight.
+    enum LobeIndex : int { kDiffuse, kHighlight };
+    static constexpr std::array<LobeInfo, 2> kLobes{lobes::kDiffuse, lobes::kHighlight};
+    Lobes lobes() const override { return kLobes; }
+    bool has(int lobe) const override;
+    Rgb eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
+    float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
     Rgb diffuseReflectance() const override { return kd; }
 };

@@ -27,27 +27,27 @@ float blinnTerm(const Vec3& normal, const Vec3& wo, const Vec3& wi, float expone
 
 }  // namespace
 
-bool PhongMaterial::has(Lobe lobe) const {
+bool PhongMaterial::has(int lobe) const {
     switch (lobe) {
-        case Lobe::Diffuse: return !isBlack(kd);
-        case Lobe::Highlight: return !isBlack(ks);
-        case Lobe::Mirror: return !isBlack(kr) || !isBlack(kt);  // kt: total internal reflection
-        case Lobe::Refraction: return !isBlack(kt);
+        case kDiffuse: return !isBlack(kd);
+        case kHighlight: return !isBlack(ks);
+        case kMirror: return !isBlack(kr) || !isBlack(kt);  // kt: total internal reflection
+        case kRefraction: return !isBlack(kt);
     }
     return false;
 }
 
-Rgb PhongMaterial::eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+Rgb PhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
-    if (lobe == Lobe::Diffuse) return lambert::eval(kd, side, wi);
-    if (lobe == Lobe::Highlight) return ks * (blinnTerm(side.normal, wo, wi, n) / kPi);
+    if (lobe == kDiffuse) return lambert::eval(kd, side, wi);
+    if (lobe == kHighlight) return ks * (blinnTerm(side.normal, wo, wi, n) / kPi);
     return Rgb{0.0f};  // a delta lobe has no value to evaluate
 }
 
-float PhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+float PhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return 0.0f;
-    if (lobe == Lobe::Diffuse) return lambert::pdf(side, wi);
-    if (lobe == Lobe::Highlight) {
+    if (lobe == kDiffuse) return lambert::pdf(side, wi);
+    if (lobe == kHighlight) {
         const std::optional<Vec3> halfway = halfwayOf(wo, wi);
         if (!halfway) return 0.0f;
         const float cosHalf = glm::dot(*halfway, side.normal), woDotHalf = glm::dot(wo, *halfway);
@@ -58,9 +58,9 @@ float PhongMaterial::pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, con
     return 0.0f;
 }
 
-std::optional<LobeSample> PhongMaterial::sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
-    if (lobe == Lobe::Diffuse) return lambert::sample(kd, side, wo, u);
-    if (lobe == Lobe::Highlight) {
+std::optional<LobeSample> PhongMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
+    if (lobe == kDiffuse) return lambert::sample(kd, side, wo, u);
+    if (lobe == kHighlight) {
         if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;  // eval() is 0 there
         LobeSample s;
         const Vec3 halfway = Frame(side.normal).toWorld(samplePhongLobe(u, n));
@@ -76,11 +76,11 @@ std::optional<LobeSample> PhongMaterial::sample(Lobe lobe, const SurfaceSide& si
     return std::nullopt;
 }
 
-float PhongMaterial::albedo(Lobe lobe, const SurfaceSide&, const Vec3&) const {
+float PhongMaterial::albedo(int lobe, const SurfaceSide&, const Vec3&) const {
     // A rough albedo of the highlight lobe, only to choose lobes in proportion to what they
     // reflect: ks (H.N)^n / pi integrates to 2 ks for n = 0 and to about 8 ks / (n + 1) for a sharp lobe.
-    if (lobe == Lobe::Diffuse) return maxComponent(kd);
-    if (lobe == Lobe::Highlight) return maxComponent(ks) * std::min(2.0f, 8.0f / (n + 1.0f));
+    if (lobe == kDiffuse) return maxComponent(kd);
+    if (lobe == kHighlight) return maxComponent(ks) * std::min(2.0f, 8.0f / (n + 1.0f));
     return 0.0f;
 }
 
@@ -95,7 +95,7 @@ int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, Spe
     if (!refracted) {
         // Total internal reflection: the transmitted share is reflected too.
         const Rgb weight = kr + kt;
-        branches[0] = {mirror, weight, Lobe::Mirror, maxComponent(weight)};
+        branches[0] = {mirror, weight, kMirror, maxComponent(weight)};
         return isBlack(weight) ? 0 : 1;
     }
     Rgb reflected = kr, transmitted = kt;
@@ -108,18 +108,18 @@ int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, Spe
         if (side.mode == TransportMode::Radiance) compression = eta * eta;
     }
     int count = 0;
-    if (!isBlack(reflected)) branches[count++] = {mirror, reflected, Lobe::Mirror, maxComponent(reflected)};
-    branches[count++] = {*refracted, transmitted * compression, Lobe::Refraction, maxComponent(transmitted)};
+    if (!isBlack(reflected)) branches[count++] = {mirror, reflected, kMirror, maxComponent(reflected)};
+    branches[count++] = {*refracted, transmitted * compression, kRefraction, maxComponent(transmitted)};
     return count;
 }
 
-int PhongMaterial::factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+int PhongMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                            NamedFactors& factors) const {
-    if (lobe == Lobe::Diffuse) {
+    if (lobe == kDiffuse) {
         factors = lambert::factors(kd, side, wi);
         return 2;
     }
-    if (lobe == Lobe::Highlight) {
+    if (lobe == kHighlight) {
         factors = {{{"ks", ks}, {"(H.N)^n", Rgb{blinnTerm(side.normal, wo, wi, n)}}}};
         return 2;
     }

@@ -12,6 +12,8 @@
 // A point light of `intensity` I has radiant intensity pi I (lights/point_light.h), so ray casting's
 // formula is this BSDF under that light, term by term, and the path tracer reading the same numbers
 // produces the same light on the same paths. kd is an albedo (Lambert), emission a radiance.
+#include <array>
+
 #include "materials/material.h"
 
 namespace lightpath {
@@ -31,13 +33,17 @@ public:
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<PhongMaterial>(*this); }
 
-    bool has(Lobe lobe) const override;
-    Rgb eval(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
-    float pdf(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
-    std::optional<LobeSample> sample(Lobe lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
-    float albedo(Lobe lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    // Its lobes, in this order (the indices below): lobes::kDiffuse, lobes::kHighlight, lobes::kMirror, lobes::kRefraction.
+    enum LobeIndex : int { kDiffuse, kHighlight, kMirror, kRefraction };
+    static constexpr std::array<LobeInfo, 4> kLobes{lobes::kDiffuse, lobes::kHighlight, lobes::kMirror, lobes::kRefraction};
+    Lobes lobes() const override { return kLobes; }
+    bool has(int lobe) const override;
+    Rgb eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
+    std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
+    float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const override;
     int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const override;
-    int factors(Lobe lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+    int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
     Rgb diffuseReflectance() const override { return kd; }
     Rgb ambientReflectance() const override { return ka; }

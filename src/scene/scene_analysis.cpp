@@ -6,8 +6,11 @@ SceneAnalysis::SceneAnalysis(const Scene& scene) {
     for (const MaterialSlot& m : scene.materials) {
         MaterialTerms terms;
         terms.ambient = !isBlack(m->ambientReflectance() * scene.ambient);
-        terms.diffuse = m->has(Lobe::Diffuse);
-        terms.highlight = m->has(Lobe::Highlight);
+        const Lobes lobes = m->lobes();
+        for (int l = 0; l < int(lobes.size()); ++l) {
+            terms.lobes[l] = m->has(l);
+            terms.smoothTransmission |= terms.lobes[l] && !lobes[l].delta() && lobes[l].transmits();
+        }
         materials.push_back(terms);
     }
 }

@@ -147,8 +147,9 @@ std::string lightDeclaration(std::string_view type, const std::vector<Setting>& 
 
 MaterialClaims materialClaims(const MaterialType& type, const ParameterValues& values) {
     MaterialClaims claims;
-    for (std::size_t l = 0; l < kSmoothLobes.size(); ++l) claims.reciprocal[l] = type.promises.reciprocal[l];
+    claims.reciprocal = type.promises.reciprocal;
     claims.conservesEnergy = type.promises.conservesEnergy && type.promises.conservesEnergy(values);
+    claims.events = std::string(type.schema.events);
     return claims;
 }
 

@@ -3,6 +3,7 @@
 // registered material and light type (src/schema/) is checked at its defaults and at parameter sets
 // drawn within its schema's ranges, besides hand-picked cases of the shipped types; integrators
 // are every row of integrators() (src/integrators/registry.h).
+#include <array>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -16,11 +17,14 @@ namespace lightpath::conformance {
 
 // What a material promises beyond the interface, which the checks hold it to.
 struct MaterialClaims {
-    // f(wo, wi) == f(wi, wo) for this smooth reflection lobe (Helmholtz reciprocity).
-    bool reciprocal[2] = {false, false};  // by kSmoothLobes: Diffuse, Highlight
+    // f(wo, wi) == f(wi, wo) for this smooth lobe (Helmholtz reciprocity), by index in Material::lobes().
+    std::array<bool, kMaxLobes> reciprocal{};
     // Reflects at most what arrives, in every direction: a white furnace estimate of its albedo
     // stays <= 1 (for parameters that ask for it, e.g. kd + ks <= 1).
     bool conservesEnergy = false;
+    // The events its schema says it produces (TypeSchema::events, e.g. "<R[DG]>"): every lobe it
+    // declares must scatter by one of them, so `lightpath types` tells the truth.
+    std::string events;
 };
 
 struct MaterialCase {

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "direction_chi_square.h"
+#include "lpe/automaton.h"
+#include "lpe/path_string.h"
 #include "materials/bsdf.h"
 #include "monte_carlo.h"
 #include "statistics.h"
@@ -32,14 +35,14 @@ bool close(const Rgb& a, const Rgb& b, float relative) {
 }
 double sum(const Rgb& v) { return double(v.r) + v.g + v.b; }
 
-const char* nameOf(Lobe lobe) {
-    switch (lobe) {
-        case Lobe::Diffuse: return "diffuse lobe";
-        case Lobe::Highlight: return "highlight lobe";
-        case Lobe::Mirror: return "mirror lobe";
-        case Lobe::Refraction: return "refraction lobe";
-    }
-    return "lobe";
+std::string nameOf(const Material& material, int lobe) { return std::string(material.lobes()[lobe].name) + " lobe"; }
+
+// Every smooth lobe the material declares, present or not.
+template <typename Visit>
+void forEachSmoothLobe(const Material& material, Visit&& visit) {
+    const Lobes lobes = material.lobes();
+    for (int l = 0; l < int(lobes.size()); ++l)
+        if (!lobes[l].delta()) visit(l);
 }
 
 using test::Moments;
@@ -58,7 +61,7 @@ Rgb branchTotal(const Material& material, const SurfaceSide& side, const Vec3& w
 
 std::vector<Vec3> outgoingDirections() { return {fromCos(0.95f), fromCos(0.6f, 1.0f), fromCos(0.15f, 4.0f)}; }
 
-CheckResult checkSamplingMatchesPdf(const Material& material, Lobe lobe, const Vec3& wo, bool entering) {
+CheckResult checkSamplingMatchesPdf(const Material& material, int lobe, const Vec3& wo, bool entering) {
     CheckResult result;
     const SurfaceSide side = sideOf(entering);
     test::DirectionHistogram histogram;
@@ -73,7 +76,7 @@ CheckResult checkSamplingMatchesPdf(const Material& material, Lobe lobe, const V
         },
         [&](const Vec3& wi) { return double(material.pdf(lobe, side, wo, wi)); });
     if (!(p > kMaterialAlpha))
-        result.fail(nameOf(lobe), " from wo.z = ", wo.z, ": chi-square p-value ", p, " <= ", kMaterialAlpha,
+        result.fail(nameOf(material, lobe), " from wo.z = ", wo.z, ": chi-square p-value ", p, " <= ", kMaterialAlpha,
                     ": sample() does not draw directions with the density pdf() claims");
     return result;
 }
@@ -85,31 +88,31 @@ CheckResult checkSampleWeights(const Material& material, const Vec3& wo) {
     for (const bool entering : {true, false}) {
         const SurfaceSide side = sideOf(entering);
         for (const Vec3& from : {wo, Vec3{wo.x, wo.y, -wo.z}}) {  // also from below the shading normal
-            for (const Lobe lobe : kSmoothLobes) {
-                if (!material.has(lobe)) continue;
+            forEachSmoothLobe(material, [&](int lobe) {
+                if (!material.has(lobe)) return;
                 for (int i = 0; i < kWeightSamples; ++i) {
                     const auto s = material.sample(lobe, side, from, {uniform(rng), uniform(rng)});
                     if (!s) continue;
                     const float pdf = material.pdf(lobe, side, from, s->wi);
                     const Rgb expected = pdf > 0.0f ? material.eval(lobe, side, from, s->wi) / pdf : Rgb{0.0f};
                     if (!close(s->pdf, pdf, 1e-3f) && pdf > 0.0f)
-                        result.fail(nameOf(lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf, " but pdf() says ", pdf);
+                        result.fail(nameOf(material, lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf, " but pdf() says ", pdf);
                     if (!close(s->weight, expected, 1e-3f))
-                        result.fail(nameOf(lobe), " from wo.z = ", from.z, " to wi.z = ", s->wi.z, ": weight ",
+                        result.fail(nameOf(material, lobe), " from wo.z = ", from.z, " to wi.z = ", s->wi.z, ": weight ",
                                     s->weight.g, " but eval/pdf is ", expected.g);
                 }
-            }
+            });
             const Bsdf bsdf(material, kNormal, entering);
             for (int i = 0; i < kWeightSamples; ++i) {
                 const auto s = bsdf.sample(from, uniform(rng), {uniform(rng), uniform(rng)});
-                if (!s || isDelta(s->lobe)) continue;
+                if (!s || bsdf.lobe(s->lobe).delta()) continue;
                 const float pdf = bsdf.pdf(s->lobe, from, s->wi);
                 const Rgb expected = pdf > 0.0f ? bsdf.eval(s->lobe, from, s->wi) / pdf : Rgb{0.0f};
                 if (!close(s->pdf, pdf, 1e-3f) && pdf > 0.0f)
-                    result.fail("Bsdf, ", nameOf(s->lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf,
+                    result.fail("Bsdf, ", nameOf(material, s->lobe), " from wo.z = ", from.z, ": sample's pdf ", s->pdf,
                                 " but Bsdf::pdf says ", pdf);
                 if (!close(s->weight, expected, 1e-3f))
-                    result.fail("Bsdf, ", nameOf(s->lobe), " from wo.z = ", from.z, ": weight ", s->weight.g,
+                    result.fail("Bsdf, ", nameOf(material, s->lobe), " from wo.z = ", from.z, ": weight ", s->weight.g,
                                 " but eval/pdf is ", expected.g);
             }
         }
@@ -117,18 +120,23 @@ CheckResult checkSampleWeights(const Material& material, const Vec3& wo) {
     return result;
 }
 
-CheckResult checkReciprocity(const Material& material, Lobe lobe) {
+CheckResult checkReciprocity(const Material& material, int lobe) {
+    // A transmission lobe connects the two sides: wi is taken below the surface.
+    const float sign = material.lobes()[lobe].transmits() ? -1.0f : 1.0f;
     CheckResult result;
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     for (const bool entering : {true, false}) {
-        const SurfaceSide side = sideOf(entering);
+        const SurfaceSide sides = sideOf(entering);
         for (int i = 0; i < 4000; ++i) {
             const Vec3 a = fromCos(0.05f + 0.95f * uniform(rng), 2.0f * kPi * uniform(rng));
-            const Vec3 b = fromCos(0.05f + 0.95f * uniform(rng), 2.0f * kPi * uniform(rng));
-            const Rgb forward = material.eval(lobe, side, a, b) / b.z, backward = material.eval(lobe, side, b, a) / a.z;
+            const Vec3 b = fromCos(sign * (0.05f + 0.95f * uniform(rng)), 2.0f * kPi * uniform(rng));
+            // f(a, b) from a's side, f(b, a) from b's (the shading normal is on the side of wo).
+            const SurfaceSide fromB{sign * kNormal, entering == (sign > 0.0f), TransportMode::Radiance};
+            const Rgb forward = material.eval(lobe, sides, a, b) / std::fabs(b.z);
+            const Rgb backward = material.eval(lobe, fromB, b, a) / std::fabs(a.z);
             if (!close(forward, backward, 1e-3f))
-                result.fail(nameOf(lobe), ": f(wo, wi) = ", forward.g, " but f(wi, wo) = ", backward.g,
+                result.fail(nameOf(material, lobe), ": f(wo, wi) = ", forward.g, " but f(wi, wo) = ", backward.g,
                             " (wo.z = ", a.z, ", wi.z = ", b.z, ")");
         }
     }
@@ -162,7 +170,7 @@ CheckResult checkEnergyConservation(const Material& material) {
     return result;
 }
 
-CheckResult checkLobeAlbedo(const Material& material, Lobe lobe) {
+CheckResult checkLobeAlbedo(const Material& material, int lobe) {
     CheckResult result;
     const SurfaceSide side = sideOf(true);
     const Vec3 wo = kNormal;
@@ -175,7 +183,22 @@ CheckResult checkLobeAlbedo(const Material& material, Lobe lobe) {
     reflectance /= float(kMonteCarloSamples);
     const float claimed = material.albedo(lobe, side, wo), measured = maxComponent(reflectance);
     if (!(claimed >= measured / 1.5f && claimed <= 1.5f * measured))
-        result.fail(nameOf(lobe), ": albedo() says ", claimed, " at normal incidence, the lobe reflects ", measured);
+        result.fail(nameOf(material, lobe), ": albedo() says ", claimed, " at normal incidence, the lobe reflects ", measured);
+    return result;
+}
+
+CheckResult checkDeclaredLobes(const Material& material, const std::string& events) {
+    CheckResult result;
+    const Lobes lobes = material.lobes();
+    if (lobes.empty() || lobes.size() > std::size_t(kMaxLobes))
+        result.fail(lobes.size(), " lobes declared: a material has 1 to ", kMaxLobes);
+    const lpe::Automaton automaton = lpe::Automaton::compile({{"events", events}});
+    for (int l = 0; l < int(lobes.size()); ++l) {
+        const lpe::Path path{lpe::Event{lobes[l].event.type, lobes[l].event.scatter, ""}};
+        if (!automaton.matches(path, 0))
+            result.fail(nameOf(material, l), ": its event ", lpe::toExpressionString(path),
+                        " is not among the type's declared events ", events);
+    }
     return result;
 }
 
@@ -194,7 +217,7 @@ CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool ent
     for (int i = 0; i < kMonteCarloSamples; ++i) {
         const Vec3 wi = test::uniformSphereDirection(rng);
         double value = 0.0;
-        for (const Lobe lobe : kSmoothLobes) value += sum(material.eval(lobe, side, wo, wi));
+        forEachSmoothLobe(material, [&](int lobe) { value += sum(material.eval(lobe, side, wo, wi)); });
         uniformEstimate.push_back(4.0 * M_PI * value + delta);
     }
     const Moments a = momentsOf(sampled), b = momentsOf(uniformEstimate);
@@ -219,18 +242,18 @@ CheckResult checkFiniteNonNegative(const Material& material) {
                 if (i % 5 == 0) wo = fromCos(0.0f, 0.3f);
                 if (i % 10 == 1) wi = -wo;
                 if (i % 10 == 2) wi = wo;
-                for (const Lobe lobe : kSmoothLobes) {
+                forEachSmoothLobe(material, [&](int lobe) {
                     const Rgb f = material.eval(lobe, side, wo, wi);
                     const float pdf = material.pdf(lobe, side, wo, wi), albedo = material.albedo(lobe, side, wo);
-                    if (!finiteNonNegative(f)) result.fail(nameOf(lobe), ": eval is ", f.r, " ", f.g, " ", f.b);
-                    if (!(std::isfinite(pdf) && pdf >= 0.0f)) result.fail(nameOf(lobe), ": pdf is ", pdf);
-                    if (!(std::isfinite(albedo) && albedo >= 0.0f)) result.fail(nameOf(lobe), ": albedo is ", albedo);
+                    if (!finiteNonNegative(f)) result.fail(nameOf(material, lobe), ": eval is ", f.r, " ", f.g, " ", f.b);
+                    if (!(std::isfinite(pdf) && pdf >= 0.0f)) result.fail(nameOf(material, lobe), ": pdf is ", pdf);
+                    if (!(std::isfinite(albedo) && albedo >= 0.0f)) result.fail(nameOf(material, lobe), ": albedo is ", albedo);
                     const auto s = material.sample(lobe, side, wo, {uniform(rng), uniform(rng)});
                     if (s && !(finiteNonNegative(s->weight) && std::isfinite(s->pdf) && s->pdf >= 0.0f &&
                                std::fabs(glm::length(s->wi) - 1.0f) < 1e-3f))
-                        result.fail(nameOf(lobe), ": a sample has weight ", s->weight.g, ", pdf ", s->pdf,
+                        result.fail(nameOf(material, lobe), ": a sample has weight ", s->weight.g, ", pdf ", s->pdf,
                                     ", |wi| ", glm::length(s->wi));
-                }
+                });
                 SpecularBranches branches;
                 const int count = material.specularBranches(side, wo, branches);
                 for (int b = 0; b < count; ++b)
@@ -264,11 +287,15 @@ CheckResult checkSpecularBranches(const Material& material) {
                 if (!close(branch.albedo, maxComponent(branch.weight), 1e-5f))
                     result.fail("branch ", b, ": albedo ", branch.albedo, " but its weight's largest channel is ",
                                 maxComponent(branch.weight));
-                if (branch.lobe == Lobe::Mirror) {
+                if (branch.lobe < 0 || branch.lobe >= int(material.lobes().size())) {
+                    result.fail("branch ", b, " names lobe ", branch.lobe, ", which the material does not declare");
+                } else if (!material.lobes()[branch.lobe].delta()) {
+                    result.fail("branch ", b, " names a smooth lobe");
+                } else if (!material.lobes()[branch.lobe].transmits()) {
                     const Vec3 mirror = 2.0f * wo.z * kNormal - wo;
                     if (glm::length(branch.wi - mirror) > 1e-4f)
                         result.fail("mirror branch from wo.z = ", wo.z, " leaves at wi.z = ", branch.wi.z, ", not ", mirror.z);
-                } else if (branch.lobe == Lobe::Refraction) {
+                } else {
                     const float offPlane = glm::dot(branch.wi, glm::normalize(glm::cross(kNormal, wo)));
                     if (!(branch.wi.z < 0.0f) || std::fabs(offPlane) > 1e-4f)
                         result.fail("refracted branch from wo.z = ", wo.z, " at wi.z = ", branch.wi.z,
@@ -279,12 +306,10 @@ CheckResult checkSpecularBranches(const Material& material) {
                     const int backCount = material.specularBranches(other, branch.wi, back);
                     bool returned = false;
                     for (int k = 0; k < backCount; ++k)
-                        returned = returned || (back[k].lobe == Lobe::Refraction && glm::length(back[k].wi - wo) < 2e-3f);
+                        returned = returned || (material.lobes()[back[k].lobe].transmits() && glm::length(back[k].wi - wo) < 2e-3f);
                     if (!returned)
                         result.fail("refraction is not reversible: refracting wi.z = ", branch.wi.z,
                                     " back does not return to wo.z = ", wo.z);
-                } else {
-                    result.fail("branch ", b, " names a smooth lobe");
                 }
             }
         }
@@ -297,13 +322,13 @@ CheckResult checkMaterial(const MaterialCase& c) {
     CheckResult result;
     result.merge(checkFiniteNonNegative(material));
     result.merge(checkSpecularBranches(material));
-    for (std::size_t l = 0; l < kSmoothLobes.size(); ++l) {
-        const Lobe lobe = kSmoothLobes[l];
-        if (!material.has(lobe)) continue;
+    result.merge(checkDeclaredLobes(material, c.claims.events));
+    forEachSmoothLobe(material, [&](int lobe) {
+        if (!material.has(lobe)) return;
         for (const Vec3& wo : outgoingDirections()) result.merge(checkSamplingMatchesPdf(material, lobe, wo));
         result.merge(checkLobeAlbedo(material, lobe));
-        if (c.claims.reciprocal[l]) result.merge(checkReciprocity(material, lobe));
-    }
+        if (c.claims.reciprocal[lobe]) result.merge(checkReciprocity(material, lobe));
+    });
     for (const Vec3& wo : outgoingDirections()) {
         result.merge(checkSampleWeights(material, wo));
         for (const bool entering : {true, false}) result.merge(checkBsdfUnbiased(material, wo, entering));

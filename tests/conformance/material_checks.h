@@ -23,20 +23,23 @@ inline constexpr double kMaterialAlpha = 1e-4;
 std::vector<Vec3> outgoingDirections();
 
 // Pearson's chi-square of sample(lobe) against pdf(lobe), one smooth lobe, from wo.
-CheckResult checkSamplingMatchesPdf(const Material& material, Lobe lobe, const Vec3& wo, bool entering = true);
+CheckResult checkSamplingMatchesPdf(const Material& material, int lobe, const Vec3& wo, bool entering = true);
 // For every sampled direction, of each smooth lobe and of the per-hit Bsdf: the returned pdf is
 // pdf(wi) and the weight is eval(wi) / pdf(wi) (eval is f |cos theta_i|); from below the shading
 // normal, where eval is 0, sampling returns nothing or weight 0.
 CheckResult checkSampleWeights(const Material& material, const Vec3& wo);
 // f(wo, wi) == f(wi, wo), i.e. eval(wo, wi) / cos theta_i == eval(wi, wo) / cos theta_o.
-CheckResult checkReciprocity(const Material& material, Lobe lobe);
+CheckResult checkReciprocity(const Material& material, int lobe);
 // White furnace: the mean weight of the Bsdf's samples (everything it reflects and transmits of
 // unit incident light, importance transport: no radiance compression) stays <= 1 per channel.
 CheckResult checkEnergyConservation(const Material& material);
 // albedo(lobe) at normal incidence within a factor 1.5 of the lobe's reflectance there: the Bsdf
 // chooses lobes in proportion to it (a lobe it underrates is sampled too rarely, one it calls 0
 // never). Phong's highlight albedo, 8 ks / (n + 1), is 28% above the lobe's reflectance at n = 5.
-CheckResult checkLobeAlbedo(const Material& material, Lobe lobe);
+CheckResult checkLobeAlbedo(const Material& material, int lobe);
+// The material declares 1 to kMaxLobes lobes, each scattering by an event in `events` (an LPE over
+// one event, the schema's).
+CheckResult checkDeclaredLobes(const Material& material, const std::string& events);
 // The Bsdf's one-sample estimate, E[weight], equals the integral of every smooth lobe's eval (by
 // uniform directions, not the material's own sampling) plus the delta branches' weights.
 CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool entering);

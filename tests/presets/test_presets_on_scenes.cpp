@@ -66,9 +66,14 @@ bool groupOfShapelessLight(const Scene& scene, const std::string& expression) {
 std::string sceneLanguage(const Scene& scene) {
     bool diffuse = false, glossy = false, specular = false;
     for (const MaterialSlot& m : scene.materials) {
-        diffuse |= m->has(Lobe::Diffuse) || !isBlack(m->ambientReflectance());
-        glossy |= m->has(Lobe::Highlight);
-        specular |= m->has(Lobe::Mirror) || m->has(Lobe::Refraction);
+        diffuse |= !isBlack(m->ambientReflectance());
+        const Lobes lobes = m->lobes();
+        for (int l = 0; l < int(lobes.size()); ++l) {
+            if (!m->has(l)) continue;
+            diffuse |= lobes[l].event.scatter == lpe::Scatter::Diffuse;
+            glossy |= lobes[l].event.scatter == lpe::Scatter::Glossy;
+            specular |= lobes[l].event.scatter == lpe::Scatter::Specular;
+        }
     }
     const std::string letters = std::string(diffuse ? "D" : "") + (glossy ? "G" : "") + (specular ? "S" : "");
     const std::string scatter = letters.empty() ? "" : "[" + letters + "]*";

@@ -260,7 +260,9 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
 
     Pcg32 rng(2024, 1);
     auto u2 = [&] { return Vec2{rng.nextFloat(), rng.nextFloat()}; };
-    auto smoothLobe = [&] { return rng.nextFloat() < 0.5f ? Lobe::Diffuse : Lobe::Highlight; };
+    auto smoothLobe = [&] { return rng.nextFloat() < 0.5f ? PhongMaterial::kDiffuse : PhongMaterial::kHighlight; };
+    // Every material here is Phong's: a lobe index is one of its lobes.
+    auto isDelta = [](int lobe) { return PhongMaterial::kLobes[lobe].delta(); };
     int paths = 0, shared = 0, withDelta = 0;
     double worst = 0.0;
     for (int trial = 0; trial < 3000; ++trial) {
@@ -268,7 +270,7 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
         const Light& light = trial % 3 == 0 ? areaLight : trial % 3 == 1 ? sphereLight : pointLight;
         // x0 and a light walk to x(n-3), then the eye's first hit x(n-2) and the eye x(n-1).
         std::vector<SurfaceHit> hits(n);
-        std::vector<Lobe> lobes(n, Lobe::Diffuse);
+        std::vector<int> lobes(n, PhongMaterial::kDiffuse);
         const EmittedRay e = light.sampleEmission(u2(), u2());
         CHECK(light.pdfEmissionDirection(e.normal, e.ray.direction) == doctest::Approx(e.pdfDirection).epsilon(1e-4));
         Ray ray{e.ray.origin + 1e-4f * e.ray.direction, e.ray.direction};  // off the light's own surface
@@ -354,8 +356,8 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
                 if (light.isDelta()) continue;  // nothing hits a point
                 markEmitter(eyePath[t - 1], light, eyePath[t - 2]);
             }
-            const Lobe lightLobe = s >= 1 ? lobes[s - 1] : Lobe::Diffuse;
-            const Lobe eyeLobe = lobes[s];
+            const int lightLobe = s >= 1 ? lobes[s - 1] : int(PhongMaterial::kDiffuse);
+            const int eyeLobe = lobes[s];
             // A join cannot pass through a mirror bounce: that strategy does not make this path.
             if ((s >= 2 && isDelta(lightLobe)) || (t >= 2 && s >= 1 && isDelta(eyeLobe))) continue;
             const float w = misWeight(joinedDensities({lightPath.data(), std::size_t(s)}, lightLobe,

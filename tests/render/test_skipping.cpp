@@ -97,10 +97,10 @@ TEST_CASE("shadow rays: one per lit-side light sample, none to lights behind or 
 TEST_CASE("an all-diffuse scene evaluates no highlight; a glossy one does") {
     const AovSet aovs(classesSet());
     const RayCounters diffuse = renderWith(floorWithLights(Rgb{0.0f}), aovs, true, true).stats.rays;
-    CHECK(diffuse.highlightEvaluated == 0);
-    CHECK(diffuse.highlightNoKs > 0);
+    CHECK(diffuse.glossyEvaluated == 0);
+    CHECK(diffuse.glossyAbsent > 0);
     const RayCounters glossy = renderWith(floorWithLights(Rgb{0.3f}), aovs, true, true).stats.rays;
-    CHECK(glossy.highlightEvaluated == glossy.shadow + glossy.shadowZero);
+    CHECK(glossy.glossyEvaluated == glossy.shadow + glossy.shadowZero);
 }
 
 TEST_CASE("a light group request casts no shadow ray towards the other lights") {
@@ -115,7 +115,7 @@ TEST_CASE("without skipping every term is evaluated and every ray cast") {
     const AovSet aovs(classesSet());
     const RayCounters r = renderWith(floorWithLights(Rgb{0.0f}), aovs, true, false).stats.rays;
     CHECK(r.shadow == 3 * 15 * 15 * 2);
-    CHECK(r.shadowBehind + r.shadowZero + r.shadowDead + r.highlightNoKs == 0);
+    CHECK(r.shadowBehind + r.shadowZero + r.shadowDead + r.glossyAbsent == 0);
 }
 
 }  // namespace
