@@ -135,7 +135,7 @@ std::vector<Lack> lacksOf(const SceneEvents& events) {
                                               : "no material reflects the ambient light (ka is 0 in every material): give one ka",
                          [](SceneEvents& s) {
                              s.ambientLight = s.ambientReflectance = true;
-                             addEvent(s, eventOf(Lobe::Diffuse));
+                             addEvent(s, lobes::kDiffuse.event);
                          }});
     return lacks;
 }
@@ -179,7 +179,7 @@ std::optional<LabelledEvents> labelledEventsOf(const Scene& scene) {
         if (const auto emission = emissionEventOf(scene, i))
             events.hit.push_back(labelled(std::string(1, lpe::letter(*emission)) + ".", label));
         if (!isBlack(scene.ambient) && !isBlack(material.ambientReflectance()))
-            events.ambientAfter.push_back(labelled(letters(eventOf(Lobe::Diffuse)), label));
+            events.ambientAfter.push_back(labelled(letters(lobes::kDiffuse.event), label));
     }
     for (const LightSlot& light : scene.lights)
         events.shapeless.push_back(light->name.empty() ? kDeclaredLight : labelled("L.", quoted(light->name)));
@@ -268,7 +268,7 @@ std::optional<std::string> sceneLanguage(const SceneEvents& events) {
     if (events.objectEmission) parts.hit.emplace_back("O");
     if (events.background) parts.hit.emplace_back("B");
     if (events.shapelessLight) parts.shapeless.push_back(kDeclaredLight);
-    if (events.ambientLight && events.ambientReflectance) parts.ambientAfter.push_back(tuple(eventOf(Lobe::Diffuse)));
+    if (events.ambientLight && events.ambientReflectance) parts.ambientAfter.push_back(tuple(lobes::kDiffuse.event));
     return pathsOf(parts);
 }
 

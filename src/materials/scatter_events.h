@@ -8,7 +8,7 @@
 
 namespace lightpath {
 
-// One event per lobe the material has (Material::has, eventOf), and <RD> for an ambient
+// One event per lobe the material has (Material::lobes, has), and <RD> for an ambient
 // reflectance: the ambient term ka Ia is recorded after the diffuse event (docs/design.md).
 inline std::vector<ScatterEvent> scatterEventsOf(const Material& material) {
     std::vector<ScatterEvent> events;
@@ -17,9 +17,10 @@ inline std::vector<ScatterEvent> scatterEventsOf(const Material& material) {
             if (e.type == event.type && e.scatter == event.scatter) return;
         events.push_back(event);
     };
-    for (int i = 0; i < kLobeCount; ++i)
-        if (const Lobe lobe = static_cast<Lobe>(i); material.has(lobe)) add(eventOf(lobe));
-    if (!isBlack(material.ambientReflectance())) add(eventOf(Lobe::Diffuse));
+    const Lobes lobes = material.lobes();
+    for (int i = 0; i < static_cast<int>(lobes.size()); ++i)
+        if (material.has(i)) add(lobes[i].event);
+    if (!isBlack(material.ambientReflectance())) add(lobes::kDiffuse.event);
     return events;
 }
 
