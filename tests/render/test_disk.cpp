@@ -27,6 +27,7 @@ public:
     void addLight(LightSlot) override {}
     std::uint32_t addEmitterObject(std::string, const Rgb&) override { return 0; }
     void addSphere(const Sphere&) override {}
+    void addPlane(const Plane&) override {}
     void addTriangle(const Triangle&) override {}
     std::uint32_t addShapeObject(const ParameterValues&) override { return 0; }
     Rgb emissionOf(std::uint32_t) const override { return Rgb{0.0f}; }
