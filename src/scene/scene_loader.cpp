@@ -144,8 +144,8 @@ ParameterValues readValues(const TomlTable& table, const TypeSchema& schema, Typ
     return values;
 }
 
-// Whether `reference` names one of `materials`: its index, else a located "unknown material" error
-// with the nearest name and the known ones.
+// The index of the material `reference` names, else a located "unknown material" error with the
+// nearest name and the known ones.
 std::uint32_t findMaterial(const TomlValue& reference,
                            const std::vector<MaterialSlot>& materials) {
     const std::string name = reference.string();
