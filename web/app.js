@@ -55,6 +55,7 @@ async function getJson(url, options) {
 function readControls() {
   const draft = structuredClone(state.draft);
   draft.integrator = $("integrator").value;
+  draft.parameters = readParameterControls();
   draft.spp = Number($("spp").value);
   draft.width = Number($("width").value);
   draft.height = Number($("height").value);
@@ -64,6 +65,46 @@ function readControls() {
     expression: tile.querySelector(".expression").value,
   }));
   return draft;
+}
+
+// The chosen integrator's own parameters, one control each, built from its schema
+// (GET /api/scene's integratorParameters): empty means its default, so the server's schema decides
+// type, range and default, and rejects what it must (shown as the request's error).
+function buildParameterControls() {
+  const schema = state.scene.integratorParameters[$("integrator").value] || [];
+  const given = state.settings.parameters || {};
+  $("integrator-parameters").replaceChildren(...schema.map((p) => {
+    const attributes = { "data-parameter": p.name, "data-type": p.type, title: p.doc + (p.unit ? ` (${p.unit})` : "") };
+    const words = p.type === "boolean" ? ["true", "false"] : p.choices;
+    let input;
+    if (words.length > 0) {
+      input = element("select", attributes);
+      input.append(element("option", { value: "" }, p.default ? `default (${p.default})` : "default"),
+                   ...words.map((w) => element("option", { value: w }, w)));
+    } else {
+      const numeric = p.type === "number" || p.type === "integer";
+      input = element("input", { ...attributes, type: numeric ? "number" : "text", placeholder: p.default || "default",
+                                 ...(numeric ? { step: p.type === "integer" ? "1" : "any" } : {}),
+                                 ...(numeric && p.low !== null ? { min: p.low } : {}),
+                                 ...(numeric && p.high !== null ? { max: p.high } : {}) });
+    }
+    input.value = p.name in given ? String(given[p.name]) : "";
+    input.addEventListener("change", scheduleSend);
+    const label = element("label", {}, p.name + " ");
+    label.append(input);
+    return label;
+  }));
+}
+
+function readParameterControls() {
+  const parameters = {};
+  for (const input of document.querySelectorAll("#integrator-parameters [data-parameter]")) {
+    if (input.value === "") continue;
+    const type = input.dataset.type;
+    parameters[input.dataset.parameter] = type === "number" || type === "integer" ? Number(input.value)
+                                        : type === "boolean" ? input.value === "true" : input.value;
+  }
+  return parameters;
 }
 
 function scheduleSend() {
@@ -240,6 +281,7 @@ function refreshImages() {
 function applySettingsToControls() {
   const s = state.settings;
   $("integrator").value = s.integrator;
+  buildParameterControls();
   $("spp").value = s.spp;
   $("width").value = s.width;
   $("height").value = s.height;
@@ -575,6 +617,7 @@ async function start() {
   buildTiles(true);
   showWarnings(current.body.warnings);
   state.latestGeneration = current.body.generation;
+  $("integrator").addEventListener("change", buildParameterControls);
   for (const id of ["integrator", "spp", "width", "height", "max-depth"]) $(id).addEventListener("change", scheduleSend);
   $("exposure").addEventListener("input", () => {
     state.exposure = Number($("exposure").value);

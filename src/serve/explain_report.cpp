@@ -5,6 +5,7 @@
 #include "integrators/event_symbols.h"
 #include "lpe/path_string.h"
 #include "scene/camera.h"
+#include "serve/json_point.h"
 #include "serve/request_error.h"
 
 namespace lightpath::serve {
@@ -18,7 +19,6 @@ std::optional<Vec3> positionOf(const PathEvent& event) {
     return event.position;
 }
 
-json point(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
 
 // The part of segment a-b in front of the eye, projected: [x0, y0, x1, y1] in pixels, or null
 // when all of it is behind.

@@ -7,6 +7,7 @@
 #include "integrators/registry.h"
 #include "lpe/analysis.h"
 #include "scene/emission.h"
+#include "serve/json_point.h"
 #include "serve/session.h"
 #include "serve/settings.h"
 
@@ -15,7 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-json point(const Vec3& p) { return json::array({p.x, p.y, p.z}); }
 
 }  // namespace
 
@@ -67,6 +67,7 @@ json describeScene(const Scene& scene, const std::string& scenePath) {
             {"objects", objects},
             {"lights", lights},
             {"integrators", integratorNames()},
+            {"integratorParameters", integratorParametersJson()},
             {"presets", sets},
             {"limits", {{"side", kMaxSide}, {"spp", kMaxSamples}, {"lpes", kMaxExpressions}, {"samplesPerPass", kSamplesPerPass}}}};
 }

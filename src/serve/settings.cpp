@@ -1,6 +1,7 @@
 #include "serve/settings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -54,6 +55,21 @@ int integerIn(const json& value, const std::string& field, int low, int high) {
     return static_cast<int>(value.get<std::int64_t>());
 }
 
+// The parameter `name` of the first integrator whose schema has one, or nullptr.
+const Parameter* integratorParameter(std::string_view name) {
+    for (const IntegratorInfo& info : integrators())
+        if (const Parameter* p = info.schema.find(name)) return p;
+    return nullptr;
+}
+
+std::string integratorParameterNames() {
+    std::string names;
+    for (const IntegratorInfo& info : integrators())
+        for (const Parameter& p : info.schema.parameters)
+            names += (names.empty() ? "" : ", ") + std::string(p.name) + " (" + info.name + ")";
+    return names;
+}
+
 int integerOption(const json& value, const std::string& field, int limit) {
     const Range& range = optionOf(field).range;
     return integerIn(value, field, static_cast<int>(range.low), std::min(limit, static_cast<int>(range.high)));
@@ -84,6 +100,36 @@ std::vector<lpe::NamedExpression> expressionsOf(const json& value) {
     return list;
 }
 
+// {"patches": 1024, ...}: each value as the command line would take it typed (`--patches 1024`);
+// its type and range are the render configuration's to check (RenderConfig::validate).
+std::map<std::string, std::string, std::less<>> parametersOf(const json& value) {
+    if (!value.is_object())
+        bad("parameters", "expected an object of integrator parameters such as {\"patches\": 1024}, got " + describe(value));
+    std::map<std::string, std::string, std::less<>> parameters;
+    for (const auto& [name, given] : value.items()) {
+        if (name.size() > 64) bad("parameters", "expected parameter names of at most 64 characters");
+        const std::string at = "parameters." + name;
+        if (!integratorParameter(name)) bad(at, "no integrator has a parameter of this name; expected one of " + integratorParameterNames());
+        if (given.is_string()) parameters[name] = stringOf(given, at, 64);
+        else if (given.is_boolean()) parameters[name] = given.get<bool>() ? "true" : "false";
+        else if (given.is_number()) parameters[name] = given.dump();
+        else bad(at, "expected a number, a string or a boolean, got " + describe(given));
+    }
+    return parameters;
+}
+
+// A parameter's text as JSON of its type: a number for Number and Integer, a boolean for Boolean.
+json typedJson(std::string_view name, const std::string& text) {
+    const Parameter* p = integratorParameter(name);
+    const json parsed = json::parse(text, nullptr, false);
+    if (!p || parsed.is_discarded()) return text;
+    const bool numeric = p->type == ParameterType::Number || p->type == ParameterType::Integer;
+    if ((numeric && parsed.is_number()) || (p->type == ParameterType::Boolean && parsed.is_boolean())) return parsed;
+    return text;
+}
+
+json rangeBound(double bound) { return std::isfinite(bound) ? json(bound) : json(nullptr); }
+
 }  // namespace
 
 bool Settings::operator==(const Settings& other) const {
@@ -91,7 +137,7 @@ bool Settings::operator==(const Settings& other) const {
         return a.name == b.name && a.expression == b.expression;
     };
     return integrator == other.integrator && samplesPerPixel == other.samplesPerPixel && width == other.width &&
-           height == other.height && maxDepth == other.maxDepth &&
+           height == other.height && maxDepth == other.maxDepth && parameters == other.parameters &&
            std::equal(lpes.begin(), lpes.end(), other.lpes.begin(), other.lpes.end(), same);
 }
 
@@ -110,12 +156,15 @@ Settings applySettings(const Settings& current, const std::string& body, std::ve
     Settings settings = current;
     for (const auto& [key, value] : request.items()) {
         const std::string& field = key;  // clang 14 cannot capture a structured binding
-        if (std::none_of(std::begin(kFields), std::end(kFields), [&](const Field& f) { return f.json == field; })) {
+        if (field != "parameters" &&
+            std::none_of(std::begin(kFields), std::end(kFields), [&](const Field& f) { return f.json == field; })) {
             std::string known;
             for (const Field& f : kFields) known += (known.empty() ? "" : ", ") + std::string(f.json);
-            bad(key, "unknown field; expected one of " + known);
+            bad(key, "unknown field; expected one of " + known + ", parameters");
         }
-        if (key == "integrator") {
+        if (key == "parameters") {
+            settings.parameters = parametersOf(value);
+        } else if (key == "integrator") {
             settings.integrator = stringOf(value, key, 64);
             const auto names = integratorNames();
             if (std::find(names.begin(), names.end(), settings.integrator) == names.end()) {
@@ -177,6 +226,7 @@ RenderConfig renderConfig(const Settings& settings, const std::string& scenePath
     for (const auto& e : settings.lpes) config.lpes.push_back(e.name + "=" + e.expression);
     config.samplesPerPixel = settings.samplesPerPixel;
     config.maxDepth = settings.maxDepth;
+    config.integratorParameters = settings.parameters;
     config.quiet = true;
     return config;
 }
@@ -189,6 +239,8 @@ RequestError requestError(const ConfigError& error, const Settings& settings) {
         field = "lpes";
         for (std::size_t i = 0; i < settings.lpes.size(); ++i)
             if (settings.lpes[i].name == label) field = "lpes[" + std::to_string(i) + "].expression";
+    } else if (integratorParameter(option)) {
+        field = label = "parameters." + option;
     } else {
         for (const Field& f : kFields)
             if (f.option == option) field = label = f.option == "resolution" ? "width,height" : std::string(f.json);
@@ -199,8 +251,35 @@ RequestError requestError(const ConfigError& error, const Settings& settings) {
 nlohmann::json toJson(const Settings& settings) {
     json lpes = json::array();
     for (const auto& e : settings.lpes) lpes.push_back({{"name", e.name}, {"expression", e.expression}});
+    json parameters = json::object();
+    for (const auto& [name, text] : settings.parameters) parameters[name] = typedJson(name, text);
     return {{"integrator", settings.integrator}, {"spp", settings.samplesPerPixel}, {"width", settings.width},
-            {"height", settings.height},         {"maxDepth", settings.maxDepth},   {"lpes", lpes}};
+            {"height", settings.height},         {"maxDepth", settings.maxDepth},   {"lpes", lpes},
+            {"parameters", parameters}};
+}
+
+json integratorParametersJson() {
+    json all = json::object();
+    for (const IntegratorInfo& info : integrators()) {
+        json list = json::array();
+        for (const Parameter& p : info.schema.parameters) {
+            json choices = json::array();
+            for (const std::string& c : choicesOf(p)) choices.push_back(c);
+            list.push_back({{"name", p.name},
+                            {"type", typeName(p.type)},
+                            {"unit", p.unit},
+                            {"default", p.defaultText},
+                            {"low", rangeBound(p.range.low)},
+                            {"high", rangeBound(p.range.high)},
+                            {"lowExclusive", p.range.lowExclusive},
+                            {"highExclusive", p.range.highExclusive},
+                            {"choices", choices},
+                            {"doc", p.doc},
+                            {"excludes", p.excludes}});
+        }
+        all[info.name] = list;
+    }
+    return all;
 }
 
 }  // namespace lightpath::serve

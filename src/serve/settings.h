@@ -1,12 +1,14 @@
 #pragma once
-// What the page can change: the integrator, the progressive render's sample target, the
-// resolution, the depth and the list of LPEs: a subset of the render configuration
+// What the page can change: the integrator and its parameters, the progressive render's sample
+// target, the resolution, the depth and the list of LPEs: a subset of the render configuration
 // (config/render_config.h) in JSON. Parsed from PUT /api/settings (docs/serve.md), each field's
 // type and range read from the render options' schema and narrowed by the session's limits below,
 // then checked by the configuration's one validate() before anything is rendered.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,9 @@ struct Settings {
     int width = 0, height = 0;
     int maxDepth = 5;
     std::vector<lpe::NamedExpression> lpes;
+    // The integrators' own parameters given (integrators/registry.h schemas), by name, as text:
+    // those of the chosen integrator reach it, as `--NAME` does on the command line.
+    std::map<std::string, std::string, std::less<>> parameters;
 
     bool operator==(const Settings& other) const;
 };
@@ -49,12 +54,16 @@ Settings applySettings(const Settings& current, const std::string& body,
 
 nlohmann::json toJson(const Settings& settings);
 
+// Every integrator's parameters as the page builds its controls from them: name, type, unit,
+// default, range, choices, doc and what each excludes (the integrators' schemas).
+nlohmann::json integratorParametersJson();
+
 // The render configuration of `settings` on the scene file `scenePath`: no preset but the lpes,
 // quiet (warnings are collected for the page).
 RenderConfig renderConfig(const Settings& settings, const std::string& scenePath);
 
 // A ConfigError as a 400 naming its field as the JSON spells it ("maxDepth", "lpes[1].expression",
-// "width,height" for the resolution), read from ConfigError::field(); its message after that field's
+// "width,height" for the resolution, "parameters.NAME" for an integrator's parameter), read from ConfigError::field(); its message after that field's
 // label ("spp: ...", the AOV's name for an expression).
 RequestError requestError(const ConfigError& error, const Settings& settings);
 

@@ -337,6 +337,19 @@ def lecture_hall(browser, x, y, shots):
     longest = browser.evaluate("window.longestPreparing ?? null")
     assert longest is not None, "no progress was shown while radiosity prepared"
     assert float(done) >= longest, f"the time shown ({done} s) leaves out the {longest} s of preparing"
+
+    print("radiosity's own parameters: controls from its schema, a change renders with it")
+    controls = browser.evaluate("[...document.querySelectorAll('#integrator-parameters [data-parameter]')]"
+                                ".map(e => e.dataset.parameter)")
+    assert "patches" in controls and "form-factor-rays" in controls, f"radiosity's parameter controls: {controls}"
+    browser.evaluate("(() => { const p = document.querySelector('[data-parameter=patches]'); p.value = '64'; "
+                     "p.dispatchEvent(new Event('change')); return true; })()")
+    browser.wait_for("state.settings.parameters.patches === 64", "the server's settings with 64 patches")
+    assert browser.evaluate("document.getElementById('request-error').hidden"), \
+        "64 patches were refused: " + browser.evaluate("document.getElementById('request-error').textContent")
+    select_integrator(browser, "path")
+    assert browser.evaluate("document.querySelectorAll('#integrator-parameters [data-parameter]').length") == 0, \
+        "the path tracer has no parameters, yet controls are shown"
     browser.call("Emulation.clearDeviceMetricsOverride")
 
 

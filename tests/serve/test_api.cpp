@@ -8,6 +8,7 @@
 #include <regex>
 #include <vector>
 
+#include "config/render_config.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "lpe/analysis.h"
@@ -308,6 +309,14 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
          "lpes[0].expression", "ray casting follows no specular bounce"},
         {"{\"lpes\": [{\"name\": \"rest\", \"expression\": \"EL\"}]}", 400, "lpes", "reserved"},
         {"{\"lpes\": [{\"name\": \"a\", \"expression\": \"E{2000000}L\"}]}", 400, "lpes", ""},
+        // An integrator's own parameters, checked against its schema as the command line's --NAME.
+        {"{\"parameters\": [64]}", 400, "parameters", "expected an object of integrator parameters"},
+        {"{\"parameters\": {\"colour\": 1}}", 400, "parameters.colour",
+         "no integrator has a parameter of this name; expected one of patch-size \\(radiosity\\), patches"},
+        {"{\"parameters\": {\"patches\": [1]}}", 400, "parameters.patches", "expected a number, a string or a boolean"},
+        {"{\"parameters\": {\"patches\": 0}}", 400, "parameters.patches", "^parameters.patches: Value 0 not in range 1 to"},
+        {"{\"parameters\": {\"patches\": 2.5}}", 400, "parameters.patches", "integer"},
+        {"{\"parameters\": {\"patches\": 64, \"patch-size\": 0.5}}", 400, "parameters.patch-size", "excludes"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.body);
@@ -473,6 +482,47 @@ TEST_CASE("serve: a change of settings runs the integrator's preprocess once: on
     const json done = fixture.waitUntilDone(job->generation);
     CHECK(done["passes"] == 3);
     CHECK(Renderer::preprocessesRun() - before == 1);
+}
+
+TEST_CASE("serve: an integrator's own parameters reach it, as the command line's --NAME does") {
+    ServerFixture fixture("cornell-original.toml");
+    const auto scene = json::parse(fixture.client()->Get("/api/scene")->body);
+    const json& patches = scene["integratorParameters"]["radiosity"][1];
+    CHECK(patches["name"] == "patches");
+    CHECK(patches["type"] == "integer");
+    CHECK(patches["default"] == "4096");
+    CHECK(patches["low"] == 1.0);
+    CHECK(scene["integratorParameters"]["path"] == json::array());
+
+    json settings = settingsFor(16, 12, 1, "radiosity");
+    settings["parameters"] = {{"patches", 24}};
+    const auto put = fixture.put(settings);
+    REQUIRE(put);
+    REQUIRE(put->status == 200);
+    const json answer = json::parse(put->body);
+    CHECK(answer["settings"]["parameters"] == json({{"patches", 24}}));
+    fixture.waitUntilDone(answer["generation"].get<std::uint64_t>());
+    const Decoded image = decode(fixture.client()->Get("/api/render.exr")->body, "render.exr");
+
+    // The same configuration given to the renderer directly, and the control: the default patches.
+    const auto renderWith = [](const std::string& patchCount) {
+        RenderConfig config;
+        config.scenePath = scenePath("cornell-original.toml");
+        config.integrator = "radiosity";
+        config.resolution = "16x12";
+        config.samplesPerPixel = 1;
+        config.aovs = "classes";
+        if (!patchCount.empty()) config.set("patches", patchCount);
+        config.validate();
+        const Scene scene = config.loadScene();
+        return Renderer(scene, AovSet(config.expressions(&scene)), config.renderOptions()).render().film;
+    };
+    checkSameAsFilm(image, renderWith("24"));
+    const Film defaults = renderWith("");
+    bool differs = false;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) differs |= image.at(x, y, "R") != defaults.at(0, x, y).r;
+    CHECK(differs);
 }
 
 TEST_CASE("serve: only the newest explanation runs: a newer one, a change of settings and shutdown cancel it") {
