@@ -9,6 +9,8 @@
 
 #include "accel/bvh_traversal.h"
 #include "geometry/intersect.h"
+#include "shapes/plane.h"
+#include "shapes/sphere.h"
 #include "util/parallel_chunks.h"
 #ifdef LIGHTPATH_HAS_EMBREE
 #include "accel/embree_accelerator.h"
@@ -25,10 +27,6 @@ Bounds padded(Bounds b) {
     b.lo -= margin;
     b.hi += margin;
     return b;
-}
-
-Bounds sphereBounds(const Sphere& s) {
-    return padded({s.center - Vec3(s.radius), s.center + Vec3(s.radius)});
 }
 
 Bounds triangleBounds(const Triangle& t) {
@@ -53,32 +51,38 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
                              std::vector<TriangleNormals> vertexNormals, unsigned buildThreads,
                              std::vector<ShapeRecord> shapes)
-    : spheres_(std::move(spheres)), planes_(std::move(planes)), triangles_(std::move(triangles)),
-      shapes_(std::move(shapes)), vertexNormals_(std::move(vertexNormals)), numerics_(numerics),
+    : triangles_(std::move(triangles)), vertexNormals_(std::move(vertexNormals)), numerics_(numerics),
       accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
         throw std::invalid_argument("vertex normals: expected one entry per triangle");
+    shapes_.reserve(spheres.size() + planes.size() + shapes.size());
+    for (const Sphere& sphere : spheres) shapes_.push_back(sphereRecord(sphere));
+    for (const Plane& plane : planes) shapes_.push_back(planeRecord(plane));
+    shapes_.insert(shapes_.end(), shapes.begin(), shapes.end());
+    // The BVH's shapes: the bounded records, in id order (so its tree is as when spheres and the
+    // other kinds had arrays of their own).
+    std::vector<std::uint32_t> bounded;
+    for (std::uint32_t id = 0; id < shapes_.size(); ++id)
+        (shapes_[id].ops->bounded ? bounded : unbounded_).push_back(id);
+    shapesInBvh_ = !bounded.empty();
     if (accelerator_ == Accelerator::BruteForce) return;
     if (accelerator_ == Accelerator::Embree && !embreeAvailable())
         throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
     const auto started = std::chrono::steady_clock::now();
     // The boxes are computed by the build's threads as it reads them (no list of them all), and
     // the leaves' triangle blocks filled on as many: on one thread they would cap its scaling.
-    // The BVH's primitives: spheres, then registered shapes, then (Bvh only) triangles.
+    // The BVH's primitives: the bounded shapes, then (Bvh only) triangles.
     const std::uint32_t firstTriangle = this->firstTriangle();
-    const auto analytic = static_cast<std::uint32_t>(spheres_.size() + shapes_.size());
+    const auto analytic = static_cast<std::uint32_t>(bounded.size());
     const std::size_t primitiveCount = analytic + (accelerator_ == Accelerator::Bvh ? triangles_.size() : 0);
     bvh_ = Bvh(
         primitiveCount,
         [&](std::size_t begin, std::size_t end, BvhPrimitive* out) {
             for (std::size_t i = begin; i < end; ++i) {
                 const auto index = static_cast<std::uint32_t>(i);
-                if (index < spheres_.size()) {
-                    *out++ = BvhPrimitive{sphereBounds(spheres_[index]), index};
-                } else if (index < analytic) {
-                    const auto shapeIndex = index - static_cast<std::uint32_t>(spheres_.size());
-                    const ShapeRecord& shape = shapes_[shapeIndex];
-                    *out++ = BvhPrimitive{padded(shape.ops->bounds(shape)), shapeId(shapeIndex)};
+                if (index < analytic) {
+                    const ShapeRecord& shape = shapes_[bounded[index]];
+                    *out++ = BvhPrimitive{padded(shape.ops->bounds(shape)), bounded[index]};
                 } else {
                     *out++ = BvhPrimitive{triangleBounds(triangles_[index - analytic]),
                                           firstTriangle + index - analytic};
@@ -98,7 +102,7 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
                 if (ids[slot] != kBvhEmptySlot && ids[slot] >= firstTriangle)
                     pack.set(lane, triangles_[ids[slot] - firstTriangle]);
                 else
-                    pack.clear(lane);  // padding, a sphere or a registered shape: never tested as a triangle
+                    pack.clear(lane);  // padding or a shape record: never tested as a triangle
             }
         });
     }
@@ -118,14 +122,6 @@ SceneGeometry::~SceneGeometry() = default;
 
 float SceneGeometry::intersectPrimitive(const Ray& ray, std::uint32_t id) const {
     if (id == ray.ignoredPrimitive) return kNoHit;
-    if (id < spheres_.size()) {
-        const Sphere& s = spheres_[id];
-        return numerics_.sphere == SphereTest::Stable ? intersectSphere(ray, s, ray.tMin)
-                                                      : intersectSphereNaive(ray, s, ray.tMin);
-    }
-    id -= static_cast<std::uint32_t>(spheres_.size());
-    if (id < planes_.size()) return intersectPlane(ray, planes_[id], ray.tMin);
-    id -= static_cast<std::uint32_t>(planes_.size());
     if (id < shapes_.size()) return shapes_[id].ops->intersect(ray, shapes_[id], ray.tMin, numerics_);
     id -= static_cast<std::uint32_t>(shapes_.size());
     const Triangle& t = triangles_[id];
@@ -146,8 +142,8 @@ template <typename Keep>
                                   std::uint32_t count, Keep keep) const {
     const std::uint32_t* ids = bvh_.slotIds().data() + firstSlot;
     int triangleLanes = (1 << count) - 1;
-    if (!spheres_.empty() || !shapes_.empty() || leafTriangles_.empty()) {
-        // Spheres and registered shapes (with Embree, only they) share the BVH: test them one by one.
+    if (shapesInBvh_ || leafTriangles_.empty()) {
+        // Shape records (with Embree, only they) share the BVH with triangles: test them one by one.
         const std::uint32_t firstTriangle = this->firstTriangle();
         for (std::uint32_t lane = 0; lane < count; ++lane) {
             if (ids[lane] >= firstTriangle && !leafTriangles_.empty()) continue;
@@ -213,8 +209,7 @@ std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, co
     };
     bvh_.closest(ray, best.t,
                  [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
-    const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
-    for (std::uint32_t id = firstPlane; id < firstPlane + planes_.size(); ++id) keep(intersectPrimitive(probe, id), id);
+    for (const std::uint32_t id : unbounded_) keep(intersectPrimitive(probe, id), id);
 #ifdef LIGHTPATH_HAS_EMBREE
     if (embree_) {
         const std::uint32_t firstTriangle = this->firstTriangle();
@@ -246,9 +241,8 @@ std::optional<PrimitiveHit> SceneGeometry::closestBruteForce(const Ray& ray) con
 bool SceneGeometry::occluded(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) return occludedBruteForce(ray);
     const auto blocks = [&](std::uint32_t id) { return intersectPrimitive(ray, id) != kNoHit; };
-    const auto firstPlane = static_cast<std::uint32_t>(spheres_.size());
-    for (std::uint32_t i = 0; i < planes_.size(); ++i)
-        if (blocks(firstPlane + i)) return true;
+    for (const std::uint32_t id : unbounded_)
+        if (blocks(id)) return true;
 #ifdef LIGHTPATH_HAS_EMBREE
     if (embree_) {
         if (embree_->occluded(ray, ignoredTriangle(ray))) return true;
@@ -279,35 +273,16 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id,
     hit.t = t;
     hit.point = ray.at(t);
     hit.primitive = id;
-    if (id < spheres_.size()) {
-        const Sphere& s = spheres_[id];
-        hit.shape = ShapeKind::Sphere;
-        hit.normal = sphereNormal(s, hit.point);
-        // Snap the point back onto the sphere: ray.at(t) carries the rounding of t.
-        hit.point = s.center + hit.normal * s.radius;
-        hit.shadingNormal = hit.normal;
-        hit.object = s.object;
-        return hit;
-    }
-    id -= static_cast<std::uint32_t>(spheres_.size());
-    if (id < planes_.size()) {
-        hit.shape = ShapeKind::Plane;
-        hit.normal = planes_[id].normal;
-        hit.shadingNormal = hit.normal;
-        hit.object = planes_[id].object;
-        return hit;
-    }
-    id -= static_cast<std::uint32_t>(planes_.size());
     if (id < shapes_.size()) {
         const ShapeRecord& shape = shapes_[id];
-        hit.shape = ShapeKind::Registered;
+        hit.shape = shape.ops;
         hit.object = shape.object;
         shape.ops->describe(shape, hit);
         return hit;
     }
     id -= static_cast<std::uint32_t>(shapes_.size());
     const Triangle& tri = triangles_[id];
-    hit.shape = ShapeKind::Triangle;
+    hit.shape = nullptr;
     hit.normal = triangleNormal(tri);
     hit.shadingNormal = hit.normal;
     hit.object = tri.object;

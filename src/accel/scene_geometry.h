@@ -17,12 +17,12 @@ namespace lightpath {
 
 // All primitives of a scene and the two queries a tracer asks of them: the closest hit along a
 // ray, and whether anything blocks a segment (any hit, for shadow rays). Primitives have one
-// scene-wide id: spheres first, then planes, then the shapes of registered kinds (shape.h),
-// then triangles.
+// scene-wide id: the shape table's records (shape.h) first (spheres, planes, then the other
+// kinds), then triangles.
 // How closest-hit and any-hit queries find their candidates.
 enum class Accelerator {
     BruteForce,  // the lecture's loop over every primitive
-    Bvh,         // our BVH over spheres, registered shapes and triangles (src/accel/bvh.h); planes apart
+    Bvh,         // our BVH over the bounded shapes and triangles (src/accel/bvh.h); unbounded (planes) apart
     Embree,      // Embree for the triangles (when built with LIGHTPATH_EMBREE), our BVH for the rest
 };
 
@@ -50,6 +50,8 @@ public:
                   NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
                   std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0,
                   std::vector<ShapeRecord> shapes = {});
+    // `spheres` and `planes` become the table's first records (shapes/sphere.h, shapes/plane.h), in
+    // that order, before `shapes`.
     // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
     // buildThreads: how many threads build our BVH (0: all); the tree is the same for any count.
     ~SceneGeometry();
@@ -77,39 +79,19 @@ public:
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }
     const AcceleratorStats& acceleratorStats() const { return stats_; }
-    const std::vector<Sphere>& spheres() const { return spheres_; }
-    const std::vector<Plane>& planes() const { return planes_; }
     const std::vector<Triangle>& triangles() const { return triangles_; }
+    // The shape table's records (spheres, planes, then the other kinds), ids 0 .. shapes().size().
     const std::vector<ShapeRecord>& shapes() const { return shapes_; }
-    std::size_t primitiveCount() const {
-        return spheres_.size() + planes_.size() + shapes_.size() + triangles_.size();
-    }
+    std::size_t primitiveCount() const { return shapes_.size() + triangles_.size(); }
 
-    // The one codec of scene-wide primitive ids: spheres first, then planes, then the registered
-    // kinds' shapes, then triangles (last, so the accelerator's triangle range is one interval).
-    struct PrimitiveRef {
-        ShapeKind shape;
-        std::uint32_t index;  // into spheres(), planes(), shapes() or triangles()
-    };
-    PrimitiveRef decodePrimitive(std::uint32_t id) const {
-        if (id < spheres_.size()) return {ShapeKind::Sphere, id};
-        id -= static_cast<std::uint32_t>(spheres_.size());
-        if (id < planes_.size()) return {ShapeKind::Plane, id};
-        id -= static_cast<std::uint32_t>(planes_.size());
-        if (id < shapes_.size()) return {ShapeKind::Registered, id};
-        return {ShapeKind::Triangle, id - static_cast<std::uint32_t>(shapes_.size())};
-    }
-    std::uint32_t sphereId(std::uint32_t index) const { return index; }
-    std::uint32_t planeId(std::uint32_t index) const { return static_cast<std::uint32_t>(spheres_.size()) + index; }
-    std::uint32_t shapeId(std::uint32_t index) const {
-        return static_cast<std::uint32_t>(spheres_.size() + planes_.size()) + index;
-    }
+    // The one codec of scene-wide primitive ids: the shape table's records first, then triangles
+    // (last, so the accelerator's triangle range is one interval).
+    std::uint32_t shapeId(std::uint32_t index) const { return index; }
     std::uint32_t triangleId(std::uint32_t index) const { return firstTriangle() + index; }
-    // The registered shape of id `id`, or nullptr for a sphere, plane or triangle.
-    const ShapeRecord* registeredShape(std::uint32_t id) const {
-        const PrimitiveRef ref = decodePrimitive(id);
-        return ref.shape == ShapeKind::Registered ? &shapes_[ref.index] : nullptr;
-    }
+    // The record of id `id`, or nullptr for a triangle.
+    const ShapeRecord* shapeOf(std::uint32_t id) const { return id < shapes_.size() ? &shapes_[id] : nullptr; }
+    // The triangle of id `id`; id must be a triangle's.
+    const Triangle& triangleOf(std::uint32_t id) const { return triangles_[id - firstTriangle()]; }
 
 private:
     // The accelerated closest hit, given the ray's per-ray watertight set-up, which intersect()
@@ -127,18 +109,16 @@ private:
                        Keep keep) const;
     // The ray's ignored primitive as an index among the triangles (what Embree knows), or kNoPrimitive.
     std::uint32_t ignoredTriangle(const Ray& ray) const;
-    std::uint32_t firstTriangle() const {
-        return static_cast<std::uint32_t>(spheres_.size() + planes_.size() + shapes_.size());
-    }
+    std::uint32_t firstTriangle() const { return static_cast<std::uint32_t>(shapes_.size()); }
 
-    std::vector<Sphere> spheres_;
-    std::vector<Plane> planes_;
     std::vector<Triangle> triangles_;
     std::vector<ShapeRecord> shapes_;
+    std::vector<std::uint32_t> unbounded_;  // ids of the records no box holds (planes): tested apart
+    bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     NumericsOptions numerics_;
     Accelerator accelerator_;
-    Bvh bvh_;  // spheres, registered shapes and triangles (Bvh); no triangles (Embree)
+    Bvh bvh_;  // bounded shapes and triangles (Bvh); no triangles (Embree)
     // The triangles of each BVH leaf block (Bvh only); filled on the build's threads, not zeroed first.
     std::vector<TrianglePack, DefaultInitAllocator<TrianglePack>> leafTriangles_;
     std::shared_ptr<const EmbreeScene> embree_;

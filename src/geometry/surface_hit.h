@@ -5,8 +5,11 @@
 
 namespace lightpath {
 
-// Registered: a kind of the shape table (geometry/shape.h), which its ShapeOps describe.
+// What a radiosity patch lies on (integrators/radiosity_mesh.h): its latitude-longitude cells on
+// a sphere, or triangles; Registered: any other kind of the shape table (geometry/shape.h).
 enum class ShapeKind : std::uint8_t { Sphere, Plane, Triangle, Registered };
+
+struct ShapeOps;
 
 // The closest intersection of a ray with the scene.
 struct SurfaceHit {
@@ -15,7 +18,7 @@ struct SurfaceHit {
     Vec3 normal{0.0f};         // unit geometric normal as the shape defines it (outward for spheres)
     Vec3 shadingNormal{0.0f};  // unit normal for shading: interpolated vertex normals, else `normal`
     std::uint32_t object = 0;
-    ShapeKind shape = ShapeKind::Sphere;
+    const ShapeOps* shape = nullptr;  // the kind's table (geometry/shape.h); nullptr for a triangle
     std::uint32_t primitive = 0;  // scene-wide primitive id (SceneGeometry's codec)
 };
 

@@ -60,7 +60,6 @@ SurfaceHit surfacePoint(const RadiosityPatch& patch, const PatchPoint& p) {
     hit.normal = p.normal;
     hit.shadingNormal = p.normal;
     hit.object = patch.object;
-    hit.shape = patch.shape;
     hit.primitive = patch.primitive;
     return hit;
 }

@@ -7,6 +7,8 @@
 
 #include "math/random.h"
 #include "sampling/warp.h"
+#include "shapes/plane.h"
+#include "shapes/sphere.h"
 
 namespace lightpath {
 namespace {
@@ -118,19 +120,22 @@ std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane) {
 
 std::size_t RadiosityMesh::countPatches(const Scene& scene, const SceneGeometry& geometry, float patchSize) {
     std::size_t count = 0;
-    for (const Sphere& s : geometry.spheres()) {
-        const SphereCells cells = sphereCells(s.radius, patchSize);
-        count += std::size_t{cells.bands} * cells.sectors;
-    }
     const auto addTriangle = [&](const Triangle& t) {
         if (!hasArea(t.a, t.b, t.c)) return;
         const std::size_t n = triangleSubdivisions(t.a, t.b, t.c, patchSize);
         count += n * n;
     };
-    for (const Plane& p : geometry.planes())
-        for (const Triangle& t : clipPlane(scene, p)) addTriangle(t);
     std::vector<Triangle> pieces;
     for (const ShapeRecord& shape : geometry.shapes()) {
+        if (shape.ops == &kSphereOps) {
+            const SphereCells cells = sphereCells(sphereOf(shape).radius, patchSize);
+            count += std::size_t{cells.bands} * cells.sectors;
+            continue;
+        }
+        if (!shape.ops->bounded) {
+            for (const Triangle& t : clipPlane(scene, planeOf(shape))) addTriangle(t);
+            continue;
+        }
         pieces.clear();
         shape.ops->tessellate(shape, patchSize, pieces);
         for (const Triangle& t : pieces) addTriangle(t);
@@ -155,21 +160,22 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     VertexWelder welder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_};
     sourceStart_.assign(geometry.primitiveCount() + 1, 0);
     const auto begin = [&](std::uint32_t id) { sourceStart_[id] = static_cast<std::uint32_t>(sources_.size()); };
-    for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i) {
-        begin(geometry.sphereId(i));
-        addSphere(i);
-    }
-    for (std::uint32_t i = 0; i < geometry.planes().size(); ++i) {
-        begin(geometry.planeId(i));
-        const Plane& plane = geometry.planes()[i];
-        for (const Triangle& t : clipPlane(scene, plane))
-            addTriangle(ShapeKind::Plane, geometry.planeId(i), plane.object, t.a, t.b, t.c, welder);
-    }
-    // A registered kind's patches are its tessellation's triangles, each subdivided as a triangle.
+    // A sphere's patches are latitude-longitude cells, an unbounded shape's (a plane's) the
+    // rectangle over the scene's bounds; every other kind's are its tessellation's triangles,
+    // each subdivided as a triangle.
     std::vector<Triangle> pieces;
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
         begin(geometry.shapeId(i));
         const ShapeRecord& shape = geometry.shapes()[i];
+        if (shape.ops == &kSphereOps) {
+            addSphere(i);
+            continue;
+        }
+        if (!shape.ops->bounded) {
+            for (const Triangle& t : clipPlane(scene, planeOf(shape)))
+                addTriangle(ShapeKind::Plane, geometry.shapeId(i), shape.object, t.a, t.b, t.c, welder);
+            continue;
+        }
         pieces.clear();
         shape.ops->tessellate(shape, patchSize, pieces);
         for (const Triangle& t : pieces)
@@ -226,10 +232,10 @@ void RadiosityMesh::addTriangle(ShapeKind shape, std::uint32_t primitive, std::u
 }
 
 void RadiosityMesh::addSphere(std::uint32_t sphereIndex) {
-    const Sphere& sphere = geometry_.spheres()[sphereIndex];
+    const Sphere sphere = sphereOf(geometry_.shapes()[sphereIndex]);
     const SphereCells cells = sphereCells(sphere.radius, patchSize_);
     const std::uint32_t bands = cells.bands, sectors = cells.sectors;
-    sources_.push_back({ShapeKind::Sphere, geometry_.sphereId(sphereIndex), static_cast<std::uint32_t>(patches_.size()),
+    sources_.push_back({ShapeKind::Sphere, geometry_.shapeId(sphereIndex), static_cast<std::uint32_t>(patches_.size()),
                         0, bands, sectors, Vec3{0.0f}, Vec3{0.0f}, Vec3{0.0f}});
     // Vertices: the two poles, then rings 1..bands-1 of `sectors` each (phi wraps around).
     const auto first = static_cast<std::uint32_t>(vertexCount_);
@@ -244,7 +250,7 @@ void RadiosityMesh::addSphere(std::uint32_t sphereIndex) {
         for (std::uint32_t sector = 0; sector < sectors; ++sector) {
             RadiosityPatch p;
             p.shape = ShapeKind::Sphere;
-            p.primitive = geometry_.sphereId(sphereIndex);
+            p.primitive = geometry_.shapeId(sphereIndex);
             p.object = sphere.object;
             p.z0 = 1.0f - 2.0f * float(ring) / float(bands);
             p.z1 = 1.0f - 2.0f * float(ring + 1) / float(bands);
@@ -266,7 +272,7 @@ PatchPoint RadiosityMesh::samplePoint(std::uint32_t patch, Vec2 u) const {
         return {b.x * p.a + b.y * p.b + b.z * p.c, p.normal};
     }
     // Uniform in z and phi is uniform by area on the sphere.
-    const Sphere& sphere = geometry_.spheres()[geometry_.decodePrimitive(p.primitive).index];
+    const Sphere sphere = sphereOf(*geometry_.shapeOf(p.primitive));
     const float z = p.z0 + (p.z1 - p.z0) * u.x;
     const float phi = p.phi0 + (p.phi1 - p.phi0) * u.y;
     const Vec3 n = sphereDirection(z, phi);
@@ -336,7 +342,7 @@ std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, c
 }
 
 PatchLookup RadiosityMesh::lookupSphere(const Source& source, const Vec3& point) const {
-    const Sphere& sphere = geometry_.spheres()[geometry_.decodePrimitive(source.primitive).index];
+    const Sphere sphere = sphereOf(*geometry_.shapeOf(source.primitive));
     const Vec3 n = (point - sphere.center) / sphere.radius;
     const float z = std::clamp(n.z, -1.0f, 1.0f);
     float phi = std::atan2(n.y, n.x);

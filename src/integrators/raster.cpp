@@ -7,6 +7,8 @@
 #include "geometry/intersect.h"
 #include "integrators/radiosity_mesh.h"
 #include "integrators/raycast.h"
+#include "shapes/plane.h"
+#include "shapes/sphere.h"
 
 namespace lightpath {
 
@@ -17,9 +19,14 @@ ZBuffer::ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera)
       height_(camera.height()),
       fragments_(fragmentCount(width_, height_)) {
     // The lecture's loops, in the rasteriser's order: for each primitive, for each pixel it covers.
-    for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i) rasteriseSphere(i);
-    for (std::uint32_t i = 0; i < geometry.planes().size(); ++i) rasterisePlane(i);
-    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) rasteriseShape(i);
+    // Spheres keep their impostor facets (what the rasteriser drew before the shape table held
+    // them), an unbounded shape its per-pixel plane test, every other kind its bounding box.
+    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
+        const ShapeRecord& shape = geometry.shapes()[i];
+        if (shape.ops == &kSphereOps) rasteriseSphere(i);
+        else if (!shape.ops->bounded) rasterisePlane(i);
+        else rasteriseShape(i);
+    }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) rasteriseTriangle(i);
 }
 
@@ -90,8 +97,8 @@ void ZBuffer::rasteriseTriangle(std::uint32_t index) {
 }
 
 void ZBuffer::rasterisePlane(std::uint32_t index) {
-    const Plane& plane = geometry_.planes()[index];
-    const std::uint32_t id = geometry_.planeId(index);
+    const Plane plane = planeOf(geometry_.shapes()[index]);
+    const std::uint32_t id = geometry_.shapeId(index);
     // n.(s D - (p - eye)) = 0 at depth s = offset / n.D: in front of the eye where n.D has the
     // sign of the offset; the horizon n.D = 0 is the one edge.
     const float offset = glm::dot(plane.normal, plane.point - camera_.eye());
@@ -107,8 +114,8 @@ void ZBuffer::rasterisePlane(std::uint32_t index) {
 }
 
 void ZBuffer::rasteriseSphere(std::uint32_t index) {
-    const Sphere& sphere = geometry_.spheres()[index];
-    const std::uint32_t id = geometry_.sphereId(index);
+    const Sphere sphere = sphereOf(geometry_.shapes()[index]);
+    const std::uint32_t id = geometry_.shapeId(index);
     const SphereCells cells = sphereCells(sphere.radius, 2.0f * kPi * sphere.radius / kSphereSectors);
     const auto corner = [&](std::uint32_t ring, std::uint32_t sector) {
         const float z = 1.0f - 2.0f * float(ring) / float(cells.bands);
@@ -161,7 +168,7 @@ std::optional<SurfaceHit> ZBuffer::surfaceAt(int x, int y) const {
     const RasterFragment& kept = at(x, y);
     if (kept.primitive == kNoPrimitive) return std::nullopt;
     const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-    const bool triangle = geometry_.decodePrimitive(kept.primitive).shape == ShapeKind::Triangle;
+    const bool triangle = geometry_.shapeOf(kept.primitive) == nullptr;
     return geometry_.describeHit(ray, kept.t, kept.primitive, triangle ? &kept.barycentrics : nullptr);
 }
 

@@ -11,17 +11,9 @@
 namespace lightpath {
 namespace {
 
-constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-// How many float spacings (of the centre's largest coordinate plus the radius) from a sphere's
-// surface a receiver still counts as on it: hit points land within a few of the true surface.
-constexpr double kOnSphereUlps = 8.0;
-
 float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
-    const auto ref = geometry.decodePrimitive(primitive);
-    if (ref.shape == ShapeKind::Sphere) return static_cast<float>(surfaceArea(geometry.spheres()[ref.index]));
-    if (const ShapeRecord* shape = geometry.registeredShape(primitive))
-        return static_cast<float>(shape->ops->area(*shape));
-    const Triangle& t = geometry.triangles()[ref.index];
+    if (const ShapeRecord* shape = geometry.shapeOf(primitive)) return static_cast<float>(shape->ops->area(*shape));
+    const Triangle& t = geometry.triangleOf(primitive);
     // In float while its squared cross product is a normal float (as every shipped mesh's is, so
     // their areas, and images, stay bit-identical), else in double: a sliver's area is small, not 0.
     const Vec3 cross = glm::cross(t.b - t.a, t.c - t.a);
@@ -30,10 +22,9 @@ float shapeArea(const SceneGeometry& geometry, std::uint32_t primitive) {
     return static_cast<float>(surfaceArea(t));
 }
 
-// Emits from both sides of its surface: a sphere, or a registered kind that encloses a volume.
+// Emits from both sides of its surface: a kind that encloses a volume (a sphere).
 bool emitsTwoSided(const SceneGeometry& geometry, std::uint32_t primitive) {
-    if (geometry.decodePrimitive(primitive).shape == ShapeKind::Sphere) return true;
-    const ShapeRecord* shape = geometry.registeredShape(primitive);
+    const ShapeRecord* shape = geometry.shapeOf(primitive);
     return shape != nullptr && shape->ops->closed;
 }
 
@@ -45,7 +36,9 @@ AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const Sce
     std::size_t twoSidedCount = 0;
     for (std::uint32_t primitive : primitives) {
         const float area = shapeArea(geometry, primitive);
-        if (!(area > 0.0f)) continue;  // a zero-area triangle emits nothing and cannot be sampled
+        // A zero-area triangle emits nothing and cannot be sampled; an unbounded shape (infinite
+        // area) cannot be either.
+        if (!(area > 0.0f) || !std::isfinite(area)) continue;
         area_ += area;
         shapes_.push_back({primitive, area_});
         twoSidedCount += emitsTwoSided(geometry, primitive);
@@ -53,31 +46,12 @@ AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const Sce
     if (twoSidedCount != 0 && twoSidedCount != shapes_.size())
         throw std::invalid_argument("an area light is closed shapes (spheres) or open ones (triangles), not both");
     spheres_ = twoSidedCount != 0;
-    const bool oneSphere =
-        shapes_.size() == 1 && geometry.decodePrimitive(shapes_[0].primitive).shape == ShapeKind::Sphere;
-    if (oneSphere) sphere_ = geometry.spheres()[geometry.decodePrimitive(shapes_[0].primitive).index];
+    if (shapes_.size() == 1) {
+        const ShapeRecord* shape = geometry.shapeOf(shapes_[0].primitive);
+        if (shape != nullptr && shape->ops->sampleSolidAngle != nullptr && shape->ops->pdfSolidAngle != nullptr)
+            solidAngle_ = shape;
+    }
     sampleable_ = area_ >= kMinSampledEmitterArea;
-}
-
-std::optional<SphereCone> sphereCone(const Sphere& sphere, const Vec3& receiver) {
-    const glm::dvec3 toReceiver = glm::dvec3(receiver) - glm::dvec3(sphere.center);
-    const double d2 = glm::dot(toReceiver, toReceiver);
-    const double r = sphere.radius;
-    const double d = std::sqrt(d2);
-    // A receiver within the rounding of a hit point of the surface is on it: a hit on the sphere
-    // light itself, which sees the light only through its inside (from outside, none of it).
-    const Vec3 c = glm::abs(sphere.center);
-    const double magnitude = double(std::max({c.x, c.y, c.z})) + r;
-    if (!(d - r > kOnSphereUlps * double(std::numeric_limits<float>::epsilon()) * magnitude)) return std::nullopt;
-    SphereCone cone;
-    cone.axis = Vec3(toReceiver / d);
-    cone.sin2ThetaMax = (r / d) * (r / d);
-    // cos^2 = (d - r)(d + r) / d^2, without the cancellation of 1 - sin^2 near the surface.
-    const double cosThetaMax = std::sqrt(std::max(0.0, (d - r) * (d + r))) / d;
-    cone.oneMinusCosThetaMax = cone.sin2ThetaMax / (1.0 + cosThetaMax);
-    const double pdf = 1.0 / (kTwoPi * cone.oneMinusCosThetaMax);
-    cone.pdf = pdf <= double(std::numeric_limits<float>::max()) ? static_cast<float>(pdf) : 0.0f;
-    return cone;
 }
 
 AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
@@ -90,17 +64,11 @@ AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
     const float width = it->cumulativeArea - before;
     u.x = width > 0.0f ? std::clamp((target - before) / width, 0.0f, 0.99999994f) : 0.0f;
 
-    const auto ref = geometry_.decodePrimitive(it->primitive);
-    if (ref.shape == ShapeKind::Sphere) {
-        const Sphere& sphere = geometry_.spheres()[ref.index];
-        const Vec3 n = sampleUniformSphere(u);
-        return {sphere.center + sphere.radius * n, n};
-    }
-    if (const ShapeRecord* shape = geometry_.registeredShape(it->primitive)) {
+    if (const ShapeRecord* shape = geometry_.shapeOf(it->primitive)) {
         const AreaSample p = shape->ops->sampleArea(*shape, u);
         return {p.point, p.normal};
     }
-    const Triangle& t = geometry_.triangles()[ref.index];
+    const Triangle& t = geometry_.triangleOf(it->primitive);
     const Vec3 b = sampleUniformTriangle(u);
     return {b.x * t.a + b.y * t.b + b.z * t.c, triangleNormal(t)};
 }
@@ -108,24 +76,12 @@ AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
 LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     LightSample s;
     if (!sampleable_) return s;
-    const std::optional<SphereCone> cone = sphere_ ? sphereCone(*sphere_, receiver) : std::nullopt;
-    if (cone) {
-        // Uniform in the cone (pbrt-v4 6.2.4), then the point on the sphere the direction meets
-        // first: alpha, its angle at the centre from the axis, by the law of sines.
-        if (!(cone->pdf > 0.0f)) return s;
-        const double oneMinusCos = double(u.x) * cone->oneMinusCosThetaMax;
-        const double cosTheta = 1.0 - oneMinusCos;
-        const double sin2Theta = oneMinusCos * (2.0 - oneMinusCos);
-        const double ratio = std::min(1.0, sin2Theta / cone->sin2ThetaMax);
-        const double cosAlpha =
-            std::clamp(sin2Theta / std::sqrt(cone->sin2ThetaMax) + cosTheta * std::sqrt(1.0 - ratio), -1.0, 1.0);
-        const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
-        const double phi = kTwoPi * double(u.y);
-        const Frame frame(cone->axis);
-        s.normal = glm::normalize(frame.toWorld(Vec3(float(sinAlpha * std::cos(phi)), float(sinAlpha * std::sin(phi)),
-                                                     float(cosAlpha))));
-        s.point = sphere_->center + sphere_->radius * s.normal;
-        s.pdf = cone->pdf;
+    SolidAngleSample byAngle;
+    if (solidAngle_ && solidAngle_->ops->sampleSolidAngle(*solidAngle_, receiver, u, byAngle)) {
+        if (!(byAngle.pdf > 0.0f)) return s;
+        s.point = byAngle.point;
+        s.normal = byAngle.normal;
+        s.pdf = byAngle.pdf;
     } else {
         const SurfacePoint p = samplePoint(u);
         s.point = p.point;
@@ -147,14 +103,14 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
 
 float AreaLightSource::pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const {
     if (!sampleable_) return 0.0f;
-    if (sphere_) {
-        if (const auto cone = sphereCone(*sphere_, receiver)) return cone->pdf;
-    }
+    float byAngle = 0.0f;
+    if (solidAngle_ && solidAngle_->ops->pdfSolidAngle(*solidAngle_, receiver, byAngle)) return byAngle;
     return areaToSolidAngle(1.0f / area_, receiver, point, normal);
 }
 
 bool AreaLightSource::samplesByArea(const Vec3& receiver) const {
-    return !sphere_ || !sphereCone(*sphere_, receiver);
+    float byAngle = 0.0f;
+    return !solidAngle_ || !solidAngle_->ops->pdfSolidAngle(*solidAngle_, receiver, byAngle);
 }
 
 EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {

@@ -14,10 +14,11 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
     // The emissive primitives of each object, by scene-wide id.
     std::vector<std::vector<std::uint32_t>> primitives(scene.objects.size());
     auto emits = [&](std::uint32_t object) { return emissionEventOf(scene, object).has_value(); };
-    for (std::uint32_t i = 0; i < geometry.spheres().size(); ++i)
-        if (emits(geometry.spheres()[i].object)) primitives[geometry.spheres()[i].object].push_back(geometry.sphereId(i));
-    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i)
-        if (emits(geometry.shapes()[i].object)) primitives[geometry.shapes()[i].object].push_back(geometry.shapeId(i));
+    // An unbounded shape (a plane) has no finite area to sample: seen only where a ray hits it.
+    for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
+        const ShapeRecord& shape = geometry.shapes()[i];
+        if (shape.ops->bounded && emits(shape.object)) primitives[shape.object].push_back(geometry.shapeId(i));
+    }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i)
         if (emits(geometry.triangles()[i].object)) primitives[geometry.triangles()[i].object].push_back(geometry.triangleId(i));
     for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {

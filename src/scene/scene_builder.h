@@ -1,8 +1,8 @@
 #pragma once
 // What a [[lights]] type may add to the scene being loaded: a light without a shape (point), or an
 // emissive object and its shapes (quad, sphere); and what a shape type (src/shapes/) adds: an
-// object and its shape. An interface, so types add to the scene without knowing the loader; the
-// loader implements it.
+// object and its shape (a sphere, a plane, or a record of its kind's ShapeOps table). An
+// interface, so types add to the scene without knowing the loader; the loader implements it.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -25,6 +25,7 @@ public:
     // unnamed, by that material's name "area-light-K". Returns the object index shapes store.
     virtual std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) = 0;
     virtual void addSphere(const Sphere& sphere) = 0;
+    virtual void addPlane(const Plane& plane) = 0;
     virtual void addTriangle(const Triangle& triangle) = 0;
     // A shape declaration's object, from its `name` (optional) and `material` (a material of the
     // scene, else a located error at `material`). Returns the object index its shapes store.

@@ -125,19 +125,57 @@ std::vector<std::string_view> allowedKeys(const TypeSchema& schema, TypeKey type
     return keys;
 }
 
+// One key of a declaration: read and checked if given, else an error at the table if required.
+void readKey(const TomlTable& table, const Parameter& parameter, ParameterValues& values) {
+    if (auto value = table.find(parameter.name)) {
+        readParameter(*value, parameter, values);
+    } else if (parameter.required) {
+        table.required(parameter.name);
+    }
+}
+
 // A declaration's values: every key allowed by its type's schema, each read and checked, defaults
 // for the rest; a missing required key is an error at the table.
 ParameterValues readValues(const TomlTable& table, const TypeSchema& schema, TypeKey typeKey = TypeKey::allowed) {
     table.allowOnly(allowedKeys(schema, typeKey));
     ParameterValues values(schema);
     values.locateDeclaration(table.position(), table.keyPath());
-    for (const Parameter& parameter : schema.parameters) {
-        if (auto value = table.find(parameter.name)) {
-            readParameter(*value, parameter, values);
-        } else if (parameter.required) {
-            table.required(parameter.name);
-        }
+    for (const Parameter& parameter : schema.parameters) readKey(table, parameter, values);
+    return values;
+}
+
+// The index of the material `reference` names, else a located "unknown material" error with the
+// nearest name and the known ones.
+std::uint32_t findMaterial(const TomlValue& reference,
+                           const std::vector<MaterialSlot>& materials) {
+    const std::string name = reference.string();
+    std::vector<std::string> known;
+    for (std::uint32_t i = 0; i < materials.size(); ++i) {
+        if (materials[i]->name == name) return i;
+        known.push_back(materials[i]->name);
     }
+    std::sort(known.begin(), known.end());
+    reference.fail(unknownNameMessage("material", name, known, ListKnown::always));
+}
+
+// A shape declaration's values: its kind's own keys first, then the `name` and `material` every
+// shape has, `material` looked up among the scene's materials before the schema checks it is a
+// name: so the first error a declaration reports, and its words ("unknown material", with a
+// suggestion), are those the loader gave before shapes were types.
+ParameterValues readShapeValues(const TomlTable& table, const TypeSchema& schema,
+                                const std::vector<MaterialSlot>& materials) {
+    table.allowOnly(allowedKeys(schema, TypeKey::absent));
+    ParameterValues values(schema);
+    values.locateDeclaration(table.position(), table.keyPath());
+    const auto common = [](const Parameter& p) {
+        return p.name == kShapeNameParameter.name || p.name == kShapeMaterialParameter.name;
+    };
+    for (const Parameter& parameter : schema.parameters)
+        if (!common(parameter)) readKey(table, parameter, values);
+    readKey(table, kShapeNameParameter, values);
+    const TomlValue material = table.required(kShapeMaterialParameter.name);
+    findMaterial(material, materials);
+    readParameter(material, kShapeMaterialParameter, values);
     return values;
 }
 
@@ -197,6 +235,7 @@ public:
         return static_cast<std::uint32_t>(scene_.objects.size() - 1);
     }
     void addSphere(const Sphere& sphere) override { scene_.spheres.push_back(sphere); }
+    void addPlane(const Plane& plane) override { scene_.planes.push_back(plane); }
     void addTriangle(const Triangle& triangle) override { scene_.triangles.push_back(triangle); }
     std::uint32_t addShapeObject(const ParameterValues& values) override;
     Rgb emissionOf(std::uint32_t object) const override {
@@ -221,18 +260,6 @@ void warnIfTooSmallToSample(const TomlValue& where, const char* what, double are
     if (auto warning = tooSmallToSampleWarning(what, area, emission)) scene.warnings.push_back(where.located(*warning));
 }
 
-std::uint32_t findMaterial(const TomlValue& reference,
-                           const std::vector<MaterialSlot>& materials) {
-    const std::string name = reference.string();
-    std::vector<std::string> known;
-    for (std::uint32_t i = 0; i < materials.size(); ++i) {
-        if (materials[i]->name == name) return i;
-        known.push_back(materials[i]->name);
-    }
-    std::sort(known.begin(), known.end());
-    reference.fail(unknownNameMessage("material", name, known, ListKnown::always));
-}
-
 std::uint32_t LoadingScene::addShapeObject(const ParameterValues& values) {
     SceneObject object;
     if (values.has("name")) object.name = values.text("name");
@@ -252,7 +279,7 @@ std::uint32_t LoadingScene::addShapeObject(const ParameterValues& values) {
 
 // A [[SECTION]] of a registered shape kind, read through its schema.
 void readShape(const TomlTable& table, const ShapeType& type, Scene& scene) {
-    const ParameterValues values = readValues(table, type.schema, TypeKey::absent);
+    const ParameterValues values = readShapeValues(table, type.schema, scene.materials);
     LoadingScene builder(scene);
     asSceneError([&] { type.addTo(values, builder); });
 }
@@ -265,27 +292,6 @@ std::uint32_t addObject(const TomlTable& table, Scene& scene) {
     object.material = findMaterial(table.required("material"), scene.materials);
     scene.objects.push_back(object);
     return static_cast<std::uint32_t>(scene.objects.size() - 1);
-}
-
-Sphere readSphere(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"name", "center", "radius", "material"});
-    Sphere sphere;
-    sphere.center = table.required("center").vec3();
-    sphere.radius = table.required("radius").number(positive);
-    sphere.object = addObject(table, scene);
-    warnIfTooSmallToSample(table.required("radius"), "sphere", surfaceArea(sphere),
-                           scene.materials[scene.objects.back().material]->emission, scene);
-    return sphere;
-}
-
-Plane readPlane(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"name", "point", "normal", "material"});
-    Plane plane;
-    plane.point = table.required("point").vec3();
-    // In double: the squared length of a tiny float vector (1e-30) underflows to 0 in float.
-    plane.normal = Vec3(glm::normalize(glm::dvec3(readNonZeroVector(table.required("normal")))));
-    plane.object = addObject(table, scene);
-    return plane;
 }
 
 Triangle readTriangle(const TomlTable& table, Scene& scene) {
@@ -477,8 +483,9 @@ Scene loadScene(const std::filesystem::path& path) {
 Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path) {
     const toml::table document = parseText(text, path);
     const TomlTable root(document, "");
-    // The registered shape kinds' sections come after the planes: their objects are numbered there.
-    std::vector<std::string_view> sections{"camera", "world", "materials", "lights", "spheres", "planes"};
+    // The registered shape kinds' sections, by rank (spheres, planes, then the others): their
+    // objects are numbered in that order.
+    std::vector<std::string_view> sections{"camera", "world", "materials", "lights"};
     const std::vector<const ShapeType*> shapeTypes = ShapeRegistry::instance().entries();
     for (const ShapeType* type : shapeTypes) sections.push_back(type->section);
     sections.insert(sections.end(), {"triangles", "meshes"});
@@ -492,14 +499,8 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
         scene.materials = readMaterials(materials->table());
     }
     forEachSection(root, "lights", [&](const TomlTable& light) { readLight(light, scene); });
-    // Objects are numbered spheres first, then planes, then each registered shape kind's (by rank),
-    // then triangles, each in file order.
-    forEachSection(root, "spheres", [&](const TomlTable& sphere) {
-        scene.spheres.push_back(readSphere(sphere, scene));
-    });
-    forEachSection(root, "planes", [&](const TomlTable& plane) {
-        scene.planes.push_back(readPlane(plane, scene));
-    });
+    // Objects are numbered by each registered shape kind's rank (spheres first, then planes, then
+    // the others), then triangles, each in file order.
     for (const ShapeType* type : shapeTypes)
         forEachSection(root, type->section, [&](const TomlTable& shape) { readShape(shape, *type, scene); });
     forEachSection(root, "triangles", [&](const TomlTable& triangle) {

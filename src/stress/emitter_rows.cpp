@@ -127,7 +127,7 @@ void sphereRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
             const double distance = near ? 2.0 * radius : radius + 1e3;
             const Receiver r{sphere.center + Vec3{0.0f, 0.0f, static_cast<float>(distance)}, {0.0f, 0.0f, -1.0f}};
             const SceneGeometry geometry({sphere}, {}, {});
-            const AreaLightSource light(kEvent, Rgb{kRadiance}, geometry, {geometry.sphereId(0)});
+            const AreaLightSource light(kEvent, Rgb{kRadiance}, geometry, {geometry.shapeId(0)});
             const double reference = sphereIrradiance(sphere, r);
             const std::uint64_t seed = 0xE417 + static_cast<std::uint64_t>(std::log10(radius) + 20) * 2 + near;
             const std::string label = "r=" + stress::powerLabel(radius) + (near ? ",d=2r" : ",d=r+1e3");
@@ -167,7 +167,7 @@ void nearSurfaceRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
         const float z = static_cast<float>(radius + 1e-7);
         const Receiver r{{0.0f, 0.0f, z}, {0.0f, 0.0f, -1.0f}};
         const SceneGeometry geometry({sphere}, {}, {});
-        const AreaLightSource light(kEvent, Rgb{kRadiance}, geometry, {geometry.sphereId(0)});
+        const AreaLightSource light(kEvent, Rgb{kRadiance}, geometry, {geometry.shapeId(0)});
         const double reference = sphereIrradiance(sphere, r);
         const std::uint64_t seed = 0x6A9 + static_cast<std::uint64_t>(std::log10(radius) + 5);
         const std::string label = "r=" + stress::powerLabel(radius);

@@ -81,7 +81,7 @@ std::vector<bool> litFlatMask(const Scene& scene) {
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const auto hit = geometry.intersect(camera.generateRay(x + 0.5f, y + 0.5f));
-            if (!hit || hit->shape == ShapeKind::Sphere) continue;
+            if (!hit || (hit->shape != nullptr && hit->shape->closed)) continue;  // flat surfaces only
             const Vec3 toLight = scene.lights[0]->position() - hit->point;
             if (glm::dot(toLight, hit->normal) * glm::dot(-camera.generateRay(x + 0.5f, y + 0.5f).direction, hit->normal) <= 0.0f)
                 continue;  // the light is on the other side of the wall

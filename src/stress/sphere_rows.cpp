@@ -7,6 +7,7 @@
 #include "geometry/intersect.h"
 #include "accel/scene_geometry.h"
 #include "geometry/spawn_ray.h"
+#include "shapes/sphere.h"
 #include "stress/exact_reference.h"
 #include "stress/sampling.h"
 
@@ -98,7 +99,7 @@ void checkFrom(const SceneGeometry& geometry, const SurfaceHit& hit, Rng& rng, S
     // Inward: refraction into the sphere, or internal reflection; chords of at least 0.2 r.
     const Vec3 inwardDirection = stress::randomInCone(rng, -outward, 0.1, 1.0);
     const auto far = geometry.intersect(spawnRay(hit, inwardDirection, numerics));
-    const bool exits = far && glm::dot(far->point - geometry.spheres()[0].center, inwardDirection) > 0.0f;
+    const bool exits = far && glm::dot(far->point - sphereOf(geometry.shapes()[0]).center, inwardDirection) > 0.0f;
     check.wrongRefractions += !exits;
     check.rays += 2;
 }

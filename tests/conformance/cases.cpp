@@ -1,5 +1,7 @@
 #include "cases.h"
 
+#include "accel/scene_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -244,7 +246,10 @@ material = "lamp"
         }
     }
     // Every registered shape kind as an emitting object.
-    forEachShapeCase([&](const ShapeCase& c) { visit(LightCase{c.name, c.scene}); });
+    // An unbounded kind (a plane) is no light: infinite area, never sampled.
+    forEachShapeCase([&](const ShapeCase& c) {
+        if (c.shape().ops->bounded) visit(LightCase{c.name, c.scene});
+    });
 }
 
 void forEachShapeCase(const std::function<void(const ShapeCase&)>& visit) {
@@ -259,7 +264,14 @@ void forEachShapeCase(const std::function<void(const ShapeCase&)>& visit) {
                 for (const Setting& s : settings) toml += std::string(s.key) + " = " + describe(s.value) + "\n";
                 try {
                     Scene scene = loadSceneFromText(std::string(kCamera) + toml, "conformance-shape.toml");
-                    if (scene.shapes.size() == 1) c = ShapeCase{nameOf(type->schema.name, settings), std::move(scene)};
+                    // The record as the renderer's geometry holds it: spheres and planes come to
+                    // SceneGeometry as values and become records of its one table there.
+                    const SceneGeometry geometry(scene.spheres, scene.planes, {}, {}, Accelerator::BruteForce, {}, 0,
+                                                 scene.shapes);
+                    if (geometry.shapes().size() == 1) {
+                        const ShapeRecord record = geometry.shapes().front();
+                        c = ShapeCase{nameOf(type->schema.name, settings), std::move(scene), record};
+                    }
                 } catch (const SceneError&) {  // a combination the type refuses
                 }
             }

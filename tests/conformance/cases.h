@@ -51,7 +51,8 @@ void forEachLightCase(const std::function<void(const LightCase&)>& visit);
 struct ShapeCase {
     std::string name;
     Scene scene;
-    const ShapeRecord& shape() const { return scene.shapes.front(); }
+    ShapeRecord record;  // the scene's one shape, as SceneGeometry's table holds it
+    const ShapeRecord& shape() const { return record; }
 };
 void forEachShapeCase(const std::function<void(const ShapeCase&)>& visit);
 

@@ -5,7 +5,9 @@
 // A / (2 pi R^2) times), area samples uniform (the share of samples in a half-space against the
 // share of crossings there), samples and hits on the surface with unit normals, and the
 // tessellation's area converging to the area. Statistical checks use fixed seeds and allow 5
-// standard errors.
+// standard errors. An unbounded kind (a plane: ShapeOps::bounded false) has infinite area: those
+// checks ask only that area() be infinite and bounds() all of space; its hits are checked on
+// lines through a ball of radius 100 at the origin.
 #include "check_result.h"
 #include "geometry/shape.h"
 

@@ -8,7 +8,7 @@ import sys
 
 # The types whose tables scenes/README.md shows.
 TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point"), ("light", "quad"),
-          ("light", "sphere"), ("shape", "disk")]
+          ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk")]
 
 
 def main():

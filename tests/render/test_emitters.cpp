@@ -199,11 +199,11 @@ TEST_CASE("area light: one light is spheres or triangles, never both (#30)") {
     // primitive for all of them, so a mix was sampled on one side and weighed as two.
     const SceneGeometry geometry({Sphere{{0, 0, 0}, 1.0f, 0}}, {}, {Triangle{{2, 0, 0}, {3, 0, 0}, {2, 1, 0}, 0}});
     const PathEvent event{lpe::EventType::ObjectEmission, lpe::Scatter::None, Subject::Object, 0};
-    CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.sphereId(0), geometry.triangleId(0)}),
+    CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.shapeId(0), geometry.triangleId(0)}),
                     std::invalid_argument);
-    CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.triangleId(0), geometry.sphereId(0)}),
+    CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.triangleId(0), geometry.shapeId(0)}),
                     std::invalid_argument);
-    CHECK_NOTHROW(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.sphereId(0)}));
+    CHECK_NOTHROW(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.shapeId(0)}));
 }
 
 }  // namespace lightpath

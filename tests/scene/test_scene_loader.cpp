@@ -670,3 +670,32 @@ TEST_CASE_FIXTURE(SceneFiles, "disks are read through their schema, with located
                               "type = \"disk\"\n") ==
           "scene.toml:8:1: disks[0].type: unknown key \"type\" (known: name, center, normal, radius, material)");
 }
+
+// [[spheres]] and [[planes]] are registered kinds (src/shapes/sphere.cpp, plane.cpp) read through
+// their schema; the words and the order of their checks are the hand-written reader's, as the
+// loader printed them before (a material is looked up, not refused as a name; a kind's own keys
+// are checked before `name`).
+TEST_CASE_FIXTURE(SceneFiles, "spheres and planes are read through their schema with the loader's messages") {
+    const std::string materials = "[materials.red]\n[materials.grey]\n";
+    CHECK(errorOf(materials + "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"re d\"\n") ==
+          "scene.toml:6:12: spheres[0].material: unknown material \"re d\"; did you mean \"red\"? (known: grey, red)");
+    CHECK(errorOf(materials + "[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\nmaterial = \"gr ey\"\n") ==
+          "scene.toml:6:12: planes[0].material: unknown material \"gr ey\"; did you mean \"grey\"? (known: grey, red)");
+    CHECK(errorOf(materials + "[[spheres]]\nname = \"bad name\"\nradius = 1\nmaterial = \"red\"\n") ==
+          "scene.toml:3:1: spheres[0]: missing required key \"center\"");
+    CHECK(errorOf(materials + "[[planes]]\nname = \"bad name\"\npoint = [0, 0, 0]\nmaterial = \"red\"\n") ==
+          "scene.toml:3:1: planes[0]: missing required key \"normal\"");
+    CHECK(errorOf(materials + "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nradius2 = 1\nmaterial = \"red\"\n") ==
+          "scene.toml:6:1: spheres[0].radius2: unknown key \"radius2\"; did you mean \"radius\"?");
+    const Scene scene = load(materials + "[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 0, 1e-30]\nmaterial = \"grey\"\n"
+                                         "[[spheres]]\nname = \"ball\"\ncenter = [1, 2, 3]\nradius = 0.5\nmaterial = \"red\"\n");
+    REQUIRE(scene.spheres.size() == 1);
+    REQUIRE(scene.planes.size() == 1);
+    CHECK(scene.shapes.empty());
+    CHECK(scene.spheres[0].object == 0);  // spheres first, whatever the file's order
+    CHECK(scene.planes[0].object == 1);
+    CHECK(scene.objects[0].name == "ball");
+    CHECK(scene.spheres[0].center == Vec3(1, 2, 3));
+    CHECK(scene.spheres[0].radius == 0.5f);
+    CHECK(scene.planes[0].normal == Vec3(0, 0, 1));  // normalised in double: 1e-30 squared is 0 in float
+}
