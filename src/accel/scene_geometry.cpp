@@ -8,9 +8,8 @@
 #include <utility>
 
 #include "accel/bvh_traversal.h"
+#include "geometry/builtin_shapes.h"
 #include "geometry/intersect.h"
-#include "shapes/plane.h"
-#include "shapes/sphere.h"
 #include "util/parallel_chunks.h"
 #ifdef LIGHTPATH_HAS_EMBREE
 #include "accel/embree_accelerator.h"

@@ -50,7 +50,7 @@ public:
                   NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
                   std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0,
                   std::vector<ShapeRecord> shapes = {});
-    // `spheres` and `planes` become the table's first records (shapes/sphere.h, shapes/plane.h), in
+    // `spheres` and `planes` become the table's first records (geometry/builtin_shapes.h), in
     // that order, before `shapes`.
     // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
     // buildThreads: how many threads build our BVH (0: all); the tree is the same for any count.

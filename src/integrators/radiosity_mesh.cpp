@@ -7,7 +7,6 @@
 
 #include "math/random.h"
 #include "sampling/warp.h"
-#include "shapes/plane.h"
 #include "shapes/sphere.h"
 
 namespace lightpath {

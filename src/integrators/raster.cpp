@@ -7,7 +7,6 @@
 #include "geometry/intersect.h"
 #include "integrators/radiosity_mesh.h"
 #include "integrators/raycast.h"
-#include "shapes/plane.h"
 #include "shapes/sphere.h"
 
 namespace lightpath {

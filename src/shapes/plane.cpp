@@ -1,7 +1,7 @@
 // `[[planes]]`: an infinite plane, declared, read and registered here like every shape kind
 // (docs/extending.md). Unbounded (ShapeOps::bounded false): the accelerator tests it apart, on
 // every ray, and its area is infinite, so it is never sampled as an area light.
-#include "shapes/plane.h"
+#include "geometry/builtin_shapes.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,17 +1,11 @@
 #pragma once
-// The sphere kind's table (shapes/sphere.cpp) and its record, for code that is handed spheres as
-// values (SceneGeometry's constructor, radiosity's latitude-longitude patches).
+// The sphere kind (shapes/sphere.cpp): its table and record (geometry/builtin_shapes.h), and the
+// cone it subtends, which its area lights sample.
 #include <optional>
 
-#include "geometry/shape.h"
+#include "geometry/builtin_shapes.h"
 
 namespace lightpath {
-
-extern const ShapeOps kSphereOps;
-// The record of `sphere`: centre, radius.
-ShapeRecord sphereRecord(const Sphere& sphere);
-// The sphere a record of kSphereOps holds.
-Sphere sphereOf(const ShapeRecord& record);
 
 // The cone of directions a sphere subtends from a receiver outside it, in double: sin^2 of its
 // half-angle is r^2/d^2, which underflows float for r/d below 1e-19.
