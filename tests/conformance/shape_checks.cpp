@@ -133,13 +133,12 @@ CheckResult checkShapeSampling(const ShapeRecord& shape) {
         const auto inside = [&](const Vec3& p) { return glm::dot(glm::dvec3(p), normal) < offset; };
         double inSamples = 0.0;
         for (const AreaSample& s : samples) inSamples += inside(s.point);
-        double sum = 0.0, sumSquares = 0.0, all = 0.0;
+        double sum = 0.0, all = 0.0;
         for (int i = 0; i < kLines / 2; ++i) {
             const Ray ray = randomLine(ball, rng);
             int in = 0;
             all += crossings(shape, ray, [&](float t) { in += inside(ray.at(t)); });
             sum += in;
-            sumSquares += double(in) * in;
         }
         if (all == 0.0) return result.fail(shape.ops->name, ": no line crosses it"), result;
         // The share of crossings in the half-space estimates its share of the area; compare.
