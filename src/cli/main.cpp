@@ -101,8 +101,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int code = run(argc, argv);
-    // An interrupted or refused render may return while the image module still loads.
-    lightpath::awaitImageModule();
-    return code;
+    return run(argc, argv);
 }

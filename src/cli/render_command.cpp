@@ -114,7 +114,7 @@ void run(const RenderCommand& command) {
     const AovSet aovs = config.buildAovSet(scene);
     RenderOptions options = config.renderOptions();
     options.cancel = &interrupted;
-    options.onWorkersStarted = preloadImageModule;
+    options.onWorkersStarted = loadImageModule;
     PixelMemory memory;
     try {
         memory = Renderer::pixelMemory(scene, aovs, options);
@@ -140,9 +140,9 @@ void run(const RenderCommand& command) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
     }
 
-    // Every input is accepted: an image will be written. Fail now if it could not be, and have
-    // the image module (OpenImageIO) loaded in the background while the scene renders, from
-    // once the render's workers exist (RenderOptions::onWorkersStarted says why).
+    // Every input is accepted: an image will be written. Fail now if it could not be; the image
+    // module (OpenImageIO) is loaded by the calling thread once the other workers render
+    // (RenderOptions::onWorkersStarted says why then).
     try {
         locateImageModule();
     } catch (const ImageModuleError& e) {

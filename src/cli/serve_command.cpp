@@ -62,7 +62,7 @@ void run(const ServeCommand& command) {
     } catch (const std::runtime_error& e) {
         throw CLI::RuntimeError(std::string("--host/--port: ") + e.what(), kExitBadInput);
     }
-    preloadImageModule();  // the page asks for PNGs at once: have OpenImageIO loaded by then
+    loadImageModule();  // the page asks for PNGs at once: have OpenImageIO loaded by then
     if (!isLoopback(command.host))
         std::cerr << "warning: --host " << command.host
                   << ": anyone who can reach this address can use the server; it has no authentication (docs/serve.md)\n";

@@ -3,8 +3,6 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
-#include <chrono>
-#include <future>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -56,49 +54,12 @@ LoadResult load() {
     return {codec, {}};
 }
 
-// One load per process, started in the background or on first use, whichever comes first. The
-// future of a background load joins its thread when destroyed at exit, so a process that never
-// writes (an interrupted render) still waits for the loader to finish before unloading anything.
-class ModuleLoader {
-public:
-    void startInBackground() {
-        const std::lock_guard lock(mutex_);
-        if (result_.valid()) return;
-        try {
-            result_ = std::async(std::launch::async, load).share();
-        } catch (const std::system_error&) {
-            result_ = std::async(std::launch::deferred, load).share();  // no thread to spare: load on use
-        }
-    }
-
-    void await() {
-        std::shared_future<LoadResult> started;
-        {
-            const std::lock_guard lock(mutex_);
-            started = result_;
-        }
-        // Only a load running on its thread is waited for; waiting on a deferred one would run it.
-        if (started.valid() && started.wait_for(std::chrono::seconds(0)) != std::future_status::deferred) started.wait();
-    }
-
-    const LoadResult& result() {
-        std::shared_future<LoadResult> result;
-        {
-            const std::lock_guard lock(mutex_);
-            if (!result_.valid()) result_ = std::async(std::launch::deferred, load).share();
-            result = result_;
-        }
-        return result.get();  // the shared state outlives this copy: result_ holds it
-    }
-
-private:
-    std::mutex mutex_;
-    std::shared_future<LoadResult> result_;
-};
-
-ModuleLoader& loader() {
-    static ModuleLoader instance;
-    return instance;
+// One load per process, on the first thread that asks.
+const LoadResult& loaded() {
+    static std::once_flag once;
+    static LoadResult result;
+    std::call_once(once, [] { result = load(); });
+    return result;
 }
 
 }  // namespace
@@ -116,14 +77,12 @@ fs::path locateImageModule() {
                            "lightpath-image; or set " + kModuleVariable + " to its path)");
 }
 
-void preloadImageModule() { loader().startInBackground(); }
-
-void awaitImageModule() { loader().await(); }
+void loadImageModule() { loaded(); }
 
 const ImageCodec& imageCodec() {
-    const LoadResult& loaded = loader().result();
-    if (loaded.codec == nullptr) throw ImageModuleError(loaded.error);
-    return *loaded.codec;
+    const LoadResult& result = loaded();
+    if (result.codec == nullptr) throw ImageModuleError(result.error);
+    return *result.codec;
 }
 
 }  // namespace lightpath

@@ -1,7 +1,7 @@
 #pragma once
 // Opens the image module, liblightpath-image.so (io/image_codec.h), on first use: commands that
-// read or write no image never load OpenImageIO and its ~260 shared libraries. A render starts
-// loading it in the background while the scene renders, so writing finds it ready.
+// read or write no image never load OpenImageIO and its ~260 shared libraries. A render loads it
+// on its calling thread while the other workers render, so writing finds it ready.
 //
 // Where it is looked for: $LIGHTPATH_IMAGE_MODULE when set (and nowhere else), else next to the
 // running executable, else where the build tree made it (for test executables in sub-folders).
@@ -23,12 +23,12 @@ public:
 // it before spending minutes on an image it could not write.
 std::filesystem::path locateImageModule();
 
-// Starts loading the module on a background thread and returns at once. Idempotent.
-void preloadImageModule();
-// Waits until a load started by preloadImageModule() has finished. Call it before the process
-// exits: exit() runs the destructors of every loaded library, and a loader thread still running
-// OpenImageIO's dependencies' constructors would read what they have torn down.
-void awaitImageModule();
+// Loads the module now, on the calling thread, unless it is loaded; a failure is kept for
+// imageCodec() to report. Idempotent and thread-safe. Never on a thread of its own: the main
+// thread later uses the thread-local storage of the libraries it brings (log4cplus), and clang
+// 14's LeakSanitizer crashes reading glibc 2.36's dynamic TLS made that way ("Tracer caught
+// signal 11" in ScanRangeForPointers, after a 26-layer EXR write).
+void loadImageModule();
 
 // The loaded module's codec, loading it (or waiting for the background load) if need be. Throws
 // ImageModuleError with the loader's reason when it cannot.
