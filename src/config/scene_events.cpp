@@ -14,13 +14,19 @@
 namespace lightpath {
 namespace {
 
-bool sameEvent(const ScatterEvent& a, const ScatterEvent& b) { return a.type == b.type && a.scatter == b.scatter; }
+// Every scattering event of the alphabet: what a scene may lack, or a label's object.
+constexpr ScatterEvent kScatterEvents[] = {
+    {lpe::EventType::Reflection, lpe::Scatter::Diffuse},    {lpe::EventType::Reflection, lpe::Scatter::Glossy},
+    {lpe::EventType::Reflection, lpe::Scatter::Specular},   {lpe::EventType::Reflection, lpe::Scatter::Straight},
+    {lpe::EventType::Transmission, lpe::Scatter::Diffuse},  {lpe::EventType::Transmission, lpe::Scatter::Glossy},
+    {lpe::EventType::Transmission, lpe::Scatter::Specular}, {lpe::EventType::Transmission, lpe::Scatter::Straight},
+};
 
-bool hasEvent(const SceneEvents& events, const ScatterEvent& event) {
-    for (const ScatterEvent& e : events.scatter)
-        if (sameEvent(e, event)) return true;
-    return false;
+bool contains(const std::vector<ScatterEvent>& events, const ScatterEvent& event) {
+    return std::find(events.begin(), events.end(), event) != events.end();
 }
+
+bool hasEvent(const SceneEvents& events, const ScatterEvent& event) { return contains(events.scatter, event); }
 
 void addEvent(SceneEvents& events, const ScatterEvent& event) {
     if (!hasEvent(events, event)) events.scatter.push_back(event);
@@ -111,11 +117,8 @@ std::string missingLobe(const ScatterEvent& e) {
 // Every single addition that could make a path possible, in the order their causes are named.
 std::vector<Lack> lacksOf(const SceneEvents& events) {
     std::vector<Lack> lacks;
-    for (const auto type : {lpe::EventType::Reflection, lpe::EventType::Transmission})
-        for (const auto scatter : {lpe::Scatter::Diffuse, lpe::Scatter::Glossy, lpe::Scatter::Specular, lpe::Scatter::Straight}) {
-            const ScatterEvent e{type, scatter};
-            if (!hasEvent(events, e)) lacks.push_back({missingLobe(e), [e](SceneEvents& s) { addEvent(s, e); }});
-        }
+    for (const ScatterEvent& e : kScatterEvents)
+        if (!hasEvent(events, e)) lacks.push_back({missingLobe(e), [e](SceneEvents& s) { addEvent(s, e); }});
     const bool anyLight = events.hittableLight || events.shapelessLight;
     const std::string unlit = "this scene has no light ([[lights]]): add one";
     if (!events.hittableLight)
@@ -146,7 +149,7 @@ bool possibleIn(const std::vector<std::string>& languages, const std::string& ex
     std::vector<std::string> all = languages;
     all.push_back(expression);
     all.push_back(*scene);
-    return lpe::commonPath(all).has_value();
+    return lpe::haveCommonPath(all);
 }
 
 // The events each label is on: an object's (its name, else its material's) scatter events, and
@@ -175,7 +178,7 @@ std::optional<LabelledEvents> labelledEventsOf(const Scene& scene) {
         const Material& material = *scene.materials[scene.objects[i].material];
         auto& own = events.scatter[label];
         for (const ScatterEvent& e : scatterEventsOf(material))
-            if (std::none_of(own.begin(), own.end(), [&](const ScatterEvent& o) { return sameEvent(o, e); })) own.push_back(e);
+            if (!contains(own, e)) own.push_back(e);
         if (const auto emission = emissionEventOf(scene, i))
             events.hit.push_back(labelled(std::string(1, lpe::letter(*emission)) + ".", label));
         if (!isBlack(scene.ambient) && !isBlack(material.ambientReflectance()))
@@ -206,7 +209,7 @@ bool possibleOnLabels(const std::vector<std::string>& languages, const std::stri
     std::vector<std::string> all = languages;
     all.push_back(expression);
     all.push_back(*scene);
-    return lpe::commonPath(all).has_value();
+    return lpe::haveCommonPath(all);
 }
 
 std::string eventList(const std::vector<ScatterEvent>& events) {
@@ -226,17 +229,14 @@ std::optional<std::string> whyNotOnItsLabels(const std::string& expression, cons
     for (const std::string& label : automaton.labels()) {
         const auto own = events->scatter.find(label);
         if (own == events->scatter.end()) continue;
-        for (const auto type : {lpe::EventType::Reflection, lpe::EventType::Transmission})
-            for (const auto scatter : {lpe::Scatter::Diffuse, lpe::Scatter::Glossy, lpe::Scatter::Specular, lpe::Scatter::Straight}) {
-                const ScatterEvent e{type, scatter};
-                if (std::any_of(own->second.begin(), own->second.end(), [&](const ScatterEvent& o) { return sameEvent(o, e); }))
-                    continue;
-                LabelledEvents more = *events;
-                more.scatter[label].push_back(e);
-                if (possibleOnLabels(languages, expression, more))
-                    return "in this scene " + label + " has no " + lobeName(e) + " lobe " + tuple(e) +
-                           ": its material scatters only by " + eventList(own->second);
-            }
+        for (const ScatterEvent& e : kScatterEvents) {
+            if (contains(own->second, e)) continue;
+            LabelledEvents more = *events;
+            more.scatter[label].push_back(e);
+            if (possibleOnLabels(languages, expression, more))
+                return "in this scene " + label + " has no " + lobeName(e) + " lobe " + tuple(e) +
+                       ": its material scatters only by " + eventList(own->second);
+        }
     }
     return std::string("in this scene no path has its labels on events their objects and lights produce");
 }

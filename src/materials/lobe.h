@@ -14,6 +14,8 @@ namespace lightpath {
 struct ScatterEvent {
     lpe::EventType type;
     lpe::Scatter scatter;
+
+    friend constexpr bool operator==(const ScatterEvent&, const ScatterEvent&) = default;
 };
 
 // A lobe is data its material declares (pbrt-v4's BxDFFlags play this role): the event it scatters

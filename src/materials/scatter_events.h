@@ -2,6 +2,7 @@
 // The events a material can scatter by, for its values: the one place that reads a material's
 // lobes as events for the LPE judge (config/scene_events.h), so that when lobes change (more
 // kinds, lobes as data) this function is all the judge needs adapted.
+#include <algorithm>
 #include <vector>
 
 #include "materials/material.h"
@@ -13,9 +14,7 @@ namespace lightpath {
 inline std::vector<ScatterEvent> scatterEventsOf(const Material& material) {
     std::vector<ScatterEvent> events;
     const auto add = [&events](ScatterEvent event) {
-        for (const ScatterEvent& e : events)
-            if (e.type == event.type && e.scatter == event.scatter) return;
-        events.push_back(event);
+        if (std::find(events.begin(), events.end(), event) == events.end()) events.push_back(event);
     };
     const Lobes lobes = material.lobes();
     for (int i = 0; i < static_cast<int>(lobes.size()); ++i)
