@@ -69,6 +69,15 @@ SymbolSet Alphabet::symbols(const syntax::EventSet& events) const {
     return set;
 }
 
+Event eventOfSymbol(std::uint32_t symbol, const std::vector<std::string>& labels) {
+    Event event;
+    event.type = static_cast<EventType>(symbol % kEventTypeCount);
+    event.scatter = static_cast<Scatter>(symbol / kEventTypeCount % kScatterCount);
+    const std::uint32_t label = symbol / (kEventTypeCount * kScatterCount);
+    if (label > 0) event.label = labels[label - 1];
+    return event;
+}
+
 std::vector<std::uint32_t> preferenceOrder(std::size_t classCount) {
     using T = EventType;
     using S = Scatter;

@@ -46,6 +46,10 @@ constexpr std::uint32_t symbolOf(int type, int scatter, std::uint32_t labelClass
            static_cast<std::uint32_t>(type);
 }
 
+// The inverse of symbolOf: the event symbol `symbol` stands for, its label class named by `labels`
+// (class i+1 is labels[i]; class 0 has no label).
+Event eventOfSymbol(std::uint32_t symbol, const std::vector<std::string>& labels);
+
 // Every symbol, in the order in which examples should use them: unlabelled before labelled, then
 // reflections D G S s, refractions S D G s, camera, emitter, background, then the combinations no
 // renderer produces. Shortest-path searches try symbols in this order, so "ESDL" wins over "EDSL"

@@ -55,26 +55,4 @@ Containment compareLanguages(const std::vector<NamedExpression>& expressions, co
     return result;
 }
 
-std::optional<Path> commonPath(const std::vector<std::string>& expressions, const LabelPlacement& placement) {
-    if (expressions.empty() || expressions.size() > kMaxOutputs) {
-        throw LimitError("LPE limit: commonPath takes 1 to " + std::to_string(kMaxOutputs) + " expressions");
-    }
-    std::vector<NamedExpression> named;
-    for (const std::string& e : expressions) named.push_back({"e" + std::to_string(named.size()), e});
-    const Automaton automaton = Automaton::compile(named);
-
-    // A symbol is allowed unless its label class is a placed label and its type is not a place.
-    std::vector<bool> allowed(automaton.symbolCount(), true);
-    for (Automaton::Symbol symbol = 0; symbol < automaton.symbolCount(); ++symbol) {
-        const Event event = automaton.eventOf(symbol);
-        const auto placed = placement.find(event.label);
-        if (event.label.empty() || placed == placement.end()) continue;
-        bool there = false;
-        for (const EventType type : placed->second) there = there || type == event.type;
-        allowed[symbol] = there;
-    }
-    const OutputMask all = automaton.allOutputs();
-    return automaton.findShortestPath([all](OutputMask m) { return m == all; }, allowed);
-}
-
 }  // namespace lpe

@@ -3,6 +3,8 @@
 
 #include <deque>
 
+#include "lpe/alphabet.h"
+
 namespace lpe {
 
 Automaton::LabelClass Automaton::labelClass(std::string_view label) const {
@@ -20,14 +22,7 @@ OutputMask Automaton::allOutputs() const {
     return outputCount() >= kMaxOutputs ? ~OutputMask{0} : (OutputMask{1} << outputCount()) - 1;
 }
 
-Event Automaton::eventOf(Symbol symbol) const {
-    Event event;
-    event.type = static_cast<EventType>(symbol % kEventTypeCount);
-    event.scatter = static_cast<Scatter>(symbol / kEventTypeCount % kScatterCount);
-    const LabelClass label = symbol / (kEventTypeCount * kScatterCount);
-    if (label > 0) event.label = labels_[label - 1];
-    return event;
-}
+Event Automaton::eventOf(Symbol symbol) const { return detail::eventOfSymbol(symbol, labels_); }
 
 // Breadth-first search, trying symbols in the preferred order: the first path found to a state is
 // a shortest one, and among those the one whose events come first in that order.
