@@ -76,7 +76,9 @@ std::optional<std::string> pathsOf(const PathParts& parts) {
 
 // What the scene lacks for a path, as one change to SceneEvents, with its cause and fix.
 struct Lack {
-    std::string cause;
+    // What to say, asked only of the lack that is reported (a missing lobe's message asks every
+    // material type's events, an automaton search each).
+    std::function<std::string()> cause;
     std::function<void(SceneEvents&)> add;
 };
 
@@ -116,26 +118,28 @@ std::string missingLobe(const ScatterEvent& e) {
 
 // Every single addition that could make a path possible, in the order their causes are named.
 std::vector<Lack> lacksOf(const SceneEvents& events) {
+    const auto said = [](std::string text) { return [text] { return text; }; };
     std::vector<Lack> lacks;
     for (const ScatterEvent& e : kScatterEvents)
-        if (!hasEvent(events, e)) lacks.push_back({missingLobe(e), [e](SceneEvents& s) { addEvent(s, e); }});
+        if (!hasEvent(events, e)) lacks.push_back({[e] { return missingLobe(e); }, [e](SceneEvents& s) { addEvent(s, e); }});
     const bool anyLight = events.hittableLight || events.shapelessLight;
     const std::string unlit = "this scene has no light ([[lights]]): add one";
     if (!events.hittableLight)
-        lacks.push_back({anyLight ? "no light a ray can hit: a point light is reached only by a light sample from a "
-                                    "diffuse or glossy surface; add a [[lights]] quad or sphere"
-                                  : unlit,
+        lacks.push_back({said(anyLight ? "no light a ray can hit: a point light is reached only by a light sample from "
+                                         "a diffuse or glossy surface; add a [[lights]] quad or sphere"
+                                       : unlit),
                          [](SceneEvents& s) { s.hittableLight = true; }});
-    if (!events.shapelessLight && !anyLight) lacks.push_back({unlit, [](SceneEvents& s) { s.shapelessLight = true; }});
+    if (!events.shapelessLight && !anyLight) lacks.push_back({said(unlit), [](SceneEvents& s) { s.shapelessLight = true; }});
     if (!events.objectEmission)
-        lacks.push_back({"no surface emits (O): no material has an emission (a [[lights]] quad or sphere ends its paths "
-                         "with L); give a material emission, or write L",
+        lacks.push_back({said("no surface emits (O): no material has an emission (a [[lights]] quad or sphere ends "
+                              "its paths with L); give a material emission, or write L"),
                          [](SceneEvents& s) { s.objectEmission = true; }});
     if (!events.background)
-        lacks.push_back({"the background is black (B): set [world] background", [](SceneEvents& s) { s.background = true; }});
+        lacks.push_back({said("the background is black (B): set [world] background"), [](SceneEvents& s) { s.background = true; }});
     if (!events.ambientLight || !events.ambientReflectance)
-        lacks.push_back({!events.ambientLight ? "no ambient light (L'ambient'): set [world] ambient"
-                                              : "no material reflects the ambient light (ka is 0 in every material): give one ka",
+        lacks.push_back({said(!events.ambientLight ? "no ambient light (L'ambient'): set [world] ambient"
+                                                   : "no material reflects the ambient light (ka is 0 in every material): "
+                                                     "give one ka"),
                          [](SceneEvents& s) {
                              s.ambientLight = s.ambientReflectance = true;
                              addEvent(s, lobes::kDiffuse.event);
@@ -276,11 +280,15 @@ std::optional<std::string> whyNotInScene(const std::string& expression, const st
                                          const Scene& scene) {
     const SceneEvents events = sceneEventsOf(scene);
     if (possibleIn(languages, expression, events)) return std::nullopt;
+    const auto noPath = [&] {
+        const std::optional<std::string> language = sceneLanguage(events);
+        return "no path of this scene has it: every path here is one of " + language.value_or("none (nothing emits)");
+    };
     const std::vector<Lack> lacks = lacksOf(events);
     for (const Lack& lack : lacks) {
         SceneEvents more = events;
         lack.add(more);
-        if (possibleIn(languages, expression, more)) return "in this scene " + lack.cause;
+        if (possibleIn(languages, expression, more)) return "in this scene " + lack.cause();
     }
     for (std::size_t i = 0; i < lacks.size(); ++i)
         for (std::size_t j = i + 1; j < lacks.size(); ++j) {
@@ -288,10 +296,9 @@ std::optional<std::string> whyNotInScene(const std::string& expression, const st
             lacks[i].add(more);
             lacks[j].add(more);
             if (possibleIn(languages, expression, more))
-                return "in this scene " + lacks[i].cause + "; and " + lacks[j].cause;
+                return "in this scene " + lacks[i].cause() + "; and " + lacks[j].cause();
         }
-    const std::optional<std::string> language = sceneLanguage(events);
-    return "no path of this scene has it: every path here is one of " + language.value_or("none (nothing emits)");
+    return noPath();
 }
 
 }  // namespace lightpath
