@@ -46,7 +46,7 @@ TEST_CASE("materials: every sample's weight is eval / pdf, per lobe and through 
     });
 }
 
-TEST_CASE("materials: the Bsdf's one-sample estimate is unbiased, delta branches included") {
+TEST_CASE("materials: the Bsdf's one-sample estimate is unbiased (delta branches included)" * doctest::test_suite("statistical")) {
     forEveryMaterial([](const MaterialCase& c) {
         CheckResult result;
         for (const Vec3& wo : outgoingDirections())
@@ -64,7 +64,7 @@ TEST_CASE("materials: reciprocal lobes are reciprocal where the type claims it")
     });
 }
 
-TEST_CASE("materials: white furnace <= 1 where energy conservation is claimed, albedo() near each lobe's reflectance") {
+TEST_CASE("materials: white furnace <= 1 where energy conservation is claimed and albedo() near each lobe's reflectance" * doctest::test_suite("statistical")) {
     forEveryMaterial([](const MaterialCase& c) {
         CheckResult result;
         if (c.claims.conservesEnergy) result.merge(checkEnergyConservation(*c.material));

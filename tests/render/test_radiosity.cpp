@@ -242,7 +242,7 @@ const Film& pathTracedCornell() {
     return film;
 }
 
-TEST_CASE("the Cornell box: radiosity's ED*L converges to the path tracer's as patches shrink") {
+TEST_CASE("the Cornell box: radiosity's ED*L converges to the path tracer's as patches shrink" * doctest::test_suite("statistical")) {
     const Film& reference = pathTracedCornell();
     std::vector<double> errors;
     for (std::size_t patches : {256, 1024, 4096})
@@ -420,7 +420,7 @@ Film frozenCornellReference(int width, int height) {
     return film;
 }
 
-TEST_CASE("the Cornell box under its lamp alone: radiosity with every bounce matches the frozen path-traced reference") {
+TEST_CASE("the Cornell box under its lamp alone: radiosity with every bounce matches the frozen path-traced reference" * doctest::test_suite("statistical")) {
     const Scene lamp = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.toml");
     const Film reference = frozenCornellReference(lamp.camera.width, lamp.camera.height);
     const auto render = [](const Scene& scene) {

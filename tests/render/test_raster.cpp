@@ -95,7 +95,7 @@ Comparison compare(const Scene& scene, const Film& a, const Film& b) {
     return c;
 }
 
-TEST_CASE("the rasteriser and ray casting without shadows agree off the edges, on every shipped scene") {
+TEST_CASE("the rasteriser and ray casting without shadows agree off the edges on every shipped scene" * doctest::test_suite("statistical")) {
     const AovSet aovs(classesSet());
     double worstInterior = 0.0;
     int edgeDiffering = 0, edgePixels = 0, pixels = 0;

@@ -151,15 +151,15 @@ void checkNesting(const std::string& classic, const std::string& expression, con
     CHECK(control.rejected());
 }
 
-TEST_CASE("nesting: ray casting without its ambient is the path tracer's E(D|G)(<L[^'ambient']>|O), on every shipped scene") {
+TEST_CASE("nesting: ray casting without its ambient is the path tracer's E(D|G)(<L[^'ambient']>|O) on every shipped scene" * doctest::test_suite("statistical")) {
     checkNesting("raycast", std::string("E(D|G)") + kRealLights, "lecture-room.toml");
 }
 
-TEST_CASE("nesting: what Whitted adds, ES+(D|G)(<L[^'ambient']>|O), is the path tracer's") {
+TEST_CASE("nesting: what Whitted adds (ES+(D|G)(<L[^'ambient']>|O)) is the path tracer's" * doctest::test_suite("statistical")) {
     checkNesting("whitted", std::string("ES+(D|G)") + kRealLights, "mirror-hall.toml");
 }
 
-TEST_CASE("nesting: the emitters Whitted sees through mirrors and glass, ES+L, are the path tracer's") {
+TEST_CASE("nesting: the emitters Whitted sees through mirrors and glass (ES+L) are the path tracer's" * doctest::test_suite("statistical")) {
     checkNesting("whitted", "ES+L", "mirror-sphere.toml");
 }
 
