@@ -35,7 +35,7 @@ TEST_CASE("integrators: an AOV requested alone is bit-identical to the same AOV 
 
 // Welch's test at kAgreementAlpha on image means of independent renders; the control renders the
 // integrator's scene 5% brighter than its allowance and must be rejected at the same level.
-TEST_CASE("integrators: the light on the paths shared with the path tracer is the path tracer's, 5% more is not") {
+TEST_CASE("integrators: the light on the paths shared with the path tracer is the path tracer's and 5% more is not" * doctest::test_suite("statistical")) {
     const Scene scene = agreementScene();
     for (const IntegratorInfo& integrator : integrators()) {
         const Scene control = brighter(agreementScene(), float(1.05 + agreementAllowance(integrator)));

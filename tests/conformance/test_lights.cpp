@@ -22,7 +22,7 @@ void forEveryLight(Check&& check) {
     CHECK(lights > 0);
 }
 
-TEST_CASE("lights: pdf() integrates to 1 over the light and sample() draws with it") {
+TEST_CASE("lights: pdf() integrates to 1 over the light and sample() draws with it" * doctest::test_suite("statistical")) {
     forEveryLight([](const Light& light, const LightWorld& world, const LightCase&) {
         CheckResult result;
         if (!light.isDelta())

@@ -253,7 +253,7 @@ TEST_CASE("the Cornell box: radiosity's ED*L converges to the path tracer's as p
     CHECK(errors[2] < kCornellTolerance);
 }
 
-TEST_CASE("control: radiosity of a Cornell box 10% darker fails the same tolerance") {
+TEST_CASE("control: radiosity of a Cornell box 10% darker fails the same tolerance" * doctest::test_suite("statistical")) {
     Scene darker = cornellBox(kCornellSize);
     for (MaterialSlot& m : darker.materials) phongOf(m).kd *= 0.9f;
     const double error = blockError(cornellDiffuse(darker, "radiosity", 16, 4096), pathTracedCornell(), 8);
