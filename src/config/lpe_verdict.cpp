@@ -44,8 +44,10 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
 
     // In this scene: what its materials scatter by and its lights and surfaces emit. Black here with
     // the cause and a fix, as a label the scene lacks is: another scene fills it.
-    if (auto why = whyNotInScene(expression, languages(expression, integrator, false), *scene))
-        return {isPresetMember(aov, scene) ? Verdict::PresetBlack : Verdict::BlackHere, *why};
+    const auto blackForWantOf = [&](const std::string& lack) {
+        return Judgement{isPresetMember(aov, scene) ? Verdict::PresetBlack : Verdict::BlackHere, "in this scene " + lack, lack};
+    };
+    if (auto lack = whyNotInScene(expression, languages(expression, integrator, false), *scene)) return blackForWantOf(*lack);
 
     // In this scene: a label it names that labels nothing here is on no event at all.
     const std::vector<std::string> known = sceneLabels(*scene);
@@ -60,8 +62,8 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
     const bool fillable = lpe::haveCommonPath(languages(expression, integrator, false), placement);
     if (fillable) {
         // On the events each labelled object and light produces (a mirror named by a floor's label).
-        if (auto why = whyNotOnItsLabels(expression, languages(expression, integrator, false), *scene))
-            return {isPresetMember(aov, scene) ? Verdict::PresetBlack : Verdict::BlackHere, *why};
+        if (auto lack = whyNotOnItsLabels(expression, languages(expression, integrator, false), *scene))
+            return blackForWantOf(*lack);
         return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
     }
     if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
@@ -86,10 +88,8 @@ std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& s
         const Judgement judgement = judgeExpression(aov, &integrator, scene);
         if (judgement.verdict != Verdict::PresetBlack) continue;
         // Black for want of something in the scene, or whatever the scene, under this integrator.
-        const bool inThisScene = lpe::haveCommonPath(languages(aov.expression, &integrator, true));
-        const std::string prefix = "in this scene ";
-        const bool said = inThisScene && judgement.reason.rfind(prefix, 0) == 0;
-        black.push_back({aov.name, said ? judgement.reason.substr(prefix.size()) : judgement.reason, inThisScene});
+        const bool inThisScene = !judgement.sceneLacks.empty();
+        black.push_back({aov.name, inThisScene ? judgement.sceneLacks : judgement.reason, inThisScene});
     }
     return black;
 }

@@ -28,6 +28,9 @@ struct Judgement {
     Verdict verdict = Verdict::Fillable;
     // Refused, BlackHere, PresetBlack: why; Fillable: a warning about the scene's labels, or empty.
     std::string reason;
+    // BlackHere, PresetBlack for want of something in this scene: that lack alone (`reason` is
+    // "in this scene " and it); empty otherwise.
+    std::string sceneLacks;
 };
 
 // `integrator` null: every integrator (refused only when none can fill it); `scene` null: judged

@@ -238,11 +238,11 @@ std::optional<std::string> whyNotOnItsLabels(const std::string& expression, cons
             LabelledEvents more = *events;
             more.scatter[label].push_back(e);
             if (possibleOnLabels(languages, expression, more))
-                return "in this scene " + label + " has no " + lobeName(e) + " lobe " + tuple(e) +
+                return label + " has no " + lobeName(e) + " lobe " + tuple(e) +
                        ": its material scatters only by " + eventList(own->second);
         }
     }
-    return std::string("in this scene no path has its labels on events their objects and lights produce");
+    return std::string("no path has its labels on events their objects and lights produce");
 }
 
 SceneEvents sceneEventsOf(const Scene& scene) {
@@ -282,13 +282,13 @@ std::optional<std::string> whyNotInScene(const std::string& expression, const st
     if (possibleIn(languages, expression, events)) return std::nullopt;
     const auto noPath = [&] {
         const std::optional<std::string> language = sceneLanguage(events);
-        return "no path of this scene has it: every path here is one of " + language.value_or("none (nothing emits)");
+        return "no path has it: every path here is one of " + language.value_or("none (nothing emits)");
     };
     const std::vector<Lack> lacks = lacksOf(events);
     for (const Lack& lack : lacks) {
         SceneEvents more = events;
         lack.add(more);
-        if (possibleIn(languages, expression, more)) return "in this scene " + lack.cause();
+        if (possibleIn(languages, expression, more)) return lack.cause();
     }
     for (std::size_t i = 0; i < lacks.size(); ++i)
         for (std::size_t j = i + 1; j < lacks.size(); ++j) {
@@ -296,7 +296,7 @@ std::optional<std::string> whyNotInScene(const std::string& expression, const st
             lacks[i].add(more);
             lacks[j].add(more);
             if (possibleIn(languages, expression, more))
-                return "in this scene " + lacks[i].cause() + "; and " + lacks[j].cause();
+                return lacks[i].cause() + "; and " + lacks[j].cause();
         }
     return noPath();
 }

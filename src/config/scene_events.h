@@ -29,16 +29,16 @@ SceneEvents sceneEventsOf(const Scene& scene);
 std::optional<std::string> sceneLanguage(const SceneEvents& events);
 
 // Nothing when `expression` shares a path with `languages` (what lightpath and the integrator
-// render) among the events `scene` produces; otherwise "in this scene ..." naming what the scene
-// lacks for it and how to add it, e.g. "in this scene no material has a mirror lobe (kr and kt are
-// 0 in every material): give one kr".
+// render) among the events `scene` produces; otherwise what the scene lacks for it and how to add
+// it, worded to follow "in this scene ", e.g. "no material has a mirror lobe (kr and kt are 0 in
+// every material): give one kr".
 std::optional<std::string> whyNotInScene(const std::string& expression, const std::vector<std::string>& languages,
                                          const Scene& scene);
 
 // The same on each thing's own label: nothing when `expression` shares a path with `languages`
 // among the events each object scatters by and each emitter ends a path with, under its label;
-// otherwise which labelled object lacks the event, e.g. "in this scene floor has no mirror lobe <RS>:
-// its material scatters only by <RD>". Nothing, too, when a label cannot be quoted in an LPE.
+// otherwise which labelled object lacks the event, e.g. "floor has no mirror lobe <RS>: its material
+// scatters only by <RD>". Nothing, too, when a label cannot be quoted in an LPE.
 std::optional<std::string> whyNotOnItsLabels(const std::string& expression, const std::vector<std::string>& languages,
                                              const Scene& scene);
 
