@@ -111,7 +111,8 @@ void run(const RenderCommand& command) {
     std::signal(SIGINT, [](int) { interrupted.store(true); });
     setActivity("loading " + config.scenePath);
     const Scene scene = config.loadScene();
-    const AovSet aovs = config.buildAovSet(scene);
+    const Judge judge = config.judge(scene);
+    const AovSet aovs = config.buildAovSet(scene, judge);
     RenderOptions options = config.renderOptions();
     options.cancel = &interrupted;
     options.onWorkersStarted = loadImageModule;
@@ -162,7 +163,7 @@ void run(const RenderCommand& command) {
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
     // A preset's AOV this integrator or this scene cannot fill is written black, so the set still
     // sums to the beauty; said here and in --stats, not as a warning (config/lpe_verdict.h).
-    const std::vector<BlackAov> black = blackPresetAovs(aovs.expressions(), *findIntegrator(options.integrator), &scene);
+    const std::vector<BlackAov> black = blackPresetAovs(aovs.expressions(), judge);
     for (const BlackAov& b : black) metadata.emplace_back("lightpath:black:" + b.name, b.reason);
     WriteStats write;
     const auto writeStart = std::chrono::steady_clock::now();
@@ -179,7 +180,7 @@ void run(const RenderCommand& command) {
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
-    config.warnEmptyAovs(result.film, aovs, scene);
+    config.warnEmptyAovs(result.film, aovs, judge);
     if (command.stats) {
         printStats(result.stats, write);
         printAcceleratorStats(config.accel, result.stats.accelerator);

@@ -71,6 +71,13 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
     return {Verdict::BlackHere, whyNeverFilled(expression, language, scene).value_or("no path of this scene carries its labels")};
 }
 
+const Judgement& Judge::operator()(const lpe::NamedExpression& aov) const {
+    const auto key = std::make_pair(aov.name, aov.expression);
+    const auto found = judged_.find(key);
+    if (found != judged_.end()) return found->second;
+    return judged_.emplace(key, judgeExpression(aov, integrator_, scene_)).first->second;
+}
+
 std::string refusalMessage(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const std::string& reason) {
     const std::string under = integrator ? "under --integrator " + std::string(integrator->name) : "under any integrator";
     return "'" + aov.expression + "' can never match " + under + ": " + reason;
@@ -81,11 +88,10 @@ std::string warningMessage(const lpe::NamedExpression& aov, const Judgement& jud
     return "AOV " + aov.name + " (" + aov.expression + ") stays black: " + judgement.reason;
 }
 
-std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator,
-                                      const Scene* scene) {
+std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const Judge& judge) {
     std::vector<BlackAov> black;
     for (const auto& aov : set) {
-        const Judgement judgement = judgeExpression(aov, &integrator, scene);
+        const Judgement& judgement = judge(aov);
         if (judgement.verdict != Verdict::PresetBlack) continue;
         // Black for want of something in the scene, or whatever the scene, under this integrator.
         const bool inThisScene = !judgement.sceneLacks.empty();

@@ -12,6 +12,7 @@
 //                scene, `lights` too) that this integrator, or this scene's events, cannot fill: written black so the preset still sums to the beauty, and
 //                said in --stats and the EXR header, never as a warning (docs/lpe.md);
 //   fillable     otherwise; a label the scene lacks still gets a warning (a typo in [^'kee']).
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,21 @@ struct Judgement {
 Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator,
                           const Scene* scene = nullptr);
 
+// Judges the AOVs of one render, each once whoever asks: the refusals and warnings before it, its
+// black preset members, the empty-AOV warnings after it (each judgement is tens of automaton
+// searches). Not thread-safe; `integrator` and `scene` must outlive it.
+class Judge {
+public:
+    Judge(const IntegratorInfo* integrator, const Scene* scene) : integrator_(integrator), scene_(scene) {}
+    const Judgement& operator()(const lpe::NamedExpression& aov) const;
+    const IntegratorInfo* integrator() const { return integrator_; }
+
+private:
+    const IntegratorInfo* integrator_;
+    const Scene* scene_;
+    mutable std::map<std::pair<std::string, std::string>, Judgement> judged_;  // by (name, expression)
+};
+
 // Is `aov` a member of a preset (same name and expression)? The presets made from a scene
 // (`lights`) only when `scene` is given.
 bool isPresetMember(const lpe::NamedExpression& aov, const Scene* scene = nullptr);
@@ -56,7 +72,6 @@ struct BlackAov {
     std::string reason;
     bool inThisScene = false;  // the integrator could fill it, but not with this scene's events
 };
-std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo& integrator,
-                                      const Scene* scene = nullptr);
+std::vector<BlackAov> blackPresetAovs(const std::vector<lpe::NamedExpression>& set, const Judge& judge);
 
 }  // namespace lightpath

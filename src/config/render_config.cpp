@@ -281,18 +281,29 @@ namespace {
 // scene is refused before the render, with the reason; one only black in this scene (a label it
 // lacks, a volume) is rendered with one short warning; a preset's AOV the integrator cannot fill is
 // written black and said in --stats, not warned about.
-void refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const IntegratorInfo* info, const Scene& scene,
+void refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const Judge& judge,
                        const std::function<void(const std::string&)>& warn) {
     for (const auto& e : set) {
-        const Judgement judgement = judgeExpression(e, info, &scene);
-        if (judgement.verdict == Verdict::Refused) throw lpeError(e.name, refusalMessage(e, info, judgement.reason));
+        const Judgement& judgement = judge(e);
+        if (judgement.verdict == Verdict::Refused)
+            throw lpeError(e.name, refusalMessage(e, judge.integrator(), judgement.reason));
         if (judgement.verdict != Verdict::PresetBlack && !judgement.reason.empty()) warn(warningMessage(e, judgement));
     }
 }
 
 }  // namespace
 
+Judge RenderConfig::judge(const Scene& scene) const {
+    const IntegratorInfo* info = findIntegrator(integrator);
+    if (!info) throw ConfigError("integrator", choiceMessage(integrator, integratorNames()));
+    return Judge(info, &scene);
+}
+
 AovSet RenderConfig::buildAovSet(const Scene& scene, std::vector<std::string>* warnings) const {
+    return buildAovSet(scene, judge(scene), warnings);
+}
+
+AovSet RenderConfig::buildAovSet(const Scene& scene, const Judge& judge, std::vector<std::string>* warnings) const {
     const auto set = expressions(&scene);
     std::optional<AovSet> built;
     try {
@@ -309,9 +320,7 @@ AovSet RenderConfig::buildAovSet(const Scene& scene, std::vector<std::string>* w
         if (warnings != nullptr) warnings->push_back(message);
         else printed(message);
     };
-    const IntegratorInfo* info = findIntegrator(integrator);
-    if (!info) throw ConfigError("integrator", choiceMessage(integrator, integratorNames()));
-    refuseNeverFilled(set, info, scene, warn);
+    refuseNeverFilled(set, judge, warn);
     // Presets never warn about themselves: the taxonomy's AOVs overlap on purpose.
     for (const auto& e : set)
         if (!isPresetMember(e))
@@ -319,9 +328,7 @@ AovSet RenderConfig::buildAovSet(const Scene& scene, std::vector<std::string>* w
     if (set.size() > 1) {
         // Overlapping AOVs count the same light twice; say so with a path both accept. Not among a
         // preset's own AOVs, nor for an AOV black in this scene (it counts nothing).
-        const auto blackHere = [&](const lpe::NamedExpression& e) {
-            return judgeExpression(e, info, &scene).verdict == Verdict::BlackHere;
-        };
+        const auto blackHere = [&](const lpe::NamedExpression& e) { return judge(e).verdict == Verdict::BlackHere; };
         for (const lpe::Overlap& o : lpe::analyse(set, "E.*L").overlaps) {
             const auto& a = set[o.first];
             const auto& b = set[o.second];
@@ -333,8 +340,7 @@ AovSet RenderConfig::buildAovSet(const Scene& scene, std::vector<std::string>* w
     return std::move(*built);
 }
 
-void RenderConfig::warnEmptyAovs(const Film& film, const AovSet& aovs, const Scene& scene) const {
-    const IntegratorInfo* info = findIntegrator(integrator);
+void RenderConfig::warnEmptyAovs(const Film& film, const AovSet& aovs, const Judge& judge) const {
     const Warnings warn(quiet);
     for (std::size_t o = 0; o < aovs.expressions().size(); ++o) {
         const std::size_t layer = o + 1;  // after the beauty
@@ -343,7 +349,7 @@ void RenderConfig::warnEmptyAovs(const Film& film, const AovSet& aovs, const Sce
             for (int x = 0; x < film.width() && empty; ++x) empty = isBlack(film.at(layer, x, y));
         const auto& e = aovs.expressions()[o];
         // AOVs that can never be filled here were refused, warned about or noted before the render.
-        if (!empty || !info || judgeExpression(e, info, &scene).verdict != Verdict::Fillable) continue;
+        if (!empty || judge(e).verdict != Verdict::Fillable) continue;
         warn("AOV " + e.name + " (" + e.expression + ") received nothing in this render: --integrator " + integrator +
              " can produce its paths, but none reached it at " + std::to_string(film.width()) + "x" +
              std::to_string(film.height()) + ", " + std::to_string(samplesPerPixel) + " spp, --max-depth " +

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "config/config_error.h"
+#include "config/lpe_verdict.h"
 #include "film/aov_set.h"
 #include "film/film.h"
 #include "integrators/registry.h"
@@ -67,13 +68,18 @@ struct RenderConfig {
     // warns (on stderr, or into `warnings` when given) of one black in `scene`, of a label the scene
     // lacks, and of overlaps, except among a preset's own AOVs.
     AovSet buildAovSet(const Scene& scene, std::vector<std::string>* warnings = nullptr) const;
+    // The same with `judge` (made by judge(scene)), which keeps its judgements for the render.
+    AovSet buildAovSet(const Scene& scene, const Judge& judge, std::vector<std::string>* warnings = nullptr) const;
+    // The judge of this configuration's integrator in `scene`. Throws ConfigError for an unknown
+    // integrator.
+    Judge judge(const Scene& scene) const;
     RenderOptions renderOptions() const;  // after validate()
     // Refuses a render whose pixel memory, plus `outputBytes` to write its files, is more than this
     // process can get (render/memory_limit.h): names the amount, its parts, the layers, the bound,
     // and what to change (fewer layers, fewer pixels: a resolution that fits).
     void refuseBeyondMemory(const PixelMemory& memory, std::uint64_t outputBytes = 0) const;
     // After a render: warns of each AOV that could have received light but got none.
-    void warnEmptyAovs(const Film& film, const AovSet& aovs, const Scene& scene) const;
+    void warnEmptyAovs(const Film& film, const AovSet& aovs, const Judge& judge) const;
 };
 
 // The error of one AOV, `name` (field "lpe:NAME").

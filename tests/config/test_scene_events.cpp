@@ -122,14 +122,14 @@ TEST_CASE("the scene's events: the warning names the cause, a preset's black AOV
     const AovSet set = config.buildAovSet(room, &warnings);
     CHECK(warnings.empty());
     std::vector<std::string> black;
-    for (const BlackAov& b : blackPresetAovs(set.expressions(), *findIntegrator("path"), &room)) {
+    for (const BlackAov& b : blackPresetAovs(set.expressions(), Judge(findIntegrator("path"), &room))) {
         black.push_back(b.name);
         CHECK(b.inThisScene);
     }
     CHECK(black == std::vector<std::string>{"raytrace", "mirror", "emission"});
     // The control: a mirror ball and a sky to see in it, and every class can be filled.
     const Scene lit = load(kMatteRoom + withBall("kr = 0.9") + "[world]\nbackground = 0.5\n");
-    CHECK(blackPresetAovs(config.buildAovSet(lit).expressions(), *findIntegrator("path"), &lit).empty());
+    CHECK(blackPresetAovs(config.buildAovSet(lit).expressions(), Judge(findIntegrator("path"), &lit)).empty());
 }
 
 TEST_CASE("the ambient term: only raycast, raster and whitted add it, and the lights preset's group stays usable") {
@@ -152,7 +152,7 @@ TEST_CASE("the ambient term: only raycast, raster and whitted add it, and the li
     std::vector<std::string> warnings;
     const AovSet set = config.buildAovSet(room, &warnings);
     CHECK(warnings.empty());
-    const auto black = blackPresetAovs(set.expressions(), *findIntegrator("path"), &room);
+    const auto black = blackPresetAovs(set.expressions(), Judge(findIntegrator("path"), &room));
     REQUIRE(black.size() == 1);
     CHECK(black[0].name == "ambient");
     CHECK_FALSE(black[0].inThisScene);
