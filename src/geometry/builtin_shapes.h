@@ -1,21 +1,18 @@
 #pragma once
-// The tables of the two kinds a Scene holds as values (Scene::spheres, Scene::planes), declared
+// The records of the two kinds a Scene holds as values (Scene::spheres, Scene::planes), declared
 // here so that SceneGeometry (accel/, below shapes/) can turn them into records; each is defined,
-// with its scene-file type, in its own file: shapes/sphere.cpp, shapes/plane.cpp.
+// with its table and scene-file type, in its own file: shapes/sphere.cpp, shapes/plane.cpp.
+// Radiosity and the rasteriser ask a record's table (shape.h), never for its kind.
 #include "geometry/shape.h"
 
 namespace lightpath {
 
-extern const ShapeOps kSphereOps;
 // The record of `sphere`: centre, radius.
 ShapeRecord sphereRecord(const Sphere& sphere);
-// The sphere a record of kSphereOps holds.
+// The sphere a record of sphereRecord holds (the stress scorecard's sphere rows read its centre).
 Sphere sphereOf(const ShapeRecord& record);
 
-extern const ShapeOps kPlaneOps;
 // The record of `plane`: a point, the unit normal.
 ShapeRecord planeRecord(const Plane& plane);
-// The plane a record of kPlaneOps holds.
-Plane planeOf(const ShapeRecord& record);
 
 }  // namespace lightpath

@@ -6,6 +6,16 @@
 // are records of this table too (shapes/sphere.cpp, shapes/plane.cpp); only triangles keep their
 // own array and fast paths (triangle packs, SIMD, Embree). A record's test is one indirect call
 // (for spheres +0.11% instructions of a render, callgrind).
+//
+// Radiosity and the rasteriser read only this table, never a kind's name. What they ask:
+// - radiosity's patches (integrators/radiosity_mesh.h): a kind's `patchGrid` cells if it has one
+//   (the sphere's latitude-longitude cells), else, bounded, its `tessellate` triangles, or,
+//   unbounded, its `tessellateRegion` over the scene's bounds (the plane's clipped rectangle);
+//   an unbounded kind without one gets no patches (radiosity leaves it black).
+// - the rasteriser's coverage (integrators/raster.h): the pixels of a bounded kind's bounding box,
+//   every pixel of an unbounded one; each takes the kind's depth under the pixel centre, from
+//   `depthAlong` if it has one (the plane's closed form), else from `intersect` along the pixel's
+//   ray: ray casting's hit exactly.
 #include <array>
 #include <cstdint>
 #include <string_view>
@@ -43,6 +53,36 @@ struct SolidAngleSample {
     float pdf = 0.0f;  // per steradian; 0: no sample
 };
 
+// A kind's natural cells for radiosity (ShapeOps::patchGrid): `rows` x `columns` cells, cell
+// (row, column) with the corners (row, column), (row, column + 1), (row + 1, column) and
+// (row + 1, column + 1). Corners may be shared (a sphere's poles, its seam at phi = 2 pi): there
+// are `corners` distinct ones, numbered 0 .. corners - 1.
+struct PatchGrid {
+    std::uint32_t rows = 0, columns = 0;
+    std::uint32_t corners = 0;
+};
+
+// A point's cell in a PatchGrid and where in it: `fraction` in [0, 1]^2 from the corner (row,
+// column) towards row + 1 (x) and column + 1 (y), the weights of bilinear (Gouraud) interpolation.
+struct GridPoint {
+    std::uint32_t row = 0, column = 0;
+    Vec2 fraction{0.0f};
+};
+
+struct PatchGridOps {
+    // The cells of about `patchSize` scene units across.
+    PatchGrid (*cells)(const ShapeRecord&, float patchSize) = nullptr;
+    // The number of corner (row, column), row in [0, rows], column in [0, columns].
+    std::uint32_t (*corner)(const PatchGrid&, std::uint32_t row, std::uint32_t column) = nullptr;
+    // A cell's area; the cells' areas sum to ShapeOps::area.
+    float (*cellArea)(const ShapeRecord&, const PatchGrid&, std::uint32_t row, std::uint32_t column) = nullptr;
+    // A point uniformly by area in a cell from u in [0, 1)^2, and the unit (outward) normal there.
+    AreaSample (*sampleCell)(const ShapeRecord&, const PatchGrid&, std::uint32_t row, std::uint32_t column,
+                             Vec2 u) = nullptr;
+    // The cell a point on the surface lies in.
+    GridPoint (*locate)(const ShapeRecord&, const PatchGrid&, const Vec3& point) = nullptr;
+};
+
 struct ShapeOps {
     std::string_view name;  // as the scene file names the kind ("disk")
     // Encloses a volume: it is seen, and emits, from both sides of every surface element like a
@@ -71,6 +111,17 @@ struct ShapeOps {
     bool (*sampleSolidAngle)(const ShapeRecord&, const Vec3& receiver, Vec2 u, SolidAngleSample& out) = nullptr;
     // sampleSolidAngle's density at `receiver` in `pdf`; false exactly where sampleSolidAngle is.
     bool (*pdfSolidAngle)(const ShapeRecord&, const Vec3& receiver, float& pdf) = nullptr;
+    // Optional, for radiosity (nullptr: its patches are the `tessellate` triangles): a kind with a
+    // natural parametrisation cuts itself into cells (the sphere's latitude-longitude cells).
+    const PatchGridOps* patchGrid = nullptr;
+    // Optional, for an unbounded kind (nullptr: radiosity gives it no patches): triangles covering
+    // the part of it over `region` (the scene's bounds), wound with its normal (the plane's
+    // rectangle).
+    void (*tessellateRegion)(const ShapeRecord&, const Bounds& region, std::vector<Triangle>& out) = nullptr;
+    // Optional, for the rasteriser (nullptr: `intersect` along the pixel's unit ray): s with
+    // eye + s direction the nearest point of the surface, for a direction of any length; not
+    // positive or not finite where there is none (the plane's n.(p - eye) / n.direction).
+    float (*depthAlong)(const ShapeRecord&, const Vec3& eye, const Vec3& direction) = nullptr;
 };
 
 }  // namespace lightpath

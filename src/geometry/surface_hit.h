@@ -5,10 +5,6 @@
 
 namespace lightpath {
 
-// What a radiosity patch lies on (integrators/radiosity_mesh.h): its latitude-longitude cells on
-// a sphere, or triangles; Registered: any other kind of the shape table (geometry/shape.h).
-enum class ShapeKind : std::uint8_t { Sphere, Plane, Triangle, Registered };
-
 struct ShapeOps;
 
 // The closest intersection of a ray with the scene.

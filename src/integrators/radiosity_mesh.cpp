@@ -7,7 +7,6 @@
 
 #include "math/random.h"
 #include "sampling/warp.h"
-#include "shapes/sphere.h"
 
 namespace lightpath {
 namespace {
@@ -30,18 +29,34 @@ bool hasArea(const Vec3& a, const Vec3& b, const Vec3& c) {
 // (i, j) for i < n - j at even offsets and the upper ones (i < n - j - 1) at odd offsets.
 std::uint32_t rowStart(std::uint32_t n, std::uint32_t j) { return j * (2 * n - j); }
 
+// The region an unbounded shape is tessellated over (ShapeOps::tessellateRegion): the bounds of
+// every bounded shape, every triangle, every light's position and the eye.
+Bounds sceneRegion(const Scene& scene, const SceneGeometry& geometry) {
+    Bounds region;
+    for (const ShapeRecord& s : geometry.shapes())
+        if (s.ops->bounded) region.grow(s.ops->bounds(s));
+    for (const Triangle& t : geometry.triangles()) {
+        region.grow(t.a);
+        region.grow(t.b);
+        region.grow(t.c);
+    }
+    for (const LightSlot& l : scene.lights) region.grow(l->position());
+    region.grow(scene.camera.eye);
+    return region;
+}
+
+// The triangles a record without a patch grid is meshed as (geometry/shape.h): its tessellation,
+// or an unbounded kind's over `region` (none if it has no tessellateRegion).
+void tessellateRecord(const ShapeRecord& shape, float patchSize, const Bounds& region, std::vector<Triangle>& out) {
+    out.clear();
+    if (shape.ops->bounded) {
+        if (shape.ops->tessellate) shape.ops->tessellate(shape, patchSize, out);
+    } else if (shape.ops->tessellateRegion) {
+        shape.ops->tessellateRegion(shape, region, out);
+    }
+}
+
 }  // namespace
-
-SphereCells sphereCells(float radius, float patchSize) {
-    const double bands = std::clamp(std::ceil(2.0 * radius / patchSize), 2.0, kMaxSubdivisions);
-    const double sectors = std::clamp(std::ceil(2.0 * kPi * radius / patchSize), 4.0, kMaxSubdivisions);
-    return {static_cast<std::uint32_t>(bands), static_cast<std::uint32_t>(sectors)};
-}
-
-Vec3 sphereDirection(float z, float phi) {
-    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-    return {r * std::cos(phi), r * std::sin(phi), z};
-}
 
 // Joins the grid vertices that neighbouring triangles of one object and orientation share, so
 // a vertex's radiosity averages the patches around it across triangle edges (a quad's diagonal).
@@ -74,49 +89,6 @@ struct RadiosityMesh::VertexWelder {
     }
 };
 
-std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane) {
-    Vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
-    const auto grow = [&](const Vec3& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    };
-    for (const Sphere& s : scene.spheres) {
-        grow(s.center - Vec3{s.radius});
-        grow(s.center + Vec3{s.radius});
-    }
-    for (const ShapeRecord& s : scene.shapes) {
-        const Bounds box = s.ops->bounds(s);
-        grow(box.lo);
-        grow(box.hi);
-    }
-    for (const Triangle& t : scene.triangles) {
-        grow(t.a);
-        grow(t.b);
-        grow(t.c);
-    }
-    for (const LightSlot& l : scene.lights) grow(l->position());
-    grow(scene.camera.eye);
-    grow(plane.point);
-    const Vec3 margin{std::max(0.5f * glm::length(hi - lo), 1.0f)};
-    lo -= margin;
-    hi += margin;
-
-    // The box's corners projected onto the plane, in a basis (s, t) with s x t = normal.
-    const Frame frame(plane.normal);
-    float sMin = std::numeric_limits<float>::max(), sMax = -sMin, tMin = sMin, tMax = -sMin;
-    for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
-        const Vec3 d = p - plane.point;
-        sMin = std::min(sMin, glm::dot(d, frame.s));
-        sMax = std::max(sMax, glm::dot(d, frame.s));
-        tMin = std::min(tMin, glm::dot(d, frame.t));
-        tMax = std::max(tMax, glm::dot(d, frame.t));
-    }
-    const auto at = [&](float s, float t) { return plane.point + s * frame.s + t * frame.t; };
-    const Vec3 a = at(sMin, tMin), b = at(sMax, tMin), c = at(sMax, tMax), d = at(sMin, tMax);
-    return {Triangle{a, b, c, plane.object}, Triangle{a, c, d, plane.object}};
-}
-
 std::size_t RadiosityMesh::countPatches(const Scene& scene, const SceneGeometry& geometry, float patchSize) {
     std::size_t count = 0;
     const auto addTriangle = [&](const Triangle& t) {
@@ -124,19 +96,15 @@ std::size_t RadiosityMesh::countPatches(const Scene& scene, const SceneGeometry&
         const std::size_t n = triangleSubdivisions(t.a, t.b, t.c, patchSize);
         count += n * n;
     };
+    const Bounds region = sceneRegion(scene, geometry);
     std::vector<Triangle> pieces;
     for (const ShapeRecord& shape : geometry.shapes()) {
-        if (shape.ops == &kSphereOps) {
-            const SphereCells cells = sphereCells(sphereOf(shape).radius, patchSize);
-            count += std::size_t{cells.bands} * cells.sectors;
+        if (shape.ops->patchGrid) {
+            const PatchGrid grid = shape.ops->patchGrid->cells(shape, patchSize);
+            count += std::size_t{grid.rows} * grid.columns;
             continue;
         }
-        if (!shape.ops->bounded) {
-            for (const Triangle& t : clipPlane(scene, planeOf(shape))) addTriangle(t);
-            continue;
-        }
-        pieces.clear();
-        shape.ops->tessellate(shape, patchSize, pieces);
+        tessellateRecord(shape, patchSize, region, pieces);
         for (const Triangle& t : pieces) addTriangle(t);
     }
     for (const Triangle& t : geometry.triangles()) addTriangle(t);
@@ -159,40 +127,34 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     VertexWelder welder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_};
     sourceStart_.assign(geometry.primitiveCount() + 1, 0);
     const auto begin = [&](std::uint32_t id) { sourceStart_[id] = static_cast<std::uint32_t>(sources_.size()); };
-    // A sphere's patches are latitude-longitude cells, an unbounded shape's (a plane's) the
-    // rectangle over the scene's bounds; every other kind's are its tessellation's triangles,
-    // each subdivided as a triangle.
+    // A kind with a patch grid is cut into its cells; every other kind's patches are its
+    // tessellation's triangles (over the scene's region, if unbounded), each subdivided as a
+    // triangle.
+    const Bounds region = sceneRegion(scene, geometry);
     std::vector<Triangle> pieces;
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
         begin(geometry.shapeId(i));
         const ShapeRecord& shape = geometry.shapes()[i];
-        if (shape.ops == &kSphereOps) {
-            addSphere(i);
+        if (shape.ops->patchGrid) {
+            addGrid(i);
             continue;
         }
-        if (!shape.ops->bounded) {
-            for (const Triangle& t : clipPlane(scene, planeOf(shape)))
-                addTriangle(ShapeKind::Plane, geometry.shapeId(i), shape.object, t.a, t.b, t.c, welder);
-            continue;
-        }
-        pieces.clear();
-        shape.ops->tessellate(shape, patchSize, pieces);
-        for (const Triangle& t : pieces)
-            addTriangle(ShapeKind::Registered, geometry.shapeId(i), shape.object, t.a, t.b, t.c, welder);
+        tessellateRecord(shape, patchSize, region, pieces);
+        for (const Triangle& t : pieces) addTriangle(&shape, geometry.shapeId(i), shape.object, t.a, t.b, t.c, welder);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) {
         begin(geometry.triangleId(i));
         const Triangle& t = geometry.triangles()[i];
-        addTriangle(ShapeKind::Triangle, geometry.triangleId(i), t.object, t.a, t.b, t.c, welder);
+        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, welder);
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
 }
 
-void RadiosityMesh::addTriangle(ShapeKind shape, std::uint32_t primitive, std::uint32_t object, const Vec3& a,
-                                const Vec3& b, const Vec3& c, VertexWelder& welder) {
+void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object,
+                                const Vec3& a, const Vec3& b, const Vec3& c, VertexWelder& welder) {
     if (!hasArea(a, b, c)) return;
     const std::uint32_t n = triangleSubdivisions(a, b, c, patchSize_);
-    sources_.push_back({shape, primitive, static_cast<std::uint32_t>(patches_.size()), n, 0, 0, a, b, c});
+    sources_.push_back({record, primitive, static_cast<std::uint32_t>(patches_.size()), n, PatchGrid{}, a, b, c});
     const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
     const Vec3 du = (b - a) / float(n), dv = (c - a) / float(n);
     const auto gridPoint = [&](std::uint32_t i, std::uint32_t j) { return a + float(i) * du + float(j) * dv; };
@@ -208,7 +170,6 @@ void RadiosityMesh::addTriangle(ShapeKind shape, std::uint32_t primitive, std::u
     for (std::uint32_t j = 0; j < n; ++j) {
         for (std::uint32_t i = 0; i + j < n; ++i) {
             RadiosityPatch lower;
-            lower.shape = shape;
             lower.primitive = primitive;
             lower.object = object;
             lower.a = gridPoint(i, j);
@@ -230,34 +191,29 @@ void RadiosityMesh::addTriangle(ShapeKind shape, std::uint32_t primitive, std::u
     }
 }
 
-void RadiosityMesh::addSphere(std::uint32_t sphereIndex) {
-    const Sphere sphere = sphereOf(geometry_.shapes()[sphereIndex]);
-    const SphereCells cells = sphereCells(sphere.radius, patchSize_);
-    const std::uint32_t bands = cells.bands, sectors = cells.sectors;
-    sources_.push_back({ShapeKind::Sphere, geometry_.shapeId(sphereIndex), static_cast<std::uint32_t>(patches_.size()),
-                        0, bands, sectors, Vec3{0.0f}, Vec3{0.0f}, Vec3{0.0f}});
-    // Vertices: the two poles, then rings 1..bands-1 of `sectors` each (phi wraps around).
+void RadiosityMesh::addGrid(std::uint32_t shapeIndex) {
+    const ShapeRecord& shape = geometry_.shapes()[shapeIndex];
+    const PatchGridOps& cells = *shape.ops->patchGrid;
+    const PatchGrid grid = cells.cells(shape, patchSize_);
+    if (grid.rows == 0 || grid.columns == 0) return;
+    const auto source = static_cast<std::uint32_t>(sources_.size());
+    sources_.push_back({&shape, geometry_.shapeId(shapeIndex), static_cast<std::uint32_t>(patches_.size()), 0, grid,
+                        Vec3{0.0f}, Vec3{0.0f}, Vec3{0.0f}});
+    // The grid's corners are this mesh's vertices first .. first + grid.corners - 1.
     const auto first = static_cast<std::uint32_t>(vertexCount_);
-    vertexCount_ += 2 + std::size_t{bands - 1} * sectors;
-    const auto vertexAt = [&](std::uint32_t ring, std::uint32_t sector) -> std::uint32_t {
-        if (ring == 0) return first;
-        if (ring == bands) return first + 1;
-        return first + 2 + (ring - 1) * sectors + sector % sectors;
-    };
-    const float area = 4.0f * kPi * sphere.radius * sphere.radius / float(bands * sectors);
-    for (std::uint32_t ring = 0; ring < bands; ++ring) {
-        for (std::uint32_t sector = 0; sector < sectors; ++sector) {
+    vertexCount_ += grid.corners;
+    const auto vertexAt = [&](std::uint32_t row, std::uint32_t column) { return first + cells.corner(grid, row, column); };
+    for (std::uint32_t row = 0; row < grid.rows; ++row) {
+        for (std::uint32_t column = 0; column < grid.columns; ++column) {
             RadiosityPatch p;
-            p.shape = ShapeKind::Sphere;
-            p.primitive = geometry_.shapeId(sphereIndex);
-            p.object = sphere.object;
-            p.z0 = 1.0f - 2.0f * float(ring) / float(bands);
-            p.z1 = 1.0f - 2.0f * float(ring + 1) / float(bands);
-            p.phi0 = 2.0f * kPi * float(sector) / float(sectors);
-            p.phi1 = 2.0f * kPi * float(sector + 1) / float(sectors);
-            p.area = area;
-            p.vertices = {vertexAt(ring, sector), vertexAt(ring, sector + 1), vertexAt(ring + 1, sector),
-                          vertexAt(ring + 1, sector + 1)};
+            p.primitive = geometry_.shapeId(shapeIndex);
+            p.object = shape.object;
+            p.row = row;
+            p.column = column;
+            p.source = source;
+            p.area = cells.cellArea(shape, grid, row, column);
+            p.vertices = {vertexAt(row, column), vertexAt(row, column + 1), vertexAt(row + 1, column),
+                          vertexAt(row + 1, column + 1)};
             p.vertexCount = 4;
             patches_.push_back(p);
         }
@@ -266,29 +222,30 @@ void RadiosityMesh::addSphere(std::uint32_t sphereIndex) {
 
 PatchPoint RadiosityMesh::samplePoint(std::uint32_t patch, Vec2 u) const {
     const RadiosityPatch& p = patches_[patch];
-    if (p.shape != ShapeKind::Sphere) {
+    if (p.vertexCount == 3) {
         const Vec3 b = sampleUniformTriangle(u);
         return {b.x * p.a + b.y * p.b + b.z * p.c, p.normal};
     }
-    // Uniform in z and phi is uniform by area on the sphere.
-    const Sphere sphere = sphereOf(*geometry_.shapeOf(p.primitive));
-    const float z = p.z0 + (p.z1 - p.z0) * u.x;
-    const float phi = p.phi0 + (p.phi1 - p.phi0) * u.y;
-    const Vec3 n = sphereDirection(z, phi);
-    return {sphere.center + sphere.radius * n, n};
+    const Source& source = sources_[p.source];
+    const AreaSample s = source.record->ops->patchGrid->sampleCell(*source.record, source.grid, p.row, p.column, u);
+    return {s.point, s.normal};
 }
 
 std::optional<PatchLookup> RadiosityMesh::lookup(const SurfaceHit& hit) const {
     if (hit.primitive + 1 >= sourceStart_.size()) return std::nullopt;
     const std::uint32_t first = sourceStart_[hit.primitive], last = sourceStart_[hit.primitive + 1];
-    for (std::uint32_t s = first; s < last; ++s) {
-        const Source& source = sources_[s];
-        if (source.shape == ShapeKind::Sphere) return lookupSphere(source, hit.point);
-        if (auto found = lookupTriangle(source, hit.point)) return found;
-    }
+    if (first == last) return std::nullopt;
+    if (sources_[first].grid.rows != 0) return lookupCell(sources_[first], hit.point);
+    // One of a tessellation's triangles holds the point; the only triangle of a primitive takes
+    // it even if the point rounds outside.
+    const bool several = last - first > 1;
+    for (std::uint32_t s = first; s < last; ++s)
+        if (auto found = lookupTriangle(sources_[s], hit.point, several)) return found;
     // A curved outline's hit may lie just outside its tessellation (between a chord and the
-    // arc): the nearest piece's patch, its coordinates clamped onto it.
-    if (first == last || sources_[first].shape != ShapeKind::Registered) return std::nullopt;
+    // arc): the nearest piece's patch, its coordinates clamped onto it. An unbounded shape's hit
+    // outside the region its triangles cover has none.
+    const ShapeRecord* record = sources_[first].record;
+    if (!several || (record && !record->ops->bounded)) return std::nullopt;
     std::uint32_t nearest = first;
     float nearestDistance = std::numeric_limits<float>::infinity();
     for (std::uint32_t s = first; s < last; ++s) {
@@ -312,8 +269,7 @@ std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, c
     if (!(denominator > 0.0)) return std::nullopt;
     double s = (d11 * d20 - d01 * d21) / denominator, t = (d00 * d21 - d01 * d20) / denominator;
     constexpr double kSlack = 1e-4;  // hits on an edge, within roundoff
-    const bool oneOfMany = source.shape == ShapeKind::Plane || source.shape == ShapeKind::Registered;
-    if (strict && oneOfMany && (s < -kSlack || t < -kSlack || s + t > 1.0 + kSlack)) return std::nullopt;
+    if (strict && (s < -kSlack || t < -kSlack || s + t > 1.0 + kSlack)) return std::nullopt;
     s = std::max(s, 0.0);
     t = std::max(t, 0.0);
     if (s + t > 1.0) {
@@ -340,20 +296,12 @@ std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, c
     return found;
 }
 
-PatchLookup RadiosityMesh::lookupSphere(const Source& source, const Vec3& point) const {
-    const Sphere sphere = sphereOf(*geometry_.shapeOf(source.primitive));
-    const Vec3 n = (point - sphere.center) / sphere.radius;
-    const float z = std::clamp(n.z, -1.0f, 1.0f);
-    float phi = std::atan2(n.y, n.x);
-    if (phi < 0.0f) phi += 2.0f * kPi;
-    const float gz = (1.0f - z) * 0.5f * float(source.bands);
-    const float gp = phi / (2.0f * kPi) * float(source.sectors);
-    const auto ring = std::min(static_cast<std::uint32_t>(std::max(gz, 0.0f)), source.bands - 1);
-    const auto sector = std::min(static_cast<std::uint32_t>(std::max(gp, 0.0f)), source.sectors - 1);
-    const float fz = std::clamp(gz - float(ring), 0.0f, 1.0f), fp = std::clamp(gp - float(sector), 0.0f, 1.0f);
+PatchLookup RadiosityMesh::lookupCell(const Source& source, const Vec3& point) const {
+    const GridPoint at = source.record->ops->patchGrid->locate(*source.record, source.grid, point);
+    const float fr = at.fraction.x, fc = at.fraction.y;
     PatchLookup found;
-    found.patch = source.firstPatch + ring * source.sectors + sector;
-    found.weights = {(1.0f - fz) * (1.0f - fp), (1.0f - fz) * fp, fz * (1.0f - fp), fz * fp};
+    found.patch = source.firstPatch + at.row * source.grid.columns + at.column;
+    found.weights = {(1.0f - fr) * (1.0f - fc), (1.0f - fr) * fc, fr * (1.0f - fc), fr * fc};
     return found;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // Radiosity's patches (Cohen and Wallace 1993, ch. 8): every surface of the scene split into small
 // elements of about one patch size. Triangles are subdivided uniformly into n^2 sub-triangles
-// (n = ceil(longest edge / size)); spheres into equal-area cells of constant cos(theta) and phi
-// bands (Archimedes: bands of equal height have equal area); infinite planes are first clipped to
-// a rectangle over the scene's bounds; registered kinds (geometry/shape.h) are first tessellated.
+// (n = ceil(longest edge / size)). A record of the shape table (geometry/shape.h) is asked, never
+// named: a kind with a patch grid is cut into its cells (the sphere's equal-area latitude-longitude
+// cells); any other is first tessellated, a bounded kind whole (`tessellate`), an unbounded one over
+// the scene's bounds (`tessellateRegion`: the plane's rectangle), and its triangles subdivided.
 // Each patch has two sides, each its own unknown.
 //
 // The mesh also answers the display's question: which patch, and which of its vertices with what
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "accel/scene_geometry.h"
+#include "geometry/shape.h"
 #include "geometry/surface_hit.h"
 #include "math/types.h"
 #include "scene/scene.h"
@@ -21,16 +23,15 @@
 namespace lightpath {
 
 struct RadiosityPatch {
-    ShapeKind shape = ShapeKind::Triangle;  // the primitive it lies on
-    std::uint32_t primitive = 0;            // scene-wide id of that primitive
+    std::uint32_t primitive = 0;  // scene-wide id of the primitive it lies on
     std::uint32_t object = 0;
-    // Triangles (and clipped planes): the corners, unit normal of the source primitive's winding.
+    // A triangle (of a mesh or a tessellation): the corners, unit normal of their winding.
     Vec3 a{0.0f}, b{0.0f}, c{0.0f}, normal{0.0f};
-    // Sphere cells: z = cos(theta) in [z1, z0] (z0 > z1), phi in [phi0, phi1), in the sphere's frame.
-    float z0 = 0.0f, z1 = 0.0f, phi0 = 0.0f, phi1 = 0.0f;
+    // A cell of its kind's patch grid (vertexCount 4): which one; `source` is where its grid is.
+    std::uint32_t row = 0, column = 0, source = 0;
     float area = 0.0f;
-    // Vertices for Gouraud interpolation: a, b, c for triangles; (z0,phi0), (z0,phi1), (z1,phi0),
-    // (z1,phi1) for sphere cells.
+    // Vertices for Gouraud interpolation: a, b, c for triangles; the corners (row, column),
+    // (row, column + 1), (row + 1, column), (row + 1, column + 1) for grid cells.
     std::array<std::uint32_t, 4> vertices{};
     int vertexCount = 3;
 };
@@ -63,27 +64,28 @@ public:
 
     // A point uniformly by area on patch `patch`, from u in [0,1)^2.
     PatchPoint samplePoint(std::uint32_t patch, Vec2 u) const;
-    // The patch under `hit`, or nullopt (a clipped plane's hit outside its rectangle).
+    // The patch under `hit`, or nullopt (an unbounded shape's hit outside its tessellated region).
     std::optional<PatchLookup> lookup(const SurfaceHit& hit) const;
 
 private:
-    // One primitive's share of the patches: a triangle's n x n grid or a sphere's bands x sectors.
+    // One primitive's share of the patches: a triangle's n x n grid or a kind's grid cells. A
+    // primitive has one source, or one per triangle of its tessellation.
     struct Source {
-        ShapeKind shape;
+        const ShapeRecord* record;  // nullptr: a triangle of the triangle array
         std::uint32_t primitive;
         std::uint32_t firstPatch;
-        std::uint32_t n = 0;                 // triangle: subdivisions per edge
-        std::uint32_t bands = 0, sectors = 0;  // sphere
-        Vec3 a{0.0f}, b{0.0f}, c{0.0f};      // triangle corners
+        std::uint32_t n = 0;         // triangle: subdivisions per edge
+        PatchGrid grid{};            // grid cells: rows x columns (rows 0 for a triangle)
+        Vec3 a{0.0f}, b{0.0f}, c{0.0f};  // triangle corners
     };
 
     struct VertexWelder;
-    void addTriangle(ShapeKind shape, std::uint32_t primitive, std::uint32_t object, const Vec3& a, const Vec3& b,
-                     const Vec3& c, VertexWelder& welder);
-    void addSphere(std::uint32_t sphereIndex);
+    void addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object, const Vec3& a,
+                     const Vec3& b, const Vec3& c, VertexWelder& welder);
+    void addGrid(std::uint32_t shapeIndex);
     // strict: nullopt for a point outside the source's triangle (when its primitive has several).
-    std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict = true) const;
-    PatchLookup lookupSphere(const Source& source, const Vec3& point) const;
+    std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict) const;
+    PatchLookup lookupCell(const Source& source, const Vec3& point) const;
 
     const SceneGeometry& geometry_;
     float patchSize_;
@@ -93,20 +95,5 @@ private:
     std::vector<std::uint32_t> sourceStart_;
     std::size_t vertexCount_ = 0;
 };
-
-// How a sphere is cut into cells: `bands` bands of equal height (so of equal area, Archimedes),
-// each of `sectors` sectors, about one patch size wide at the equator. Cell (ring, sector) spans
-// z = cos(theta) from 1 - 2 ring/bands down to 1 - 2 (ring+1)/bands and phi from
-// 2 pi sector/sectors to 2 pi (sector+1)/sectors, in the frame of the world's axes.
-struct SphereCells {
-    std::uint32_t bands = 0, sectors = 0;
-};
-SphereCells sphereCells(float radius, float patchSize);
-// The unit normal of a sphere at z = cos(theta) and azimuth phi (its point is centre + radius n).
-Vec3 sphereDirection(float z, float phi);
-
-// The rectangle an infinite plane is clipped to: two triangles over the scene's bounds (every
-// sphere, triangle, point light and the eye), grown by half their diagonal on every side.
-std::array<Triangle, 2> clipPlane(const Scene& scene, const Plane& plane);
 
 }  // namespace lightpath

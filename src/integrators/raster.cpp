@@ -5,9 +5,7 @@
 #include <cmath>
 
 #include "geometry/intersect.h"
-#include "integrators/radiosity_mesh.h"
 #include "integrators/raycast.h"
-#include "shapes/sphere.h"
 
 namespace lightpath {
 
@@ -18,13 +16,9 @@ ZBuffer::ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera)
       height_(camera.height()),
       fragments_(fragmentCount(width_, height_)) {
     // The lecture's loops, in the rasteriser's order: for each primitive, for each pixel it covers.
-    // Spheres keep their impostor facets (what the rasteriser drew before the shape table held
-    // them), an unbounded shape its per-pixel plane test, every other kind its bounding box.
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
-        const ShapeRecord& shape = geometry.shapes()[i];
-        if (shape.ops == &kSphereOps) rasteriseSphere(i);
-        else if (!shape.ops->bounded) rasterisePlane(i);
-        else rasteriseShape(i);
+        if (geometry.shapes()[i].ops->bounded) rasteriseShape(i);
+        else rasteriseUnbounded(i);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) rasteriseTriangle(i);
 }
@@ -95,54 +89,33 @@ void ZBuffer::rasteriseTriangle(std::uint32_t index) {
                   [&](int x, int y, float t, const Vec3& barycentrics) { test(x, y, t, id, barycentrics); });
 }
 
-void ZBuffer::rasterisePlane(std::uint32_t index) {
-    const Plane plane = planeOf(geometry_.shapes()[index]);
-    const std::uint32_t id = geometry_.shapeId(index);
-    // n.(s D - (p - eye)) = 0 at depth s = offset / n.D: in front of the eye where n.D has the
-    // sign of the offset; the horizon n.D = 0 is the one edge.
-    const float offset = glm::dot(plane.normal, plane.point - camera_.eye());
-    if (!(std::fabs(offset) > 0.0f)) return;  // the eye lies in the plane: seen edge-on
-    for (int y = 0; y < height_; ++y) {
-        for (int x = 0; x < width_; ++x) {
-            const Vec3 d = pixelDirection(x, y);
-            const float s = offset / glm::dot(plane.normal, d);
-            if (!(s > 0.0f) || !std::isfinite(s)) continue;
-            test(x, y, s * glm::length(d), id, Vec3{0.0f});
-        }
+float ZBuffer::depthUnder(const ShapeRecord& shape, std::uint32_t id, int x, int y) const {
+    if (shape.ops->depthAlong) {
+        const Vec3 d = pixelDirection(x, y);
+        const float s = shape.ops->depthAlong(shape, camera_.eye(), d);
+        return s > 0.0f && std::isfinite(s) ? s * glm::length(d) : kNoHit;
     }
+    const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    return geometry_.intersectPrimitive(ray, id);
 }
 
-void ZBuffer::rasteriseSphere(std::uint32_t index) {
-    const Sphere sphere = sphereOf(geometry_.shapes()[index]);
+void ZBuffer::rasteriseUnbounded(std::uint32_t index) {
+    // No box holds it: every pixel centre is tested (a plane's image is the film on one side of
+    // its horizon).
+    const ShapeRecord& shape = geometry_.shapes()[index];
     const std::uint32_t id = geometry_.shapeId(index);
-    const SphereCells cells = sphereCells(sphere.radius, 2.0f * kPi * sphere.radius / kSphereSectors);
-    const auto corner = [&](std::uint32_t ring, std::uint32_t sector) {
-        const float z = 1.0f - 2.0f * float(ring) / float(cells.bands);
-        const float phi = 2.0f * kPi * float(sector) / float(cells.sectors);
-        return sphere.center + sphere.radius * sphereDirection(z, phi);
-    };
-    // The impostor's fragment: the true sphere's nearest point under the pixel centre, once per
-    // pixel (the facets in front and behind cover it alike).
-    const auto fragment = [&](int x, int y, float, const Vec3&) {
-        if (fragments_[this->index(x, y)].primitive == id) return;
-        const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-        const float t = geometry_.intersectPrimitive(ray, id);
-        if (t != kNoHit) test(x, y, t, id, Vec3{0.0f});
-    };
-    for (std::uint32_t ring = 0; ring < cells.bands; ++ring) {
-        for (std::uint32_t sector = 0; sector < cells.sectors; ++sector) {
-            const Vec3 p00 = corner(ring, sector), p01 = corner(ring, sector + 1);
-            const Vec3 p10 = corner(ring + 1, sector), p11 = corner(ring + 1, sector + 1);
-            coverTriangle(p00, p10, p11, fragment);
-            coverTriangle(p00, p11, p01, fragment);
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const float t = depthUnder(shape, id, x, y);
+            if (t != kNoHit) test(x, y, t, id, Vec3{0.0f});
         }
     }
 }
 
 void ZBuffer::rasteriseShape(std::uint32_t index) {
-    // Any registered kind: its bounding box's 12 triangles cover every pixel it can cover, and
-    // each such pixel takes the shape's own hit under its centre, once (as for sphere impostors):
-    // exactly ray casting's first hits, with no facets to approximate a curved outline.
+    // Its bounding box's 12 triangles cover every pixel it can cover, and each such pixel takes the
+    // shape's own depth under its centre, once (a ray-cast impostor, Sigg et al. 2006): exactly ray
+    // casting's first hits, with no facets to approximate a curved outline.
     const ShapeRecord& shape = geometry_.shapes()[index];
     const std::uint32_t id = geometry_.shapeId(index);
     const Bounds box = shape.ops->bounds(shape);
@@ -151,8 +124,7 @@ void ZBuffer::rasteriseShape(std::uint32_t index) {
     };
     const auto fragment = [&](int x, int y, float, const Vec3&) {
         if (fragments_[this->index(x, y)].primitive == id) return;
-        const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-        const float t = geometry_.intersectPrimitive(ray, id);
+        const float t = depthUnder(shape, id, x, y);
         if (t != kNoHit) test(x, y, t, id, Vec3{0.0f});
     };
     // Each face of the box as two triangles: the faces x, y, z = lo and = hi.

@@ -12,13 +12,13 @@
 //   eye. Normalised, they are the perspective-correct barycentrics, and the depth along D is
 //   det / (sum of the three), so no vertex is ever divided by its depth and triangles reaching
 //   behind the eye need no clipping.
-// - Infinite planes, exactly: a plane's image is the part of the film on one side of its horizon,
-//   n.D = 0 (one edge function), at depth n.(p - eye) / n.D, 1/depth linear on the film as for a
-//   triangle.
-// - Spheres: covered by their tessellation (the radiosity mesher's cells, corners on the sphere,
-//   so the facets lie inside it), each fragment taking the depth and point of the true sphere
-//   under the pixel centre (a ray-cast sphere impostor, Sigg et al. 2006). The shading is the
-//   sphere's, and only its silhouette can lose pixels to the tessellation.
+// - Every other primitive is a record of the shape table (geometry/shape.h), asked, never named:
+//   a bounded kind covers the pixels of its bounding box's 12 triangles, an unbounded kind every
+//   pixel, and each covered pixel centre takes the shape's depth there (a ray-cast impostor, Sigg
+//   et al. 2006): `intersect` along the pixel's ray, ray casting's hit exactly, or the kind's
+//   closed form `depthAlong`. An infinite plane's is n.(p - eye) / n.D: its image is the part of
+//   the film on one side of its horizon n.D = 0 (one edge function), 1/depth linear on the film as
+//   for a triangle. A sphere's image loses no silhouette pixel to facets.
 //
 // The rasteriser casts no rays, so it has no shadows; it samples each pixel once, at its centre.
 #include <cstdint>
@@ -63,18 +63,17 @@ public:
     // which a primitive the camera cannot see must not add to.
     std::uint64_t pixelsTested() const { return pixelsTested_; }
 
-    // The tessellation of spheres: this many sectors around the equator.
-    static constexpr float kSphereSectors = 256.0f;
-
 private:
     std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width_ + x; }
     Vec3 pixelDirection(int x, int y) const;  // unnormalised, through the pixel centre
     // Calls fragment(x, y, t, barycentrics) for every pixel centre the triangle abc covers.
     template <typename Fragment>
     void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const;
-    void rasteriseSphere(std::uint32_t index);
-    void rasterisePlane(std::uint32_t index);
+    void rasteriseUnbounded(std::uint32_t index);
     void rasteriseShape(std::uint32_t index);
+    // Distance along the unit ray through pixel (x, y)'s centre to record `shape` (primitive `id`),
+    // or kNoHit.
+    float depthUnder(const ShapeRecord& shape, std::uint32_t id, int x, int y) const;
     void rasteriseTriangle(std::uint32_t index);
     // The depth test: keeps the fragment if it is nearer than what the pixel holds.
     void test(int x, int y, float t, std::uint32_t primitive, const Vec3& barycentrics);

@@ -4,22 +4,18 @@
 #include "geometry/builtin_shapes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "geometry/intersect.h"
+#include "sampling/warp.h"
 #include "scene/shape_type.h"
 
 namespace lightpath {
 
-ShapeRecord planeRecord(const Plane& plane) {
-    ShapeRecord record;
-    record.ops = &kPlaneOps;
-    std::copy_n(&plane.point.x, 3, record.data.begin());
-    std::copy_n(&plane.normal.x, 3, record.data.begin() + 3);
-    record.object = plane.object;
-    return record;
-}
+namespace {
 
+// The plane a record holds: a point, the unit normal.
 Plane planeOf(const ShapeRecord& r) {
     Plane plane;
     plane.point = {r.data[0], r.data[1], r.data[2]};
@@ -27,8 +23,6 @@ Plane planeOf(const ShapeRecord& r) {
     plane.object = r.object;
     return plane;
 }
-
-namespace {
 
 Bounds planeBounds(const ShapeRecord&) {
     constexpr float kInfinity = std::numeric_limits<float>::infinity();
@@ -46,6 +40,42 @@ void describePlane(const ShapeRecord& record, SurfaceHit& hit) {
 
 double planeArea(const ShapeRecord&) { return std::numeric_limits<double>::infinity(); }
 
+void tessellatePlaneRegion(const ShapeRecord& record, const Bounds& region, std::vector<Triangle>& out) {
+    // The rectangle over the region and the plane's own point, grown by half their diagonal (at
+    // least 1) on every side: it reaches past everything the scene holds, so every hit a ray of the
+    // scene finds on the plane near the scene lies on it.
+    const Plane plane = planeOf(record);
+    Bounds box = region;
+    box.grow(plane.point);
+    const Vec3 margin{std::max(0.5f * glm::length(box.hi - box.lo), 1.0f)};
+    const Vec3 lo = box.lo - margin, hi = box.hi + margin;
+
+    // The box's corners projected onto the plane, in a basis (s, t) with s x t = normal.
+    const Frame frame(plane.normal);
+    float sMin = std::numeric_limits<float>::max(), sMax = -sMin, tMin = sMin, tMax = -sMin;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
+        const Vec3 d = p - plane.point;
+        sMin = std::min(sMin, glm::dot(d, frame.s));
+        sMax = std::max(sMax, glm::dot(d, frame.s));
+        tMin = std::min(tMin, glm::dot(d, frame.t));
+        tMax = std::max(tMax, glm::dot(d, frame.t));
+    }
+    const auto at = [&](float s, float t) { return plane.point + s * frame.s + t * frame.t; };
+    const Vec3 a = at(sMin, tMin), b = at(sMax, tMin), c = at(sMax, tMax), d = at(sMin, tMax);
+    out.push_back({a, b, c, plane.object});
+    out.push_back({a, c, d, plane.object});
+}
+
+// The rasteriser's depth: n.(s D - (p - eye)) = 0 at s = n.(p - eye) / n.D, in front of the eye
+// where positive. The eye in the plane sees it edge-on: 0, no depth.
+float planeDepthAlong(const ShapeRecord& record, const Vec3& eye, const Vec3& direction) {
+    const Plane plane = planeOf(record);
+    const float offset = glm::dot(plane.normal, plane.point - eye);
+    if (!(std::fabs(offset) > 0.0f)) return 0.0f;
+    return offset / glm::dot(plane.normal, direction);
+}
+
 void addPlane(const ParameterValues& values, SceneBuilder& scene) {
     Plane plane;
     plane.point = values.vec3("point");
@@ -55,12 +85,27 @@ void addPlane(const ParameterValues& values, SceneBuilder& scene) {
     scene.addPlane(plane);
 }
 
+// No area sampling and no tessellation of the whole: an infinite surface has neither; radiosity
+// meshes the rectangle over the scene (tessellateRegion).
+const ShapeOps kPlaneOps{.name = "plane",
+                         .bounds = planeBounds,
+                         .intersect = intersectPlaneRecord,
+                         .describe = describePlane,
+                         .area = planeArea,
+                         .bounded = false,
+                         .tessellateRegion = tessellatePlaneRegion,
+                         .depthAlong = planeDepthAlong};
+
 }  // namespace
 
-// No area sampling and no tessellation: an infinite surface has neither (radiosity clips planes
-// to the scene's bounds itself, integrators/radiosity_mesh.cpp).
-const ShapeOps kPlaneOps{"plane", false, planeBounds, intersectPlaneRecord, describePlane, planeArea,
-                         nullptr, nullptr, false};
+ShapeRecord planeRecord(const Plane& plane) {
+    ShapeRecord record;
+    record.ops = &kPlaneOps;
+    std::copy_n(&plane.point.x, 3, record.data.begin());
+    std::copy_n(&plane.normal.x, 3, record.data.begin() + 3);
+    record.object = plane.object;
+    return record;
+}
 
 }  // namespace lightpath
 

@@ -18,15 +18,6 @@ constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
 // surface a receiver still counts as on it: hit points land within a few of the true surface.
 constexpr double kOnSphereUlps = 8.0;
 
-ShapeRecord sphereRecord(const Sphere& sphere) {
-    ShapeRecord record;
-    record.ops = &kSphereOps;
-    std::copy_n(&sphere.center.x, 3, record.data.begin());
-    record.data[3] = sphere.radius;
-    record.object = sphere.object;
-    return record;
-}
-
 Sphere sphereOf(const ShapeRecord& r) {
     Sphere sphere;
     sphere.center = {r.data[0], r.data[1], r.data[2]};
@@ -109,6 +100,62 @@ void tessellateSphere(const ShapeRecord& record, float edgeLength, std::vector<T
     }
 }
 
+// Radiosity's cells (Cohen and Wallace 1993, ch. 8): `rows` bands of equal height, so of equal
+// area (Archimedes), each of `columns` sectors, about one patch size wide at the equator. Cell
+// (ring, sector) spans z = cos(theta) from 1 - 2 ring/rows down to 1 - 2 (ring+1)/rows and phi
+// from 2 pi sector/columns to 2 pi (sector+1)/columns, in the frame of the world's axes.
+constexpr double kMaxCellsAcross = 1 << 15;  // bounds the counts at a tiny patch size
+
+PatchGrid sphereCells(const ShapeRecord& record, float patchSize) {
+    const float radius = sphereOf(record).radius;
+    const double bands = std::clamp(std::ceil(2.0 * radius / patchSize), 2.0, kMaxCellsAcross);
+    const double sectors = std::clamp(std::ceil(2.0 * kPi * radius / patchSize), 4.0, kMaxCellsAcross);
+    const auto rows = static_cast<std::uint32_t>(bands), columns = static_cast<std::uint32_t>(sectors);
+    return {rows, columns, 2 + (rows - 1) * columns};
+}
+
+// Corners: the two poles, then rings 1 .. rows-1 of `columns` each (phi wraps around).
+std::uint32_t sphereCorner(const PatchGrid& grid, std::uint32_t ring, std::uint32_t sector) {
+    if (ring == 0) return 0;
+    if (ring == grid.rows) return 1;
+    return 2 + (ring - 1) * grid.columns + sector % grid.columns;
+}
+
+float sphereCellArea(const ShapeRecord& record, const PatchGrid& grid, std::uint32_t, std::uint32_t) {
+    const float radius = sphereOf(record).radius;
+    return 4.0f * kPi * radius * radius / float(grid.rows * grid.columns);
+}
+
+AreaSample sampleSphereCell(const ShapeRecord& record, const PatchGrid& grid, std::uint32_t ring,
+                            std::uint32_t sector, Vec2 u) {
+    // Uniform in z and phi is uniform by area on the sphere.
+    const Sphere sphere = sphereOf(record);
+    const float z0 = 1.0f - 2.0f * float(ring) / float(grid.rows);
+    const float z1 = 1.0f - 2.0f * float(ring + 1) / float(grid.rows);
+    const float phi0 = 2.0f * kPi * float(sector) / float(grid.columns);
+    const float phi1 = 2.0f * kPi * float(sector + 1) / float(grid.columns);
+    const float z = z0 + (z1 - z0) * u.x;
+    const float phi = phi0 + (phi1 - phi0) * u.y;
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
+    return {sphere.center + sphere.radius * n, n};
+}
+
+GridPoint locateOnSphere(const ShapeRecord& record, const PatchGrid& grid, const Vec3& point) {
+    const Sphere sphere = sphereOf(record);
+    const Vec3 n = (point - sphere.center) / sphere.radius;
+    const float z = std::clamp(n.z, -1.0f, 1.0f);
+    float phi = std::atan2(n.y, n.x);
+    if (phi < 0.0f) phi += 2.0f * kPi;
+    const float gz = (1.0f - z) * 0.5f * float(grid.rows);
+    const float gp = phi / (2.0f * kPi) * float(grid.columns);
+    const auto ring = std::min(static_cast<std::uint32_t>(std::max(gz, 0.0f)), grid.rows - 1);
+    const auto sector = std::min(static_cast<std::uint32_t>(std::max(gp, 0.0f)), grid.columns - 1);
+    return {ring, sector, {std::clamp(gz - float(ring), 0.0f, 1.0f), std::clamp(gp - float(sector), 0.0f, 1.0f)}};
+}
+
+constexpr PatchGridOps kSphereCells{sphereCells, sphereCorner, sphereCellArea, sampleSphereCell, locateOnSphere};
+
 bool sampleSphereSolidAngle(const ShapeRecord& record, const Vec3& receiver, Vec2 u, SolidAngleSample& out) {
     const Sphere sphere = sphereOf(record);
     const std::optional<SphereCone> cone = sphereCone(sphere, receiver);
@@ -152,9 +199,26 @@ void addSphere(const ParameterValues& values, SceneBuilder& scene) {
 
 }  // namespace
 
-const ShapeOps kSphereOps{"sphere",       true,         sphereBounds, intersectSphereRecord,
-                          describeSphere, sphereArea,   sampleSphere, tessellateSphere,
-                          true,           sampleSphereSolidAngle,     pdfSphereSolidAngle};
+const ShapeOps kSphereOps{.name = "sphere",
+                          .closed = true,
+                          .bounds = sphereBounds,
+                          .intersect = intersectSphereRecord,
+                          .describe = describeSphere,
+                          .area = sphereArea,
+                          .sampleArea = sampleSphere,
+                          .tessellate = tessellateSphere,
+                          .sampleSolidAngle = sampleSphereSolidAngle,
+                          .pdfSolidAngle = pdfSphereSolidAngle,
+                          .patchGrid = &kSphereCells};
+
+ShapeRecord sphereRecord(const Sphere& sphere) {
+    ShapeRecord record;
+    record.ops = &kSphereOps;
+    std::copy_n(&sphere.center.x, 3, record.data.begin());
+    record.data[3] = sphere.radius;
+    record.object = sphere.object;
+    return record;
+}
 
 }  // namespace lightpath
 

@@ -1,5 +1,5 @@
 #pragma once
-// The sphere kind (shapes/sphere.cpp): its table and record (geometry/builtin_shapes.h), and the
+// The sphere kind (shapes/sphere.cpp): its record (geometry/builtin_shapes.h), and the
 // cone it subtends, which its area lights sample.
 #include <optional>
 

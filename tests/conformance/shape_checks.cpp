@@ -75,6 +75,17 @@ bool agrees(double sum, double sumSquares, int n, double expected, double& mean,
     return std::fabs(mean - expected) <= kSigmas * error + 1e-12;
 }
 
+// Whether `point` lies on the surface: from a step above it along `normal`, a ray back finds the
+// surface a step away.
+bool onSurface(const ShapeRecord& shape, const Vec3& point, const Vec3& normal, float step) {
+    Ray probe;
+    probe.origin = point + step * normal;
+    probe.direction = -normal;
+    probe.tMax = 2.0f * step;
+    const float back = shape.ops->intersect(probe, shape, 0.0f, NumericsOptions{});
+    return back != kNoHit && std::fabs(back - step) <= 0.01f * step;
+}
+
 }  // namespace
 
 // An unbounded kind has infinite area and a box holding all space: Cauchy-Crofton, area sampling
@@ -188,12 +199,7 @@ CheckResult checkShapeHits(const ShapeRecord& shape) {
         if (std::fabs(glm::length(hit.normal) - 1.0f) > 1e-5f || std::fabs(glm::length(hit.shadingNormal) - 1.0f) > 1e-5f)
             result.fail(shape.ops->name, ": a hit's normal is not unit");
         // Back along the normal from a step above the point: the surface is a step away.
-        Ray probe;
-        probe.origin = hit.point + step * hit.normal;
-        probe.direction = -hit.normal;
-        probe.tMax = 2.0f * step;
-        const float back = shape.ops->intersect(probe, shape, 0.0f, NumericsOptions{});
-        if (back == kNoHit || std::fabs(back - step) > 0.01f * step)
+        if (!onSurface(shape, hit.point, hit.normal, step))
             result.fail(shape.ops->name, ": the hit ", hit.point.x, " ", hit.point.y, " ", hit.point.z,
                         " is not on the surface along its normal");
     }
@@ -218,6 +224,181 @@ CheckResult checkShapeTessellation(const ShapeRecord& shape) {
         result.fail(shape.ops->name, ": tessellated at edges of ", size / 400.0, " its area is off by ", fine, " of ", area);
     if (!(fine <= coarse))
         result.fail(shape.ops->name, ": a finer tessellation is further from the area (", fine, " against ", coarse, ")");
+    return result;
+}
+
+CheckResult checkShapePatchGrid(const ShapeRecord& shape) {
+    CheckResult result;
+    const PatchGridOps* cells = shape.ops->patchGrid;
+    if (!cells) return result;
+    const std::string_view name = shape.ops->name;
+    if (!shape.ops->bounded || !shape.ops->sampleArea)
+        return result.fail(name, ": a patch grid needs a finite surface sampled by area"), result;
+    const Ball ball = ballOf(shape);
+    // Coarse cells, so that each receives many of the samples below.
+    const PatchGrid grid = cells->cells(shape, float(ball.radius / 2.0));
+    if (grid.rows == 0 || grid.columns == 0 || grid.rows * grid.columns > 400)
+        return result.fail(name, ": ", grid.rows, " x ", grid.columns, " cells of about a quarter of its size"), result;
+    const double area = shape.ops->area(shape);
+    double cellSum = 0.0;
+    std::vector<double> cellAreas;
+    for (std::uint32_t row = 0; row < grid.rows; ++row)
+        for (std::uint32_t column = 0; column < grid.columns; ++column)
+            cellSum += cellAreas.emplace_back(cells->cellArea(shape, grid, row, column));
+    if (std::fabs(cellSum - area) > 1e-4 * area)
+        result.fail(name, ": the cells' areas sum to ", cellSum, ", area() is ", area);
+
+    // Corners: numbered within [0, corners), each one used.
+    std::vector<bool> used(grid.corners, false);
+    for (std::uint32_t row = 0; row <= grid.rows; ++row) {
+        for (std::uint32_t column = 0; column <= grid.columns; ++column) {
+            const std::uint32_t corner = cells->corner(grid, row, column);
+            if (corner >= grid.corners)
+                result.fail(name, ": corner (", row, ", ", column, ") is numbered ", corner, " of ", grid.corners);
+            else
+                used[corner] = true;
+        }
+    }
+    for (std::uint32_t c = 0; c < grid.corners; ++c)
+        if (!used[c]) result.fail(name, ": corner number ", c, " of ", grid.corners, " belongs to no cell");
+
+    // Each cell's centre and samples locate to that cell and lie on the surface.
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const float step = float(1e-3 * ball.radius);
+    for (std::uint32_t row = 0; row < grid.rows; ++row) {
+        for (std::uint32_t column = 0; column < grid.columns; ++column) {
+            for (int k = 0; k < 8; ++k) {
+                const Vec2 uv = k == 0 ? Vec2{0.5f} : Vec2{float(0.05 + 0.9 * u(rng)), float(0.05 + 0.9 * u(rng))};
+                const AreaSample s = cells->sampleCell(shape, grid, row, column, uv);
+                const GridPoint at = cells->locate(shape, grid, s.point);
+                if (at.row != row || at.column != column)
+                    result.fail(name, ": a point of cell (", row, ", ", column, ") at u = ", uv.x, " ", uv.y,
+                                " locates to cell (", at.row, ", ", at.column, ")");
+                if (std::fabs(glm::length(s.normal) - 1.0f) > 1e-5f) result.fail(name, ": a cell sample's normal is not unit");
+                else if (!onSurface(shape, s.point, s.normal, step))
+                    result.fail(name, ": a sample of cell (", row, ", ", column, ") is not on the surface");
+            }
+        }
+    }
+
+    // Uniform samples of the whole surface fall into each cell in proportion to its area: the
+    // cells cover the surface, and locate() and cellArea() agree with each other.
+    constexpr int kSamples = 100000;
+    std::vector<int> counts(cellAreas.size(), 0);
+    for (int i = 0; i < kSamples; ++i) {
+        const AreaSample s = shape.ops->sampleArea(shape, Vec2{float(u(rng)), float(u(rng))});
+        const GridPoint at = cells->locate(shape, grid, s.point);
+        if (at.row >= grid.rows || at.column >= grid.columns || !(at.fraction.x >= 0.0f && at.fraction.x <= 1.0f) ||
+            !(at.fraction.y >= 0.0f && at.fraction.y <= 1.0f)) {
+            result.fail(name, ": a point of the surface locates outside the grid (", at.row, ", ", at.column, ")");
+            continue;
+        }
+        ++counts[at.row * grid.columns + at.column];
+    }
+    for (std::size_t c = 0; c < counts.size(); ++c) {
+        const double p = cellAreas[c] / area, expected = p * kSamples;
+        const double sigma = std::sqrt(kSamples * p * (1.0 - p));
+        if (std::fabs(counts[c] - expected) > kSigmas * sigma + 1.0)
+            result.fail(name, ": cell (", c / grid.columns, ", ", c % grid.columns, ") holds ", counts[c],
+                        " of ", kSamples, " uniform samples; its area says ", expected, " +- ", sigma);
+    }
+    return result;
+}
+
+CheckResult checkShapeRegionTessellation(const ShapeRecord& shape) {
+    CheckResult result;
+    if (!shape.ops->tessellateRegion) return result;
+    const std::string_view name = shape.ops->name;
+    // A region around the origin, where the cases draw their points.
+    constexpr float kHalf = 10.0f;
+    Bounds region;
+    region.grow(Vec3{-kHalf, -0.5f * kHalf, -0.25f * kHalf});
+    region.grow(Vec3{kHalf, 0.5f * kHalf, 0.25f * kHalf});
+    std::vector<Triangle> triangles;
+    shape.ops->tessellateRegion(shape, region, triangles);
+    if (triangles.empty()) return result.fail(name, ": no triangles over the region"), result;
+    const float step = 1e-3f * kHalf;
+    for (const Triangle& t : triangles) {
+        const Vec3 normal = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
+        const Vec3 centroid = (t.a + t.b + t.c) / 3.0f;
+        if (!onSurface(shape, centroid, normal, step) && !onSurface(shape, centroid, -normal, step)) {
+            result.fail(name, ": a triangle of its region's tessellation is not on the surface");
+            continue;
+        }
+        SurfaceHit hit;
+        hit.point = centroid;
+        shape.ops->describe(shape, hit);
+        if (!(glm::dot(hit.normal, normal) > 0.99f)) result.fail(name, ": a triangle of its region is wound against its normal");
+    }
+    // Lines through the region: every hit inside it lies on a triangle.
+    const Ball ball{glm::dvec3(0.0), double(glm::length(region.hi))};
+    std::mt19937 rng(19);
+    int inside = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray = randomLine(ball, rng);
+        const float t = shape.ops->intersect(ray, shape, 0.0f, NumericsOptions{});
+        if (t == kNoHit) continue;
+        const Vec3 p = ray.at(t);
+        if (glm::any(glm::lessThan(p, region.lo)) || glm::any(glm::greaterThan(p, region.hi))) continue;
+        ++inside;
+        bool covered = false;
+        for (const Triangle& tri : triangles) {
+            // Barycentric coordinates by least squares; on it within a little slack.
+            const glm::dvec3 e1(tri.b - tri.a), e2(tri.c - tri.a), d(p - tri.a);
+            const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+            const double det = d00 * d11 - d01 * d01;
+            if (!(det > 0.0)) continue;
+            const double s = (d11 * glm::dot(d, e1) - d01 * glm::dot(d, e2)) / det;
+            const double r = (d00 * glm::dot(d, e2) - d01 * glm::dot(d, e1)) / det;
+            if (s >= -1e-6 && r >= -1e-6 && s + r <= 1.0 + 1e-6) {
+                covered = true;
+                break;
+            }
+        }
+        if (!covered) result.fail(name, ": the hit ", p.x, " ", p.y, " ", p.z, " inside the region lies on no triangle");
+    }
+    if (inside == 0) result.fail(name, ": no line hits it inside the region");
+    return result;
+}
+
+CheckResult checkShapeDepthAlong(const ShapeRecord& shape) {
+    CheckResult result;
+    if (!shape.ops->depthAlong) return result;
+    const std::string_view name = shape.ops->name;
+    const Ball ball = ballOf(shape);
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray = randomLine(ball, rng);
+        // An eye anywhere along the line, looking along it by a direction of any length.
+        Ray eyeRay = ray;
+        eyeRay.origin = ray.at(float(u(rng) * 4.0 * ball.radius));
+        eyeRay.tMax = std::numeric_limits<float>::infinity();
+        const Vec3 direction = ray.direction * float(0.1 + 10.0 * u(rng));
+        const float s = shape.ops->depthAlong(shape, eyeRay.origin, direction);
+        const bool depth = s > 0.0f && std::isfinite(s);
+        const float t = shape.ops->intersect(eyeRay, shape, 0.0f, NumericsOptions{});
+        if (t == kNoHit) {
+            if (depth) result.fail(name, ": depthAlong gives ", s, " where intersect finds no hit");
+            continue;
+        }
+        SurfaceHit hit;
+        hit.point = eyeRay.at(t);
+        shape.ops->describe(shape, hit);
+        const float cosine = std::fabs(glm::dot(hit.normal, eyeRay.direction));
+        if (cosine < 0.05f) continue;  // grazing: t's rounding / cos
+        ++hits;
+        // A closed form in float may round the eye's and the point's coordinates (a plane's
+        // n.(p - eye)): a few float spacings of them, over the cosine, besides 1e-4 relative.
+        const float rounding = 8.0f * std::numeric_limits<float>::epsilon() *
+                               (glm::length(eyeRay.origin) + glm::length(hit.point)) / cosine;
+        const float along = s * glm::length(direction);
+        if (!depth || std::fabs(along - t) > 1e-4f * t + rounding)
+            result.fail(name, ": depthAlong says ", along, " along the unit ray where intersect finds ", t);
+    }
+    if (hits == 0) result.fail(name, ": no line hits it");
     return result;
 }
 

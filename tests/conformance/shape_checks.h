@@ -23,4 +23,17 @@ CheckResult checkShapeHits(const ShapeRecord& shape);
 // tessellate(): its area within 1% of area() at a fine edge length, closer than at a coarse one.
 CheckResult checkShapeTessellation(const ShapeRecord& shape);
 
+// The optional entries radiosity and the rasteriser read (shape.h); a kind without one passes.
+// patchGrid: the cells' areas sum to area(); uniform area samples fall into each cell (locate) in
+// proportion to its area, so the cells cover the surface; a cell's centre and samples locate to that
+// cell, lie on the surface with unit normals; corners are numbered 0 .. corners - 1, each used.
+CheckResult checkShapePatchGrid(const ShapeRecord& shape);
+// tessellateRegion: every hit of a line inside the region lies on one of the triangles, which lie on
+// the surface, wound with its normal.
+CheckResult checkShapeRegionTessellation(const ShapeRecord& shape);
+// depthAlong: s |d| is intersect's t along the unit ray (1e-4 relative, plus the float rounding of
+// the eye's and the point's coordinates over the cosine), for directions d of any length; no depth
+// where intersect finds no hit.
+CheckResult checkShapeDepthAlong(const ShapeRecord& shape);
+
 }  // namespace lightpath::conformance

@@ -39,5 +39,15 @@ TEST_CASE("shapes: hits have unit normals and lie on the surface") { forEverySha
 
 TEST_CASE("shapes: the tessellation's area converges to the area") { forEveryShape(checkShapeTessellation); }
 
+TEST_CASE("shapes: a patch grid's cells cover the surface by area, and each point locates to its cell") {
+    forEveryShape(checkShapePatchGrid);
+}
+
+TEST_CASE("shapes: an unbounded kind's tessellation over a region covers its hits there") {
+    forEveryShape(checkShapeRegionTessellation);
+}
+
+TEST_CASE("shapes: the rasteriser's depthAlong is intersect's distance") { forEveryShape(checkShapeDepthAlong); }
+
 }  // namespace
 }  // namespace lightpath::conformance

@@ -141,14 +141,36 @@ TEST_CASE("the rasteriser tests no pixel for a sphere behind the camera, and the
         const SceneGeometry geometry({Sphere{center, 0.5f, 0}}, {}, {});
         return ZBuffer(geometry, camera).pixelsTested();
     };
-    // Behind the eye, every facet's corners lie behind its plane: nothing can be covered, and
-    // nothing is tested (each facet once scanned the whole film, 2 x 256 x 128 x 64 x 48 tests).
+    // Behind the eye, every corner of its bounding box lies behind the eye's plane: nothing can be
+    // covered, and nothing is tested (each impostor facet the sphere once had scanned the whole
+    // film, 2 x 256 x 128 x 64 x 48 tests).
     CHECK(tested({0.0f, 0.0f, 8.0f}) == 0);
-    // In front, each facet tests its few-pixel bounding box: between the sphere's image and a
-    // generous multiple of the film, far below one film per facet.
+    // In front, each of the box's triangles tests its projected bounding box: between the sphere's
+    // image and a generous multiple of the film.
     const std::uint64_t front = tested({0.0f, 0.0f, 0.0f});
     CHECK(front > 0);
     CHECK(front < 1000u * 64u * 48u);
+}
+
+TEST_CASE("the rasteriser covers exactly the pixels whose centre's ray meets a sphere, silhouette included") {
+    // A sphere about 450 pixels across: facets with corners on it (the 256-sector impostor it was
+    // once covered by) lose the pixel centres between a chord and the arc of its outline; its
+    // bounding box loses none, and each pixel keeps the true sphere's hit.
+    CameraDescription description;  // at (0, 0, 5) looking down -z
+    const PinholeCamera camera(description);
+    const SceneGeometry geometry({Sphere{Vec3{0.1f, -0.05f, 0.0f}, 1.8f, 0}}, {}, {});
+    const ZBuffer zBuffer(geometry, camera);
+    int seen = 0, wrong = 0;
+    for (int y = 0; y < camera.height(); ++y) {
+        for (int x = 0; x < camera.width(); ++x) {
+            const float t = geometry.intersectPrimitive(camera.generateRay(float(x) + 0.5f, float(y) + 0.5f), 0);
+            const RasterFragment& kept = zBuffer.at(x, y);
+            seen += t != kNoHit;
+            if ((t != kNoHit) != (kept.primitive == 0) || (t != kNoHit && kept.t != t)) ++wrong;
+        }
+    }
+    CHECK(seen > 100000);
+    CHECK(wrong == 0);
 }
 
 TEST_CASE("the rasteriser refuses what it cannot do, and shadow rays stay on where they must") {
