@@ -114,7 +114,7 @@ TEST_CASE("a registry lists by rank then name and refuses a duplicate") {
 TEST_CASE("every shipped material, light and shape type is registered in this binary") {
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
-    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk"});
+    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh"});
 }
 
 }  // namespace
