@@ -173,12 +173,13 @@ ParameterValues readShapeValues(const TomlTable& table, const TypeSchema& schema
     for (const Parameter& parameter : schema.parameters)
         if (!common(parameter)) readKey(table, parameter, values);
     readKey(table, kShapeNameParameter, values);
-    const Parameter& materialParameter = *schema.find(kShapeMaterialParameter.name);
-    if (auto material = table.find(materialParameter.name)) {
+    const Parameter* materialParameter = schema.find(kShapeMaterialParameter.name);
+    if (!materialParameter) return values;
+    if (auto material = table.find(materialParameter->name)) {
         findMaterial(*material, materials);
-        readParameter(*material, materialParameter, values);
-    } else if (materialParameter.required) {
-        table.required(materialParameter.name);
+        readParameter(*material, *materialParameter, values);
+    } else if (materialParameter->required) {
+        table.required(materialParameter->name);
     }
     return values;
 }
