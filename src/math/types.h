@@ -14,4 +14,11 @@ inline constexpr float kPi = 3.14159265358979323846f;
 inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 inline bool isBlack(const Rgb& c) { return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f; }
 
+// The cross product of two parallel vectors vanishes; compare against their lengths so the test
+// does not depend on how long the student wrote them (a camera's up, a triangle's edges).
+inline bool areParallel(const Vec3& a, const Vec3& b) {
+    const glm::dvec3 da(a), db(b);
+    return glm::length(glm::cross(da, db)) <= 1e-6 * glm::length(da) * glm::length(db);
+}
+
 }  // namespace lightpath

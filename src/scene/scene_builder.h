@@ -1,14 +1,17 @@
 #pragma once
 // What a [[lights]] type may add to the scene being loaded: a light without a shape (point), or an
 // emissive object and its shapes (quad, sphere); and what a shape type (src/shapes/) adds: an
-// object and its shape (a sphere, a plane, or a record of its kind's ShapeOps table). An
-// interface, so types add to the scene without knowing the loader; the loader implements it.
+// object and its shape (a sphere, a plane, a triangle, or a record of its kind's ShapeOps table),
+// or a mesh's objects, materials and triangles. An interface, so types add to the scene without
+// knowing the loader; the loader implements it.
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
 #include "geometry/shape.h"
 #include "geometry/shapes.h"
+#include "materials/material.h"
 #include "math/types.h"
 #include "scene/light.h"
 #include "schema/format.h"
@@ -26,10 +29,23 @@ public:
     virtual std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) = 0;
     virtual void addSphere(const Sphere& sphere) = 0;
     virtual void addPlane(const Plane& plane) = 0;
+    // A triangle shaded flat (its geometric normal).
     virtual void addTriangle(const Triangle& triangle) = 0;
+    // A triangle shaded with the normals at its corners interpolated (a mesh's `vn`); a zero
+    // normal shades it flat.
+    virtual void addTriangle(const Triangle& triangle, const TriangleNormals& normals) = 0;
     // A shape declaration's object, from its `name` (optional) and `material` (a material of the
     // scene, else a located error at `material`). Returns the object index its shapes store.
     virtual std::uint32_t addShapeObject(const ParameterValues& values) = 0;
+    // An object labelled `name` (empty: by its material's name) made of the scene's material
+    // number `material`; a mesh makes one per material its faces use. Returns the object index.
+    virtual std::uint32_t addObject(std::string name, std::uint32_t material) = 0;
+    // The index of the scene's material named as `material` is, which wins if there is one (its
+    // [materials] table or an earlier mesh's: how a scene retunes an MTL material), else of
+    // `material`, added (a mesh's MTL material, or its grey).
+    virtual std::uint32_t sceneMaterial(MaterialSlot material) = 0;
+    // The folder of the scene file: the files it names (a mesh's OBJ) are relative to it.
+    virtual std::filesystem::path folder() const = 0;
     // The emission of object `object`'s material (for tooSmallToSampleWarning).
     virtual Rgb emissionOf(std::uint32_t object) const = 0;
     virtual void addShape(const ShapeRecord& shape) = 0;

@@ -1,6 +1,7 @@
 #include "scene/scene_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <limits>
@@ -15,7 +16,6 @@
 #include "materials/phong_material.h"
 #include "schema/parameter.h"
 #include "schema/schema_error.h"
-#include "scene/obj_loader.h"
 #include "scene/spelling.h"
 #include "scene/toml_reader.h"
 
@@ -26,13 +26,6 @@ std::string readName(const TomlValue& value) {
     std::string name = value.string();
     if (!isValidName(name)) value.expected("a name of " + std::string(kNameCharacters));
     return name;
-}
-
-// The cross product of two parallel vectors vanishes; compare against their lengths so the test
-// does not depend on how long the student wrote them.
-bool areParallel(const Vec3& a, const Vec3& b) {
-    const glm::dvec3 da(a), db(b);
-    return glm::length(glm::cross(da, db)) <= 1e-6 * glm::length(da) * glm::length(db);
 }
 
 Vec3 readNonZeroVector(const TomlValue& value) {
@@ -105,6 +98,12 @@ void readParameter(const TomlValue& value, const Parameter& parameter, Parameter
         case ParameterType::Colour: values.set(name, value.rgb()); break;
         case ParameterType::Point: values.set(name, value.vec3(rule)); break;
         case ParameterType::Vector: values.set(name, readNonZeroVector(value)); break;
+        case ParameterType::PerAxis: values.set(name, value.numberOrVec3(rule)); break;
+        case ParameterType::ThreePoints: {
+            const std::vector<TomlValue> abc = value.array(3, "3 points [[x,y,z], [x,y,z], [x,y,z]]");
+            values.set(name, std::array<Vec3, 3>{abc[0].vec3(rule), abc[1].vec3(rule), abc[2].vec3(rule)});
+            break;
+        }
         case ParameterType::Name: values.set(name, readName(value)); break;
         case ParameterType::Text: values.set(name, value.string()); break;
     }
@@ -161,7 +160,8 @@ std::uint32_t findMaterial(const TomlValue& reference,
 // A shape declaration's values: its kind's own keys first, then the `name` and `material` every
 // shape has, `material` looked up among the scene's materials before the schema checks it is a
 // name: so the first error a declaration reports, and its words ("unknown material", with a
-// suggestion), are those the loader gave before shapes were types.
+// suggestion), are those the loader gave before shapes were types. A kind whose `material` is
+// optional (a mesh's, else its MTL's) looks it up only when given.
 ParameterValues readShapeValues(const TomlTable& table, const TypeSchema& schema,
                                 const std::vector<MaterialSlot>& materials) {
     table.allowOnly(allowedKeys(schema, TypeKey::absent));
@@ -173,9 +173,14 @@ ParameterValues readShapeValues(const TomlTable& table, const TypeSchema& schema
     for (const Parameter& parameter : schema.parameters)
         if (!common(parameter)) readKey(table, parameter, values);
     readKey(table, kShapeNameParameter, values);
-    const TomlValue material = table.required(kShapeMaterialParameter.name);
-    findMaterial(material, materials);
-    readParameter(material, kShapeMaterialParameter, values);
+    const Parameter* materialParameter = schema.find(kShapeMaterialParameter.name);
+    if (!materialParameter) return values;
+    if (auto material = table.find(materialParameter->name)) {
+        findMaterial(*material, materials);
+        readParameter(*material, *materialParameter, values);
+    } else if (materialParameter->required) {
+        table.required(materialParameter->name);
+    }
     return values;
 }
 
@@ -237,7 +242,25 @@ public:
     void addSphere(const Sphere& sphere) override { scene_.spheres.push_back(sphere); }
     void addPlane(const Plane& plane) override { scene_.planes.push_back(plane); }
     void addTriangle(const Triangle& triangle) override { scene_.triangles.push_back(triangle); }
+    void addTriangle(const Triangle& triangle, const TriangleNormals& normals) override {
+        // triangleNormals is empty until a triangle has normals; then one per triangle, the
+        // flat ones before it zero (Scene::triangleNormals).
+        scene_.triangleNormals.resize(scene_.triangles.size());
+        scene_.triangles.push_back(triangle);
+        scene_.triangleNormals.push_back(normals);
+    }
     std::uint32_t addShapeObject(const ParameterValues& values) override;
+    std::uint32_t addObject(std::string name, std::uint32_t material) override {
+        scene_.objects.push_back({std::move(name), material});
+        return static_cast<std::uint32_t>(scene_.objects.size() - 1);
+    }
+    std::uint32_t sceneMaterial(MaterialSlot material) override {
+        for (std::uint32_t i = 0; i < scene_.materials.size(); ++i)
+            if (scene_.materials[i]->name == material->name) return i;
+        scene_.materials.push_back(std::move(material));
+        return static_cast<std::uint32_t>(scene_.materials.size() - 1);
+    }
+    std::filesystem::path folder() const override { return scene_.source.parent_path(); }
     Rgb emissionOf(std::uint32_t object) const override {
         return scene_.materials[scene_.objects[object].material]->emission;
     }
@@ -253,11 +276,6 @@ void readLight(const TomlTable& table, Scene& scene) {
     const ParameterValues values = readValues(table, type.schema);
     LoadingScene builder(scene);
     asSceneError([&] { type.addTo(values, builder); });
-}
-
-// A shape that emits but is too small to be light-sampled is said once, where it is declared.
-void warnIfTooSmallToSample(const TomlValue& where, const char* what, double area, const Rgb& emission, Scene& scene) {
-    if (auto warning = tooSmallToSampleWarning(what, area, emission)) scene.warnings.push_back(where.located(*warning));
 }
 
 std::uint32_t LoadingScene::addShapeObject(const ParameterValues& values) {
@@ -282,160 +300,6 @@ void readShape(const TomlTable& table, const ShapeType& type, Scene& scene) {
     const ParameterValues values = readShapeValues(table, type.schema, scene.materials);
     LoadingScene builder(scene);
     asSceneError([&] { type.addTo(values, builder); });
-}
-
-// Every shape is one scene object: its name (optional) and material are read here; the returned
-// index is what the shape stores in its `object` field.
-std::uint32_t addObject(const TomlTable& table, Scene& scene) {
-    SceneObject object;
-    if (auto name = table.find("name")) object.name = readName(*name);
-    object.material = findMaterial(table.required("material"), scene.materials);
-    scene.objects.push_back(object);
-    return static_cast<std::uint32_t>(scene.objects.size() - 1);
-}
-
-Triangle readTriangle(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"name", "vertices", "material"});
-    const TomlValue vertices = table.required("vertices");
-    const std::vector<TomlValue> abc = vertices.array(3, "3 points [[x,y,z], [x,y,z], [x,y,z]]");
-    Triangle triangle;
-    triangle.a = abc[0].vec3();
-    triangle.b = abc[1].vec3();
-    triangle.c = abc[2].vec3();
-    // Legal but invisible: a triangle without area is never hit (its determinant is zero), so it
-    // is kept and only worth a warning.
-    if (areParallel(triangle.b - triangle.a, triangle.c - triangle.a)) {
-        scene.warnings.push_back(vertices.located("the 3 points lie on one line: the triangle has no area and is never seen"));
-    }
-    triangle.object = addObject(table, scene);
-    if (!areParallel(triangle.b - triangle.a, triangle.c - triangle.a)) {
-        warnIfTooSmallToSample(vertices, "triangle", surfaceArea(triangle),
-                               scene.materials[scene.objects.back().material]->emission, scene);
-    }
-    return triangle;
-}
-
-// scale, then rotate_y, then translate: a mesh is placed as its file describes it, resized about
-// its own origin, turned about the vertical axis and moved.
-struct MeshPlacement {
-    Vec3 scale{1.0f};
-    float rotateY = 0.0f;  // radians
-    Vec3 translate{0.0f};
-
-    Vec3 point(Vec3 p) const {
-        p *= scale;
-        const float c = std::cos(rotateY), s = std::sin(rotateY);
-        return Vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z) + translate;
-    }
-    // Normals take the inverse transpose: divide by the scale, rotate like points.
-    Vec3 normal(Vec3 n) const {
-        if (n == Vec3(0.0f)) return n;
-        n /= scale;
-        const float c = std::cos(rotateY), s = std::sin(rotateY);
-        return glm::normalize(Vec3(c * n.x + s * n.z, n.y, -s * n.x + c * n.z));
-    }
-};
-
-MeshPlacement readPlacement(const TomlTable& table) {
-    MeshPlacement placement;
-    if (auto scale = table.find("scale")) {
-        placement.scale = scale->rgb();
-        if (placement.scale.x <= 0.0f || placement.scale.y <= 0.0f || placement.scale.z <= 0.0f)
-            scale->fail("expected a positive number or 3 positive numbers, got " + formatVec3(placement.scale));
-    }
-    if (auto rotate = table.find("rotate_y")) placement.rotateY = glm::radians(rotate->number());
-    if (auto translate = table.find("translate")) placement.translate = translate->vec3();
-    return placement;
-}
-
-// The scene material called `name`, added from the mesh's MTL unless the scene (its
-// [materials] or an earlier mesh) already has one of that name, which then wins.
-std::uint32_t sceneMaterialFor(const PhongMaterial& mtl, Scene& scene) {
-    for (std::uint32_t i = 0; i < scene.materials.size(); ++i)
-        if (scene.materials[i]->name == mtl.name) return i;
-    scene.materials.push_back(mtl);
-    return static_cast<std::uint32_t>(scene.materials.size() - 1);
-}
-
-// A [[meshes]] entry: every MTL material used becomes one scene object (labelled by the mesh's
-// name, else by the material's MTL name); `material` puts the whole mesh in one scene material.
-void readMesh(const TomlTable& table, const std::filesystem::path& sceneFile, Scene& scene) {
-    table.allowOnly({"name", "file", "material", "scale", "rotate_y", "translate"});
-    const TomlValue fileValue = table.required("file");
-    const std::filesystem::path file = sceneFile.parent_path() / fileValue.string();
-    ObjMesh mesh;
-    try {
-        mesh = loadObj(file);
-    } catch (const SceneError& e) {
-        fileValue.fail(e.what());
-    }
-    std::string name;
-    if (auto nameValue = table.find("name")) name = readName(*nameValue);
-    std::optional<std::uint32_t> override;
-    if (auto material = table.find("material")) override = findMaterial(*material, scene.materials);
-    const MeshPlacement placement = readPlacement(table);
-    // A missing material library is only a warning (most tools go on); a face whose `usemtl`
-    // names a material no library defines is an error only when the scene gives no `material`.
-    for (const std::string& library : mesh.missingLibraries) {
-        scene.warnings.push_back(fileValue.located(
-            file.string() + ": cannot open material library \"" + library + "\" named by its mtllib line; " +
-            (override ? "the mesh's `material` is used" : "faces without a known material are grey")));
-    }
-    if (!override && !mesh.unknownMaterials.empty()) {
-        fileValue.fail(file.string() + ": usemtl \"" + mesh.unknownMaterials.front() +
-                       "\" names no material of its material libraries" +
-                       (mesh.missingLibraries.empty() ? "" : " (\"" + mesh.missingLibraries.front() + "\" is missing)") +
-                       "; give the mesh a `material`");
-    }
-
-    // Scene object of each MTL material index, created on first use, in order of first use.
-    std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
-    const auto objectFor = [&](std::uint32_t mtlIndex) {
-        // With `material`, the whole mesh is one object.
-        const std::size_t slot = override || mtlIndex == kNoMeshMaterial ? mesh.materials.size() : mtlIndex;
-        if (objectOf[slot] != kNoMeshMaterial) return objectOf[slot];
-        SceneObject object;
-        object.name = name;
-        if (override) {
-            object.material = *override;
-        } else if (mtlIndex == kNoMeshMaterial) {
-            object.material = sceneMaterialFor(defaultMeshMaterial(), scene);
-        } else {
-            const PhongMaterial& mtl = mesh.materials[mtlIndex];
-            if (!isValidName(mtl.name))
-                fileValue.fail(file.string() + ": material \"" + mtl.name + "\" is not a name of " +
-                               std::string(kNameCharacters) + "; give the mesh a `material`");
-            object.material = sceneMaterialFor(mtl, scene);
-        }
-        scene.objects.push_back(object);
-        objectOf[slot] = static_cast<std::uint32_t>(scene.objects.size() - 1);
-        return objectOf[slot];
-    };
-
-    if (mesh.degenerateDropped > 0) {
-        scene.warnings.push_back(fileValue.located(std::to_string(mesh.degenerateDropped) +
-                                                   " faces without area were left out"));
-    }
-    const bool smooth = !mesh.normals.empty();
-    if (smooth && scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
-    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-        const Triangle& t = mesh.triangles[i];
-        const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)};
-        // The limit of the file's own numbers holds for the mesh's vertices where they end up.
-        for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
-            if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude))))) {
-                fileValue.fail(file.string() + ": triangle " + std::to_string(i + 1) + " has a corner at " +
-                               formatVec3(corner) + " once placed; expected coordinates " + std::string(kMagnitudeRange));
-            }
-        }
-        scene.triangles.push_back(placed);
-        if (smooth) {
-            const TriangleNormals& n = mesh.normals[i];
-            scene.triangleNormals.push_back({placement.normal(n.a), placement.normal(n.b), placement.normal(n.c)});
-        } else if (!scene.triangleNormals.empty()) {
-            scene.triangleNormals.emplace_back();
-        }
-    }
 }
 
 // The whole file as text. Reading it here (rather than in toml++) lets a missing file report the
@@ -483,12 +347,11 @@ Scene loadScene(const std::filesystem::path& path) {
 Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path) {
     const toml::table document = parseText(text, path);
     const TomlTable root(document, "");
-    // The registered shape kinds' sections, by rank (spheres, planes, then the others): their
-    // objects are numbered in that order.
+    // The registered shape kinds' sections, by rank (spheres, planes, the others, then triangles
+    // and meshes): their objects are numbered in that order.
     std::vector<std::string_view> sections{"camera", "world", "materials", "lights"};
     const std::vector<const ShapeType*> shapeTypes = ShapeRegistry::instance().entries();
     for (const ShapeType* type : shapeTypes) sections.push_back(type->section);
-    sections.insert(sections.end(), {"triangles", "meshes"});
     root.allowOnly(sections);
 
     Scene scene;
@@ -499,14 +362,11 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
         scene.materials = readMaterials(materials->table());
     }
     forEachSection(root, "lights", [&](const TomlTable& light) { readLight(light, scene); });
-    // Objects are numbered by each registered shape kind's rank (spheres first, then planes, then
-    // the others), then triangles, each in file order.
+    // Objects are numbered by each registered shape kind's rank (spheres first, then planes, the
+    // others, triangles and meshes), each in file order.
     for (const ShapeType* type : shapeTypes)
         forEachSection(root, type->section, [&](const TomlTable& shape) { readShape(shape, *type, scene); });
-    forEachSection(root, "triangles", [&](const TomlTable& triangle) {
-        scene.triangles.push_back(readTriangle(triangle, scene));
-    });
-    forEachSection(root, "meshes", [&](const TomlTable& mesh) { readMesh(mesh, path, scene); });
+    // Flat triangles after the last one with normals have none yet.
     if (!scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
     return scene;
 }

@@ -112,11 +112,13 @@ Vec3 TomlValue::vec3(const NumberRule& rule) const {
     return {xyz[0].number(rule), xyz[1].number(rule), xyz[2].number(rule)};
 }
 
-Rgb TomlValue::rgb() const {
-    if (numericValue(*node_)) return Rgb(number(nonNegative));
+Vec3 TomlValue::numberOrVec3(const NumberRule& rule) const {
+    if (numericValue(*node_)) return Vec3(number(rule));
     if (!node_->is_array()) expected("a number or an array of 3 numbers");
-    return vec3(nonNegative);
+    return vec3(rule);
 }
+
+Rgb TomlValue::rgb() const { return numberOrVec3(nonNegative); }
 
 std::string TomlValue::string() const {
     const auto* node = node_->as_string();

@@ -65,6 +65,8 @@ public:
     int integer(int low, int high) const;
     // [x, y, z], each component within `rule`.
     Vec3 vec3(const NumberRule& rule = anyNumber) const;
+    // One number for all three components, or [x, y, z]; each within `rule`.
+    Vec3 numberOrVec3(const NumberRule& rule) const;
     // [r, g, b], or one number for grey; each channel >= 0.
     Rgb rgb() const;
     std::string string() const;

@@ -6,7 +6,9 @@ std::string allowedText(const Parameter& p) {
     const std::string range = p.range.isAny() ? "any" : "`" + p.range.describe() + "`";
     switch (p.type) {
         case ParameterType::Colour: return "each channel " + range;
-        case ParameterType::Point: return p.range.isAny() ? "any" : "each " + range;
+        case ParameterType::Point:
+        case ParameterType::PerAxis: return p.range.isAny() ? "any" : "each " + range;
+        case ParameterType::ThreePoints: return p.range.isAny() ? "any" : "each coordinate " + range;
         case ParameterType::Vector: return "non-zero";
         case ParameterType::Name: {
             if (p.choices.empty()) return "a name (see Conventions)";

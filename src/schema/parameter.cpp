@@ -23,6 +23,8 @@ std::string_view typeName(ParameterType type) {
         case ParameterType::Colour: return "RGB or number";
         case ParameterType::Point: return "point";
         case ParameterType::Vector: return "vector";
+        case ParameterType::PerAxis: return "number or [x, y, z]";
+        case ParameterType::ThreePoints: return "3 points";
         case ParameterType::Name: return "string";
         case ParameterType::Text: return "string";
     }

@@ -17,6 +17,8 @@ enum class ParameterType : std::uint8_t {
     Colour,   // RGB or one number for grey; each channel within range (default >= 0)
     Point,    // [x, y, z], each component within range
     Vector,   // [x, y, z], non-zero
+    PerAxis,  // one number for all three axes or [x, y, z], each within range (a mesh's scale)
+    ThreePoints,  // [[x,y,z], [x,y,z], [x,y,z]], each coordinate within range (a triangle's corners)
     Name,     // a label: letters, digits, '_', '-', '.'
     Text,     // any string (e.g. a file)
 };
@@ -29,7 +31,7 @@ std::string_view typeName(ParameterType type);
 inline constexpr std::string_view kNameCharacters = "letters, digits, '_', '-' or '.'";
 bool isValidName(std::string_view name);
 
-// What a Number/Integer/Colour channel (or a Point component) must satisfy.
+// What a Number/Integer/Colour channel (or a Point, PerAxis or ThreePoints component) must satisfy.
 struct Range {
     double low = -std::numeric_limits<double>::infinity();
     double high = std::numeric_limits<double>::infinity();

@@ -10,15 +10,27 @@
 namespace lightpath {
 namespace {
 
-// The numbers of a default as docs print it: "0.5", "[1, 0, 0]"; one number is grey.
-Vec3 parseTriple(std::string_view text) {
+// The numbers of a default as docs print it: "0.5", "[1, 0, 0]", "[[0, 0, 0], [1, 0, 0], [0, 1, 0]]".
+std::vector<float> parseNumbers(std::string_view text) {
     std::string cleaned(text);
     std::replace_if(cleaned.begin(), cleaned.end(), [](char c) { return c == '[' || c == ']' || c == ','; }, ' ');
     std::istringstream in(cleaned);
-    float x = 0.0f, y, z;
-    in >> x;
-    if (!(in >> y >> z)) return Vec3(x);
-    return {x, y, z};
+    std::vector<float> numbers;
+    for (float x; in >> x;) numbers.push_back(x);
+    return numbers;
+}
+
+// One number is grey (or the same on every axis).
+Vec3 parseTriple(std::string_view text) {
+    const std::vector<float> n = parseNumbers(text);
+    if (n.size() < 3) return Vec3(n.empty() ? 0.0f : n[0]);
+    return {n[0], n[1], n[2]};
+}
+
+std::array<Vec3, 3> parsePoints(std::string_view text) {
+    std::vector<float> n = parseNumbers(text);
+    n.resize(9, 0.0f);
+    return {Vec3(n[0], n[1], n[2]), Vec3(n[3], n[4], n[5]), Vec3(n[6], n[7], n[8])};
 }
 
 std::string unquoted(std::string_view text) {
@@ -37,7 +49,9 @@ ParameterValues::ParameterValues(const TypeSchema& schema) : schema_(&schema) {
             case ParameterType::Boolean: slot.value = p.defaultText == "true"; break;
             case ParameterType::Colour:
             case ParameterType::Point:
-            case ParameterType::Vector: slot.value = parseTriple(p.defaultText); break;
+            case ParameterType::Vector:
+            case ParameterType::PerAxis: slot.value = parseTriple(p.defaultText); break;
+            case ParameterType::ThreePoints: slot.value = parsePoints(p.defaultText); break;
             case ParameterType::Name:
             case ParameterType::Text: slot.value = unquoted(p.defaultText); break;
         }
@@ -58,7 +72,9 @@ const ParameterValues::Value& ParameterValues::valueOf(std::string_view name, Pa
     const std::size_t i = indexOf(name);
     const ParameterType type = schema_->parameters[i].type;
     const auto family = [](ParameterType t) {
-        if (t == ParameterType::Colour || t == ParameterType::Point || t == ParameterType::Vector) return ParameterType::Point;
+        if (t == ParameterType::Colour || t == ParameterType::Point || t == ParameterType::Vector ||
+            t == ParameterType::PerAxis)
+            return ParameterType::Point;
         if (t == ParameterType::Text) return ParameterType::Name;
         return t;
     };
@@ -74,6 +90,9 @@ int ParameterValues::integer(std::string_view name) const { return std::get<int>
 bool ParameterValues::boolean(std::string_view name) const { return std::get<bool>(valueOf(name, ParameterType::Boolean)); }
 Rgb ParameterValues::colour(std::string_view name) const { return std::get<Vec3>(valueOf(name, ParameterType::Colour)); }
 Vec3 ParameterValues::vec3(std::string_view name) const { return std::get<Vec3>(valueOf(name, ParameterType::Point)); }
+std::array<Vec3, 3> ParameterValues::points(std::string_view name) const {
+    return std::get<std::array<Vec3, 3>>(valueOf(name, ParameterType::ThreePoints));
+}
 const std::string& ParameterValues::text(std::string_view name) const {
     return std::get<std::string>(valueOf(name, ParameterType::Text));
 }
@@ -119,7 +138,20 @@ void ParameterValues::set(std::string_view name, const Vec3& value) {
     if (p.type == ParameterType::Vector && value == Vec3(0.0f)) {
         throw SchemaError(std::string(name) + ": expected a non-zero vector, got " + formatVec3(value));
     }
-    store(name, value, {ParameterType::Colour, ParameterType::Point, ParameterType::Vector});
+    store(name, value, {ParameterType::Colour, ParameterType::Point, ParameterType::Vector, ParameterType::PerAxis});
+}
+
+void ParameterValues::set(std::string_view name, const std::array<Vec3, 3>& value) {
+    const Parameter& p = schema_->parameters[indexOf(name)];
+    for (const Vec3& point : value) {
+        for (int c = 0; c < 3; ++c) {
+            if (!std::isfinite(point[c]) || !p.range.admits(point[c])) {
+                throw SchemaError(std::string(name) + ": expected 3 points, each coordinate " + p.range.describe() +
+                                  ", got " + formatVec3(point));
+            }
+        }
+    }
+    store(name, value, {ParameterType::ThreePoints});
 }
 
 void ParameterValues::set(std::string_view name, std::string value) {

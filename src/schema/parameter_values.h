@@ -1,6 +1,7 @@
 #pragma once
 // The values one declaration gives a type, checked against its schema, each remembering where it
 // came from, so that a type's make() can refuse a combination with a located error.
+#include <array>
 #include <cstddef>
 #include <initializer_list>
 #include <string>
@@ -25,14 +26,16 @@ public:
     int integer(std::string_view name) const;
     bool boolean(std::string_view name) const;
     Rgb colour(std::string_view name) const;
-    Vec3 vec3(std::string_view name) const;  // a Point or a Vector
+    Vec3 vec3(std::string_view name) const;  // a Point, a Vector or a PerAxis
+    std::array<Vec3, 3> points(std::string_view name) const;  // ThreePoints
     const std::string& text(std::string_view name) const;  // a Name or a Text
 
     // Set programmatically (conformance kit, loaders): checks type and range, throws SchemaError.
     void set(std::string_view name, double value);       // Number
     void set(std::string_view name, int value);          // Integer, or a Number
     void set(std::string_view name, bool value);         // Boolean
-    void set(std::string_view name, const Vec3& value);  // Colour, Point, Vector
+    void set(std::string_view name, const Vec3& value);  // Colour, Point, Vector, PerAxis
+    void set(std::string_view name, const std::array<Vec3, 3>& value);  // ThreePoints
     void set(std::string_view name, std::string value);  // Name, Text
     void set(std::string_view name, const char* value) { set(name, std::string(value)); }
 
@@ -47,7 +50,7 @@ public:
     [[noreturn]] void fail(std::string_view name, std::string_view message) const;
 
 private:
-    using Value = std::variant<float, int, bool, Vec3, std::string>;
+    using Value = std::variant<float, int, bool, Vec3, std::array<Vec3, 3>, std::string>;
     struct Slot {
         Value value;
         bool given = false;

@@ -3,6 +3,7 @@
 #include "accel/scene_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -29,7 +30,7 @@ constexpr int kDrawsPerLightType = 2;
 constexpr int kDrawsPerShapeType = 3;
 constexpr int kTriesPerDraw = 20;  // draws a type refuses as a combination (values.fail) are redrawn
 
-using Value = std::variant<double, Vec3, bool>;
+using Value = std::variant<double, Vec3, bool, std::array<Vec3, 3>>;
 struct Setting {
     std::string_view key;
     Value value;
@@ -38,6 +39,8 @@ struct Setting {
 std::string describe(const Value& value) {
     if (const double* x = std::get_if<double>(&value)) return formatNumber(*x);
     if (const Vec3* v = std::get_if<Vec3>(&value)) return formatVec3(*v);
+    if (const auto* points = std::get_if<std::array<Vec3, 3>>(&value))
+        return "[" + formatVec3((*points)[0]) + ", " + formatVec3((*points)[1]) + ", " + formatVec3((*points)[2]) + "]";
     return std::get<bool>(value) ? "true" : "false";
 }
 
@@ -53,9 +56,9 @@ std::uint32_t seedOf(std::string_view name) {
 }
 
 // A value within the parameter's range, from what a lecture scene uses where the range is
-// open-ended: colours (reflectances, radiances) in [0, 1], numbers up to four times their default
-// (at least 2 above the lower bound), points and vectors within 1 of the origin. Names and texts
-// keep their defaults.
+// open-ended: colours (reflectances, radiances) in [0, 1], numbers (and each axis of a per-axis
+// value) up to four times their default (at least 2 above the lower bound), points and vectors
+// within 1 of the origin. Names and texts keep their defaults.
 std::optional<Value> draw(const Parameter& p, std::mt19937& rng) {
     const auto within = [&](double low, double high, bool lowExclusive) {
         const double from = std::isfinite(p.range.low) ? std::max(low, p.range.low) : low;
@@ -71,10 +74,13 @@ std::optional<Value> draw(const Parameter& p, std::mt19937& rng) {
             return c;
         }
         case ParameterType::Number:
-        case ParameterType::Integer: {
+        case ParameterType::Integer:
+        case ParameterType::PerAxis: {
             const double low = std::isfinite(p.range.low) ? p.range.low : -2.0;
             const double fallback = p.defaultText.empty() ? 0.0 : std::stod(std::string(p.defaultText));
-            const double x = within(low, std::max(4.0 * fallback, low + 2.0), p.range.lowExclusive);
+            const auto number = [&] { return within(low, std::max(4.0 * fallback, low + 2.0), p.range.lowExclusive); };
+            if (p.type == ParameterType::PerAxis) return Vec3(float(number()), float(number()), float(number()));
+            const double x = number();
             if (p.type == ParameterType::Integer) return double(std::lround(x));
             return x;
         }
@@ -86,6 +92,12 @@ std::optional<Value> draw(const Parameter& p, std::mt19937& rng) {
                 for (int i = 0; i < 3; ++i) v[i] = float(within(-1.0, 1.0, p.range.lowExclusive));
             } while (p.type == ParameterType::Vector && glm::length(v) < 0.1f);
             return v;
+        }
+        case ParameterType::ThreePoints: {
+            std::array<Vec3, 3> points;
+            for (Vec3& point : points)
+                for (int i = 0; i < 3; ++i) point[i] = float(within(-1.0, 1.0, p.range.lowExclusive));
+            return points;
         }
         case ParameterType::Name:
         case ParameterType::Text: return std::nullopt;
@@ -254,6 +266,9 @@ material = "lamp"
 
 void forEachShapeCase(const std::function<void(const ShapeCase&)>& visit) {
     for (const ShapeType* type : ShapeRegistry::instance().entries()) {
+        // Triangles and meshes are no records of a ShapeOps table: tests/accel checks triangles,
+        // and the quad light's light cases check them as emitters.
+        if (type->storage != ShapeStorage::records) continue;
         std::mt19937 rng(seedOf(type->schema.name));
         for (int d = 0; d < kDrawsPerShapeType; ++d) {
             std::optional<ShapeCase> c;

@@ -25,7 +25,8 @@ void forEveryShape(Check&& check) {
     });
     CHECK(shapes >= int(ShapeRegistry::instance().entries().size()));
     CHECK(ShapeRegistry::instance().find("disk") != nullptr);
-    // Spheres and planes are records of the one table too: the kit checks them like any kind.
+    // Spheres and planes are records of the one table too: the kit checks them like any kind
+    // (triangles and meshes are not: ShapeStorage::triangles).
     CHECK(kinds == std::set<std::string_view>{"disk", "plane", "sphere"});
 }
 

@@ -8,7 +8,8 @@ import sys
 
 # The types whose tables scenes/README.md shows.
 TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point"), ("light", "quad"),
-          ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk")]
+          ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),
+          ("shape", "triangle"), ("shape", "mesh")]
 
 
 def main():

@@ -29,7 +29,11 @@ public:
     void addSphere(const Sphere&) override {}
     void addPlane(const Plane&) override {}
     void addTriangle(const Triangle&) override {}
+    void addTriangle(const Triangle&, const TriangleNormals&) override {}
     std::uint32_t addShapeObject(const ParameterValues&) override { return 0; }
+    std::uint32_t addObject(std::string, std::uint32_t) override { return 0; }
+    std::uint32_t sceneMaterial(MaterialSlot) override { return 0; }
+    std::filesystem::path folder() const override { return {}; }
     Rgb emissionOf(std::uint32_t) const override { return Rgb{0.0f}; }
     void addShape(const ShapeRecord& s) override { shape = s; }
     void warn(std::string) override {}

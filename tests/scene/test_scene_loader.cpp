@@ -699,3 +699,76 @@ TEST_CASE_FIXTURE(SceneFiles, "spheres and planes are read through their schema 
     CHECK(scene.spheres[0].radius == 0.5f);
     CHECK(scene.planes[0].normal == Vec3(0, 0, 1));  // normalised in double: 1e-30 squared is 0 in float
 }
+
+// [[triangles]] and [[meshes]] are registered kinds (src/shapes/triangle.cpp, mesh.cpp) ranked
+// after every other: whatever the file's order, objects run spheres, planes, disks, triangles,
+// then each mesh's, and the triangle array holds the triangles before the meshes' faces.
+TEST_CASE_FIXTURE(SceneFiles, "objects are numbered spheres, planes, disks, triangles, then meshes") {
+    write("two.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
+    write("two.obj", "mtllib two.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                     "usemtl blue\nf 1 2 3\nusemtl red\nf 1 2 4\nusemtl blue\nf 1 3 4\n");
+    const Scene scene = load("[materials.grey]\n"
+                             "[[meshes]]\nfile = \"two.obj\"\n"
+                             "[[triangles]]\nname = \"tri\"\nvertices = [[0,0,0], [2,0,0], [0,2,0]]\nmaterial = \"grey\"\n"
+                             "[[disks]]\ncenter = [0, 0, 0]\nnormal = [0, 1, 0]\nradius = 1\nmaterial = \"grey\"\n"
+                             "[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\nmaterial = \"grey\"\n"
+                             "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"grey\"\n");
+    REQUIRE(scene.objects.size() == 6);
+    CHECK(scene.spheres.at(0).object == 0);
+    CHECK(scene.planes.at(0).object == 1);
+    CHECK(scene.shapes.at(0).object == 2);
+    REQUIRE(scene.triangles.size() == 4);
+    CHECK(scene.triangles[0].object == 3);
+    CHECK(scene.labelOf(3) == "tri");
+    CHECK(scene.triangles[0].b == Vec3(2, 0, 0));
+    // The mesh's objects in order of first use: blue (faces 1 and 3), then red.
+    CHECK(scene.triangles[1].object == 4);
+    CHECK(scene.triangles[2].object == 5);
+    CHECK(scene.triangles[3].object == 4);
+    CHECK(scene.labelOf(4) == "blue");
+    CHECK(scene.labelOf(5) == "red");
+}
+
+// A mesh's `scale` is one positive number or three (ParameterType::PerAxis).
+TEST_CASE_FIXTURE(SceneFiles, "a mesh's scale is a positive number or 3 positive numbers") {
+    write("one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string mesh = "[[meshes]]\nfile = \"one.obj\"\n";
+    const Scene scene = load(mesh + "scale = [2, 3, 4]\n");
+    REQUIRE(scene.triangles.size() == 1);
+    CHECK(scene.triangles[0].b == Vec3(2, 0, 0));
+    CHECK(scene.triangles[0].c == Vec3(0, 3, 0));
+    CHECK(load(mesh + "scale = 5\n").triangles.at(0).c == Vec3(0, 5, 0));
+    CHECK(errorOf(mesh + "scale = 0\n") == "scene.toml:3:9: meshes[0].scale: expected a positive number, got 0");
+    CHECK(errorOf(mesh + "scale = -2\n") == "scene.toml:3:9: meshes[0].scale: expected a positive number, got -2");
+    CHECK(errorOf(mesh + "scale = [1, -1, 1]\n") ==
+          "scene.toml:3:13: meshes[0].scale[1]: expected a positive number, got -1");
+    CHECK(errorOf(mesh + "scale = \"big\"\n") ==
+          "scene.toml:3:9: meshes[0].scale: expected a number or an array of 3 numbers, got a string (\"big\")");
+    CHECK(errorOf(mesh + "scale = [1, 2]\n") ==
+          "scene.toml:3:9: meshes[0].scale: expected an array of 3 numbers, got an array of 2 elements");
+    CHECK(errorOf(mesh + "rotate = 90\n") ==
+          "scene.toml:3:1: meshes[0].rotate: unknown key \"rotate\"; did you mean \"rotate_y\"?");
+    CHECK(errorOf(mesh + "turn = 90\n") ==
+          "scene.toml:3:1: meshes[0].turn: unknown key \"turn\" (known: name, file, material, scale, rotate_y, translate)");
+}
+
+// Per-vertex normals are kept one per triangle once any triangle has them: the flat triangles
+// before and after a smooth mesh (a quad light's, a flat mesh's) hold zero normals.
+TEST_CASE_FIXTURE(SceneFiles, "a smooth mesh's normals line up with the triangles around it") {
+    write("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    write("smooth.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n");
+    const Scene scene = load("[[lights]]\ntype = \"quad\"\ncorner = [0, 2, 0]\nedge1 = [1, 0, 0]\nedge2 = [0, 0, 1]\n"
+                             "radiance = 1\n"
+                             "[[meshes]]\nfile = \"flat.obj\"\n"
+                             "[[meshes]]\nfile = \"smooth.obj\"\nrotate_y = 90\n"
+                             "[[meshes]]\nfile = \"flat.obj\"\n");
+    REQUIRE(scene.triangles.size() == 5);
+    REQUIRE(scene.triangleNormals.size() == 5);
+    for (const int flat : {0, 1, 2, 4}) CHECK(scene.triangleNormals[flat].a == Vec3(0.0f));
+    // (0, 0, 1) turned by 90 degrees about y (x towards -z): (1, 0, 0), unit length.
+    const Vec3 n = scene.triangleNormals[3].b;
+    CHECK(n.x == doctest::Approx(1.0));
+    CHECK(n.y == doctest::Approx(0.0));
+    CHECK(n.z == doctest::Approx(0.0).epsilon(1e-6));
+    CHECK(scene.triangles[3].b.z == doctest::Approx(-1.0));
+}

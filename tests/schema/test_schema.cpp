@@ -2,6 +2,7 @@
 // material and light type in this binary (schema.md: registrars survive static linking).
 #include <doctest/doctest.h>
 
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -95,6 +96,35 @@ TEST_CASE("a markdown row per parameter") {
           "| `at` | point | m | **required** | any | a place |\n");
 }
 
+// The two value types of the shape kinds that add triangles: a triangle's corners, a mesh's scale.
+TEST_CASE("3 points and per-axis values: defaults, checks, markdown") {
+    const TypeSchema schema{
+        "shape", "t", "",
+        {{"corners", ParameterType::ThreePoints, "m", "[[0, 0, 0], [1, 0, 0], [0, 2, 0]]", {}, "a triangle"},
+         {"box", ParameterType::ThreePoints, "m", "", Range{-1.0, 1.0}, "within the unit box"},
+         {"scale", ParameterType::PerAxis, "", "2", kPositive, "a factor per axis"}},
+        ""};
+    ParameterValues values(schema);
+    CHECK(values.points("corners") == std::array<Vec3, 3>{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 2, 0)});
+    CHECK(values.vec3("scale") == Vec3(2.0f));
+    values.set("scale", Vec3(1.0f, 2.0f, 3.0f));
+    CHECK(values.vec3("scale") == Vec3(1.0f, 2.0f, 3.0f));
+    CHECK_THROWS_WITH_AS(values.set("scale", Vec3(1.0f, 0.0f, 1.0f)),
+                         "scale: expected each of 3 numbers > 0, got [1, 0, 1]", SchemaError);
+    values.set("box", std::array<Vec3, 3>{Vec3(0.5f), Vec3(-1.0f), Vec3(1.0f)});
+    CHECK(values.points("box")[1] == Vec3(-1.0f));
+    CHECK_THROWS_WITH_AS(values.set("box", std::array<Vec3, 3>{Vec3(0.0f), Vec3(0.0f, 2.0f, 0.0f), Vec3(0.0f)}),
+                         "box: expected 3 points, each coordinate -1 <= x <= 1, got [0, 2, 0]", SchemaError);
+    CHECK_THROWS_AS(values.set("corners", Vec3(0.0f)), SchemaError);  // 3 points, not one
+    CHECK_THROWS_AS(static_cast<void>(values.vec3("corners")), SchemaError);
+    CHECK(markdownTable(schema) ==
+          "| key | type | unit | default | allowed | meaning |\n"
+          "| --- | --- | --- | --- | --- | --- |\n"
+          "| `corners` | 3 points | m | `[[0, 0, 0], [1, 0, 0], [0, 2, 0]]` | any | a triangle |\n"
+          "| `box` | 3 points | m | none | each coordinate `-1 <= x <= 1` | within the unit box |\n"
+          "| `scale` | number or [x, y, z] | – | `2` | each `> 0` | a factor per axis |\n");
+}
+
 struct TestEntry {
     TypeSchema schema;
     int rank = 0;
@@ -114,7 +144,7 @@ TEST_CASE("a registry lists by rank then name and refuses a duplicate") {
 TEST_CASE("every shipped material, light and shape type is registered in this binary") {
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
-    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk"});
+    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh"});
 }
 
 }  // namespace

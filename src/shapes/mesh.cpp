@@ -1,0 +1,130 @@
+// `[[meshes]]`: a Wavefront OBJ file (scene/obj_loader.h) placed in the scene, read and
+// registered here like every shape kind (docs/extending.md). Its faces become triangles of
+// SceneGeometry's triangle array; each MTL material its faces use becomes a scene material and
+// the faces using it one object.
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/obj_loader.h"
+#include "scene/scene_loader.h"
+#include "scene/shape_type.h"
+
+namespace lightpath {
+namespace {
+
+// scale, then rotate_y, then translate: a mesh is placed as its file describes it, resized about
+// its own origin, turned about the vertical axis and moved.
+struct MeshPlacement {
+    Vec3 scale{1.0f};
+    float rotateY = 0.0f;  // radians
+    Vec3 translate{0.0f};
+
+    Vec3 point(Vec3 p) const {
+        p *= scale;
+        const float c = std::cos(rotateY), s = std::sin(rotateY);
+        return Vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z) + translate;
+    }
+    // Normals take the inverse transpose: divide by the scale, rotate like points.
+    Vec3 normal(Vec3 n) const {
+        if (n == Vec3(0.0f)) return n;
+        n /= scale;
+        const float c = std::cos(rotateY), s = std::sin(rotateY);
+        return glm::normalize(Vec3(c * n.x + s * n.z, n.y, -s * n.x + c * n.z));
+    }
+};
+
+MeshPlacement placementOf(const ParameterValues& values) {
+    return {values.vec3("scale"), glm::radians(values.number("rotate_y")), values.vec3("translate")};
+}
+
+// Every MTL material used becomes one scene object (labelled by the mesh's name, else by the
+// material's MTL name); `material` puts the whole mesh in one scene material. Errors and warnings
+// about the OBJ file are located at `file`.
+void addMesh(const ParameterValues& values, SceneBuilder& scene) {
+    const std::filesystem::path file = scene.folder() / values.text("file");
+    ObjMesh mesh;
+    try {
+        mesh = loadObj(file);
+    } catch (const SceneError& e) {
+        values.fail("file", e.what());
+    }
+    const std::string name = values.has("name") ? values.text("name") : std::string();
+    const bool override = values.has("material");
+    const MeshPlacement placement = placementOf(values);
+    // A missing material library is only a warning (most tools go on); a face whose `usemtl`
+    // names a material no library defines is an error only when the scene gives no `material`.
+    for (const std::string& library : mesh.missingLibraries) {
+        scene.warn(values.located(
+            "file", file.string() + ": cannot open material library \"" + library + "\" named by its mtllib line; " +
+                        (override ? "the mesh's `material` is used" : "faces without a known material are grey")));
+    }
+    if (!override && !mesh.unknownMaterials.empty()) {
+        values.fail("file", file.string() + ": usemtl \"" + mesh.unknownMaterials.front() +
+                                "\" names no material of its material libraries" +
+                                (mesh.missingLibraries.empty() ? "" : " (\"" + mesh.missingLibraries.front() + "\" is missing)") +
+                                "; give the mesh a `material`");
+    }
+
+    // Scene object of each MTL material index, created on first use, in order of first use.
+    std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
+    const auto objectFor = [&](std::uint32_t mtlIndex) {
+        // With `material`, the whole mesh is one object.
+        const std::size_t slot = override || mtlIndex == kNoMeshMaterial ? mesh.materials.size() : mtlIndex;
+        if (objectOf[slot] != kNoMeshMaterial) return objectOf[slot];
+        if (override) {
+            objectOf[slot] = scene.addShapeObject(values);
+        } else if (mtlIndex == kNoMeshMaterial) {
+            objectOf[slot] = scene.addObject(name, scene.sceneMaterial(defaultMeshMaterial()));
+        } else {
+            const PhongMaterial& mtl = mesh.materials[mtlIndex];
+            if (!isValidName(mtl.name))
+                values.fail("file", file.string() + ": material \"" + mtl.name + "\" is not a name of " +
+                                        std::string(kNameCharacters) + "; give the mesh a `material`");
+            objectOf[slot] = scene.addObject(name, scene.sceneMaterial(mtl));
+        }
+        return objectOf[slot];
+    };
+
+    if (mesh.degenerateDropped > 0)
+        scene.warn(values.located("file", std::to_string(mesh.degenerateDropped) + " faces without area were left out"));
+    const bool smooth = !mesh.normals.empty();
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const Triangle& t = mesh.triangles[i];
+        const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)};
+        // The limit of the file's own numbers holds for the mesh's vertices where they end up.
+        for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
+            if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude))))) {
+                values.fail("file", file.string() + ": triangle " + std::to_string(i + 1) + " has a corner at " +
+                                        formatVec3(corner) + " once placed; expected coordinates " +
+                                        std::string(kMagnitudeRange));
+            }
+        }
+        if (smooth) {
+            const TriangleNormals& n = mesh.normals[i];
+            scene.addTriangle(placed, {placement.normal(n.a), placement.normal(n.b), placement.normal(n.c)});
+        } else {
+            scene.addTriangle(placed);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lightpath
+
+// Rank 1001: meshes are numbered last, after the triangles, mesh by mesh.
+LIGHTPATH_REGISTER_SHAPE(lightpath::ShapeType{
+    {"shape", "mesh", "a Wavefront OBJ file and its MTL materials, placed by scale, rotate_y and translate",
+     {{"name", lightpath::ParameterType::Name, "", "", {}, "the label of every part; default: each part's material's name"},
+      {"file", lightpath::ParameterType::Text, "", "", {}, "an OBJ file, relative to the scene file; its `mtllib` relative to the OBJ", true},
+      {"material", lightpath::ParameterType::Name, "", "", {},
+       "a material of `[materials]`: the whole mesh in it, ignoring the MTL"},
+      {"scale", lightpath::ParameterType::PerAxis, "", "1", lightpath::kPositive,
+       "applied first, about the file's origin: one factor for every axis or one per axis"},
+      {"rotate_y", lightpath::ParameterType::Number, "degrees", "0", {}, "then a turn about the y axis (x towards −z)"},
+      {"translate", lightpath::ParameterType::Point, "m", "[0, 0, 0]", {}, "then a move by this vector"}},
+     ""},
+    1001, "meshes", lightpath::addMesh, lightpath::ShapeStorage::triangles})
