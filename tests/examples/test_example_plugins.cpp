@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "accel/scene_geometry.h"
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
+#include "geometry/shape.h"
 #include "../support/film_checks.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -132,6 +134,79 @@ TEST_CASE("a light behind the translucent sheet reaches the camera through <TD> 
             CHECK(through.g == doctest::Approx(0.6 * 2.0 / 1.0).epsilon(1e-4));
         }
     }
+}
+
+// The example shape (examples/plugins/cylinder_shape.cpp) against closed forms. Its record as the
+// renderer holds it, from a scene that declares it alone.
+ShapeRecord cylinderRecord(const std::string& declaration) {
+    const Scene scene = loadSceneFromText("[materials.grey]\nkd = 0.5\n[[cylinders]]\nmaterial = \"grey\"\n" + declaration,
+                                          "cylinder.toml");
+    const SceneGeometry geometry(scene.spheres, scene.planes, {}, {}, Accelerator::BruteForce, {}, 0, scene.shapes);
+    REQUIRE(geometry.shapes().size() == 1);
+    return geometry.shapes().front();
+}
+
+float hitAlong(const ShapeRecord& record, const Vec3& origin, const Vec3& direction, float tMin = 0.0f) {
+    Ray ray;
+    ray.origin = origin;
+    ray.direction = direction;
+    return record.ops->intersect(ray, record, tMin, NumericsOptions{});
+}
+
+TEST_CASE("a ray through the cylinder's axis meets its wall at the distance minus and plus the radius; its area is 2 pi r h") {
+    // Upright: base at the origin, 2 m high, radius 0.5; a ray 3 m from the axis, at mid-height.
+    const ShapeRecord upright = cylinderRecord("base = [0, 0, 0]\ntop = [0, 2, 0]\nradius = 0.5\n");
+    CHECK(hitAlong(upright, {3, 1, 0}, {-1, 0, 0}) == doctest::Approx(2.5));
+    CHECK(hitAlong(upright, {3, 1, 0}, {-1, 0, 0}, 2.6f) == doctest::Approx(3.5));  // the far wall
+    CHECK(hitAlong(upright, {0, 1, 0}, {0, 0, 1}) == doctest::Approx(0.5));          // from inside
+    CHECK(hitAlong(upright, {3, 2.5f, 0}, {-1, 0, 0}) < 0.0f);                         // above the top
+    CHECK(hitAlong(upright, {0, 3, 0}, {0, -1, 0}) < 0.0f);  // along the axis, through both open ends
+    CHECK(upright.ops->area(upright) == doctest::Approx(2.0 * M_PI * 0.5 * 2.0).epsilon(1e-12));
+    // Oblique: the axis (1, 1, 1) / sqrt 3, height sqrt 3; from 3 m off the axis's midpoint across it.
+    const ShapeRecord oblique = cylinderRecord("base = [0, 0, 0]\ntop = [1, 1, 1]\nradius = 0.5\n");
+    const Vec3 across = glm::normalize(Vec3(1, -1, 0));
+    CHECK(hitAlong(oblique, Vec3(0.5f) + 3.0f * across, -across) == doctest::Approx(2.5).epsilon(1e-6));
+    CHECK(oblique.ops->area(oblique) == doctest::Approx(2.0 * M_PI * 0.5 * std::sqrt(3.0)).epsilon(1e-6));
+}
+
+// A point light on the axis of a Lambertian cylinder (radius 1, from y = -2 to 2), 0.5 m above the
+// camera's height, both inside it; the centre pixel sees the wall at (0, 0, -1), from the inside,
+// where the light is d^2 = 1.25 away at cos theta = 1 / sqrt 1.25. Its radiance in E<RD>L under
+// raycast by hand: kd/pi times the irradiance pi I cos theta / d^2 (the point light's radiant
+// intensity is pi I, as above, and its attenuation 1/d^2 as declared): kd I cos theta / d^2
+// = 0.5 * 2 / 1.25^1.5.
+constexpr const char* kCylinderScene = R"(
+[camera]
+eye = [0, 0, 0.5]
+look_at = [0, 0, -1]
+fov = 40
+resolution = [33, 33]
+
+[materials.grey]
+kd = 0.5
+
+[[cylinders]]
+base = [0, -2, 0]
+top = [0, 2, 0]
+radius = 1
+material = "grey"
+
+[[lights]]
+name = "axis"
+position = [0, 0.5, 0]
+intensity = 2
+attenuation = [0, 0, 1]
+)";
+
+TEST_CASE("a point light on the cylinder's axis: the wall's radiance is kd I cos theta / d^2") {
+    const Scene scene = loadSceneFromText(kCylinderScene, "cylinder-light.toml");
+    const AovSet aovs(std::vector<lpe::NamedExpression>{parseNamedExpression("direct=E<RD>L", 0)});
+    RenderOptions options;
+    options.integrator = "raycast";
+    options.samplesPerPixel = 1;
+    const Film film = Renderer(scene, aovs, options).render().film;
+    CHECK(test::finiteNonNegative(film));
+    CHECK(film.at(layerNamed(film, "direct"), 16, 16).g == doctest::Approx(0.5 * 2.0 / std::pow(1.25, 1.5)).epsilon(1e-4));
 }
 
 }  // namespace
