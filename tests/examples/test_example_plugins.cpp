@@ -169,6 +169,24 @@ TEST_CASE("a ray through the cylinder's axis meets its wall at the distance minu
     CHECK(oblique.ops->area(oblique) == doctest::Approx(2.0 * M_PI * 0.5 * std::sqrt(3.0)).epsilon(1e-6));
 }
 
+TEST_CASE("the cylinder's tessellation: triangles wound with the outward normal, edges at most edgeLength") {
+    const ShapeRecord upright = cylinderRecord("base = [0, 0, 0]\ntop = [0, 2, 0]\nradius = 0.5\n");
+    constexpr float kEdge = 0.3f;
+    std::vector<Triangle> triangles;
+    upright.ops->tessellate(upright, kEdge, triangles);
+    REQUIRE(!triangles.empty());
+    int inward = 0, long_ = 0;
+    for (const Triangle& t : triangles) {
+        const Vec3 centroid = (t.a + t.b + t.c) / 3.0f;
+        const Vec3 outward(centroid.x, 0.0f, centroid.z);  // from the axis, the y axis
+        if (!(glm::dot(glm::cross(t.b - t.a, t.c - t.a), outward) > 0.0f)) ++inward;
+        for (const float edge : {glm::distance(t.a, t.b), glm::distance(t.b, t.c), glm::distance(t.c, t.a)})
+            if (edge > kEdge * (1.0f + 1e-6f)) ++long_;
+    }
+    CHECK(inward == 0);
+    CHECK(long_ == 0);
+}
+
 // A point light on the axis of a Lambertian cylinder (radius 1, from y = -2 to 2), 0.5 m above the
 // camera's height, both inside it; the centre pixel sees the wall at (0, 0, -1), from the inside,
 // where the light is d^2 = 1.25 away at cos theta = 1 / sqrt 1.25. Its radiance in E<RD>L under
