@@ -169,6 +169,16 @@ TEST_CASE("a ray through the cylinder's axis meets its wall at the distance minu
     CHECK(oblique.ops->area(oblique) == doctest::Approx(2.0 * M_PI * 0.5 * std::sqrt(3.0)).epsilon(1e-6));
 }
 
+TEST_CASE("a cylinder whose top is its base is refused where the scene file says so") {
+    std::string message;
+    try {
+        cylinderRecord("base = [0, 1, 0]\ntop = [0, 1, 0]\nradius = 1\n");
+    } catch (const SceneError& e) {
+        message = e.what();
+    }
+    CHECK(message.find("cylinders[0].top: expected a point other than base") != std::string::npos);
+}
+
 TEST_CASE("the cylinder's tessellation: triangles wound with the outward normal, edges at most edgeLength") {
     const ShapeRecord upright = cylinderRecord("base = [0, 0, 0]\ntop = [0, 2, 0]\nradius = 0.5\n");
     constexpr float kEdge = 0.3f;
