@@ -24,15 +24,8 @@ namespace lpe {
 namespace {
 
 using detail::kNone;
-using StateSet = std::vector<std::uint32_t>;  // sorted NFA states
-
-struct StateSetHash {
-    std::size_t operator()(const StateSet& set) const {
-        std::size_t hash = 1469598103934665603ull;  // FNV-1a over the state numbers
-        for (const std::uint32_t s : set) hash = (hash ^ s) * 1099511628211ull;
-        return hash;
-    }
-};
+using detail::StateSet;
+using detail::StateSetHash;
 
 // Per NFA state, the outputs whose accepting state can still be reached from it: a backward
 // search over epsilon and symbol moves from each accepting state.
@@ -78,12 +71,9 @@ public:
 
     LazySubsets(const detail::Nfa& nfa, const detail::Letters& letters, OutputMask all, std::size_t maxStates)
         : nfa_(nfa), letters_(letters), all_(all), maxStates_(maxStates), reachable_(outputsReachable(nfa)),
-          seen_(nfa.states.size(), 0) {}
+          closure_(nfa) {}
 
-    std::uint32_t start() {
-        closure(nfa_.starts);
-        return intern();
-    }
+    std::uint32_t start() { return intern(closure_(nfa_.starts)); }
     bool acceptsAll(std::uint32_t id) const { return accepts_[id] == all_; }
 
     // The subset reached from `id` by `letter`; kDropped when some output can no longer accept.
@@ -94,45 +84,27 @@ public:
             if (state.predicate != kNone && letters_.inPredicate[state.predicate * letters_.count + letter])
                 moved_.push_back(state.target);
         }
-        closure(moved_);
-        return intern();
+        return intern(closure_(moved_));
     }
 
 private:
-    // closure_ = the epsilon closure of `seeds`, sorted so that equal sets compare equal. The
-    // buffers are reused: this runs once per step, and allocation dominates it otherwise.
-    void closure(const StateSet& seeds) {
-        ++generation_;
-        closure_.clear();
-        stack_.assign(seeds.begin(), seeds.end());
-        while (!stack_.empty()) {
-            const std::uint32_t s = stack_.back();
-            stack_.pop_back();
-            if (seen_[s] == generation_) continue;
-            seen_[s] = generation_;
-            closure_.push_back(s);
-            for (const std::uint32_t t : nfa_.states[s].epsilon) stack_.push_back(t);
-        }
-        std::sort(closure_.begin(), closure_.end());
-    }
-
-    // The id of closure_, numbered on first sight.
-    std::uint32_t intern() {
+    // The id of `set`, numbered on first sight.
+    std::uint32_t intern(const StateSet& set) {
         OutputMask reachable = 0, accepts = 0;
-        for (const std::uint32_t s : closure_) {
+        for (const std::uint32_t s : set) {
             reachable |= reachable_[s];
             if (nfa_.states[s].output != kNone) accepts |= OutputMask{1} << nfa_.states[s].output;
         }
         if (reachable != all_) return kDropped;
-        const auto found = ids_.find(closure_);
+        const auto found = ids_.find(set);
         if (found != ids_.end()) return found->second;
         if (sets_.size() >= maxStates_) {
             throw LimitError("LPE limit: the search for a common path needs more than " + std::to_string(maxStates_) +
                              " states (CompileOptions::maxStates); simplify the expressions");
         }
         const auto id = static_cast<std::uint32_t>(sets_.size());
-        ids_.emplace(closure_, id);
-        sets_.push_back(closure_);
+        ids_.emplace(set, id);
+        sets_.push_back(set);
         accepts_.push_back(accepts);
         return id;
     }
@@ -142,9 +114,8 @@ private:
     OutputMask all_;
     std::size_t maxStates_;
     std::vector<OutputMask> reachable_;
-    std::vector<std::uint32_t> seen_;
-    std::uint32_t generation_ = 0;
-    StateSet moved_, stack_, closure_;
+    detail::EpsilonClosure closure_;
+    StateSet moved_;  // kept between steps: allocation would dominate them
     std::vector<StateSet> sets_;
     std::vector<OutputMask> accepts_;
     std::unordered_map<StateSet, std::uint32_t, StateSetHash> ids_;

@@ -1,5 +1,6 @@
 #include "lpe/nfa.h"
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -139,6 +140,22 @@ std::size_t expandedSize(const Node& node, std::size_t cap) {
         }
     }
     return 1;
+}
+
+const StateSet& EpsilonClosure::operator()(const StateSet& seeds) {
+    ++generation_;
+    closure_.clear();
+    stack_.assign(seeds.begin(), seeds.end());
+    while (!stack_.empty()) {
+        const std::uint32_t s = stack_.back();
+        stack_.pop_back();
+        if (seen_[s] == generation_) continue;
+        seen_[s] = generation_;
+        closure_.push_back(s);
+        for (const std::uint32_t t : nfa_.states[s].epsilon) stack_.push_back(t);
+    }
+    std::sort(closure_.begin(), closure_.end());
+    return closure_;
 }
 
 Nfa buildNfa(const std::vector<const Node*>& roots, const Alphabet& alphabet) {

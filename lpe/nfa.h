@@ -29,6 +29,32 @@ struct Nfa {
     std::vector<SymbolSet> predicates;   // the distinct symbol sets found on edges
 };
 
+// A set of NFA states, sorted so that equal sets compare equal: a state of subset construction.
+using StateSet = std::vector<std::uint32_t>;
+
+struct StateSetHash {
+    std::size_t operator()(const StateSet& set) const {
+        std::size_t hash = 1469598103934665603ull;  // FNV-1a over the state numbers
+        for (const std::uint32_t s : set) hash = (hash ^ s) * 1099511628211ull;
+        return hash;
+    }
+};
+
+// Epsilon closures in one NFA, for subset construction (Rabin and Scott 1959), which takes one per
+// step: the marks and buffers are kept from call to call.
+class EpsilonClosure {
+public:
+    explicit EpsilonClosure(const Nfa& nfa) : nfa_(nfa), seen_(nfa.states.size(), 0) {}
+    // The states `seeds` reach by epsilon moves, themselves included; valid until the next call.
+    const StateSet& operator()(const StateSet& seeds);
+
+private:
+    const Nfa& nfa_;
+    std::vector<std::uint32_t> seen_;  // == generation_: already in this closure
+    std::uint32_t generation_ = 0;
+    StateSet stack_, closure_;
+};
+
 // The size of a tree once every {n,m} is written out, saturating just above `cap`.
 std::size_t expandedSize(const syntax::Node& node, std::size_t cap);
 

@@ -8,24 +8,14 @@
 namespace lpe::detail {
 namespace {
 
-using StateSet = std::vector<std::uint32_t>;  // sorted NFA states
-
-struct StateSetHash {
-    std::size_t operator()(const StateSet& set) const {
-        std::size_t hash = 1469598103934665603ull;  // FNV-1a over the state numbers
-        for (const std::uint32_t s : set) hash = (hash ^ s) * 1099511628211ull;
-        return hash;
-    }
-};
-
 class SubsetBuilder {
 public:
     SubsetBuilder(const Nfa& nfa, const Letters& letters, std::size_t maxStates)
-        : nfa_(nfa), letters_(letters), maxStates_(maxStates), seen_(nfa.states.size(), 0) {}
+        : nfa_(nfa), letters_(letters), maxStates_(maxStates), closure_(nfa) {}
 
     Dfa build() {
         dfa_.letterCount = letters_.count;
-        dfa_.start = intern(closure(nfa_.starts));
+        dfa_.start = intern(closure_(nfa_.starts));
         // sets_ grows while we walk it: every new subset is explored once, in discovery order.
         for (std::size_t state = 0; state < sets_.size(); ++state) {
             for (std::uint32_t letter = 0; letter < letters_.count; ++letter) {
@@ -37,7 +27,7 @@ public:
                         moved.push_back(nfaState.target);
                     }
                 }
-                const std::uint32_t target = intern(closure(moved));
+                const std::uint32_t target = intern(closure_(moved));
                 dfa_.next[state * letters_.count + letter] = target;
             }
         }
@@ -45,23 +35,6 @@ public:
     }
 
 private:
-    // The epsilon closure of `seeds`, sorted so that equal sets compare equal.
-    StateSet closure(const StateSet& seeds) {
-        ++generation_;
-        StateSet result;
-        StateSet stack(seeds.begin(), seeds.end());
-        while (!stack.empty()) {
-            const std::uint32_t s = stack.back();
-            stack.pop_back();
-            if (seen_[s] == generation_) continue;
-            seen_[s] = generation_;
-            result.push_back(s);
-            for (const std::uint32_t t : nfa_.states[s].epsilon) stack.push_back(t);
-        }
-        std::sort(result.begin(), result.end());
-        return result;
-    }
-
     std::uint32_t intern(StateSet set) {
         const auto found = ids_.find(set);
         if (found != ids_.end()) return found->second;
@@ -85,8 +58,7 @@ private:
     const Nfa& nfa_;
     const Letters& letters_;
     std::size_t maxStates_;
-    std::vector<std::uint32_t> seen_;
-    std::uint32_t generation_ = 0;
+    EpsilonClosure closure_;
     std::vector<StateSet> sets_;
     std::unordered_map<StateSet, std::uint32_t, StateSetHash> ids_;
     Dfa dfa_;
