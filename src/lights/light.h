@@ -2,8 +2,8 @@
 // The one light interface every integrator reads (docs/design.md): sample a point towards a
 // receiver (next-event estimation, ray casting's shadow rays), the density of that sampling (MIS),
 // sample a ray leaving the light (light tracing), and its power (choosing lights). A new kind of
-// shapeless light is one file implementing this and scene/light.h's SceneLight, which registers
-// its LightType (scene/light_type.h; examples/plugins/spot_light.cpp is one).
+// shapeless light is one file implementing this and scene/scene_light.h's SceneLight, which
+// registers its LightType (scene/light_type.h; examples/plugins/spot_light.cpp is one).
 #include "geometry/surface_hit.h"
 #include "transport/path_event.h"
 #include "math/ray.h"

@@ -4,7 +4,7 @@
 // formula is exactly Lambert's (kd / pi) (N.L) (pi I) under it. With attenuation [0, 0, 1] it is
 // a physical light; any other attenuation is the lecture's convenience, not physics.
 #include "lights/light.h"
-#include "scene/light.h"
+#include "scene/scene_light.h"
 
 namespace lightpath {
 

@@ -8,7 +8,7 @@
 #include "geometry/shapes.h"
 #include "math/types.h"
 #include "scene/camera.h"
-#include "scene/light.h"
+#include "scene/scene_light.h"
 #include "materials/material.h"
 
 namespace lightpath {

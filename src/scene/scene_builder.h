@@ -13,7 +13,7 @@
 #include "geometry/shapes.h"
 #include "materials/material.h"
 #include "math/types.h"
-#include "scene/light.h"
+#include "scene/scene_light.h"
 #include "schema/format.h"
 #include "schema/parameter_values.h"
 
