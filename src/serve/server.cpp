@@ -1,5 +1,7 @@
 #include "serve/server.h"
 
+#include <thread>
+
 #include <httplib.h>
 
 #include <csignal>
@@ -59,8 +61,27 @@ int Server::bind(const std::string& host, int port) {
     return bound;
 }
 
-void Server::run() { http_->listen_after_bind(); }
+void Server::run() {
+    {
+        const std::lock_guard lock(lifecycle_);
+        if (stopRequested_) return;
+        entered_ = true;
+    }
+    http_->listen_after_bind();
+    returned_ = true;
+}
 
-void Server::stop() { http_->stop(); }
+void Server::stop() {
+    bool listening = false;
+    {
+        const std::lock_guard lock(lifecycle_);
+        stopRequested_ = true;
+        listening = entered_;
+    }
+    if (!listening) return;  // run() has not begun and now never listens
+    // Waits for the event (the loop running, or run() over), microseconds after run() began.
+    while (!http_->is_running() && !returned_) std::this_thread::yield();
+    http_->stop();
+}
 
 }  // namespace lightpath::serve

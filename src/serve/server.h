@@ -1,7 +1,9 @@
 #pragma once
 // The HTTP face of a Session: the API (serve/api.h) on a socket, with cpp-httplib. Only moving
 // requests and answers on and off the socket happens here; what they mean is the API's.
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "serve/api.h"
@@ -31,6 +33,12 @@ public:
 private:
     Api api_;
     std::unique_ptr<httplib::Server> http_;
+    // httplib's stop() does nothing until its listening loop has begun, so a stop() that came
+    // first would leave run() in accept() for good: run() and stop() meet here instead.
+    std::mutex lifecycle_;
+    bool stopRequested_ = false;  // under lifecycle_
+    bool entered_ = false;        // run() is past its check, under lifecycle_
+    std::atomic<bool> returned_{false};
 };
 
 }  // namespace lightpath::serve

@@ -541,3 +541,18 @@ TEST_CASE("serve: only the newest explanation runs: a newer one, a change of set
     CHECK(fixture.session.startExplaining()->load());  // after shutdown none starts
     CHECK(fixture.session.stopping());
 }
+
+TEST_CASE("serve: a server stopped before its listening loop begins still stops") {
+    // httplib's stop() is a no-op until the loop runs: the thread below may not have started when
+    // stop() comes, and run() must then return rather than wait in accept() for good.
+    Session session(loadScene(scenePath("mirror-sphere.toml")), scenePath("mirror-sphere.toml"));
+    for (int i = 0; i < 100; ++i) {
+        Server server(session);
+        server.bind("127.0.0.1", 0);
+        std::thread thread([&server] { server.run(); });
+        server.stop();
+        thread.join();
+    }
+    session.stop();
+    CHECK(session.stopping());
+}
