@@ -153,24 +153,14 @@ std::optional<Path> commonPath(const std::vector<std::string>& expressions, cons
     if (expressions.empty() || expressions.size() > kMaxOutputs) {
         throw LimitError("LPE limit: commonPath takes 1 to " + std::to_string(kMaxOutputs) + " expressions");
     }
-    // Parsed and built as Automaton::compile does: labels numbered by first appearance, one NFA
-    // output per expression.
-    std::vector<syntax::Expression> parsed;
-    std::vector<std::string> labels;
-    for (const std::string& text : expressions) {
-        parsed.push_back(syntax::parseExpression(text));
-        labels.insert(labels.end(), parsed.back().labels.begin(), parsed.back().labels.end());
-    }
-    const detail::Alphabet alphabet(labels);
-    std::vector<const syntax::Node*> roots;
-    for (const auto& expression : parsed) roots.push_back(expression.root.get());
-    const detail::Nfa nfa = detail::buildNfa(roots, alphabet);
-    const detail::Letters letters = detail::compressAlphabet(nfa.predicates, alphabet.symbolCount());
+    const detail::TextsAsNfa front = detail::buildNfaOfTexts(expressions);
+    const detail::Alphabet& alphabet = front.alphabet;
+    const detail::Letters& letters = front.letters;
     const auto order = lettersToTry(alphabet, letters, placement);
 
     const OutputMask all = expressions.size() >= kMaxOutputs ? ~OutputMask{0}
                                                              : (OutputMask{1} << expressions.size()) - 1;
-    LazySubsets subsets(nfa, letters, all, CompileOptions{}.maxStates);
+    LazySubsets subsets(front.nfa, letters, all, CompileOptions{}.maxStates);
     const std::uint32_t start = subsets.start();
     if (start == LazySubsets::kDropped) return std::nullopt;
 

@@ -100,23 +100,15 @@ Automaton Automaton::compile(const std::vector<NamedExpression>& expressions,
                          (complement ? " (including the complement output)" : ""));
     }
 
-    // 1. Parse. Labels get their classes in order of first appearance, the universe's last.
-    std::vector<syntax::Expression> parsed;
-    std::vector<std::string> labels;
-    const auto parse = [&](const std::string& text) {
-        parsed.push_back(syntax::parseExpression(text));
-        const auto& named = parsed.back().labels;
-        labels.insert(labels.end(), named.begin(), named.end());
-    };
-    for (const NamedExpression& e : expressions) parse(e.expression);
-    if (complement) parse(options.universe);
-    const detail::Alphabet alphabet(labels);
-
-    // 2. Thompson NFA, one output per tree (the universe last), and its compressed alphabet.
-    std::vector<const syntax::Node*> roots;
-    for (const auto& expression : parsed) roots.push_back(expression.root.get());
-    const detail::Nfa nfa = detail::buildNfa(roots, alphabet);
-    const detail::Letters letters = detail::compressAlphabet(nfa.predicates, alphabet.symbolCount());
+    // 1, 2. Parse (labels numbered by first appearance, the universe's last); Thompson NFA, one
+    // output per tree (the universe last), and its compressed alphabet.
+    std::vector<std::string> texts;
+    for (const NamedExpression& e : expressions) texts.push_back(e.expression);
+    if (complement) texts.push_back(options.universe);
+    const detail::TextsAsNfa front = detail::buildNfaOfTexts(texts);
+    const detail::Alphabet& alphabet = front.alphabet;
+    const detail::Nfa& nfa = front.nfa;
+    const detail::Letters& letters = front.letters;
 
     // 3. Subset construction, complement, minimisation.
     Dfa dfa = detail::determinise(nfa, letters, options.maxStates);

@@ -142,6 +142,21 @@ std::size_t expandedSize(const Node& node, std::size_t cap) {
     return 1;
 }
 
+TextsAsNfa buildNfaOfTexts(const std::vector<std::string>& texts) {
+    std::vector<syntax::Expression> parsed;
+    std::vector<std::string> labels;
+    for (const std::string& text : texts) {
+        parsed.push_back(syntax::parseExpression(text));
+        labels.insert(labels.end(), parsed.back().labels.begin(), parsed.back().labels.end());
+    }
+    Alphabet alphabet(labels);
+    std::vector<const Node*> roots;
+    for (const auto& expression : parsed) roots.push_back(expression.root.get());
+    Nfa nfa = buildNfa(roots, alphabet);
+    Letters letters = compressAlphabet(nfa.predicates, alphabet.symbolCount());
+    return {std::move(alphabet), std::move(nfa), std::move(letters)};
+}
+
 const StateSet& EpsilonClosure::operator()(const StateSet& seeds) {
     ++generation_;
     closure_.clear();

@@ -4,6 +4,7 @@
 // own start and accepting state, so that one subset construction serves every output.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "lpe/alphabet.h"
@@ -39,6 +40,16 @@ struct StateSetHash {
         return hash;
     }
 };
+
+// The front of the compiler, shared by Automaton::compile and commonPath: each text parsed (labels
+// get their classes in order of first appearance), one Thompson NFA with an output per text in
+// order, and its compressed alphabet. Throws SyntaxError or LimitError.
+struct TextsAsNfa {
+    Alphabet alphabet;
+    Nfa nfa;
+    Letters letters;
+};
+TextsAsNfa buildNfaOfTexts(const std::vector<std::string>& texts);
 
 // Epsilon closures in one NFA, for subset construction (Rabin and Scott 1959), which takes one per
 // step: the marks and buffers are kept from call to call.
