@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <utility>
 
 #include "geometry/intersect.h"
@@ -14,7 +15,7 @@
 namespace lightpath::examples {
 namespace {
 
-constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // The record's floats: the base's centre, the unit axis from base to top, the height, the radius.
 struct Cylinder {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "util/timing.h"
 #include "film/aov_set.h"
@@ -83,7 +84,7 @@ Reference areaLightPlaneReference(const Scene& scene, const std::vector<glm::dve
                     const double u = (2.0 * (i + (a + 0.5) / kSub) / c.width - 1.0) * halfHeight;
                     const double v = (1.0 - 2.0 * (j + (b + 0.5) / kSub) / c.height) * halfHeight;
                     const glm::dvec3 p{u * c.eye.y, 0.0, -v * c.eye.y};
-                    sum += albedo / M_PI * polygonIrradiance(p, {0, 1, 0}, quad, radiance);
+                    sum += albedo / std::numbers::pi * polygonIrradiance(p, {0, 1, 0}, quad, radiance);
                 }
             }
             reference.push_back(Rgb{static_cast<float>(sum / (kSub * kSub))});

@@ -3,6 +3,7 @@
 // geometry knows nothing of materials or light paths.
 #include <cstdint>
 #include <limits>
+#include <numbers>
 
 #include "math/types.h"
 
@@ -41,7 +42,7 @@ inline constexpr double kMinSampledEmitterArea = std::numeric_limits<float>::min
 // triangle's cross product squared below edges of 1e-19 (its area would be lost, not small).
 inline double surfaceArea(const Sphere& s) {
     const double r = s.radius;
-    return 4.0 * 3.14159265358979323846 * r * r;
+    return 4.0 * std::numbers::pi * r * r;
 }
 inline double surfaceArea(const Triangle& t) {
     const glm::dvec3 e1 = glm::dvec3(t.b) - glm::dvec3(t.a), e2 = glm::dvec3(t.c) - glm::dvec3(t.a);

@@ -3,6 +3,7 @@
 // scene-file type, registered with LIGHTPATH_REGISTER_SHAPE.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "geometry/intersect.h"
 #include "sampling/warp.h"
@@ -55,7 +56,7 @@ void describeDisk(const ShapeRecord& record, SurfaceHit& hit) {
 
 double diskArea(const ShapeRecord& record) {
     const double r = unpack(record).radius;
-    return 3.14159265358979323846 * r * r;
+    return std::numbers::pi * r * r;
 }
 
 AreaSample sampleDisk(const ShapeRecord& record, Vec2 u) {
@@ -76,7 +77,7 @@ void tessellateDisk(const ShapeRecord& record, float edgeLength, std::vector<Tri
                                                                kMinSectors, kMaxSectors));
     const Frame frame(d.normal);
     const auto rim = [&](std::uint32_t i) {
-        const double phi = 2.0 * 3.14159265358979323846 * double(i % sectors) / double(sectors);
+        const double phi = 2.0 * std::numbers::pi * double(i % sectors) / double(sectors);
         return d.center + d.radius * (float(std::cos(phi)) * frame.s + float(std::sin(phi)) * frame.t);
     };
     for (std::uint32_t i = 0; i < sectors; ++i) out.push_back({d.center, rim(i), rim(i + 1), record.object});

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "geometry/intersect.h"
 #include "sampling/warp.h"
@@ -13,7 +14,7 @@
 
 namespace lightpath {
 
-constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // How many float spacings (of the centre's largest coordinate plus the radius) from a sphere's
 // surface a receiver still counts as on it: hit points land within a few of the true surface.
 constexpr double kOnSphereUlps = 8.0;
@@ -84,7 +85,7 @@ void tessellateSphere(const ShapeRecord& record, float edgeLength, std::vector<T
         std::clamp(std::isfinite(wanted) ? wanted : kMaxSectors, kMinSectors, kMaxSectors));
     const std::uint32_t bands = std::max<std::uint32_t>(2, sectors / 2);
     const auto at = [&](std::uint32_t band, std::uint32_t sector) {
-        const double theta = 3.14159265358979323846 * double(band) / double(bands);
+        const double theta = std::numbers::pi * double(band) / double(bands);
         const double phi = kTwoPi * double(sector % sectors) / double(sectors);
         const Vec3 n(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
                      float(std::cos(theta)));

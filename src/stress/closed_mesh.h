@@ -4,6 +4,7 @@
 // has no holes and a ray from outside towards an interior point must cross it.
 #include <array>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 #include "geometry/shapes.h"
@@ -36,11 +37,10 @@ inline ClosedMesh perturbedUvSphere(int rings, int segments, double perturbation
                         static_cast<float>(r * std::sin(theta) * std::sin(phi)), static_cast<float>(r * std::cos(theta))};
         mesh.vertices.push_back(centre + scale * unit);
     };
-    const double pi = 3.14159265358979323846;
     place(0.0, 0.0);  // north pole: vertex 0
     for (int i = 1; i < rings; ++i)
-        for (int j = 0; j < segments; ++j) place(pi * i / rings, 2.0 * pi * j / segments);
-    place(pi, 0.0);  // south pole: the last vertex
+        for (int j = 0; j < segments; ++j) place(std::numbers::pi * i / rings, 2.0 * std::numbers::pi * j / segments);
+    place(std::numbers::pi, 0.0);  // south pole: the last vertex
     const auto ringVertex = [&](int i, int j) {
         return static_cast<std::uint32_t>(1 + (i - 1) * segments + (j % segments));
     };

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "lights/area_light.h"
@@ -14,7 +15,6 @@
 namespace lightpath {
 namespace {
 
-constexpr double kPiDouble = 3.14159265358979323846;
 constexpr float kRadiance = 1.0f;
 constexpr double kTargetPercent = 0.1;
 
@@ -91,7 +91,7 @@ double sphereIrradiance(const Sphere& s, const Receiver& r) {
     const long double dx = (long double)r.point.x - s.center.x, dy = (long double)r.point.y - s.center.y,
                       dz = (long double)r.point.z - s.center.z;
     const long double d2 = dx * dx + dy * dy + dz * dz;
-    return static_cast<double>(kPiDouble * kRadiance * (long double)s.radius * s.radius / d2);
+    return static_cast<double>(std::numbers::pi * kRadiance * (long double)s.radius * s.radius / d2);
 }
 
 struct Tally {

@@ -1,6 +1,7 @@
 #include "stress/mesh_rows.h"
 
 #include <algorithm>
+#include <numbers>
 
 #include "accel/scene_geometry.h"
 #include "stress/closed_mesh.h"
@@ -21,7 +22,7 @@ enum class Aim { Random, Vertex, Edge };
 // Without a hit by then, the ray has slipped into the mesh between its triangles.
 Ray rayThrough(const Vec3& surfacePoint, const stress::ClosedMesh& mesh, Rng& rng) {
     const Vec3 outward = glm::normalize(surfacePoint - mesh.centre);
-    const Vec3 w = stress::randomInCone(rng, outward, std::cos(20.0 * 3.14159265358979323846 / 180.0), 1.0);
+    const Vec3 w = stress::randomInCone(rng, outward, std::cos(20.0 * std::numbers::pi / 180.0), 1.0);
     Ray ray;
     ray.origin = surfacePoint + static_cast<float>(mesh.radius * (0.5 + 2.5 * stress::uniform(rng))) * w;
     ray.direction = glm::normalize(surfacePoint - ray.origin);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <numbers>
 
 #include "math/types.h"
 
@@ -17,7 +18,7 @@ inline double uniform(Rng& rng) { return std::uniform_real_distribution<double>(
 
 inline Vec3 randomUnitVector(Rng& rng) {
     const double z = 2.0 * uniform(rng) - 1.0;
-    const double phi = 2.0 * 3.14159265358979323846 * uniform(rng);
+    const double phi = 2.0 * std::numbers::pi * uniform(rng);
     const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
     return {static_cast<float>(s * std::cos(phi)), static_cast<float>(s * std::sin(phi)), static_cast<float>(z)};
 }
@@ -35,7 +36,7 @@ inline void orthonormalBasis(const Vec3& n, Vec3& b1, Vec3& b2) {
 inline Vec3 randomInCone(Rng& rng, const Vec3& axis, double cosMin, double cosMax) {
     const double c = cosMin + (cosMax - cosMin) * uniform(rng);
     const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
-    const double phi = 2.0 * 3.14159265358979323846 * uniform(rng);
+    const double phi = 2.0 * std::numbers::pi * uniform(rng);
     Vec3 b1, b2;
     orthonormalBasis(axis, b1, b2);
     const Vec3 v = static_cast<float>(c) * axis + static_cast<float>(s * std::cos(phi)) * b1 +

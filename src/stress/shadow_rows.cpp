@@ -3,13 +3,13 @@
 #include "accel/scene_geometry.h"
 #include "geometry/spawn_ray.h"
 #include "stress/sampling.h"
+#include <numbers>
 
 namespace lightpath {
 namespace {
 
 using stress::Rng;
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A square floor of half-size `scale`, tilted 10 to 60 degrees from horizontal, centred up to
 // 0.3 scale from the origin: two triangles sharing a diagonal.
@@ -29,7 +29,7 @@ struct Floor {
 
 Floor tiltedFloor(float scale, Rng& rng) {
     Floor floor;
-    floor.normal = stress::randomInCone(rng, {0.0f, 1.0f, 0.0f}, std::cos(60.0 * kPi / 180.0), std::cos(10.0 * kPi / 180.0));
+    floor.normal = stress::randomInCone(rng, {0.0f, 1.0f, 0.0f}, std::cos(60.0 * std::numbers::pi / 180.0), std::cos(10.0 * std::numbers::pi / 180.0));
     stress::orthonormalBasis(floor.normal, floor.u, floor.v);
     floor.centre = static_cast<float>(0.3 * scale * stress::uniform(rng)) * stress::randomUnitVector(rng);
     floor.halfSize = scale;
@@ -38,7 +38,7 @@ Floor tiltedFloor(float scale, Rng& rng) {
 
 // A unit direction at `elevation` above the floor, in a random azimuth.
 Vec3 aboveFloor(const Floor& floor, double elevation, Rng& rng, Vec3* azimuthOut = nullptr) {
-    const double phi = 2.0 * kPi * stress::uniform(rng);
+    const double phi = 2.0 * std::numbers::pi * stress::uniform(rng);
     const Vec3 azimuth = static_cast<float>(std::cos(phi)) * floor.u + static_cast<float>(std::sin(phi)) * floor.v;
     if (azimuthOut != nullptr) *azimuthOut = azimuth;
     return glm::normalize(static_cast<float>(std::cos(elevation)) * azimuth +
@@ -87,7 +87,7 @@ void acneRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
                 // but the floor is in the scene, and both lights are on its lit side.
                 for (const bool grazingLight : {false, true}) {
                     const double elevation = (grazingLight ? 0.5 + 4.5 * stress::uniform(rng)
-                                                           : 30.0 + 60.0 * stress::uniform(rng)) * kPi / 180.0;
+                                                           : 30.0 + 60.0 * stress::uniform(rng)) * std::numbers::pi / 180.0;
                     const Vec3 light = hit->point + static_cast<float>(scale * (0.5 + 1.5 * stress::uniform(rng))) *
                                                         aboveFloor(floor, elevation, rng);
                     const bool shadowed = geometry.occluded(spawnShadowRay(*hit, light, geometry.numerics()));
@@ -129,7 +129,7 @@ void contactRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
                 // A light at 30-90 degrees and a floor point whose segment to it crosses the
                 // occluder at most 0.03 scale from its centre: 0.02 scale inside its edges.
                 Vec3 azimuth;
-                const double elevation = (30.0 + 60.0 * stress::uniform(rng)) * kPi / 180.0;
+                const double elevation = (30.0 + 60.0 * stress::uniform(rng)) * std::numbers::pi / 180.0;
                 const Vec3 toLight = aboveFloor(floor, elevation, rng, &azimuth);
                 const Vec3 below = occluder.centre - height * floor.normal -
                                    static_cast<float>(height / std::tan(elevation)) * azimuth;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "geometry/intersect.h"
 #include "accel/scene_geometry.h"
@@ -39,7 +40,7 @@ void silhouetteAndT(const StressConfig& config, std::vector<ScoreRow>& rows) {
             Vec3 e1, e2;
             stress::orthonormalBasis(axis, e1, e2);
             const double rho = 1.1 * std::sqrt(stress::uniform(rng));
-            const double phi = 2.0 * 3.14159265358979323846 * stress::uniform(rng);
+            const double phi = 2.0 * std::numbers::pi * stress::uniform(rng);
             const Vec3 target = static_cast<float>(rho * std::cos(phi)) * e1 + static_cast<float>(rho * std::sin(phi)) * e2;
             Ray ray;
             ray.origin = static_cast<float>(distance) * axis;
