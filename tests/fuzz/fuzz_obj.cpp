@@ -10,7 +10,7 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "scene/obj_loader.h"
+#include "shapes/obj_loader.h"
 #include "scene/scene_loader.h"
 
 namespace {
