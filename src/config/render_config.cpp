@@ -14,6 +14,7 @@
 #include "config/messages.h"
 #include "config/render_options.h"
 #include "film/aov_presets.h"
+#include "lights/point_light.h"
 #include "lpe/analysis.h"
 #include "lpe/error.h"
 #include "lpe/path_string.h"
@@ -21,6 +22,7 @@
 #include "render/memory_limit.h"
 #include "schema/format.h"
 #include "schema/schema_error.h"
+#include "scene/framing.h"
 #include "scene/scene_loader.h"
 
 namespace lightpath {
@@ -73,6 +75,7 @@ const Binding kBindings[] = {
     {"epsilon", &RenderConfig::epsilon},
     {"shadows", &RenderConfig::shadows},
     {"no-skip", &RenderConfig::noSkip},
+    {"fit", &RenderConfig::fit},
 };
 
 const Member& memberOf(const Parameter& option) {
@@ -251,6 +254,44 @@ ParameterValues RenderConfig::integratorValues() const {
     return values;
 }
 
+namespace {
+
+// Whether anything in `scene` gives light: a light of [[lights]] or a surface whose material emits.
+bool hasLight(const Scene& scene) {
+    if (!scene.lights.empty()) return true;
+    return std::any_of(scene.objects.begin(), scene.objects.end(),
+                       [&](const SceneObject& o) { return !isBlack(scene.materials[o.material]->emission); });
+}
+
+// A scene seen by a camera chosen for it (scene/framing.h): one without [camera] from the front,
+// a little above and to the right; under --fit along its own camera's view. Without any light it
+// gets kDefaultLightName, a point light above and to the left of the eye (scenes/README.md,
+// "Framing"). A warning says what was chosen.
+void frameScene(Scene& scene, const Warnings& warn) {
+    if (!scene.cameraGiven) {
+        scene.camera.eye = kFramingDirection;
+        scene.camera.lookAt = Vec3(0.0f);
+    }
+    const Bounds bounds = sceneBounds(scene);
+    scene.camera = framingCamera(bounds, scene.camera);
+    std::string chosen = (scene.cameraGiven ? "--fit: the camera" : "the scene has no [camera]: a camera") +
+                         std::string(" at ") + formatVec3(scene.camera.eye) + " looks at " +
+                         formatVec3(scene.camera.lookAt) + (bounds.empty() ? " (the scene has no bounded shape)" : " and sees all of it");
+    if (!hasLight(scene)) {
+        const PinholeCamera view(scene.camera);
+        const Vec3 right = glm::normalize(glm::cross(view.forward(), scene.camera.up));
+        const Vec3 up = glm::cross(right, view.forward());
+        const float distance = glm::length(scene.camera.lookAt - scene.camera.eye);
+        const Vec3 position = scene.camera.eye + kDefaultLightOffset * distance * (up - right);
+        scene.lights.emplace_back(PointLight(std::string(kDefaultLightName), position, Rgb(1.0f), Vec3(1.0f, 0.0f, 0.0f)));
+        chosen += "; it has no light: a point light \"" + std::string(kDefaultLightName) + "\" of intensity 1 at " +
+                  formatVec3(position) + ", above and left of the eye";
+    }
+    warn(chosen);
+}
+
+}  // namespace
+
 Scene RenderConfig::loadScene() const {
     Scene scene;
     try {
@@ -264,6 +305,7 @@ Scene RenderConfig::loadScene() const {
         scene.camera.width = size->width;
         scene.camera.height = size->height;
     }
+    if (fit || !scene.cameraGiven) frameScene(scene, warn);
     return scene;
 }
 

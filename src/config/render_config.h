@@ -43,6 +43,7 @@ struct RenderConfig {
     double targetError = 0.0;
     bool noBeauty = false;
     bool noSkip = false;
+    bool fit = false;  // frame the scene as if it had no [camera] (scene/framing.h)
     std::string shadows;  // "on", "off" or empty (the integrator's own)
     std::string accel;    // bvh, embree or none (brute force)
     bool quiet = false;   // no progress bar, no warnings
@@ -61,7 +62,9 @@ struct RenderConfig {
 
     // The chosen integrator's parameters (its schema's defaults and those given). After validate().
     ParameterValues integratorValues() const;
-    Scene loadScene() const;  // with the resolution applied
+    // With the resolution applied; framed (scene/framing.h), and lit by kDefaultLightName when it
+    // has no light, when it has no [camera] or under --fit.
+    Scene loadScene() const;
     // The aovs preset's AOVs (made from `scene` for `lights`), then every lpe.
     std::vector<lpe::NamedExpression> expressions(const Scene* scene = nullptr) const;
     // Judges every AOV (config/lpe_verdict.h): refuses one no path of the integrator can ever fill;
@@ -81,6 +84,11 @@ struct RenderConfig {
     // After a render: warns of each AOV that could have received light but got none.
     void warnEmptyAovs(const Film& film, const AovSet& aovs, const Judge& judge) const;
 };
+
+// The point light a framed scene without light gets: its name (an LPE label), and how far above
+// and to the left of the eye it stands, per unit of the eye's distance to what it frames.
+inline constexpr std::string_view kDefaultLightName = "default-light";
+inline constexpr float kDefaultLightOffset = 0.3f;
 
 // The error of one AOV, `name` (field "lpe:NAME").
 ConfigError lpeError(const std::string& name, const std::string& message);

@@ -70,6 +70,9 @@ const TypeSchema& renderOptionsSchema() {
              .choices = "on|off"},
             {.name = "no-skip", .type = T::Boolean, .defaultText = "false",
              .doc = "Trace every ray and evaluate every term, even those that cannot contribute (for comparison)"},
+            {.name = "fit", .type = T::Boolean, .defaultText = "false",
+             .doc = "Move the camera to frame the whole scene, along its own view, as a scene without [camera] is "
+                    "framed; a scene without a light then gets the default light (scenes/README.md)"},
         },
         ""};
     return schema;

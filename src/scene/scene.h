@@ -27,6 +27,7 @@ struct SceneObject {
 struct Scene {
     std::filesystem::path source;
     CameraDescription camera;
+    bool cameraGiven = false;  // the file has a [camera]; else the render frames the scene (scene/framing.h)
     Rgb background{0.0f};  // radiance of rays that escape (a `B` event)
     Rgb ambient{0.0f};     // Ia of the illumination formula (an `L'ambient'` event)
 

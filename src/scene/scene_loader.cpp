@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <fstream>
 #include <optional>
@@ -340,7 +342,59 @@ void forEachSection(const TomlTable& root, std::string_view key, Read read) {
 
 }  // namespace
 
+bool isObjFile(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".obj";
+}
+
+namespace {
+
+// `text` as a TOML basic string.
+std::string tomlString(const std::string& text) {
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') {
+            quoted += '\\';
+            quoted += c;
+        } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+            quoted += escaped;
+        } else {
+            quoted += c;
+        }
+    }
+    return quoted + "\"";
+}
+
+// An OBJ file as the whole scene is the scene `[[meshes]] file = "NAME"` beside it: no camera and
+// no light, which the render then chooses (scene/framing.h). Its messages name the OBJ file only,
+// not that one-line scene.
+Scene loadObjAsScene(const std::filesystem::path& path) {
+    const std::string text = "[[meshes]]\nfile = " + tomlString(path.filename().string()) + "\n";
+    const auto ownMessage = [](const std::string& message) {
+        const std::string key = "meshes[0].file: ";
+        const auto at = message.find(key);
+        return at == std::string::npos ? message : message.substr(at + key.size());
+    };
+    Scene scene;
+    try {
+        scene = loadSceneFromText(text, path);
+    } catch (const SceneError& e) {
+        throw SceneError(ownMessage(e.what()));
+    }
+    for (std::string& warning : scene.warnings) warning = ownMessage(warning);
+    return scene;
+}
+
+}  // namespace
+
 Scene loadScene(const std::filesystem::path& path) {
+    if (isObjFile(path)) {
+        readFile(path);  // says why a missing or unreadable file cannot be opened, as for a scene file
+        return loadObjAsScene(path);
+    }
     return loadSceneFromText(readFile(path), path);
 }
 
@@ -356,7 +410,10 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
 
     Scene scene;
     scene.source = path;
-    if (auto camera = root.find("camera")) scene.camera = readCamera(camera->table());
+    if (auto camera = root.find("camera")) {
+        scene.camera = readCamera(camera->table());
+        scene.cameraGiven = true;
+    }
     if (auto world = root.find("world")) readWorld(world->table(), scene);
     if (auto materials = root.find("materials")) {
         scene.materials = readMaterials(materials->table());

@@ -1,4 +1,4 @@
-// `[[meshes]]`: a Wavefront OBJ file (scene/obj_loader.h) placed in the scene, read and
+// `[[meshes]]`: a Wavefront OBJ file (shapes/obj_loader.h) placed in the scene, read and
 // registered here like every shape kind (docs/extending.md). Its faces become triangles of
 // SceneGeometry's triangle array; each MTL material its faces use becomes a scene material and
 // the faces using it one object.
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/obj_loader.h"
+#include "shapes/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/shape_type.h"
 
@@ -55,19 +55,21 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
     const std::string name = values.has("name") ? values.text("name") : std::string();
     const bool override = values.has("material");
     const MeshPlacement placement = placementOf(values);
-    // A missing material library is only a warning (most tools go on); a face whose `usemtl`
-    // names a material no library defines is an error only when the scene gives no `material`.
-    for (const std::string& library : mesh.missingLibraries) {
-        scene.warn(values.located(
-            "file", file.string() + ": cannot open material library \"" + library + "\" named by its mtllib line; " +
-                        (override ? "the mesh's `material` is used" : "faces without a known material are grey")));
-    }
-    if (!override && !mesh.unknownMaterials.empty()) {
-        values.fail("file", file.string() + ": usemtl \"" + mesh.unknownMaterials.front() +
-                                "\" names no material of its material libraries" +
-                                (mesh.missingLibraries.empty() ? "" : " (\"" + mesh.missingLibraries.front() + "\" is missing)") +
-                                "; give the mesh a `material`");
-    }
+    // What other tools forgive is a warning naming the OBJ file and line, never a refusal: a
+    // missing material library, a `usemtl` no library defines (its faces take the mesh's
+    // `material`, else a grey), a material name that is no label (it is given one).
+    const auto at = [&](std::size_t line) {
+        std::string where = file.string();
+        if (line > 0) where.append(":").append(std::to_string(line));
+        return where.append(": ");
+    };
+    const std::string instead = override ? "the mesh's `material` is used" : "its faces are grey";
+    for (const ObjLineRef& library : mesh.missingLibraries)
+        scene.warn(values.located("file", at(library.line) + "cannot open material library \"" +
+                                              printableName(library.text) + "\"; " + instead));
+    for (const ObjLineRef& unknown : mesh.unknownMaterials)
+        scene.warn(values.located("file", at(unknown.line) + "usemtl \"" + printableName(unknown.text) +
+                                              "\" names no material of its material libraries; " + instead));
 
     // Scene object of each MTL material index, created on first use, in order of first use.
     std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
@@ -81,9 +83,10 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
             objectOf[slot] = scene.addObject(name, scene.sceneMaterial(defaultMeshMaterial()));
         } else {
             const PhongMaterial& mtl = mesh.materials[mtlIndex];
-            if (!isValidName(mtl.name))
-                values.fail("file", file.string() + ": material \"" + mtl.name + "\" is not a name of " +
-                                        std::string(kNameCharacters) + "; give the mesh a `material`");
+            if (const std::optional<std::string>& original = mesh.originalNames[mtlIndex])
+                scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" +
+                                                      printableName(*original) + "\" is no label of " +
+                                                      std::string(kNameCharacters) + "; it is labelled \"" + mtl.name + "\""));
             objectOf[slot] = scene.addObject(name, scene.sceneMaterial(mtl));
         }
         return objectOf[slot];

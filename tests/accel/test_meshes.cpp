@@ -11,7 +11,7 @@
 #include <string>
 
 #include "materials/phong_material.h"
-#include "scene/obj_loader.h"
+#include "shapes/obj_loader.h"
 #include "scene/scene_loader.h"
 
 namespace lightpath {

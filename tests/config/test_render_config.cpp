@@ -176,3 +176,43 @@ TEST_CASE("radiosity's parameters are its schema's, their defaults those of Radi
     both.integratorParameters = {{"patch-size", "0.5"}, {"patches", "64"}};
     CHECK_THROWS_WITH_AS(both.validate(), "--patch-size: excludes --patches", ConfigError);
 }
+
+// Framing (issue #26 item 5): an OBJ given as the scene has no camera and no light; the render
+// gets a camera that sees the whole model and the default light, and says so. The reference: the
+// box of assimp's box.obj is [-0.5, 0.5]^3 (its 8 vertices), its corners all in the image, its
+// centre pixel lit (grey kd 0.5 facing a light from the camera's side) and the corner pixels the
+// black background.
+TEST_CASE("an OBJ file without camera or light renders framed and lit, and says what was chosen") {
+    RenderConfig config;
+    config.scenePath = LIGHTPATH_SOURCE_DIR "/tests/scene/data/assimp-obj/box.obj";
+    config.resolution = "40x20";
+    config.quiet = true;
+    const Scene scene = config.loadScene();
+    CHECK(!scene.cameraGiven);
+    REQUIRE(scene.lights.size() == 1);
+    CHECK(scene.lights[0]->name == kDefaultLightName);
+    CHECK(scene.camera.width == 40);
+    CHECK(scene.camera.lookAt == Vec3(0.0f));
+    const PinholeCamera camera(scene.camera);
+    for (int k = 0; k < 8; ++k) CHECK(camera.project(Vec3(k & 1 ? 0.5f : -0.5f, k & 2 ? 0.5f : -0.5f, k & 4 ? 0.5f : -0.5f)));
+
+    RenderOptions options;
+    options.integrator = "raycast";
+    options.samplesPerPixel = 1;
+    const AovSet aovs(config.expressions(&scene));
+    const Film film = Renderer(scene, aovs, options).render().film;
+    CHECK(film.at(0, 20, 10).r > 0.05f);
+    CHECK(isBlack(film.at(0, 0, 0)));
+    CHECK(isBlack(film.at(0, 39, 19)));
+
+    // A scene with a camera and a light is left as it is, unless --fit.
+    RenderConfig lit;
+    lit.scenePath = LIGHTPATH_SOURCE_DIR "/scenes/bunny.toml";
+    lit.quiet = true;
+    const Scene asWritten = lit.loadScene();
+    CHECK(asWritten.camera.eye == Vec3(0.0f, 1.5f, 4.2f));
+    lit.fit = true;
+    const Scene fitted = lit.loadScene();
+    CHECK(fitted.camera.eye != asWritten.camera.eye);
+    CHECK(fitted.lights.size() == asWritten.lights.size());
+}

@@ -3,14 +3,15 @@
 // MTL is a plain OBJ file). Any text either loads or is refused with a SceneError; a mesh that
 // loads must be usable as it is: triangles with finite corners and an area, vertex normals of unit
 // length (or zero where a face has none), valid material indices, and materials within the ranges
-// of a scene file's (scenes/README.md). Coordinates are not limited here: the scene loader checks
+// of a scene file's (scenes/README.md) whose names are LPE labels (any name in the MTL is made one). Coordinates are not limited here: the scene loader checks
 // them once the mesh is placed.
 #include <cmath>
 #include <cstdint>
 #include <string>
 
 #include "fuzz_support.h"
-#include "scene/obj_loader.h"
+#include "schema/parameter.h"
+#include "shapes/obj_loader.h"
 #include "scene/scene_loader.h"
 
 namespace {
@@ -37,6 +38,10 @@ void checkMaterial(const PhongMaterial& m) {
 
 void checkMesh(const ObjMesh& mesh) {
     for (const PhongMaterial& m : mesh.materials) checkMaterial(m);
+    for (const PhongMaterial& m : mesh.materials)
+        if (!isValidName(m.name)) broken("MTL material \"" + printableName(m.name) + "\" loaded with a name that is no label");
+    if (mesh.originalNames.size() != mesh.materials.size() || mesh.materialLines.size() != mesh.materials.size())
+        broken("original names or usemtl lines not one per material");
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.triangles.size())
         broken("vertex normals for " + std::to_string(mesh.normals.size()) + " of " +
                std::to_string(mesh.triangles.size()) + " triangles");

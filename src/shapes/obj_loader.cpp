@@ -1,4 +1,4 @@
-#include "scene/obj_loader.h"
+#include "shapes/obj_loader.h"
 
 #include <tiny_obj_loader.h>
 
@@ -7,18 +7,54 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "scene/scene_loader.h"
+#include "schema/parameter.h"
 
 namespace lightpath {
 namespace {
 
 Rgb rgb(const float v[3]) { return {v[0], v[1], v[2]}; }
 
+// The `usemtl` and `mtllib` lines of an OBJ text, numbered as tinyobjloader reads lines (ended by
+// "\n", "\r\n" or "\r"), each `usemtl` name parsed as it parses it: the first word after it.
+struct ObjStatementLines {
+    std::vector<ObjLineRef> usemtl;
+    std::vector<ObjLineRef> mtllib;  // the rest of the line, the library names
+};
+
+ObjStatementLines scanStatementLines(std::string_view text) {
+    ObjStatementLines found;
+    std::size_t number = 0;
+    for (std::size_t begin = 0; begin < text.size();) {
+        std::size_t end = text.find_first_of("\r\n", begin);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(begin, end - begin);
+        begin = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+        ++number;
+        line.remove_prefix(std::min(line.find_first_not_of(" \t"), line.size()));
+        const auto rest = [&](std::size_t skip) {
+            std::string_view after = line.substr(skip);
+            after.remove_prefix(std::min(after.find_first_not_of(" \t"), after.size()));
+            return after;
+        };
+        if (line.rfind("usemtl", 0) == 0) {
+            const std::string_view after = rest(6);
+            found.usemtl.push_back({std::string(after.substr(0, after.find_first_of(" \t"))), number});
+        } else if (line.rfind("mtllib", 0) == 0 && line.size() > 6 && (line[6] == ' ' || line[6] == '\t')) {
+            found.mtllib.push_back({std::string(rest(6)), number});
+        }
+    }
+    return found;
+}
+
 // tinyobjloader reports a missing material library and a `usemtl` it cannot resolve only in its
-// warning text: "Material file [ NAME ] not found in a path : DIR" and
-// "material [ 'NAME' ] not found in .mtl". Each is read back from there.
-void readMaterialWarnings(const std::filesystem::path& file, const std::string& warnings, ObjMesh& mesh) {
+// warning text, in file order: "Material file [ NAME ] not found in a path : DIR" and
+// "material [ 'NAME' ] not found in .mtl". Each is read back from there and given the OBJ line
+// that names it; each name once.
+void readMaterialWarnings(const std::filesystem::path& file, const std::string& warnings,
+                          const ObjStatementLines& statements, ObjMesh& mesh) {
     std::istringstream lines(warnings);
     const auto between = [](const std::string& line, const std::string& open, const std::string& close,
                             std::string& inside) {
@@ -29,19 +65,87 @@ void readMaterialWarnings(const std::filesystem::path& file, const std::string& 
         inside = line.substr(begin + open.size(), end - begin - open.size());
         return true;
     };
+    const auto listed = [](const std::vector<ObjLineRef>& refs, const std::string& text) {
+        return std::any_of(refs.begin(), refs.end(), [&](const ObjLineRef& r) { return r.text == text; });
+    };
+    std::size_t nextUsemtl = 0;  // the warnings of `usemtl` lines come in the order of those lines
     for (std::string line, name; std::getline(lines, line);) {
         if (between(line, "Material file [ ", " ]", name)) {
             const std::string path = (file.parent_path() / name).string();
-            if (std::find(mesh.missingLibraries.begin(), mesh.missingLibraries.end(), path) == mesh.missingLibraries.end())
-                mesh.missingLibraries.push_back(path);
+            if (listed(mesh.missingLibraries, path)) continue;
+            const auto naming = std::find_if(statements.mtllib.begin(), statements.mtllib.end(),
+                                             [&](const ObjLineRef& r) { return r.text.find(name) != std::string::npos; });
+            mesh.missingLibraries.push_back({path, naming == statements.mtllib.end() ? 0 : naming->line});
         } else if (between(line, "material [ '", "' ] not found", name)) {
-            if (std::find(mesh.unknownMaterials.begin(), mesh.unknownMaterials.end(), name) == mesh.unknownMaterials.end())
-                mesh.unknownMaterials.push_back(name);
+            std::size_t at = 0;
+            for (; nextUsemtl < statements.usemtl.size(); ++nextUsemtl) {
+                if (statements.usemtl[nextUsemtl].text == name) {
+                    at = statements.usemtl[nextUsemtl++].line;
+                    break;
+                }
+            }
+            if (!listed(mesh.unknownMaterials, name)) mesh.unknownMaterials.push_back({name, at});
         }
     }
 }
 
+// Gives every material a label (ObjMesh::originalNames) and the line of its first `usemtl`.
+// A name that is no label is made one; one that collides with another material's is numbered.
+void labelMaterials(const ObjStatementLines& statements, ObjMesh& mesh) {
+    std::vector<std::string> taken;
+    for (const PhongMaterial& m : mesh.materials)
+        if (isValidName(m.name)) taken.push_back(m.name);
+    const auto isTaken = [&](const std::string& label) {
+        return std::find(taken.begin(), taken.end(), label) != taken.end();
+    };
+    for (PhongMaterial& m : mesh.materials) {
+        const auto first = std::find_if(statements.usemtl.begin(), statements.usemtl.end(),
+                                        [&](const ObjLineRef& r) { return r.text == m.name; });
+        mesh.materialLines.push_back(first == statements.usemtl.end() ? 0 : first->line);
+        if (isValidName(m.name)) {
+            mesh.originalNames.push_back(std::nullopt);
+            continue;
+        }
+        const std::string base = labelFromName(m.name);
+        std::string label = base;
+        for (int k = 2; isTaken(label); ++k) label = base + "-" + std::to_string(k);
+        taken.push_back(label);
+        mesh.originalNames.push_back(m.name);
+        m.name = label;
+    }
+}
+
 }  // namespace
+
+std::string labelFromName(std::string_view name) {
+    const auto isLabelCharacter = [](char c) { return isValidName(std::string_view(&c, 1)); };
+    const std::size_t first = name.find_first_not_of(" \t"), last = name.find_last_not_of(" \t");
+    name = first == std::string_view::npos ? std::string_view() : name.substr(first, last - first + 1);
+    std::string label;
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        if (isLabelCharacter(name[i])) {
+            label += name[i];
+        } else if (i == 0 || isLabelCharacter(name[i - 1])) {
+            label += '_';
+        }
+    }
+    return label.empty() ? "unnamed" : label;
+}
+
+std::string printableName(std::string_view text) {
+    std::string shown;
+    for (unsigned char c : text) {
+        if (c >= 0x20 && c < 0x7f && c != '\\') {
+            shown += static_cast<char>(c);
+        } else {
+            const char* digits = "0123456789ABCDEF";
+            shown += "\\x";
+            shown += digits[c >> 4];
+            shown += digits[c & 15];
+        }
+    }
+    return shown;
+}
 
 PhongMaterial defaultMeshMaterial() {
     PhongMaterial grey;
@@ -188,6 +292,15 @@ tinyobj::ObjReaderConfig readerConfig() {
     return config;
 }
 
+// The mesh with what only the OBJ text tells: the lines of its material statements and labels.
+ObjMesh completed(ObjMesh mesh, const std::filesystem::path& file, const tinyobj::ObjReader& reader,
+                  std::string_view objText) {
+    const ObjStatementLines statements = scanStatementLines(objText);
+    readMaterialWarnings(file, reader.Warning(), statements, mesh);
+    labelMaterials(statements, mesh);
+    return mesh;
+}
+
 [[noreturn]] void failToRead(const std::filesystem::path& file, const tinyobj::ObjReader& reader) {
     std::string reason = reader.Error();
     while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r')) reason.pop_back();
@@ -197,26 +310,24 @@ tinyobj::ObjReaderConfig readerConfig() {
 }  // namespace
 
 ObjMesh loadObj(const std::filesystem::path& file) {
+    std::ostringstream text;
     {
-        std::ifstream probe(file);
-        if (!probe || std::filesystem::is_directory(file))
+        std::ifstream in(file, std::ios::binary);
+        if (!in || std::filesystem::is_directory(file))
             throw SceneError(file.string() + ": cannot open mesh file");
+        text << in.rdbuf();
     }
     tinyobj::ObjReaderConfig config = readerConfig();
     config.mtl_search_path = file.parent_path().string();
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(file.string(), config)) failToRead(file, reader);
-    ObjMesh mesh = meshFrom(reader, file);
-    readMaterialWarnings(file, reader.Warning(), mesh);
-    return mesh;
+    return completed(meshFrom(reader, file), file, reader, text.str());
 }
 
 ObjMesh loadObjFromText(const std::string& objText, const std::string& mtlText, const std::filesystem::path& file) {
     tinyobj::ObjReader reader;
     if (!reader.ParseFromString(objText, mtlText, readerConfig())) failToRead(file, reader);
-    ObjMesh mesh = meshFrom(reader, file);
-    readMaterialWarnings(file, reader.Warning(), mesh);
-    return mesh;
+    return completed(meshFrom(reader, file), file, reader, objText);
 }
 
 }  // namespace lightpath
