@@ -346,6 +346,8 @@ def lecture_hall(browser, x, y, shots):
     change_then_explained(browser, "const d = document.getElementById('max-depth'); d.value = Number(d.value) - 1; "
                                    "d.dispatchEvent(new Event('change'))", "max depth one less")
     change_then_explained(browser, "document.querySelector('button[data-preset=classes]').click()", "the classes set")
+    stale = stale_snapshots(browser)
+    assert not stale, f"the explain table or the drawn paths were an older render's when a new one began: {stale}"
     before = browser.evaluate("state.latestGeneration")
     select_integrator(browser, "bdpt")
     # Checked in the same task as the page learns of the new render: nothing of the old one remains.
