@@ -297,6 +297,9 @@ def check_layout(browser, width, height, shots, projector):
                              "return [p.hidden, p.scrollWidth, p.clientWidth]; })()")
     assert not error[0] and error[1] <= error[2], f"the syntax error is not wrapped in full under its input: {error}"
     if projector:
+        # On the projector the explanation begins on the first screen (issue 29: "below the fold").
+        top = browser.evaluate("document.querySelector('#explain h2').getBoundingClientRect().top + scrollY")
+        assert top < height, f"the explanation begins {top} px down a {height}-pixel window"
         sizes = browser.evaluate("""(() => {
             const sizes = {};
             for (const selector of ['body', 'header label', '#status', '.tile .expression', '.tile .name', 'pre.error',
