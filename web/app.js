@@ -292,10 +292,11 @@ function applySettingsToControls() {
 // ---- progress: long polls of /api/progress ----
 
 // Seconds since the page asked for `p`'s generation (or, for one it did not ask for, since the
-// server started it): a preprocess such as radiosity's solve is in it, which the server's
-// rendering time leaves out.
+// server started preparing it): the preparation (radiosity's solve) is counted in it, as in the
+// server's own two times.
 function wallSeconds(p) {
-  if (!state.started.has(p.generation)) state.started.set(p.generation, performance.now() - 1000 * p.seconds);
+  if (!state.started.has(p.generation))
+    state.started.set(p.generation, performance.now() - 1000 * (p.seconds + p.preparation.seconds));
   if (p.done && !state.finished.has(p.generation)) state.finished.set(p.generation, performance.now());
   const end = state.finished.get(p.generation) ?? performance.now();
   return (end - state.started.get(p.generation)) / 1000;
@@ -308,16 +309,23 @@ function showStatus() {
   const wall = wallSeconds(p).toFixed(1);
   const timing = $("timing");
   timing.hidden = p.done;
-  if (p.passes === 0) {
-    // The first pass (after any preprocess) has no fraction to show: an indeterminate bar and the
-    // seconds counting up, so a long solve is seen to be working.
+  const preparation = p.preparation;
+  if (p.passes === 0 && preparation.state === "running" && preparation.of > 0) {
+    // A counted preprocess (radiosity's solve): the fraction of its steps done.
+    timing.max = preparation.of;
+    timing.value = preparation.steps;
+    const percent = Math.floor(100 * preparation.steps / preparation.of);
+    $("status").textContent = `preparing ${s.integrator}: ${percent}% (${preparation.steps} of ${preparation.of} steps)… ${wall} s`;
+  } else if (p.passes === 0) {
+    // The first pass has no fraction to show: an indeterminate bar and the seconds counting up.
     timing.removeAttribute("value");
     $("status").textContent = `preparing and rendering ${s.width}×${s.height} with ${s.integrator}… ${wall} s`;
   } else {
     timing.max = s.spp;
     timing.value = p.samples;
+    const parts = preparation.seconds >= 0.005 ? `preparing ${preparation.seconds.toFixed(2)} s + ` : "";
     $("status").textContent = `${s.integrator}, ${s.width}×${s.height}: pass ${p.passes}, ${p.samples} spp of ${s.spp}` +
-      `${p.done ? " (done)" : "…"} in ${wall} s (rendering ${p.seconds.toFixed(2)} s)`;
+      `${p.done ? " (done)" : "…"} in ${wall} s (${parts}rendering ${p.seconds.toFixed(2)} s)`;
   }
   clearInterval(state.ticker);
   if (!p.done) state.ticker = setInterval(showStatus, 1000);
@@ -351,7 +359,9 @@ function showProgress(p) {
 async function pollProgress() {
   for (;;) {
     try {
-      const url = `/api/progress?generation=${state.generation}&pass=${state.passes}&wait=5`;
+      // While the server prepares (a solve's steps count up without a pass), ask each second.
+      const preparing = state.lastProgress && state.lastProgress.preparation.state !== "done";
+      const url = `/api/progress?generation=${state.generation}&pass=${state.passes}&wait=${preparing ? 1 : 5}`;
       const answer = await getJson(url);
       if (answer.ok) showProgress(answer.body);
     } catch (error) {

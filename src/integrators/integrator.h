@@ -23,6 +23,8 @@
 
 namespace lightpath {
 
+struct StepCounter;  // util/progress.h
+
 struct RenderContext {
     const Scene& scene;
     const SceneGeometry& geometry;
@@ -47,6 +49,8 @@ struct RenderContext {
     int threads = 0;
     bool progress = false;
     const std::atomic<bool>* cancel = nullptr;
+    // If set, preprocess counts its steps there too, for a caller that shows them (serve's page).
+    StepCounter* preprocessSteps = nullptr;
     // Off (`--shadows off`): direct light counts every light as visible and casts no shadow ray,
     // Szymczak's formula with its shadow term S_i = 1 (raycast and whitted; the rasteriser has no
     // rays, so it is always off there).

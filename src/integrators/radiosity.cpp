@@ -114,7 +114,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     int passes = (bounces_ > 1 ? 1 : 0) + lightsWanted;
     for (int b : wanted) passes += std::max(b - 1, 0);
     const int steps = static_cast<int>(chunkCount(elementCount())) * passes;
-    ProgressBar progress(steps, context.progress, "radiosity steps");
+    ProgressBar progress(steps, context.progress, "radiosity steps", context.preprocessSteps);
     values_.assign(wanted.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
     rowStart_.assign(std::size_t(elementCount()) + 1, 0);
     targets_.clear();

@@ -68,6 +68,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
         throw std::invalid_argument("the " + options.integrator + " integrator casts no rays, so it has no shadows; "
                                     "compare it with --integrator raycast --shadows off");
     context_.filter = &filter_;
+    context_.preprocessSteps = options.preprocessSteps;
     if (options_.integratorParameters) context_.parameters = &*options_.integratorParameters;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
     if (options.maxDepth < 0 || options.maxDepth > kMaxDepth)

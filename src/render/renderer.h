@@ -30,6 +30,8 @@
 
 namespace lightpath {
 
+struct StepCounter;  // util/progress.h
+
 struct RenderOptions {
     std::string integrator = "whitted";
     int maxDepth = 5;
@@ -57,6 +59,8 @@ struct RenderOptions {
     const std::atomic<bool>* cancel = nullptr;
     Accelerator accelerator = Accelerator::Bvh;
     bool progress = false;  // a progress bar on stderr (only if it is a terminal; util/progress.h)
+    // If set, the integrator's preprocess (radiosity's solve) counts its steps there as it runs.
+    StepCounter* preprocessSteps = nullptr;
     RadiosityOptions radiosity;  // meshing and solve of --integrator radiosity, when set directly
     // The integrator's own parameters (its schema's; config/render_config.h fills them): when
     // set, they replace the integrator's defaults and `radiosity` above.

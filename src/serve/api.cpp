@@ -72,9 +72,18 @@ int integerParameter(const Target& target, const std::string& key, long low, lon
     return static_cast<int>(value);
 }
 
+json preparationJson(const Preparation& preparation) {
+    static constexpr const char* kStates[] = {"waiting", "running", "done"};
+    return {{"state", kStates[static_cast<int>(preparation.state)]},
+            {"seconds", preparation.seconds},
+            {"steps", preparation.steps},
+            {"of", preparation.totalSteps}};
+}
+
 json progressJson(const Progress& p) {
     const Job& job = *p.job;
     return {{"generation", job.generation},
+            {"preparation", preparationJson(job.preparation())},
             {"settings", toJson(job.settings)},
             {"warnings", job.warnings},
             {"layers", job.aovs.layerNames()},

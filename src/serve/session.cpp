@@ -45,6 +45,7 @@ Job::Job(std::uint64_t generation, Settings settings, Scene scene, AovSet aovs, 
       options_(options),
       geometry_(std::move(geometry)) {
     options_.cancel = &cancelled_;
+    options_.preprocessSteps = &preprocessSteps_;
 }
 
 int Job::samplesPerPass() const { return std::min(kSamplesPerPass, settings.samplesPerPixel); }
@@ -53,9 +54,28 @@ const Renderer& Job::renderer() const {
     std::call_once(rendererOnce_, [this] {
         RenderOptions options = options_;
         options.samplesPerPixel = samplesPerPass();
+        const auto started = std::chrono::steady_clock::now();
+        preparationStarted_.store(started.time_since_epoch().count());
         renderer_ = std::make_unique<Renderer>(scene, aovs, options, geometry_);
+        preparationSeconds_.store(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
     });
     return *renderer_;
+}
+
+Preparation Job::preparation() const {
+    Preparation preparation;
+    // The total first: a step is counted only after the total it belongs to.
+    preparation.totalSteps = preprocessSteps_.total.load(std::memory_order_relaxed);
+    preparation.steps = std::min(preprocessSteps_.done.load(std::memory_order_relaxed), preparation.totalSteps);
+    if (const double seconds = preparationSeconds_.load(); seconds >= 0.0) {
+        preparation.state = Preparation::State::Done;
+        preparation.seconds = seconds;
+    } else if (const std::int64_t started = preparationStarted_.load(); started != 0) {
+        preparation.state = Preparation::State::Running;
+        const std::chrono::steady_clock::time_point since{std::chrono::steady_clock::duration{started}};
+        preparation.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+    }
+    return preparation;
 }
 
 Session::Session(Scene scene, std::string scenePath, int threads)

@@ -17,12 +17,23 @@
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "serve/settings.h"
+#include "util/progress.h"
 
 namespace lightpath::serve {
 
 // Pass 0 is one sample through each pixel centre (the lecture's image, and a first image fast);
 // every later pass takes this many jittered samples with its own seed, and their mean replaces it.
 inline constexpr int kSamplesPerPass = 4;
+
+// Building a job's renderer: its integrator's preprocess (radiosity's meshing and solve), which
+// may take far longer than a pass and comes before the first.
+struct Preparation {
+    enum class State { Waiting, Running, Done };
+    State state = State::Waiting;
+    double seconds = 0.0;  // so far while running, in all once done
+    int steps = 0;         // the preprocess's steps done (util/progress.h), of
+    int totalSteps = 0;    // its total; 0 for an integrator without a counted preprocess
+};
 
 // Everything one set of settings renders with. Renderers hold references into it, so it lives as
 // long as the last request using it (shared_ptr).
@@ -44,6 +55,8 @@ public:
     const Renderer& renderer() const;
     // kSamplesPerPass (or the target, if fewer).
     int samplesPerPass() const;
+    // How far building renderer() has come; any thread may ask while another builds it.
+    Preparation preparation() const;
 
     void cancel() { cancelled_.store(true); }
     bool cancelled() const { return cancelled_.load(); }
@@ -52,6 +65,9 @@ private:
     RenderOptions options_;
     std::shared_ptr<const SceneGeometry> geometry_;
     std::atomic<bool> cancelled_{false};
+    StepCounter preprocessSteps_;
+    mutable std::atomic<std::int64_t> preparationStarted_{0};  // steady_clock ticks; 0: not yet (set in renderer())
+    mutable std::atomic<double> preparationSeconds_{-1.0};      // < 0 until the renderer is built
     mutable std::once_flag rendererOnce_;
     mutable std::unique_ptr<Renderer> renderer_;
 };
@@ -63,7 +79,7 @@ struct Progress {
     int passes = 0;                      // passes in `image`
     int samples = 0;                     // samples per pixel in `image`
     bool done = false;                   // the target is reached: nothing more will change
-    double seconds = 0.0;                // rendering time of the passes so far
+    double seconds = 0.0;                // rendering time of the passes so far (Job::preparation() apart)
     double sumError = 0.0;               // max over pixels and channels of |beauty - sum of AOVs - rest|
 };
 

@@ -26,8 +26,9 @@ std::string formatSeconds(double seconds) {
 
 }  // namespace
 
-ProgressBar::ProgressBar(int totalTiles, bool enabled, const char* unit)
-    : total_(std::max(totalTiles, 1)), unit_(unit), started_(std::chrono::steady_clock::now()) {
+ProgressBar::ProgressBar(int totalTiles, bool enabled, const char* unit, StepCounter* counter)
+    : total_(std::max(totalTiles, 1)), unit_(unit), counter_(counter), started_(std::chrono::steady_clock::now()) {
+    if (counter_) counter_->total.fetch_add(totalTiles, std::memory_order_relaxed);
     if (enabled && isatty(STDERR_FILENO)) thread_ = std::thread([this] { run(); });
 }
 

@@ -225,6 +225,41 @@ def find_mirror_pixel(server, width, height):
 LONG_LPE = "ES*(D|G)(D|G|S)+L"
 
 
+# Wraps the page's newGeneration (a global of its classic script, so the page's own calls reach the
+# wrapper): right after the page learns of each new render it records what the explain table and
+# the drawn paths belong to. Read at that moment, not sampled later, so no stale frame is missed.
+WATCH_GENERATIONS = """(() => {
+    if (window.generationSnapshots) return true;
+    window.generationSnapshots = [];
+    const original = newGeneration;
+    window.newGeneration = function (generation) {
+        original(generation);
+        const table = document.getElementById('explain-table');
+        window.generationSnapshots.push({ generation: state.latestGeneration, table: table.dataset.generation ?? null,
+            rows: table.tBodies[0].rows.length,
+            paths: document.querySelectorAll('#overlay g.path, #top-view g.path').length });
+    };
+    return true; })()"""
+
+
+def stale_snapshots(browser):
+    """The recorded moments at which the explain table or the drawn paths were an older render's."""
+    snapshots = browser.evaluate("window.generationSnapshots")
+    assert snapshots, "the page told of no new render"
+    return [s for s in snapshots if (s["table"] is not None and s["table"] != str(s["generation"])) or
+            (s["table"] is None and (s["rows"] or s["paths"]))]
+
+
+def change_then_explained(browser, change, what):
+    """Makes `change` (JS) and waits until the explained pixel is explained again for the new render."""
+    before = browser.evaluate("state.latestGeneration")
+    browser.evaluate(f"(() => {{ {change}; return true; }})()")
+    browser.wait_for(f"state.latestGeneration > {before} && "
+                     "document.getElementById('explain-table').dataset.generation === String(state.latestGeneration) && "
+                     "document.querySelectorAll('#explain-table tbody tr').length > 0 && "
+                     "document.querySelectorAll('#overlay g.path').length > 0", f"{what}: the pixel explained again")
+
+
 def select_integrator(browser, name):
     browser.evaluate(f"(() => {{ const s = document.getElementById('integrator'); s.value = {json.dumps(name)}; "
                      "s.dispatchEvent(new Event('change')); return true; })()")
@@ -245,10 +280,26 @@ def check_layout(browser, width, height, shots, projector):
                              "return [t.scrollWidth, t.clientWidth, r.left, r.right, document.querySelectorAll('#explain-table tbody tr').length]; })()")
     assert table[4] > 0 and table[0] <= table[1] and table[2] >= 0 and table[3] <= width, \
         f"the explain table does not fit the {width}-pixel window: {table}"
+    # Widths: the image takes most of its column, an LPE field is no 75-pixel box, and the image,
+    # every tile and the explain table lie inside the window's width (reachable by scrolling down).
+    boxes = browser.evaluate("""(() => {
+        const box = (e) => { const r = e.getBoundingClientRect(); return [r.left, r.right, r.width]; };
+        return { image: box(document.getElementById('beauty')), explain: box(document.getElementById('explain-table')),
+                 tiles: [...document.querySelectorAll('.tile')].map(box),
+                 fields: [...document.querySelectorAll('.tile.aov .expression')].map(e =>
+                   [e.getBoundingClientRect().width, parseFloat(getComputedStyle(e).fontSize)]) }; })()""")
+    assert boxes["image"][2] >= 0.4 * width, f"the image is {boxes['image'][2]} px wide in a {width}-pixel window"
+    outside = [b for b in [boxes["image"], boxes["explain"], *boxes["tiles"]] if b[0] < 0 or b[1] > width]
+    assert len(boxes["tiles"]) == 7 and not outside, f"parts outside the {width}-pixel window: {outside}"
+    narrow = [f for f in boxes["fields"] if f[0] < 12 * f[1]]
+    assert boxes["fields"] and not narrow, f"LPE fields narrower than 12 characters' width (px, font px): {narrow}"
     error = browser.evaluate(f"(() => {{ const p = {tile('raytrace')}.querySelector('pre.error'); "
                              "return [p.hidden, p.scrollWidth, p.clientWidth]; })()")
     assert not error[0] and error[1] <= error[2], f"the syntax error is not wrapped in full under its input: {error}"
     if projector:
+        # On the projector the explanation begins on the first screen (issue 29: "below the fold").
+        top = browser.evaluate("document.querySelector('#explain h2').getBoundingClientRect().top + scrollY")
+        assert top < height, f"the explanation begins {top} px down a {height}-pixel window"
         sizes = browser.evaluate("""(() => {
             const sizes = {};
             for (const selector of ['body', 'header label', '#status', '.tile .expression', '.tile .name', 'pre.error',
@@ -290,6 +341,16 @@ def lecture_hall(browser, x, y, shots):
                      f"state.settings.lpes.every(e => e.expression === {json.dumps(LONG_LPE)}) && "
                      "document.getElementById('explain-table').dataset.generation === String(state.latestGeneration)",
                      "every tile's expression taken, and the pixel explained for it")
+    print("and after an LPE edit, a new AOV set and a change of settings")
+    browser.evaluate(WATCH_GENERATIONS)
+    change_then_explained(browser, f"const e = {tile('indirect')}.querySelector('.expression'); "
+                                   "e.value = 'E(D|G)(D|G|S)*L'; e.dispatchEvent(new Event('input'))", "an LPE edited")
+    change_then_explained(browser, "document.querySelector('button[data-preset=bounces]').click()", "the bounces set")
+    change_then_explained(browser, "const d = document.getElementById('max-depth'); d.value = Number(d.value) - 1; "
+                                   "d.dispatchEvent(new Event('change'))", "max depth one less")
+    change_then_explained(browser, "document.querySelector('button[data-preset=classes]').click()", "the classes set")
+    stale = stale_snapshots(browser)
+    assert not stale, f"the explain table or the drawn paths were an older render's when a new one began: {stale}"
     before = browser.evaluate("state.latestGeneration")
     select_integrator(browser, "bdpt")
     # Checked in the same task as the page learns of the new render: nothing of the old one remains.
@@ -306,6 +367,8 @@ def lecture_hall(browser, x, y, shots):
                      "document.querySelectorAll('#overlay g.path').length > 0", "the pixel explained again under bdpt")
     strategies = browser.evaluate("[...document.querySelectorAll('#explain-table tbody td.strategy-col')]"
                                   ".map(td => [td.textContent, getComputedStyle(td).display])")
+    stale = stale_snapshots(browser)
+    assert not stale, f"the explain table or the drawn paths were an older render's when a new one began: {stale}"
     assert strategies and all(re.fullmatch(r"\(\d+, \d+\)( splatted)?(, \(\d+, \d+\)( splatted)?)*", text) and display != "none"
                               for text, display in strategies), f"bdpt rows without their strategy (s, t): {strategies}"
 
@@ -322,21 +385,32 @@ def lecture_hall(browser, x, y, shots):
     assert browser.evaluate("document.getElementById('request-error').hidden"), \
         "the raster switch was refused: " + browser.evaluate("document.getElementById('request-error').textContent")
     assert "spp 1 instead of 16" in browser.evaluate("document.getElementById('notices').textContent")
+    # Not half-switched: the menu, the server's settings and the drawn status all say raster.
+    assert browser.evaluate("[document.getElementById('integrator').value, state.settings.integrator, "
+                            "state.settings.spp]") == ["raster", "raster", 1]
 
     print("radiosity: its solve shows progress and is counted in the time shown")
     select_integrator(browser, "radiosity")
-    # Records the longest wait the page showed while preparing, until the render is done.
+    # Records the longest wait and the most steps the page showed while the solve ran (the line's
+    # fraction and the bar's value agreeing), until the render is done.
     done = browser.wait_for(r"""(() => {
         const status = document.getElementById('status').textContent;
-        const preparing = /^preparing and rendering .* radiosity… ([0-9.]+) s$/.exec(status);
+        const preparing = /^preparing radiosity: (\d+)% \((\d+) of (\d+) steps\)… ([0-9.]+) s$/.exec(status);
         const bar = document.getElementById('timing');
-        if (preparing && !bar.hidden && !bar.hasAttribute('value'))
-          window.longestPreparing = Math.max(window.longestPreparing ?? 0, Number(preparing[1]));
-        return /^radiosity, .*\(done\) in ([0-9.]+) s/.exec(status)?.[1];
+        if (preparing && !bar.hidden && bar.value === Number(preparing[2]) && bar.max === Number(preparing[3])) {
+          window.longestPreparing = Math.max(window.longestPreparing ?? 0, Number(preparing[4]));
+          window.mostSteps = Math.max(window.mostSteps ?? 0, Number(preparing[2]));
+        }
+        const finished = /^radiosity, .*\(done\) in ([0-9.]+) s \(preparing ([0-9.]+) s \+ rendering ([0-9.]+) s\)$/.exec(status);
+        return finished && JSON.stringify(finished.slice(1).map(Number));
     })()""", "the radiosity render done", limit=900)
-    longest = browser.evaluate("window.longestPreparing ?? null")
-    assert longest is not None, "no progress was shown while radiosity prepared"
-    assert float(done) >= longest, f"the time shown ({done} s) leaves out the {longest} s of preparing"
+    wall, preparing, rendering = json.loads(done)
+    longest, steps = browser.evaluate("[window.longestPreparing ?? null, window.mostSteps ?? null]")
+    assert longest is not None, "no fraction of the solve was shown while radiosity prepared"
+    print(f"  the solve showed up to {steps} steps done and {longest} s; done in {wall} s "
+          f"(preparing {preparing} s + rendering {rendering} s)")
+    assert wall >= longest, f"the time shown ({wall} s) leaves out the {longest} s of preparing"
+    assert wall >= preparing + rendering - 0.02, f"the time shown ({wall} s) is less than its parts ({preparing} + {rendering})"
 
     print("radiosity's own parameters: controls from its schema, a change renders with it")
     controls = browser.evaluate("[...document.querySelectorAll('#integrator-parameters [data-parameter]')]"
@@ -436,8 +510,7 @@ def run(args, profile):
             browser.wait_for("document.querySelector('#automaton g.node.on-path')", "the selected path's states")
             browser.screenshot(args.screenshot, scale=0.7)  # small enough for the repository
 
-        with tempfile.TemporaryDirectory(prefix="lightpath-serve-shots-") as shots:
-            lecture_hall(browser, x, y, shots)
+        lecture_hall(browser, x, y, args.out)
 
         browser.call("Runtime.evaluate", expression="1")  # collect events still queued
         if browser.errors:

@@ -484,6 +484,33 @@ TEST_CASE("serve: a change of settings runs the integrator's preprocess once: on
     CHECK(Renderer::preprocessesRun() - before == 1);
 }
 
+TEST_CASE("serve: progress reports the preparation (radiosity's solve) with its steps and time, apart from the passes") {
+    ServerFixture fixture("cornell-original.toml");
+    const auto started = std::chrono::steady_clock::now();
+    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings,
+                                                          settingsFor(16, 12, 1, "radiosity").dump()));
+    const json done = fixture.waitUntilDone(job->generation);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const json& preparation = done["preparation"];
+    CHECK(preparation["state"] == "done");
+    // The solve counts its steps (form factors, direct light, bounces) as it runs; its tolerance
+    // may end it before the last.
+    CHECK(preparation["of"].get<int>() > 0);
+    CHECK(preparation["steps"].get<int>() > 0);
+    CHECK(preparation["steps"].get<int>() <= preparation["of"].get<int>());
+    // Measured apart from the passes' time, and both within the wall time the test waited.
+    CHECK(preparation["seconds"].get<double>() > 0.0);
+    CHECK(preparation["seconds"].get<double>() + done["seconds"].get<double>() <= wall);
+
+    // An integrator without a counted preprocess: done, no steps.
+    const auto whitted = fixture.session.update(applySettings(fixture.session.job()->settings,
+                                                              settingsFor(16, 12, 1, "whitted").dump()));
+    const json plain = fixture.waitUntilDone(whitted->generation);
+    CHECK(plain["preparation"]["state"] == "done");
+    CHECK(plain["preparation"]["of"] == 0);
+    CHECK(plain["preparation"]["steps"] == 0);
+}
+
 TEST_CASE("serve: an integrator's own parameters reach it, as the command line's --NAME does") {
     ServerFixture fixture("cornell-original.toml");
     const auto scene = json::parse(fixture.client()->Get("/api/scene")->body);
