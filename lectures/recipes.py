@@ -26,11 +26,14 @@ CLASS_NAMES = [n for n, _ in CLASSES]
 AMBIENT = "ambient=E.*<L.'ambient'>"      # the classic methods' ka Ia, all of it
 BOUNCED = "bounced=ES*D(D|G|S)+L"          # what ambient stands in for, in the path tracer
 CAUSTIC = "caustic=E(D|G)S+<L.>"           # light from lights through S onto D or G (no sky)
-# The taxonomy as the lecture's slide prints it (Magnusson), one expression per method.
+# The taxonomy, one expression per method, as the `taxonomy` preset writes it (src/film/
+# taxonomy_preset.cpp); Whitted's beauty also holds the lamp seen in the mirror, ES+L, so its
+# label says so beside the preset's E[S*](D|G)L. check_panel_lpes holds each to its image.
 METHODS = [("raycast", "ray casting", "E(D|G)L"),
-           ("whitted", "Whitted ray tracing", "E[S*](D|G)L"),
-           ("path", "path tracing", "E[(D|G|S)+(D|G)]L"),
+           ("whitted", "Whitted ray tracing", "E[S*](D|G)L|ES+L"),
+           ("path", "path tracing", "E(D|G|S)*L"),
            ("radiosity", "radiosity", "ED*L")]
+LABEL_LPE = re.compile(r"E\S*")  # a panel's text below that is one LPE (no spaces, from E)
 
 
 def full_slide_px():
@@ -64,6 +67,20 @@ def method_renders(fig):
     return exrs
 
 
+def check_panel_lpes(fig, panels):
+    """Every panel whose text below is one LPE: parsed by `lightpath lpe match` and matched
+    against what the panel shows (checks.check_label): a layer of the taxonomy renders against
+    its own expression, a beauty against the classes of light it holds."""
+    own = dict(CLASSES)
+    own.update(e.split("=", 1) for e in (AMBIENT, BOUNCED, CAUSTIC))
+    for p in panels:
+        if p.source is None or not LABEL_LPE.fullmatch(p.below):
+            continue
+        layer_expr = own[p.layer] if p.layer else None
+        checks.check_label(fig.run.lightpath, p.below, p.source, p.layer, layer_expr, CLASSES)
+    return "every printed LPE parsed by lpe match and matched against its panel's AOV"
+
+
 def four_methods(fig):
     exrs = method_renders(fig)
     notes = []
@@ -83,6 +100,7 @@ def four_methods(fig):
     panels += [Panel(exrs["radiosity"], "radiosity", "ED*L"),
                Panel(exrs["path"], "path tracing: indirect", "ES*(D|G)(D|G|S)+L", layer="indirect"),
                Panel(exrs["bdpt"], "bdpt: caustics", "E(D|G)S+<L.>", layer="caustic")]
+    notes.append(check_panel_lpes(fig, panels))
     fig.compose(panels, cols=3)
     return notes
 
@@ -106,17 +124,28 @@ def nest(fig):
                               "path - whitted against indirect - ambient",
                               scale=float(checks.luminance(path[""]).mean()))
     d = fig.dir
+    # Both signed differences on one diverging scale, median-filtered over NEST_SMOOTH_RADIUS
+    # pixels around each so that the sign reads through the path tracer's noise and fireflies
+    # (the check above is on the unfiltered means).
+    (adds_exr, aovs_exr), scale = checks.diverging_exrs(
+        [path_adds, path_from_aovs], [d / "path-adds.exr", d / "path-adds-aovs.exr"],
+        radius=NEST_SMOOTH_RADIUS)
     panels = [Panel(exrs[i], label, lpe) for i, label, lpe in METHODS[:3]]
     panels += [Panel(checks.write_exr(whitted_adds, d / "whitted-adds.exr"),
-                     "what Whitted adds", "ES+(D|G)L + ES+L"),
-               Panel(checks.signed_exr(path_adds, d / "path-adds.exr"),
-                     "what path tracing adds", "indirect - ambient"),
-               Panel(checks.signed_exr(path_from_aovs, d / "path-adds-aovs.exr"),
-                     "the same from its AOVs", "orange +, blue -")]
+                     "Whitted - ray casting", "ES+(D|G)L + ES+L"),
+               Panel(adds_exr, "path - Whitted", "red +, blue -, white 0"),
+               Panel(aovs_exr, "indirect - ambient", "the same from the AOVs")]
+    notes = [check_panel_lpes(fig, panels)]
     fig.compose(panels, cols=3)
-    return [f"whitted - raycast = raytrace + mirror in every pixel (worst {worst:.2g})",
-            f"path - whitted against indirect - ambient: means differ by {diff:.3g} of the "
-            f"beauty's mean (bound {rtol})"]
+    return notes + [
+        f"whitted - raycast = raytrace + mirror in every pixel (worst {worst:.2g})",
+        f"path - whitted against indirect - ambient: means differ by {diff:.3g} of the "
+        f"beauty's mean (bound {rtol})",
+        f"signed differences: full red or blue at +-{scale:.3g} (99th percentile of |luminance|), "
+        f"each pixel the median of {2 * NEST_SMOOTH_RADIUS + 1}x{2 * NEST_SMOOTH_RADIUS + 1}"]
+
+
+NEST_SMOOTH_RADIUS = 2
 
 
 def decomposition(fig):
@@ -129,6 +158,7 @@ def decomposition(fig):
     notes.append("whitted: indirect is exactly zero")
     panels = [Panel(exrs["path"], "beauty", "= the sum of the five")]
     panels += [Panel(exrs["path"], n, lpe, layer=n) for n, lpe in CLASSES]
+    notes.append(check_panel_lpes(fig, panels))
     fig.compose(panels, cols=3)
     return notes
 
@@ -299,11 +329,15 @@ def ambient(fig):
     exrs = method_renders(fig)
     w, p = exrs["whitted"], exrs["path"]
     checks.check_nonzero(p, "bounced", "what ambient stands for")
-    panels = [Panel(w, "Whitted: beauty", "E[S*](D|G)L"),
-              Panel(p, "path tracer: beauty", "E[(D|G|S)+(D|G)]L"),
+    checks.check_caption_objects(fig.caption, fig.scene(0))
+    panels = [Panel(w, "Whitted: beauty", METHODS[1][2]),
+              Panel(p, "path tracer: beauty", METHODS[2][2]),
               Panel(w, "ambient term ka Ia", "E.*<L.'ambient'>", layer="ambient"),
               Panel(p, "what it stands for", "ES*D(D|G|S)+L", layer="bounced")]
+    notes = [check_panel_lpes(fig, panels),
+             "every object the caption names is in the scene, as often as it says"]
     fig.compose(panels, cols=2)
+    return notes
 
 
 BOUNCES = [("b1", "EDL"), ("b2", "EDDL"), ("b3", "EDDDL"), ("b4", "ED{4,}L")]
