@@ -250,17 +250,36 @@ def first_hit(fig, i, centre, r):
     """The renderer's answer for one ray: does it hit the ball, and the first hit's t.
 
     From `explain --json` of the 1x1 image whose one ray is the drawn ray: a hit is a path
-    touching 'ball'; the diffuse layer (eye lamp, attenuation 1/d, kd = 1, N.L = 1 on a ray
-    through the centre) is 1/t."""
+    touching 'ball', and t the distance from the eye to the hit vertex explain reports. Where
+    N.L = 1 (a ray through the centre; eye lamp, attenuation 1/d, kd = 1) the diffuse layer is
+    1/t too, and must agree."""
     scene = scene_variant(fig.dir, fig.scene(0).name, f"case-{i}", dir_x=1, dir_y=0, dir_z=0,
                           cx=centre[0], cy=centre[1], cz=centre[2], r=r)
     doc = explain(fig.run, scene, 0, 0, "--integrator", "raycast",
                   "--lpe", "diffuse=ED<L.'eye-lamp'>", "--lpe", "ambient=ED<L.'ambient'>")
-    hit = any(e.get("touched") == "ball" or e.get("label") == "ball"
-              for p in doc["paths"] for e in p["events"])
+    ball_paths = [p for p in doc["paths"]
+                  if any(e.get("touched") == "ball" or e.get("label") == "ball" for e in p["events"])]
+    if not ball_paths:
+        return False, None
+    eye, first = (np.array(v) for v in ball_paths[0]["contributions"][0]["vertices"][:2])
+    t = float(np.linalg.norm(first - eye))
     diffuse = next(l["rgb"][0] for l in doc["layers"] if l["name"] == "diffuse")
-    t = 1.0 / diffuse if diffuse > 0 else None
-    return hit, t
+    if centre[1] == 0 and diffuse > 0 and abs(1.0 / diffuse - t) > 1e-3 * t:
+        raise FigureError(f"ray-sphere case {i}: the hit vertex is at t = {t}, the diffuse term "
+                          f"says 1/{diffuse} = {1.0 / diffuse}")
+    return True, t
+
+
+def check_ray_sphere_diagram(results):
+    """What the diagram must show: a first-hit marker and its t for every hit the renderer
+    reports, and every circle whole inside the drawn area (none clipped)."""
+    (x0, x1), (y0, y1) = plots.RAY_SPHERE_XLIM, plots.RAY_SPHERE_YLIM
+    for name, c, r, hit, t in results:
+        if hit and t is None:
+            raise FigureError(f"ray-sphere '{name}': a hit without t: no first-hit marker to draw")
+        if not (x0 < c[0] - r and c[0] + r < x1 and y0 < c[1] - r and c[1] + r < y1):
+            raise FigureError(f"ray-sphere '{name}': the circle (centre {c[:2]}, r {r}) is "
+                              f"clipped by the diagram's area x {x0}..{x1}, y {y0}..{y1}")
 
 
 def ray_sphere(fig):
@@ -269,16 +288,18 @@ def ray_sphere(fig):
         hit, t = first_hit(fig, i, c, r)
         results.append((name, c, r, hit, t))
     # Against the closed form: t = c.x - sqrt(r^2 - c.y^2) for a ball in front (the origin
-    # outside), c.x + sqrt(...) from inside; no hit when the ray misses or the ball is behind.
+    # outside), c.x + sqrt(...) from inside; no hit when the ray misses or the ball is behind;
+    # the tangent's double root c.x, if the renderer's rounding makes it a hit.
     for name, c, r, hit, t in results:
         h2 = r * r - c[1] ** 2
         roots = [] if h2 < 0 else [c[0] - h2 ** 0.5, c[0] + h2 ** 0.5]
         ahead = [x for x in roots if x > 1e-9]
-        expected = min(ahead) if ahead and h2 > 1e-12 else None
+        expected = min(ahead) if ahead and (h2 > 1e-12 or hit) else None
         if expected is not None and (t is None or abs(t - expected) > 1e-3 * expected):
             raise FigureError(f"ray-sphere '{name}': lightpath's t = {t}, the formula's {expected}")
         if expected is None and name != "tangent" and hit:
             raise FigureError(f"ray-sphere '{name}': lightpath reports a hit, the formula none")
+    check_ray_sphere_diagram(results)
     png = fig.dir / "diagram.png"
     w, h = full_slide_px()
     plots.ray_sphere_diagram(png, results, w, h)
