@@ -44,7 +44,7 @@ def full_slide_px():
 def method_renders(fig):
     """The taxonomy scene under raycast, Whitted, path tracing, radiosity and bdpt.
 
-    Shared by the four-methods, nest, decomposition and ambient figures (each lists the same
+    Shared by the four-methods, nest and ambient figures (each lists the same
     commands; the EXRs are made once, in taxonomy/). Every render has the classes AOVs; the
     classic methods add their ambient term, the path tracer what ambient stands for and its
     caustics, bdpt only the caustics (its beauty is not shown)."""
@@ -149,13 +149,21 @@ NEST_SMOOTH_RADIUS = 2
 
 
 def decomposition(fig):
-    exrs = method_renders(fig)
+    # Its own scene (the taxonomy's with a sky and the lamp in view), so that all five panels
+    # show light: in the taxonomy scene emission is black and mirror one spot.
+    run, scene = fig.run, fig.scene(0)
+    common = ["--resolution", run.res(640, 360), "--sampler", "sobol", "--aovs", "classes"]
+    exrs = {integ: render(run, fig.id, integ, scene, "--integrator", integ, "--spp", spp, *common)
+            for integ, spp in (("whitted", run.spp_direct), ("path", run.spp_path))}
     notes = []
     for integ in ("whitted", "path"):
         worst = checks.check_sum(exrs[integ], CLASS_NAMES)
         notes.append(f"{integ}: max relative |sum - beauty| = {worst:.2g}")
     checks.check_zero(exrs["whitted"], "indirect", "Whitted's indirect light")
     notes.append("whitted: indirect is exactly zero")
+    for n, lpe in CLASSES:  # the slide promises each AOV: none may be a black panel
+        mean = checks.check_nonzero(exrs["path"], n, f"the {n} panel, {lpe}")
+        notes.append(f"path: {n} {lpe} mean luminance {mean:.3g} (non-black)")
     panels = [Panel(exrs["path"], "beauty", "= the sum of the five")]
     panels += [Panel(exrs["path"], n, lpe, layer=n) for n, lpe in CLASSES]
     notes.append(check_panel_lpes(fig, panels))
