@@ -3,7 +3,9 @@
 Each check raises FigureError, which stops the generator: a slide that would lie is not drawn."""
 
 import itertools
+import re
 import subprocess
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -208,8 +210,6 @@ def check_caption_objects(caption, scene_toml, kinds=("wall", "floor", "ceiling"
     """Fail when the caption names a kind of object ('the walls', 'the red ball') the scene does
     not have as often as it says: the objects whose names hold the kind must be at least one
     for the singular and two for the plural. 'lamp' is any light of the scene."""
-    import re
-    import tomllib
     scene = tomllib.loads(Path(scene_toml).read_text())
     names = [o.get("name", "") for key in ("spheres", "planes", "triangles", "meshes")
              for o in scene.get(key, [])]
