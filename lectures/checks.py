@@ -2,6 +2,10 @@
 
 Each check raises FigureError, which stops the generator: a slide that would lie is not drawn."""
 
+import itertools
+import re
+import subprocess
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -62,6 +66,36 @@ def signed_exr(diff, path, positive=(1.0, 0.55, 0.12), negative=(0.2, 0.5, 1.0))
     return write_exr(rgb, path)
 
 
+def srgb_to_linear(v):
+    """sRGB-encoded values in [0, 1] to linear (IEC 61966-2-1), the compositor's inverse."""
+    v = np.asarray(v, dtype=np.float64)
+    return np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
+
+
+def median_filter(y, radius):
+    """Each pixel of a 2-D array the median of the (2 radius + 1)^2 pixels around it (edges
+    clamped): noise is smoothed and a single firefly vanishes instead of spreading."""
+    k = 2 * radius + 1
+    padded = np.pad(y, radius, mode="edge")
+    windows = np.lib.stride_tricks.sliding_window_view(padded, (k, k))
+    return np.median(windows.reshape(*y.shape, k * k), axis=-1)
+
+
+def diverging_exrs(diffs, paths, radius=0, cmap="RdBu_r", percentile=99.0):
+    """Signed differences drawn with one diverging colour map and one scale: zero white
+    (never dark on the slide's dark ground), red above zero, blue below, full colour at the
+    percentile of |luminance| over all of them; each luminance median-filtered over radius
+    pixels around it. Returns (paths, the scale)."""
+    from matplotlib import colormaps
+    ys = [median_filter(luminance(d), radius) if radius else luminance(d) for d in diffs]
+    scale = max(float(np.percentile(np.abs(np.concatenate([y.ravel() for y in ys])), percentile)),
+                1e-6)
+    for y, path in zip(ys, paths):
+        srgb = colormaps[cmap](np.clip(0.5 + 0.5 * y / scale, 0.0, 1.0))[..., :3]
+        write_exr(srgb_to_linear(srgb), path)  # the compositor sRGB-encodes it back
+    return paths, scale
+
+
 def layer(exr, name):
     """One layer of an EXR ('' is the beauty), with a clear error when it is missing."""
     layers = read_layers(exr)
@@ -116,3 +150,74 @@ def check_close(a, b, rtol, what, scale=None):
     if not diff <= rtol:
         raise FigureError(f"{what}: the means differ by {diff:.3g} of {scale:.3g} (relative) > {rtol}")
     return float(diff)
+
+
+def enumerated_paths(max_events=4):
+    """Every path E x1..xk L with k <= max_events events from D, G, S (compact notation): the
+    paths on which a label is compared with what its panel shows."""
+    return ["E" + "".join(p) + "L" for k in range(max_events + 1)
+            for p in itertools.product("DGS", repeat=k)]
+
+
+_accepts_cache = {}
+
+
+def lpe_accepts(lightpath, expr, paths):
+    """The paths `lightpath lpe match` says expr accepts; FigureError when it refuses expr."""
+    key = (expr, tuple(paths))
+    if key not in _accepts_cache:
+        proc = subprocess.run([lightpath, "lpe", "match", "--quiet", expr, *paths],
+                              capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise FigureError(f"'{expr}': lightpath lpe match refuses it (exit "
+                              f"{proc.returncode}): {proc.stderr.strip()}")
+        accepted = {line.split()[-1] for line in proc.stdout.splitlines()
+                    if line.startswith("match ")}
+        _accepts_cache[key] = accepted
+    return _accepts_cache[key]
+
+
+def check_label(lightpath, label, exr, layer_name, layer_expr, classes):
+    """Fail unless a panel's printed LPE is what the panel shows, by `lightpath lpe match`.
+
+    A panel of one AOV (layer_expr given): the label accepts exactly the paths the AOV's own
+    expression accepts, on every path of enumerated_paths(). A beauty (layer_expr None): for each
+    (name, expr) of classes whose AOV in exr is non-zero somewhere, the label accepts at least one
+    path of that class: a label that misses light the image holds is refused."""
+    paths = enumerated_paths()
+    said = lpe_accepts(lightpath, label, paths)
+    if layer_expr is not None:
+        meant = lpe_accepts(lightpath, layer_expr, paths)
+        if said != meant:
+            extra, missed = sorted(said - meant, key=len), sorted(meant - said, key=len)
+            raise FigureError(f"{exr}: the '{layer_name}' panel is labelled '{label}', but its AOV "
+                              f"is '{layer_expr}': the label " +
+                              (f"adds {', '.join(extra[:4])}" if extra else "") +
+                              (" and " if extra and missed else "") +
+                              (f"misses {', '.join(missed[:4])}" if missed else ""))
+        return
+    for name, expr in classes:
+        if not np.any(layer(exr, name)):
+            continue
+        held = lpe_accepts(lightpath, expr, paths)
+        if not held & said:
+            raise FigureError(f"{exr}: the beauty holds {name} light {expr} (e.g. "
+                              f"{', '.join(sorted(held, key=len)[:3])}), but its label '{label}' "
+                              "accepts none of those paths")
+
+
+def check_caption_objects(caption, scene_toml, kinds=("wall", "floor", "ceiling", "ball")):
+    """Fail when the caption names a kind of object ('the walls', 'the red ball') the scene does
+    not have as often as it says: the objects whose names hold the kind must be at least one
+    for the singular and two for the plural. 'lamp' is any light of the scene."""
+    scene = tomllib.loads(Path(scene_toml).read_text())
+    names = [o.get("name", "") for key in ("spheres", "planes", "triangles", "meshes")
+             for o in scene.get(key, [])]
+    counts = {kind: sum(kind in n for n in names) for kind in kinds}
+    counts["lamp"] = len(scene.get("lights", []))
+    for kind, have in counts.items():
+        for m in re.finditer(rf"\b{kind}(s?)\b", caption):
+            need = 2 if m.group(1) else 1
+            if have < need:
+                raise FigureError(f"the caption says '{m.group(0)}', but {scene_toml} has {have} "
+                                  f"{kind}(s) (objects: {', '.join(names)})")

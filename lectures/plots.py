@@ -31,6 +31,10 @@ def exponent_plot(png, exponents, width_px, height_px):
         plt.close(fig)
 
 
+RAY_SPHERE_XLIM = (-3.7, 5.2)  # the drawn area of each case (world units); the recipe checks
+RAY_SPHERE_YLIM = (-2.7, 2.9)  # every circle lies inside it
+
+
 def ray_sphere_diagram(png, cases, width_px, height_px):
     """One small diagram per case: the ray from the origin along +x, the circle, the first hit
     the renderer reported (red) and the quadratic's other root (grey ring).
@@ -43,8 +47,8 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
             ax.axis("off")
         for ax, (name, c, r, hit, t) in zip(axes.flat, cases):
             ax.set_aspect("equal")
-            ax.set_xlim(-3.7, 5.2)
-            ax.set_ylim(-2.4, 2.6)
+            ax.set_xlim(*RAY_SPHERE_XLIM)
+            ax.set_ylim(*RAY_SPHERE_YLIM)
             ax.axis("off")
             ax.add_patch(plt.Circle((c[0], c[1]), r, fill=False, lw=4, color="tab:blue"))
             ax.annotate("", xy=(5.0, 0), xytext=(0, 0),
@@ -58,7 +62,7 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
                     ax.plot([x], [0], "o", ms=16, mfc="none", mec="gray", mew=3)
             if t is not None:
                 ax.plot([t], [0], "o", ms=18, color="tab:red")
-            verdict = f"t = {t:.3f}" if (hit and t is not None) else ("hit" if hit else "miss")
+            verdict = f"hit, t = {t:.3f}" if (hit and t is not None) else ("hit" if hit else "miss")
             ax.set_title(f"{name}\n{verdict}", fontsize=30)
         fig.tight_layout()
         if len(cases) < axes.size:  # the key in the free cell

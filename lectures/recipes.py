@@ -26,11 +26,14 @@ CLASS_NAMES = [n for n, _ in CLASSES]
 AMBIENT = "ambient=E.*<L.'ambient'>"      # the classic methods' ka Ia, all of it
 BOUNCED = "bounced=ES*D(D|G|S)+L"          # what ambient stands in for, in the path tracer
 CAUSTIC = "caustic=E(D|G)S+<L.>"           # light from lights through S onto D or G (no sky)
-# The taxonomy as the lecture's slide prints it (Magnusson), one expression per method.
+# The taxonomy, one expression per method, as the `taxonomy` preset writes it (src/film/
+# taxonomy_preset.cpp); Whitted's beauty also holds the lamp seen in the mirror, ES+L, so its
+# label says so beside the preset's E[S*](D|G)L. check_panel_lpes holds each to its image.
 METHODS = [("raycast", "ray casting", "E(D|G)L"),
-           ("whitted", "Whitted ray tracing", "E[S*](D|G)L"),
-           ("path", "path tracing", "E[(D|G|S)+(D|G)]L"),
+           ("whitted", "Whitted ray tracing", "E[S*](D|G)L|ES+L"),
+           ("path", "path tracing", "E(D|G|S)*L"),
            ("radiosity", "radiosity", "ED*L")]
+LABEL_LPE = re.compile(r"E\S*")  # a panel's text below that is one LPE (no spaces, from E)
 
 
 def full_slide_px():
@@ -41,7 +44,7 @@ def full_slide_px():
 def method_renders(fig):
     """The taxonomy scene under raycast, Whitted, path tracing, radiosity and bdpt.
 
-    Shared by the four-methods, nest, decomposition and ambient figures (each lists the same
+    Shared by the four-methods, nest and ambient figures (each lists the same
     commands; the EXRs are made once, in taxonomy/). Every render has the classes AOVs; the
     classic methods add their ambient term, the path tracer what ambient stands for and its
     caustics, bdpt only the caustics (its beauty is not shown)."""
@@ -64,6 +67,20 @@ def method_renders(fig):
     return exrs
 
 
+def check_panel_lpes(fig, panels):
+    """Every panel whose text below is one LPE: parsed by `lightpath lpe match` and matched
+    against what the panel shows (checks.check_label): a layer of the taxonomy renders against
+    its own expression, a beauty against the classes of light it holds."""
+    own = dict(CLASSES)
+    own.update(e.split("=", 1) for e in (AMBIENT, BOUNCED, CAUSTIC))
+    for p in panels:
+        if p.source is None or not LABEL_LPE.fullmatch(p.below):
+            continue
+        layer_expr = own[p.layer] if p.layer else None
+        checks.check_label(fig.run.lightpath, p.below, p.source, p.layer, layer_expr, CLASSES)
+    return "every printed LPE parsed by lpe match and matched against its panel's AOV"
+
+
 def four_methods(fig):
     exrs = method_renders(fig)
     notes = []
@@ -83,6 +100,7 @@ def four_methods(fig):
     panels += [Panel(exrs["radiosity"], "radiosity", "ED*L"),
                Panel(exrs["path"], "path tracing: indirect", "ES*(D|G)(D|G|S)+L", layer="indirect"),
                Panel(exrs["bdpt"], "bdpt: caustics", "E(D|G)S+<L.>", layer="caustic")]
+    notes.append(check_panel_lpes(fig, panels))
     fig.compose(panels, cols=3)
     return notes
 
@@ -106,29 +124,49 @@ def nest(fig):
                               "path - whitted against indirect - ambient",
                               scale=float(checks.luminance(path[""]).mean()))
     d = fig.dir
+    # Both signed differences on one diverging scale, median-filtered over NEST_SMOOTH_RADIUS
+    # pixels around each so that the sign reads through the path tracer's noise and fireflies
+    # (the check above is on the unfiltered means).
+    (adds_exr, aovs_exr), scale = checks.diverging_exrs(
+        [path_adds, path_from_aovs], [d / "path-adds.exr", d / "path-adds-aovs.exr"],
+        radius=NEST_SMOOTH_RADIUS)
     panels = [Panel(exrs[i], label, lpe) for i, label, lpe in METHODS[:3]]
     panels += [Panel(checks.write_exr(whitted_adds, d / "whitted-adds.exr"),
-                     "what Whitted adds", "ES+(D|G)L + ES+L"),
-               Panel(checks.signed_exr(path_adds, d / "path-adds.exr"),
-                     "what path tracing adds", "indirect - ambient"),
-               Panel(checks.signed_exr(path_from_aovs, d / "path-adds-aovs.exr"),
-                     "the same from its AOVs", "orange +, blue -")]
+                     "Whitted - ray casting", "ES+(D|G)L + ES+L"),
+               Panel(adds_exr, "path - Whitted", "red +, blue -, white 0"),
+               Panel(aovs_exr, "indirect - ambient", "the same from the AOVs")]
+    notes = [check_panel_lpes(fig, panels)]
     fig.compose(panels, cols=3)
-    return [f"whitted - raycast = raytrace + mirror in every pixel (worst {worst:.2g})",
-            f"path - whitted against indirect - ambient: means differ by {diff:.3g} of the "
-            f"beauty's mean (bound {rtol})"]
+    return notes + [
+        f"whitted - raycast = raytrace + mirror in every pixel (worst {worst:.2g})",
+        f"path - whitted against indirect - ambient: means differ by {diff:.3g} of the "
+        f"beauty's mean (bound {rtol})",
+        f"signed differences: full red or blue at +-{scale:.3g} (99th percentile of |luminance|), "
+        f"each pixel the median of {2 * NEST_SMOOTH_RADIUS + 1}x{2 * NEST_SMOOTH_RADIUS + 1}"]
+
+
+NEST_SMOOTH_RADIUS = 2
 
 
 def decomposition(fig):
-    exrs = method_renders(fig)
+    # Its own scene (the taxonomy's with a sky and the lamp in view), so that all five panels
+    # show light: in the taxonomy scene emission is black and mirror one spot.
+    run, scene = fig.run, fig.scene(0)
+    common = ["--resolution", run.res(640, 360), "--sampler", "sobol", "--aovs", "classes"]
+    exrs = {integ: render(run, fig.id, integ, scene, "--integrator", integ, "--spp", spp, *common)
+            for integ, spp in (("whitted", run.spp_direct), ("path", run.spp_path))}
     notes = []
     for integ in ("whitted", "path"):
         worst = checks.check_sum(exrs[integ], CLASS_NAMES)
         notes.append(f"{integ}: max relative |sum - beauty| = {worst:.2g}")
     checks.check_zero(exrs["whitted"], "indirect", "Whitted's indirect light")
     notes.append("whitted: indirect is exactly zero")
+    for n, lpe in CLASSES:  # the slide promises each AOV: none may be a black panel
+        mean = checks.check_nonzero(exrs["path"], n, f"the {n} panel, {lpe}")
+        notes.append(f"path: {n} {lpe} mean luminance {mean:.3g} (non-black)")
     panels = [Panel(exrs["path"], "beauty", "= the sum of the five")]
     panels += [Panel(exrs["path"], n, lpe, layer=n) for n, lpe in CLASSES]
+    notes.append(check_panel_lpes(fig, panels))
     fig.compose(panels, cols=3)
     return notes
 
@@ -190,20 +228,47 @@ def shadow_scene(fig, s):
                          light_x=-6.0 * s, light_y=1.2 * s)
 
 
+# The zoomed part of each shadow panel (fractions of the image): the ball's lit side and the
+# floor left of it, where acne shows, and the contact, where a detached shadow shows.
+ACNE_CROP = (0.2, 0.3, 0.6, 0.7)  # 16:9, as the panels
+ACNE_MIN_FRACTION = 0.01  # of the inset's pixels darker than the robust render's: acne shows
+ACNE_DARKER = 0.8          # "darker": below this fraction of the robust render's luminance
+
+
+def acne_fraction(exr, reference, crop):
+    """The fraction of the crop's pixels whose luminance is below ACNE_DARKER of reference's:
+    the shadow rays that hit their own surface (the picture is the same at every scale)."""
+    a, b = (checks.luminance(checks.layer(e, "")) for e in (exr, reference))
+    h, w = a.shape
+    x0, y0, x1, y1 = crop
+    cut = (slice(round(y0 * h), round(y1 * h)), slice(round(x0 * w), round(x1 * w)))
+    return float((a[cut] < ACNE_DARKER * b[cut]).mean())
+
+
 def shadow_acne(fig):
     run = fig.run
-    cases = [(1.0, ["--ray-offset", "none"], "no offset, scale 1", "acne"),
-             (1e3, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "epsilon 1e-4, scale 1e3",
-              "too small here: acne"),
-             (2e-4, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "epsilon 1e-4, scale 2e-4",
-              "too large: the shadow detaches"),
-             (1e3, [], "robust offset, scale 1e3", "the hit's error bound")]
-    panels = []
-    for i, (s, opts, label, note) in enumerate(cases):
-        exr = render(run, fig.id, f"shadow-{i}", shadow_scene(fig, s), *opts,
-                     "--resolution", run.res(640, 360), "--spp", run.spp_direct)
-        panels.append(Panel(exr, label, note))
-    fig.compose(panels)
+    cases = [(1.0, ["--ray-offset", "none"], "no offset", "scale 1: acne", True),
+             (1e3, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "eps 1e-4",
+              "scale 1e3: acne", True),
+             (2e-4, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "eps 1e-4",
+              "scale 2e-4: detached", False),
+             (1e3, [], "robust offset", "scale 1e3: right", False)]
+    exrs = [render(run, fig.id, f"shadow-{i}", shadow_scene(fig, s), *opts,
+                   "--resolution", run.res(640, 360), "--spp", run.spp_direct)
+            for i, (s, opts, _, _, _) in enumerate(cases)]
+    # the insets must show what their labels say: acne where there is, none from the robust offset
+    notes = []
+    for exr, (_, _, label, note, acne) in zip(exrs, cases):
+        f = acne_fraction(exr, exrs[-1], ACNE_CROP)
+        if acne and not f >= ACNE_MIN_FRACTION:
+            raise FigureError(f"{exr}: '{label}, {note}': only {f:.2%} of the inset's pixels are "
+                              f"acne (< {ACNE_MIN_FRACTION:.0%}): the zoom would show none")
+        notes.append(f"{label}, {note}: {f:.1%} of the inset darker than the robust offset's")
+    panels = [Panel(exr, label, note) for exr, (_, _, label, note, _) in zip(exrs, cases)]
+    zoom = round(1 / (ACNE_CROP[2] - ACNE_CROP[0]), 1)
+    panels += [Panel(exr, f"zoom x{zoom:g}", "", crop=ACNE_CROP) for exr in exrs]
+    fig.compose(panels, cols=4)
+    return notes
 
 
 RAY_SPHERE_CASES = [
@@ -220,17 +285,36 @@ def first_hit(fig, i, centre, r):
     """The renderer's answer for one ray: does it hit the ball, and the first hit's t.
 
     From `explain --json` of the 1x1 image whose one ray is the drawn ray: a hit is a path
-    touching 'ball'; the diffuse layer (eye lamp, attenuation 1/d, kd = 1, N.L = 1 on a ray
-    through the centre) is 1/t."""
+    touching 'ball', and t the distance from the eye to the hit vertex explain reports. Where
+    N.L = 1 (a ray through the centre; eye lamp, attenuation 1/d, kd = 1) the diffuse layer is
+    1/t too, and must agree."""
     scene = scene_variant(fig.dir, fig.scene(0).name, f"case-{i}", dir_x=1, dir_y=0, dir_z=0,
                           cx=centre[0], cy=centre[1], cz=centre[2], r=r)
     doc = explain(fig.run, scene, 0, 0, "--integrator", "raycast",
                   "--lpe", "diffuse=ED<L.'eye-lamp'>", "--lpe", "ambient=ED<L.'ambient'>")
-    hit = any(e.get("touched") == "ball" or e.get("label") == "ball"
-              for p in doc["paths"] for e in p["events"])
+    ball_paths = [p for p in doc["paths"]
+                  if any(e.get("touched") == "ball" or e.get("label") == "ball" for e in p["events"])]
+    if not ball_paths:
+        return False, None
+    eye, first = (np.array(v) for v in ball_paths[0]["contributions"][0]["vertices"][:2])
+    t = float(np.linalg.norm(first - eye))
     diffuse = next(l["rgb"][0] for l in doc["layers"] if l["name"] == "diffuse")
-    t = 1.0 / diffuse if diffuse > 0 else None
-    return hit, t
+    if centre[1] == 0 and diffuse > 0 and abs(1.0 / diffuse - t) > 1e-3 * t:
+        raise FigureError(f"ray-sphere case {i}: the hit vertex is at t = {t}, the diffuse term "
+                          f"says 1/{diffuse} = {1.0 / diffuse}")
+    return True, t
+
+
+def check_ray_sphere_diagram(results):
+    """What the diagram must show: a first-hit marker and its t for every hit the renderer
+    reports, and every circle whole inside the drawn area (none clipped)."""
+    (x0, x1), (y0, y1) = plots.RAY_SPHERE_XLIM, plots.RAY_SPHERE_YLIM
+    for name, c, r, hit, t in results:
+        if hit and t is None:
+            raise FigureError(f"ray-sphere '{name}': a hit without t: no first-hit marker to draw")
+        if not (x0 < c[0] - r and c[0] + r < x1 and y0 < c[1] - r and c[1] + r < y1):
+            raise FigureError(f"ray-sphere '{name}': the circle (centre {c[:2]}, r {r}) is "
+                              f"clipped by the diagram's area x {x0}..{x1}, y {y0}..{y1}")
 
 
 def ray_sphere(fig):
@@ -239,16 +323,18 @@ def ray_sphere(fig):
         hit, t = first_hit(fig, i, c, r)
         results.append((name, c, r, hit, t))
     # Against the closed form: t = c.x - sqrt(r^2 - c.y^2) for a ball in front (the origin
-    # outside), c.x + sqrt(...) from inside; no hit when the ray misses or the ball is behind.
+    # outside), c.x + sqrt(...) from inside; no hit when the ray misses or the ball is behind;
+    # the tangent's double root c.x, if the renderer's rounding makes it a hit.
     for name, c, r, hit, t in results:
         h2 = r * r - c[1] ** 2
         roots = [] if h2 < 0 else [c[0] - h2 ** 0.5, c[0] + h2 ** 0.5]
         ahead = [x for x in roots if x > 1e-9]
-        expected = min(ahead) if ahead and h2 > 1e-12 else None
+        expected = min(ahead) if ahead and (h2 > 1e-12 or hit) else None
         if expected is not None and (t is None or abs(t - expected) > 1e-3 * expected):
             raise FigureError(f"ray-sphere '{name}': lightpath's t = {t}, the formula's {expected}")
         if expected is None and name != "tangent" and hit:
             raise FigureError(f"ray-sphere '{name}': lightpath reports a hit, the formula none")
+    check_ray_sphere_diagram(results)
     png = fig.dir / "diagram.png"
     w, h = full_slide_px()
     plots.ray_sphere_diagram(png, results, w, h)
@@ -299,11 +385,15 @@ def ambient(fig):
     exrs = method_renders(fig)
     w, p = exrs["whitted"], exrs["path"]
     checks.check_nonzero(p, "bounced", "what ambient stands for")
-    panels = [Panel(w, "Whitted: beauty", "E[S*](D|G)L"),
-              Panel(p, "path tracer: beauty", "E[(D|G|S)+(D|G)]L"),
+    checks.check_caption_objects(fig.caption, fig.scene(0))
+    panels = [Panel(w, "Whitted: beauty", METHODS[1][2]),
+              Panel(p, "path tracer: beauty", METHODS[2][2]),
               Panel(w, "ambient term ka Ia", "E.*<L.'ambient'>", layer="ambient"),
               Panel(p, "what it stands for", "ES*D(D|G|S)+L", layer="bounced")]
+    notes = [check_panel_lpes(fig, panels),
+             "every object the caption names is in the scene, as often as it says"]
     fig.compose(panels, cols=2)
+    return notes
 
 
 BOUNCES = [("b1", "EDL"), ("b2", "EDDL"), ("b3", "EDDDL"), ("b4", "ED{4,}L")]

@@ -28,6 +28,7 @@ MIN_TEXT_PX = 36  # the issue's bar for LPE captions at 1080p
 LABEL_H = LABEL_PX + 14  # the cell's band above the image
 BELOW_H = BELOW_PX + 16  # the cell's band below it
 GAP = 24  # between cells
+TEXT_SEPARATION = GAP // 2  # the least room between one cell's text and the next cell's
 
 assert min(LABEL_PX, BELOW_PX, TITLE_PX) >= MIN_TEXT_PX
 
@@ -57,10 +58,20 @@ class Panel:
 
     source None is an empty cell of the grid (nothing drawn there)."""
 
-    def __init__(self, source, label="", below="", layer=None, exposure=1.0):
+    def __init__(self, source, label="", below="", layer=None, exposure=1.0, crop=None):
         self.source = Path(source) if source is not None else None
         self.label, self.below = label, below
         self.layer, self.exposure = layer, exposure
+        self.crop = crop  # (x0, y0, x1, y1) fractions of the image: a zoomed inset
+
+    def pixels(self):
+        """display(), cut to the crop when there is one."""
+        pixels = self.display()
+        if self.crop is None:
+            return pixels
+        h, w = pixels.shape[:2]
+        x0, y0, x1, y1 = self.crop
+        return pixels[round(y0 * h):round(y1 * h), round(x0 * w):round(x1 * w)]
 
     def display(self):
         """The panel's pixels for display: an (h, w, 3) float array of sRGB values in [0, 1].
@@ -80,16 +91,18 @@ class Panel:
         return pixels[..., :3]
 
     def fitted(self, w, h):
-        """The display pixels scaled (Lanczos 3) to the largest size of their aspect within
-        w x h: an (h', w', 3) array, h' <= h and w' <= w."""
+        """The display pixels (cropped) scaled (Lanczos 3; box for an inset) to the largest size
+        of their aspect within w x h: an (h', w', 3) array, h' <= h and w' <= w."""
         import OpenImageIO as oiio
-        pixels = np.ascontiguousarray(self.display(), dtype=np.float32)
+        pixels = np.ascontiguousarray(self.pixels(), dtype=np.float32)
         src_h, src_w = pixels.shape[:2]
         scale = min(w / src_w, h / src_h)
         fw, fh = max(1, round(src_w * scale)), max(1, round(src_h * scale))
         src = oiio.ImageBuf(oiio.ImageSpec(src_w, src_h, 3, oiio.FLOAT))
         src.set_pixels(oiio.ROI(0, src_w, 0, src_h), pixels)
-        out = oiio.ImageBufAlgo.resize(src, filtername="lanczos3", roi=oiio.ROI(0, fw, 0, fh))
+        # an inset keeps its pixels square and sharp (box: each source pixel a block)
+        out = oiio.ImageBufAlgo.resize(src, filtername="box" if self.crop else "lanczos3",
+                                       roi=oiio.ROI(0, fw, 0, fh))
         if out.has_error:
             raise FigureError(f"{self.source}: scaling to {fw}x{fh}: {out.geterror()}")
         return np.clip(out.get_pixels(oiio.FLOAT)[..., :3], 0.0, 1.0)
@@ -158,8 +171,10 @@ def compose(out_png, title, panels, cols=None, aspect=None, side=None, grid_w=No
         if p.source is None:
             continue
         for s, px in ((p.label, LABEL_PX), (p.below, BELOW_PX)):
-            if text_width(s, px) > panel_w + GAP:
-                raise FigureError(f"{out_png}: '{s}' ({px} px) is wider than its {panel_w} px panel")
+            # a text may reach into the gap, never into the next cell's text
+            if text_width(s, px) > panel_w + GAP - TEXT_SEPARATION:
+                raise FigureError(f"{out_png}: '{s}' ({px} px) is wider than its {panel_w} px "
+                                  f"panel: it would run into the next cell's text")
         fitted = p.fitted(panel_w, panel_h)  # centred in its cell
         fy = y + LABEL_H + (panel_h - fitted.shape[0]) // 2
         fx = x + (panel_w - fitted.shape[1]) // 2
