@@ -36,6 +36,9 @@ struct IntegratorInfo {
     // each is a flag of render and explain (--NAME) and a key of `lightpath types integrator`.
     TypeSchema schema;
     int rank = 0;  // listing order; rank 0 is the default
+    // Whether it renders participating media (src/media/): a scene with media is refused under an
+    // integrator that would show it as in vacuum (RenderConfig::judge).
+    bool rendersMedia = false;
 };
 
 using IntegratorRegistry = TypeRegistry<IntegratorInfo>;
@@ -50,6 +53,12 @@ inline IntegratorInfo integratorRow(const char* name, const char* summary, const
             make,       shadowRays,
             TypeSchema{"integrator", name, summary, std::move(parameters), pathLanguage},
             rank};
+}
+
+// The row, marked as rendering participating media.
+inline IntegratorInfo rendersMedia(IntegratorInfo row) {
+    row.rendersMedia = true;
+    return row;
 }
 
 // Every registered integrator, by rank.

@@ -4,6 +4,7 @@
 // by its transmittance T, scatters in with sigma_s and its phase function; a scattering is the
 // path event <V.> labelled with the medium's name. Adding a medium is its own file, which
 // registers its MediumType (media/medium_type.h).
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -49,6 +50,9 @@ protected:
     Medium(const Medium&) = default;
     Medium& operator=(const Medium&) = default;
 };
+
+// No medium (vacuum): an object without `interior`, a world without `medium`.
+inline constexpr std::uint32_t kNoMedium = 0xffffffffu;
 
 // A scene's medium: owned, polymorphic, copied with the scene.
 using MediumSlot = PolymorphicValue<Medium>;
