@@ -12,7 +12,7 @@
 
 namespace lightpath {
 
-// Every path lightpath would render if it had media: kRenderedPaths with volume events let in.
+// Every path lightpath renders, media included: kRenderedPaths with volume events let in.
 inline constexpr const char* kPathsWithVolumes = "E<[RTV][DGSs]>*[LOB]";
 
 // Which events carry each label of `scene`: a light's name (and "ambient") only L events, an

@@ -38,8 +38,17 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         const bool member = isPresetMember(aov, scene);
         return {member ? Verdict::PresetBlack : Verdict::Refused, member ? std::string(integrator->limitation) : why};
     }
-    if (!lpe::haveCommonPath(languages(expression, integrator, false)))
-        return {Verdict::BlackHere, "it needs a volume event (V), and lightpath renders no media yet"};
+    if (!lpe::haveCommonPath(languages(expression, integrator, false))) {
+        // Volume events occur only where a scene has media and the integrator renders them (its
+        // refusal of the others is RenderConfig::judge's); there the labels decide.
+        const bool volumesHere = scene && integrator && integrator->rendersMedia && !scene->media.empty();
+        if (!volumesHere)
+            return {Verdict::BlackHere, "it needs a volume event (V): only a scene with [media] fills it, under an "
+                                        "integrator that renders media (path)"};
+        if (lpe::haveCommonPath(languages(expression, integrator, true), labelPlacement(*scene))) return {};
+        return {Verdict::BlackHere, "no path of " + std::string(integrator->name) +
+                                        " in this scene carries these labels where the expression needs them"};
+    }
     if (!scene) return {};
 
     // In this scene: what its materials scatter by and its lights and surfaces emit. Black here with

@@ -4,6 +4,7 @@
 // each smooth lobe of the BSDF. For ray casting this is the illumination formula itself; the path
 // tracer calls it as next-event estimation and weighs it against BSDF sampling (MIS, Veach 1997 ch. 9).
 #include "integrators/path_state.h"
+#include "media/medium.h"
 #include "integrators/shading_point.h"
 #include "math/ray.h"
 
@@ -20,8 +21,30 @@ struct LightChoiceSample {
     Vec2 uPoint;
 };
 
+// `medium`: what fills the space on the shading point's side (wo's), which attenuates every shadow
+// ray by its transmittance; null in vacuum.
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
-                    DirectLightWeighting weighting, PathState& path);
+                    DirectLightWeighting weighting, PathState& path, const Medium* medium = nullptr);
+
+// A scattering inside a medium (the event <V'NAME'>): where, the direction back along the path,
+// and the medium (Scene::media[index]).
+struct MediumPoint {
+    Vec3 point;
+    Vec3 wo;  // unit, towards the previous vertex
+    const Medium& medium;
+    std::uint32_t index;
+
+    // Volume scattering has no surface scattering type: Scatter::None keeps D, G and S (and so the
+    // `classes` AOVs) to surface events; `V`, `<V>` and `<V.'NAME'>` match it.
+    PathEvent event() const { return {lpe::EventType::Volume, lpe::Scatter::None, Subject::Medium, index, point}; }
+};
+
+// Light that reaches a medium point straight from the lights and scatters towards wo by the phase
+// function: the lights' terms of the volume rendering equation, each shadow ray attenuated by the
+// medium's transmittance (pbrt-v4 14.2.2, SampleLd). `throughput` carries sigma_s and the free
+// flight's weight.
+void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const LightChoiceSample& u,
+                          DirectLightWeighting weighting, PathState& path);
 
 // The ambient term ka Ia, the one fake of the classic methods (an `<L'ambient'>` event after D).
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path);

@@ -66,8 +66,9 @@ const std::vector<IntegratorInfo>& integrators();
 const IntegratorInfo* findIntegrator(std::string_view name);
 std::vector<std::string> integratorNames();
 
-// Every path any lightpath integrator can emit: the camera, then reflections and transmissions
-// (D, G, S, s; never a volume event V), then a light, an emitting object or the background.
+// Every path any lightpath integrator can emit in a scene without media: the camera, then
+// reflections and transmissions (D, G, S, s), then a light, an emitting object or the background.
+// With media the path tracer adds volume events V (config/lpe_feasibility.h, kPathsWithVolumes).
 inline constexpr const char* kRenderedPaths = "E<[RT][DGSs]>*[LOB]";
 
 }  // namespace lightpath

@@ -23,6 +23,8 @@ float mean(const Rgb& v) { return (v.r + v.g + v.b) / 3.0f; }
 
 MediumSample HomogeneousMedium::sampleDistance(const Ray&, float tMax, float uChannel, float uDistance) const {
     const Rgb sigma = sigmaT();
+    // A medium that only absorbs scatters nothing in: its transmittance is the whole estimate, exactly.
+    if (isBlack(sigmaS)) return {false, tMax, beerLambert(sigma, tMax)};
     const int channel = std::min(static_cast<int>(uChannel * 3.0f), 2);
     const float t = sigma[channel] > 0.0f ? -std::log1p(-uDistance) / sigma[channel]
                                           : std::numeric_limits<float>::infinity();

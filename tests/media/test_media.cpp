@@ -133,6 +133,7 @@ TEST_CASE("free-flight sampling's estimators of transmittance and in-scattering 
         {"grey fog", medium(Rgb{0.2f}, Rgb{0.5f}), 1.5f},
         {"coloured smoke", medium({0.05f, 0.3f, 0.0f}, {0.2f, 0.1f, 1.2f}), 2.0f},
         {"a channel of vacuum", medium(Rgb{0.0f}, {0.0f, 0.3f, 0.9f}), 3.0f},
+        {"absorbing only: the weight is T itself", medium({0.1f, 0.5f, 0.0f}, Rgb{0.0f}), 2.0f},
     };
     constexpr int kSamples = 200000;
     for (const FlightCase& c : cases) {
