@@ -31,8 +31,8 @@ bool isPresetMember(const lpe::NamedExpression& aov, const Scene* scene) {
 
 Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const Scene* scene) {
     const std::string& expression = aov.expression;
-    // Never, in any scene: no path of the integrator, volumes let in, has it.
-    if (!lpe::haveCommonPath(languages(expression, integrator, true))) {
+    // Never, in any scene: no path of the integrator, volumes let in where it renders media, has it.
+    if (!lpe::haveCommonPath(languages(expression, integrator, !integrator || integrator->rendersMedia))) {
         if (!lpe::haveCommonPath(languages(expression, nullptr, true))) return {Verdict::Refused, whyNeverRendered(expression)};
         const std::string why = *whyNeverFilled(expression, *integrator);
         const bool member = isPresetMember(aov, scene);

@@ -290,7 +290,28 @@ void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& pat
     addAmbient(point, SmoothLobeEvents(point, path), throughput, path);
 }
 
-void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
+void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::uint32_t index, const Rgb& throughput,
+                         PathState& path) {
+    // Enough strata that a shaft's edge is smooth at one sample per pixel.
+    constexpr int kSingleScatteringSteps = 32;
+    const LightSet& lights = path.context.lights;
+    if (lights.deltaLights().empty() || path.sampler == nullptr) return;
+    Sampler vertex = path.sampler->forVertex(path.key());
+    const float jitter = vertex.next1D();
+    const float uChannel = vertex.next1D();
+    for (int k = 0; k < kSingleScatteringSteps; ++k) {
+        const float u = (float(k) + jitter) / kSingleScatteringSteps;
+        const MediumSample flight = medium.sampleDistance(ray, tMax, uChannel, u);
+        if (!flight.scattered || isBlack(flight.weight)) continue;
+        const MediumPoint point{ray.at(flight.t), -ray.direction, medium, index};
+        const Rgb weight = throughput * flight.weight / float(kSingleScatteringSteps);
+        for (const Light* light : lights.deltaLights())
+            addMediumLightSample(point, weight, light->sample(point.point, Vec2{0.0f}), 1.0f, *light,
+                                 DirectLightWeighting::Alone, path);
+    }
+}
+
+void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path, const Medium* medium) {
     const SmoothLobeEvents lobes(point, path);
     addAmbient(point, lobes, throughput, path);
     if (path.sampler == nullptr) return;
@@ -303,7 +324,7 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
         u.uChoice = vertex.next1D();
         u.uPoint = vertex.next2D();
     }
-    addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path);
+    addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path, medium);
 }
 
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path) {

@@ -50,8 +50,17 @@ void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path);
 
 // Ray casting's local illumination at a hit: ambient plus direct light, with random numbers keyed
-// by the path so that skipping a branch never changes another branch's samples.
-void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path);
+// by the path so that skipping a branch never changes another branch's samples. `medium`: what
+// fills the space on the viewer's side (shadow rays through it are attenuated); null in vacuum.
+void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path,
+                          const Medium* medium = nullptr);
+
+// The lecture's single scattering along a ray segment [0, tMax) inside `medium` (Scene::media[index]):
+// light from the point lights scattered once towards the ray's origin, each term the path
+// E ... V <L.>, with shadows in the fog. The integral over t is estimated by kSingleScatteringSteps
+// stratified free flights (one jitter per ray, keyed by the path), so it is unbiased and smooth.
+void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::uint32_t index, const Rgb& throughput,
+                         PathState& path);
 
 // Light an emitter sends back along `ray`, which hit it at `hit`, weighted by `weight`.
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path);

@@ -180,5 +180,65 @@ TEST_CASE("path with media: the classes AOVs and rest sum to the beauty, volume 
     CHECK(split == doctest::Approx(beauty).epsilon(1e-5));
 }
 
+// Single scattering from a point light in an infinite, isotropic, homogeneous medium (the airlight
+// integral of Sun et al. 2005) along the ray from `eye` in direction w:
+//   L = ∫0^∞ sigma_s e^(-sigma_t t) 1/(4 pi) (pi I) e^(-sigma_t d(t)) / d(t)² dt,  d(t) = |eye + t w - light|
+// by Simpson's rule in double, converged (the tail beyond t = 80 is below e^-32).
+double airlight(const glm::dvec3& eye, const glm::dvec3& w, const glm::dvec3& light, double sigmaS, double sigmaT,
+                double intensity) {
+    constexpr int kIntervals = 40000;
+    constexpr double kEnd = 80.0;
+    const double h = kEnd / kIntervals;
+    double sum = 0.0;
+    for (int k = 0; k <= kIntervals; ++k) {
+        const double t = k * h;
+        const glm::dvec3 toLight = light - (eye + t * w);
+        const double d2 = glm::dot(toLight, toLight);
+        const double f = sigmaS * std::exp(-sigmaT * (t + std::sqrt(d2))) * intensity / 4.0 / d2;
+        sum += f * (k == 0 || k == kIntervals ? 1.0 : k % 2 == 1 ? 4.0 : 2.0);
+    }
+    return sum * h / 3.0;
+}
+
+TEST_CASE("single scattering from a point light in infinite fog matches the airlight integral, raycast and path's E V <L.>") {
+    const glm::dvec3 light{2.5, 0.3, -2.0};  // outside the view: no camera ray passes near it
+    constexpr double kSigmaS = 0.3, kSigmaA = 0.1, kI = 5.0;
+    Scene scene;
+    scene.camera = test::centredCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 41);
+    scene.camera.verticalFovDegrees = 40.0f;
+    scene.lights.push_back(PointLight{"key", Vec3(light), Rgb{float(kI)}, Vec3{0, 0, 1}});
+    scene.worldMedium = addMedium(scene, "fog", Rgb{float(kSigmaA)}, Rgb{float(kSigmaS)});
+    const std::vector<lpe::NamedExpression> single{{"single", "E<V><L.>"}};
+    const auto ratios = [&](const Film& film) {
+        std::vector<double> r;
+        for (int j = 0; j < film.height(); ++j)
+            for (int i = 0; i < film.width(); ++i)
+                r.push_back(film.at(1, i, j).g / airlight(glm::dvec3(scene.camera.eye), pixelDirection(scene.camera, i, j),
+                                                          light, kSigmaS, kSigmaS + kSigmaA, kI));
+        return r;
+    };
+    const auto mean = [](const std::vector<double>& v) {
+        double sum = 0.0;
+        for (double x : v) sum += x;
+        return sum / v.size();
+    };
+    SUBCASE("raycast, at the pixel centres") {
+        const AovSet aovs(single);
+        RenderOptions options;
+        options.integrator = "raycast";
+        options.seed = 7;
+        const std::vector<double> r = ratios(Renderer(scene, aovs, options).render().film);
+        CHECK(mean(r) == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(test::studentTTest(r, 1.0) > kPValue);
+        CHECK(test::studentTTest(r, 1.03) < kPValue);  // the control: 3% off is rejected
+    }
+    SUBCASE("path's E V <L.>") {
+        const std::vector<double> r = ratios(renderPath(scene, single, 16));
+        CHECK(mean(r) == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(test::studentTTest(r, 1.0) > kPValue);
+        CHECK(test::studentTTest(r, 1.03) < kPValue);
+    }
+}
+
 }  // namespace
 }  // namespace lightpath::media_transport_test
