@@ -45,7 +45,19 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         if (!volumesHere)
             return {Verdict::BlackHere, "it needs a volume event (V): only a scene with [media] fills it, under an "
                                         "integrator that renders media (path)"};
-        if (lpe::haveCommonPath(languages(expression, integrator, true), labelPlacement(*scene))) return {};
+        // A label that labels nothing here (a misspelt medium) is on no event, as for surfaces below.
+        const std::vector<std::string> known = sceneLabels(*scene);
+        lpe::LabelPlacement placement = labelPlacement(*scene);
+        std::string unknown;
+        const lpe::Automaton automaton = lpe::Automaton::compile({{aov.name, expression}});
+        for (const std::string& label : automaton.labels()) {
+            if (std::binary_search(known.begin(), known.end(), label)) continue;
+            placement[label] = {};
+            if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
+        }
+        if (lpe::haveCommonPath(languages(expression, integrator, true), placement))
+            return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+        if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
         return {Verdict::BlackHere, "no path of " + std::string(integrator->name) +
                                         " in this scene carries these labels where the expression needs them"};
     }
