@@ -185,7 +185,7 @@ void printUnrenderedEvents(const lpe::Path& path) {
         std::cout << "      s is OSL's straight event (a ray passing through a surface unbent): no lightpath integrator "
                      "produces one, so no light falls in this gap\n";
     if (volume)
-        std::cout << "      V is a volume event: lightpath renders no media yet, so no light falls in this gap\n";
+        std::cout << "      V is a volume event: only scenes with [media] under --integrator path have them\n";
 }
 
 void printNest(const std::vector<lpe::NamedExpression>& expressions, const std::string& universe,

@@ -12,6 +12,7 @@
 #include "scene/light_type.h"
 #include "scene/shape_type.h"
 #include "materials/material_type.h"
+#include "media/medium_type.h"
 #include "scene/spelling.h"
 #include "schema/markdown.h"
 
@@ -41,6 +42,7 @@ std::vector<const TypeSchema*> schemasOf() {
 const std::vector<Family>& families() {
     static const std::vector<Family> list = {
         {"material", "[materials.NAME] type = \"...\"", schemasOf<MaterialType>},
+        {"medium", "[media.NAME] type = \"...\"", schemasOf<MediumType>},
         {"light", "[[lights]] type = \"...\"", schemasOf<LightType>},
         {"shape", "[[SECTION]] of a shape kind, e.g. [[disks]]", schemasOf<ShapeType>},
         {"integrator", "render --integrator ...", schemasOf<IntegratorInfo>},

@@ -63,7 +63,7 @@ std::string whyNeverRendered(const std::string& expression) {
                quotedExpression((alternatesAtTop(expression) ? "(" + expression + ")" : expression) + "L");
     }
     if (lpe::haveCommonPath({expression, kPathsWithVolumes})) {
-        return "needs a volume event (V), and lightpath renders no volumes: V never occurs";
+        return "needs a volume event (V): only scenes with [media] have them, under --integrator raycast, whitted or path";
     }
     return "matches no path lightpath renders: a path is E, then reflections and transmissions "
            "(<[RT][DGSs]>), then one light, emitting object or background ([LOB])";
@@ -125,6 +125,7 @@ lpe::LabelPlacement labelPlacement(const Scene& scene) {
         if (const auto emission = emissionEventOf(scene, i)) events.push_back(*emission);
         add(scene.labelOf(i), events);
     }
+    for (const MediumSlot& medium : scene.media) add(medium->name, {EventType::Volume});
     return placement;
 }
 

@@ -12,8 +12,9 @@
 
 namespace lightpath {
 
-// Every path lightpath would render if it had media: kRenderedPaths with volume events let in.
-inline constexpr const char* kPathsWithVolumes = "E<[RTV][DGSs]>*[LOB]";
+// Every path lightpath renders, media included: kRenderedPaths with volume events let in (a
+// volume scattering has no scattering type, OSL's x: integrators/direct_light.h, MediumPoint).
+inline constexpr const char* kPathsWithVolumes = "E(<[RT][DGSs]>|<Vx>)*[LOB]";
 
 // Which events carry each label of `scene`: a light's name (and "ambient") only L events, an
 // object's label (its name, else its material's) R and T events, and L for a [[lights]] quad or

@@ -31,15 +31,36 @@ bool isPresetMember(const lpe::NamedExpression& aov, const Scene* scene) {
 
 Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo* integrator, const Scene* scene) {
     const std::string& expression = aov.expression;
-    // Never, in any scene: no path of the integrator, volumes let in, has it.
-    if (!lpe::haveCommonPath(languages(expression, integrator, true))) {
+    // Never, in any scene: no path of the integrator, volumes let in where it renders media, has it.
+    if (!lpe::haveCommonPath(languages(expression, integrator, !integrator || integrator->rendersMedia))) {
         if (!lpe::haveCommonPath(languages(expression, nullptr, true))) return {Verdict::Refused, whyNeverRendered(expression)};
         const std::string why = *whyNeverFilled(expression, *integrator);
         const bool member = isPresetMember(aov, scene);
         return {member ? Verdict::PresetBlack : Verdict::Refused, member ? std::string(integrator->limitation) : why};
     }
-    if (!lpe::haveCommonPath(languages(expression, integrator, false)))
-        return {Verdict::BlackHere, "it needs a volume event (V), and lightpath renders no media yet"};
+    if (!lpe::haveCommonPath(languages(expression, integrator, false))) {
+        // Volume events occur only where a scene has media and the integrator renders them (its
+        // refusal of the others is RenderConfig::judge's); there the labels decide.
+        const bool volumesHere = scene && integrator && integrator->rendersMedia && !scene->media.empty();
+        if (!volumesHere)
+            return {Verdict::BlackHere, "it needs a volume event (V): only a scene with [media] fills it, under an "
+                                        "integrator that renders media (path)"};
+        // A label that labels nothing here (a misspelt medium) is on no event, as for surfaces below.
+        const std::vector<std::string> known = sceneLabels(*scene);
+        lpe::LabelPlacement placement = labelPlacement(*scene);
+        std::string unknown;
+        const lpe::Automaton automaton = lpe::Automaton::compile({{aov.name, expression}});
+        for (const std::string& label : automaton.labels()) {
+            if (std::binary_search(known.begin(), known.end(), label)) continue;
+            placement[label] = {};
+            if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
+        }
+        if (lpe::haveCommonPath(languages(expression, integrator, true), placement))
+            return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
+        if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
+        return {Verdict::BlackHere, "no path of " + std::string(integrator->name) +
+                                        " in this scene carries these labels where the expression needs them"};
+    }
     if (!scene) return {};
 
     // In this scene: what its materials scatter by and its lights and surfaces emit. Black here with

@@ -6,7 +6,7 @@
 //   refused      no path of the integrator matches it in any scene (lpe_feasibility.h says why);
 //   black here   it could match, but not in this scene (no material scatters by an event it
 //                needs, no emitter of the kind it ends at: config/scene_events.h; a label the
-//                scene lacks or places elsewhere) or not yet (it needs a volume event, and lightpath renders no media):
+//                scene lacks or places elsewhere) or it needs a volume event in a scene without media:
 //                rendered black, with one short warning;
 //   preset black an AOV of a preset (`classes`, `taxonomy`, by name and expression; given the
 //                scene, `lights` too) that this integrator, or this scene's events, cannot fill: written black so the preset still sums to the beauty, and

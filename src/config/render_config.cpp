@@ -335,9 +335,28 @@ void refuseNeverFilled(const std::vector<lpe::NamedExpression>& set, const Judge
 
 }  // namespace
 
+namespace {
+
+// A scene with media under an integrator that ignores them would render as in vacuum, silently
+// wrong: refused, naming the media and the integrators that render them.
+void refuseMedia(const IntegratorInfo& info, const Scene& scene) {
+    if (scene.media.empty() || info.rendersMedia) return;
+    std::string media, renderers;
+    for (const MediumSlot& medium : scene.media) media += (media.empty() ? "'" : ", '") + medium->name + "'";
+    for (const IntegratorInfo& other : integrators())
+        if (other.rendersMedia) renderers += (renderers.empty() ? "" : ", ") + std::string(other.name);
+    throw ConfigError("integrator", std::string(info.name) + " does not render participating media, and " +
+                                        scene.source.filename().string() + " declares " + media + ": " +
+                                        (renderers.empty() ? "no integrator renders them yet"
+                                                           : "render it with " + renderers));
+}
+
+}  // namespace
+
 Judge RenderConfig::judge(const Scene& scene) const {
     const IntegratorInfo* info = findIntegrator(integrator);
     if (!info) throw ConfigError("integrator", choiceMessage(integrator, integratorNames()));
+    refuseMedia(*info, scene);
     return Judge(info, &scene);
 }
 

@@ -73,6 +73,20 @@ Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOpti
     return spawnShadowRay(origins, target);
 }
 
+Ray spawnShadowRay(const Vec3& origin, const Vec3& target) {
+    Ray ray;
+    ray.origin = origin;
+    const Vec3 toTarget = target - origin;
+    const float distance = glm::length(toTarget);
+    if (!(distance > 0.0f) || !std::isfinite(distance)) {
+        ray.tMax = 0.0f;
+        return ray;
+    }
+    ray.direction = toTarget / distance;
+    ray.tMax = distance * (1.0f - kShadowShortening);
+    return ray;
+}
+
 Ray spawnShadowRay(RayOrigins& origins, const Vec3& target) {
     Ray ray = origins.leave(target - origins.hit().point);
     const Vec3 toTarget = target - ray.origin;

@@ -35,5 +35,7 @@ Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions
 Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOptions& numerics);
 // The same from origins shared by several shadow rays of one hit.
 Ray spawnShadowRay(RayOrigins& origins, const Vec3& target);
+// The segment from a point inside a medium, on no surface (so with no offset), towards `target`.
+Ray spawnShadowRay(const Vec3& origin, const Vec3& target);
 
 }  // namespace lightpath

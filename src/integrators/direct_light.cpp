@@ -87,7 +87,7 @@ std::string zeroReason(const ShadingPoint& p, const SmoothLobeEvents& lobes, con
 // One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
 void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
-                    DirectLightWeighting weighting, PathState& path) {
+                    DirectLightWeighting weighting, PathState& path, const Medium* medium) {
     if (lobes.count == 0) return;
     const RenderContext& ctx = path.context;
     const bool skip = ctx.skipEnabled;
@@ -116,7 +116,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         return;
     }
 
-    const Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
+    Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
+    if (medium != nullptr) incident *= medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance);
     const float lightPdf = sample.pdf * choiceProbability;
     Rgb value[kMaxLobes];
     float weights[kMaxLobes];
@@ -186,16 +187,60 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
 }
 
 void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
-                    const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path) {
+                    const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path,
+                    const Medium* medium = nullptr) {
     const LightSet& lights = path.context.lights;
     RayOrigins origins(point.hit, path.context.geometry.numerics());  // shared by the shadow rays of every light
     for (const Light* light : lights.deltaLights())
         addLightSample(point, lobes, origins, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light,
-                       weighting, path);
+                       weighting, path, medium);
     const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
     if (chosen.light == nullptr) return;
     addLightSample(point, lobes, origins, throughput, chosen.light->sample(point.hit.point, u.uPoint),
-                   chosen.probability, *chosen.light, weighting, path);
+                   chosen.probability, *chosen.light, weighting, path, medium);
+}
+
+// One light sample scattered at a medium point: one shadow ray, attenuated by the medium.
+void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const LightSample& sample,
+                          float choiceProbability, const Light& light, DirectLightWeighting weighting, PathState& path) {
+    const RenderContext& ctx = path.context;
+    RayCounters& counters = path.counters;
+    PathEvent lightEvent = light.event();
+    lightEvent.position = sample.point;
+    const PathEvent scatter = m.event();
+    const lpe::OutputMask accepted = path.acceptsAfter(path.stateAfter(scatter), lightEvent);
+    if (!path.wanted(accepted)) {
+        ++counters.shadowDead;
+        return;
+    }
+    if (!(sample.distance > 0.0f) || (isBlack(sample.weight) && ctx.skipEnabled)) return;
+    const HenyeyGreensteinPhase phase = m.medium.phase(m.point);
+    const float phaseValue = phase.eval(m.wo, sample.wi);
+    const float lightPdf = sample.pdf * choiceProbability;
+    const float weight = weighting == DirectLightWeighting::MultipleImportance && lightPdf > 0.0f
+                             ? powerHeuristic(lightPdf, phase.pdf(m.wo, sample.wi))
+                             : 1.0f;
+    const Ray shadowRay = spawnShadowRay(m.point, sample.point);
+    if (ctx.shadows) {
+        ++counters.shadow;
+        if (ctx.geometry.occluded(shadowRay)) {
+            if (path.explaining()) path.reject(scatter, lightEvent, "the shadow ray from the medium point is blocked");
+            return;
+        }
+    }
+    const Rgb transmittance = m.medium.transmittance(shadowRay, 0.0f, sample.distance);
+    const Rgb incident = sample.weight / choiceProbability;
+    const Rgb value = throughput * phaseValue * incident * transmittance * weight;
+    if (!path.explaining()) {
+        path.emitAccepted(scatter, lightEvent, value, accepted);
+        return;
+    }
+    const TermFactor factors[] = {{"phase", Rgb{phaseValue}},
+                                  {"Li/pdf", incident},
+                                  {"transmittance", transmittance},
+                                  {"mis weight", Rgb{weight}},
+                                  {"throughput", throughput}};
+    path.emitAccepted(scatter, lightEvent, value, accepted, std::span(factors, 5));
 }
 
 void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput, PathState& path) {
@@ -225,8 +270,19 @@ float powerHeuristic(float pdf, float otherPdf) {
 }
 
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
-                    DirectLightWeighting weighting, PathState& path) {
-    addDirectLight(point, SmoothLobeEvents(point, path), throughput, u, weighting, path);
+                    DirectLightWeighting weighting, PathState& path, const Medium* medium) {
+    addDirectLight(point, SmoothLobeEvents(point, path), throughput, u, weighting, path, medium);
+}
+
+void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const LightChoiceSample& u,
+                          DirectLightWeighting weighting, PathState& path) {
+    const LightSet& lights = path.context.lights;
+    for (const Light* light : lights.deltaLights())
+        addMediumLightSample(point, throughput, light->sample(point.point, u.uPoint), 1.0f, *light, weighting, path);
+    const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
+    if (chosen.light == nullptr) return;
+    addMediumLightSample(point, throughput, chosen.light->sample(point.point, u.uPoint), chosen.probability,
+                         *chosen.light, weighting, path);
 }
 
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
@@ -234,7 +290,28 @@ void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& pat
     addAmbient(point, SmoothLobeEvents(point, path), throughput, path);
 }
 
-void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
+void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::uint32_t index, const Rgb& throughput,
+                         PathState& path) {
+    // Enough strata that a shaft's edge is smooth at one sample per pixel.
+    constexpr int kSingleScatteringSteps = 32;
+    const LightSet& lights = path.context.lights;
+    if (lights.deltaLights().empty() || path.sampler == nullptr) return;
+    Sampler vertex = path.sampler->forVertex(path.key());
+    const float jitter = vertex.next1D();
+    const float uChannel = vertex.next1D();
+    for (int k = 0; k < kSingleScatteringSteps; ++k) {
+        const float u = (float(k) + jitter) / kSingleScatteringSteps;
+        const MediumSample flight = medium.sampleDistance(ray, tMax, uChannel, u);
+        if (!flight.scattered || isBlack(flight.weight)) continue;
+        const MediumPoint point{ray.at(flight.t), -ray.direction, medium, index};
+        const Rgb weight = throughput * flight.weight / float(kSingleScatteringSteps);
+        for (const Light* light : lights.deltaLights())
+            addMediumLightSample(point, weight, light->sample(point.point, Vec2{0.0f}), 1.0f, *light,
+                                 DirectLightWeighting::Alone, path);
+    }
+}
+
+void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path, const Medium* medium) {
     const SmoothLobeEvents lobes(point, path);
     addAmbient(point, lobes, throughput, path);
     if (path.sampler == nullptr) return;
@@ -247,7 +324,7 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
         u.uChoice = vertex.next1D();
         u.uPoint = vertex.next2D();
     }
-    addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path);
+    addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path, medium);
 }
 
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path) {

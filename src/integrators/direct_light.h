@@ -4,6 +4,7 @@
 // each smooth lobe of the BSDF. For ray casting this is the illumination formula itself; the path
 // tracer calls it as next-event estimation and weighs it against BSDF sampling (MIS, Veach 1997 ch. 9).
 #include "integrators/path_state.h"
+#include "media/medium.h"
 #include "integrators/shading_point.h"
 #include "math/ray.h"
 
@@ -20,15 +21,46 @@ struct LightChoiceSample {
     Vec2 uPoint;
 };
 
+// `medium`: what fills the space on the shading point's side (wo's), which attenuates every shadow
+// ray by its transmittance; null in vacuum.
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
-                    DirectLightWeighting weighting, PathState& path);
+                    DirectLightWeighting weighting, PathState& path, const Medium* medium = nullptr);
+
+// A scattering inside a medium (the event <V'NAME'>): where, the direction back along the path,
+// and the medium (Scene::media[index]).
+struct MediumPoint {
+    Vec3 point;
+    Vec3 wo;  // unit, towards the previous vertex
+    const Medium& medium;
+    std::uint32_t index;
+
+    // Volume scattering has no surface scattering type: Scatter::None keeps D, G and S (and so the
+    // `classes` AOVs) to surface events; `V`, `<V>` and `<V.'NAME'>` match it.
+    PathEvent event() const { return {lpe::EventType::Volume, lpe::Scatter::None, Subject::Medium, index, point}; }
+};
+
+// Light that reaches a medium point straight from the lights and scatters towards wo by the phase
+// function: the lights' terms of the volume rendering equation, each shadow ray attenuated by the
+// medium's transmittance (pbrt-v4 14.2.2, SampleLd). `throughput` carries sigma_s and the free
+// flight's weight.
+void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const LightChoiceSample& u,
+                          DirectLightWeighting weighting, PathState& path);
 
 // The ambient term ka Ia, the one fake of the classic methods (an `<L'ambient'>` event after D).
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path);
 
 // Ray casting's local illumination at a hit: ambient plus direct light, with random numbers keyed
-// by the path so that skipping a branch never changes another branch's samples.
-void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path);
+// by the path so that skipping a branch never changes another branch's samples. `medium`: what
+// fills the space on the viewer's side (shadow rays through it are attenuated); null in vacuum.
+void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path,
+                          const Medium* medium = nullptr);
+
+// The lecture's single scattering along a ray segment [0, tMax) inside `medium` (Scene::media[index]):
+// light from the point lights scattered once towards the ray's origin, each term the path
+// E ... V <L.>, with shadows in the fog. The integral over t is estimated by kSingleScatteringSteps
+// stratified free flights (one jitter per ray, keyed by the path), so it is unbiased and smooth.
+void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::uint32_t index, const Rgb& throughput,
+                         PathState& path);
 
 // Light an emitter sends back along `ray`, which hit it at `hit`, weighted by `weight`.
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path);

@@ -8,6 +8,7 @@ EventSymbols::EventSymbols(const Scene& scene, const lpe::Automaton& automaton)
     : automaton_(automaton), ambient_(automaton.labelClass(kAmbientLabel)) {
     for (const LightSlot& light : scene.lights) lights_.push_back(automaton.labelClass(light->name));
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) objects_.push_back(automaton.labelClass(scene.labelOf(i)));
+    for (const MediumSlot& medium : scene.media) media_.push_back(automaton.labelClass(medium->name));
 }
 
 std::vector<std::string> sceneLabels(const Scene& scene) {
@@ -15,6 +16,7 @@ std::vector<std::string> sceneLabels(const Scene& scene) {
     for (const LightSlot& light : scene.lights)
         if (!light->name.empty()) labels.push_back(light->name);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) labels.push_back(scene.labelOf(i));
+    for (const MediumSlot& medium : scene.media) labels.push_back(medium->name);
     std::sort(labels.begin(), labels.end());
     labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
     return labels;
@@ -25,6 +27,7 @@ lpe::Event lpeEventOf(const Scene& scene, const PathEvent& e) {
     if (e.subject == Subject::Ambient) event.label = kAmbientLabel;
     else if (e.subject == Subject::SceneLight) event.label = scene.lights[e.index]->name;
     else if (e.subject == Subject::Object) event.label = scene.labelOf(e.index);
+    else if (e.subject == Subject::Medium) event.label = scene.media[e.index]->name;
     return event;
 }
 
@@ -41,6 +44,7 @@ std::string subjectName(const Scene& scene, const PathEvent& event) {
             const std::string& name = scene.lights[event.index]->name;
             return name.empty() ? "light #" + std::to_string(event.index) : name;
         }
+        case Subject::Medium: return scene.media[event.index]->name;
         case Subject::Object: {
             const std::string& name = scene.objects[event.index].name;
             return name.empty() ? "object #" + std::to_string(event.index) + " (" + scene.labelOf(event.index) + ")" : name;

@@ -26,6 +26,7 @@ private:
             case Subject::Object: return objects_[event.index];
             case Subject::SceneLight: return lights_[event.index];
             case Subject::Ambient: return ambient_;
+            case Subject::Medium: return media_[event.index];
             case Subject::None: break;
         }
         return 0;
@@ -35,10 +36,11 @@ private:
     lpe::Automaton::LabelClass ambient_;
     std::vector<lpe::Automaton::LabelClass> lights_;   // per point light
     std::vector<lpe::Automaton::LabelClass> objects_;  // per scene object
+    std::vector<lpe::Automaton::LabelClass> media_;    // per scene medium
 };
 
-// Every label an event of this scene can carry: "ambient", the point lights' names, and each
-// object's label (its name, else its material's; area lights are objects). Sorted, no repeats.
+// Every label an event of this scene can carry: "ambient", the point lights' names, each
+// object's label (its name, else its material's; area lights are objects) and each medium's name. Sorted, no repeats.
 std::vector<std::string> sceneLabels(const Scene& scene);
 
 // The recorded event as the LPE engine's event, labelled as the automaton sees it (explain, serve).

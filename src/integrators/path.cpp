@@ -2,6 +2,7 @@
 
 #include "integrators/registry.h"
 #include <algorithm>
+#include <limits>
 
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
@@ -11,6 +12,26 @@ namespace {
 
 // Paths shorter than this are never cut by Russian roulette.
 constexpr int kRouletteDepth = 3;
+
+// The medium of scene medium `index`, or null for vacuum (kNoMedium).
+const Medium* mediumAt(const Scene& scene, std::uint32_t index) {
+    return index == kNoMedium ? nullptr : &*scene.media[index];
+}
+
+// The medium a ray is in after passing through the surface of `object`: entering a closed object
+// is entering its interior, leaving one is returning to the world's medium (media do not nest).
+std::uint32_t mediumBeyond(const Scene& scene, std::uint32_t object, bool entering) {
+    return entering ? scene.objects[object].interior : scene.worldMedium;
+}
+
+bool continuesRoulette(int depth, Rgb& throughput, Sampler& sampler) {
+    if (depth + 1 < kRouletteDepth) return true;
+    // Russian roulette: continue with probability q, dividing by q keeps the estimate unbiased.
+    const float q = std::min(0.95f, maxComponent(throughput));
+    if (sampler.next1D() >= q) return false;
+    throughput /= q;
+    return true;
+}
 
 }  // namespace
 
@@ -22,9 +43,40 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     float previousPdf = 0.0f;   // solid-angle density of the direction that led here
     bool previousDelta = true;  // the camera, like a delta lobe, cannot be light-sampled
     const std::size_t pathStart = path.size();
+    // The medium the ray travels in: the camera is in the world's (media do not nest).
+    std::uint32_t mediumIndex = ctx.scene.worldMedium;
 
     for (int depth = 0;; ++depth) {
         const auto hit = ctx.geometry.intersect(ray);
+        // Free flight through the medium up to the surface (pbrt-v4 14.2, VolPathIntegrator): a
+        // scattering there is a V vertex, else the throughput carries the segment's transmittance.
+        if (const Medium* medium = mediumAt(ctx.scene, mediumIndex)) {
+            const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+            const float uChannel = sampler.next1D();
+            const float uDistance = sampler.next1D();
+            const MediumSample flight = medium->sampleDistance(ray, tMax, uChannel, uDistance);
+            throughput *= flight.weight;
+            if (isBlack(throughput)) break;
+            if (flight.scattered) {
+                if (depth >= ctx.maxDepth) break;
+                const MediumPoint point{ray.at(flight.t), -ray.direction, *medium, mediumIndex};
+                const float uChoice = sampler.next1D();
+                const Vec2 uPoint = sampler.next2D();
+                addMediumDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance, path);
+                const PhaseSample scattered = medium->phase(point.point).sample(point.wo, sampler.next2D());
+                if (!path.push(point.event())) {
+                    ++path.counters.volumeDead;
+                    break;
+                }
+                // The phase function is sampled exactly: its weight p / pdf is 1.
+                if (!continuesRoulette(depth, throughput, sampler)) break;
+                ++path.counters.volume;
+                previousPdf = scattered.pdf;
+                previousDelta = false;
+                ray = Ray{point.point, scattered.wi};
+                continue;
+            }
+        }
         if (!hit) {
             addBackground(ray, throughput, path);
             break;
@@ -39,7 +91,8 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         if (point.bsdf.hasSmoothLobe()) {
             const float uChoice = sampler.next1D();
             const Vec2 uPoint = sampler.next2D();
-            addDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance, path);
+            addDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance, path,
+                           mediumAt(ctx.scene, mediumIndex));
         }
 
         const float uLobe = sampler.next1D();
@@ -53,13 +106,9 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             break;
         }
         throughput *= sample->weight;
-        if (depth + 1 >= kRouletteDepth) {
-            // Russian roulette: continue with probability q, dividing by q keeps the estimate unbiased.
-            const float q = std::min(0.95f, maxComponent(throughput));
-            if (sampler.next1D() >= q) break;
-            throughput /= q;
-        }
+        if (!continuesRoulette(depth, throughput, sampler)) break;
         ++(transmitted ? path.counters.refraction : path.counters.reflection);
+        if (transmitted) mediumIndex = mediumBeyond(ctx.scene, point.hit.object, point.entering);
         previousPdf = sample->pdf;
         previousDelta = lobe.delta();
         ray = spawnRay(point.hit, sample->wi, ctx.geometry.numerics());
@@ -70,9 +119,9 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
 }  // namespace lightpath
 
 // It samples every lobe at every bounce.
-LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::rendersMedia(lightpath::integratorRow(
     "path", "path tracing with global illumination (physically based reading)",
     "E.*[<L.[^'ambient']>OB]",
     "path tracing follows every bounce but adds no ambient term (ka Ia, which stands in for the indirect light it gathers)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::PathIntegrator>()); },
-    lightpath::ShadowRays::Always, 3))
+    lightpath::ShadowRays::Always, 3)))

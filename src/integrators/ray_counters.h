@@ -12,6 +12,7 @@ struct alignas(64) RayCounters {
     std::uint64_t shadow = 0;
     std::uint64_t reflection = 0;
     std::uint64_t refraction = 0;
+    std::uint64_t volume = 0;  // rays scattered at a point inside a medium (a V event)
 
     // Skipped rays by reason.
     std::uint64_t cameraDead = 0;          // no requested output accepts any path from here
@@ -20,6 +21,7 @@ struct alignas(64) RayCounters {
     std::uint64_t shadowDead = 0;          // no requested output accepts light from this light here
     std::uint64_t reflectionDead = 0;      // automaton state dead after the mirror event
     std::uint64_t refractionDead = 0;      // automaton state dead after the refraction event
+    std::uint64_t volumeDead = 0;          // automaton state dead after a volume scattering
 
     // Glossy lobes' terms (the highlight's ks (H.N)^n) evaluated, and skipped because the
     // material's glossy lobe scatters nothing (ks = 0).
@@ -29,19 +31,21 @@ struct alignas(64) RayCounters {
     std::uint64_t nonFinite = 0;  // contributions dropped because they were NaN or infinite
     std::uint64_t eventOverflow = 0;  // events refused because the path's event stack was full
 
-    std::uint64_t total() const { return camera + shadow + reflection + refraction; }
+    std::uint64_t total() const { return camera + shadow + reflection + refraction + volume; }
 
     RayCounters& operator+=(const RayCounters& o) {
         camera += o.camera;
         shadow += o.shadow;
         reflection += o.reflection;
         refraction += o.refraction;
+        volume += o.volume;
         cameraDead += o.cameraDead;
         shadowBehind += o.shadowBehind;
         shadowZero += o.shadowZero;
         shadowDead += o.shadowDead;
         reflectionDead += o.reflectionDead;
         refractionDead += o.refractionDead;
+        volumeDead += o.volumeDead;
         glossyEvaluated += o.glossyEvaluated;
         glossyAbsent += o.glossyAbsent;
         nonFinite += o.nonFinite;

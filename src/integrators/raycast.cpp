@@ -3,6 +3,8 @@
 #include "integrators/registry.h"
 #include "integrators/direct_light.h"
 
+#include <limits>
+
 namespace lightpath {
 
 void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
@@ -11,6 +13,10 @@ void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
+    if (ctx.scene.worldMedium != kNoMedium) {
+        shadeThroughMedium(hit, ray, ctx.scene.worldMedium, Rgb{1.0f}, path);
+        return;
+    }
     if (!hit) {
         addBackground(ray, Rgb{1.0f}, path);
         return;
@@ -20,12 +26,29 @@ void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathSta
     addLocalIllumination(makeShadingPoint(*hit, ray, ctx), Rgb{1.0f}, path);
 }
 
+void shadeThroughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
+                        const Rgb& throughput, PathState& path) {
+    const RenderContext& ctx = path.context;
+    const Medium& medium = *ctx.scene.media[mediumIndex];
+    const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+    addSingleScattering(ray, tMax, medium, mediumIndex, throughput, path);
+    // Every term beyond the segment is seen through it.
+    const Rgb seen = throughput * medium.transmittance(ray, 0.0f, tMax);
+    if (!hit) {
+        addBackground(ray, seen, path);
+        return;
+    }
+    addEmission(*hit, ray, seen, 1.0f, path);
+    if (ctx.maxDepth < 1) return;
+    addLocalIllumination(makeShadingPoint(*hit, ray, ctx), seen, path, &medium);
+}
+
 }  // namespace lightpath
 
 // raycast.cpp shades the first hit with local_illumination.cpp's diffuse and highlight terms towards
 // each light and the ambient light (E(D|G)L), and adds emission and the background seen directly (EL).
-LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::rendersMedia(lightpath::integratorRow(
     "raycast", "first hit only: Szymczak's formula, emitters and the background seen directly",
-    "E(D|G)L|EL", "ray casting follows no specular bounce and no second bounce: it shades the first hit only",
+    "E(D|G)L|EL|E<Vx>L", "ray casting follows no specular bounce and no second bounce: it shades the first hit only",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::RaycastIntegrator>()); },
-    lightpath::ShadowRays::Optional, 0))
+    lightpath::ShadowRays::Optional, 0)))

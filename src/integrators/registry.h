@@ -36,6 +36,9 @@ struct IntegratorInfo {
     // each is a flag of render and explain (--NAME) and a key of `lightpath types integrator`.
     TypeSchema schema;
     int rank = 0;  // listing order; rank 0 is the default
+    // Whether it renders participating media (src/media/): a scene with media is refused under an
+    // integrator that would show it as in vacuum (RenderConfig::judge).
+    bool rendersMedia = false;
 };
 
 using IntegratorRegistry = TypeRegistry<IntegratorInfo>;
@@ -52,13 +55,20 @@ inline IntegratorInfo integratorRow(const char* name, const char* summary, const
             rank};
 }
 
+// The row, marked as rendering participating media.
+inline IntegratorInfo rendersMedia(IntegratorInfo row) {
+    row.rendersMedia = true;
+    return row;
+}
+
 // Every registered integrator, by rank.
 const std::vector<IntegratorInfo>& integrators();
 const IntegratorInfo* findIntegrator(std::string_view name);
 std::vector<std::string> integratorNames();
 
-// Every path any lightpath integrator can emit: the camera, then reflections and transmissions
-// (D, G, S, s; never a volume event V), then a light, an emitting object or the background.
+// Every path any lightpath integrator can emit in a scene without media: the camera, then
+// reflections and transmissions (D, G, S, s), then a light, an emitting object or the background.
+// With media the path tracer adds volume events V (config/lpe_feasibility.h, kPathsWithVolumes).
 inline constexpr const char* kRenderedPaths = "E<[RT][DGSs]>*[LOB]";
 
 }  // namespace lightpath

@@ -4,13 +4,34 @@
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
 
+#include <limits>
+
 namespace lightpath {
 
-void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const { trace(ray, Rgb{1.0f}, 0, path); }
+void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
+    trace(ray, Rgb{1.0f}, 0, path.context.scene.worldMedium, path);
+}
 
-void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, PathState& path) const {
+void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, std::uint32_t mediumIndex,
+                              PathState& path) const {
     const RenderContext& ctx = path.context;
     const auto hit = ctx.geometry.intersect(ray);
+    if (mediumIndex != kNoMedium) {
+        // Single scattering along this ray (E S* V L) and its transmittance on all beyond.
+        const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+        const Medium& medium = *ctx.scene.media[mediumIndex];
+        addSingleScattering(ray, tMax, medium, mediumIndex, throughput, path);
+        const Rgb seen = throughput * medium.transmittance(ray, 0.0f, tMax);
+        if (isBlack(seen) && ctx.skipEnabled) return;
+        traceSurface(hit, ray, seen, depth, mediumIndex, path);
+        return;
+    }
+    traceSurface(hit, ray, throughput, depth, mediumIndex, path);
+}
+
+void WhittedIntegrator::traceSurface(const std::optional<SurfaceHit>& hit, const Ray& ray, const Rgb& throughput,
+                                     int depth, std::uint32_t mediumIndex, PathState& path) const {
+    const RenderContext& ctx = path.context;
     if (!hit) {
         addBackground(ray, throughput, path);
         return;
@@ -18,7 +39,8 @@ void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, 
     addEmission(*hit, ray, throughput, 1.0f, path);
     if (depth >= ctx.maxDepth) return;
     const ShadingPoint point = makeShadingPoint(*hit, ray, ctx);
-    addLocalIllumination(point, throughput, path);
+    const Medium* medium = mediumIndex == kNoMedium ? nullptr : &*ctx.scene.media[mediumIndex];
+    addLocalIllumination(point, throughput, path, medium);
 
     // Every delta lobe's branch, while some requested output can still accept the path (the
     // automaton's dead states); the BSDF returns only branches with weight.
@@ -31,8 +53,12 @@ void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, 
             continue;
         }
         ++(reflection ? path.counters.reflection : path.counters.refraction);
+        // A refracted ray enters the object's interior or leaves for the world's medium.
+        const std::uint32_t next = reflection ? mediumIndex
+                                   : point.entering ? ctx.scene.objects[point.hit.object].interior
+                                                    : ctx.scene.worldMedium;
         trace(spawnRay(point.hit, branches[b].wi, ctx.geometry.numerics()), throughput * branches[b].weight,
-              depth + 1, path);
+              depth + 1, next, path);
         path.pop();
     }
 }
@@ -40,8 +66,8 @@ void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, 
 }  // namespace lightpath
 
 // Mirror and refraction rays (S*) before ray casting's shading.
-LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
-    "whitted", "adds mirror and refraction rays (Whitted ray tracing)", "ES*(D|G)L|ES*L",
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::rendersMedia(lightpath::integratorRow(
+    "whitted", "adds mirror and refraction rays (Whitted ray tracing)", "ES*(D|G)L|ES*L|ES*<Vx>L",
     "Whitted ray tracing follows specular bounces only: no diffuse or glossy interreflection",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::WhittedIntegrator>()); },
-    lightpath::ShadowRays::Optional, 2))
+    lightpath::ShadowRays::Optional, 2)))

@@ -10,6 +10,7 @@
 #include "scene/camera.h"
 #include "scene/scene_light.h"
 #include "materials/material.h"
+#include "media/medium.h"
 
 namespace lightpath {
 
@@ -21,6 +22,8 @@ struct SceneObject {
     // A [[lights]] quad or sphere: its emission ends a path with `L`. Any other surface whose
     // material emits ends it with OSL's `O` (object emission).
     bool declaredLight = false;
+    // The medium that fills it (`interior`, a closed shape's), an index into Scene::media.
+    std::uint32_t interior = kNoMedium;
 };
 
 // Everything a scene file describes, as plain data.
@@ -32,6 +35,8 @@ struct Scene {
     Rgb ambient{0.0f};     // Ia of the illumination formula (an `L'ambient'` event)
 
     std::vector<MaterialSlot> materials;
+    std::vector<MediumSlot> media;             // [media.NAME], in file order
+    std::uint32_t worldMedium = kNoMedium;     // [world] medium: fills all space outside objects
     std::vector<LightSlot> lights;  // [[lights]] without a shape (point lights)
     std::vector<SceneObject> objects;
 

@@ -16,6 +16,7 @@
 #include "scene/shape_type.h"
 #include "materials/material_type.h"
 #include "materials/phong_material.h"
+#include "media/medium_type.h"
 #include "schema/parameter.h"
 #include "schema/schema_error.h"
 #include "scene/spelling.h"
@@ -65,10 +66,24 @@ CameraDescription readCamera(const TomlTable& table) {
     return camera;
 }
 
+// The index of the medium `reference` names, else a located "unknown medium" error with the
+// nearest name and the known ones.
+std::uint32_t findMedium(const TomlValue& reference, const std::vector<MediumSlot>& media) {
+    const std::string name = readName(reference);
+    std::vector<std::string> known;
+    for (std::uint32_t i = 0; i < media.size(); ++i) {
+        if (media[i]->name == name) return i;
+        known.push_back(media[i]->name);
+    }
+    std::sort(known.begin(), known.end());
+    reference.fail(unknownNameMessage("medium", name, known, ListKnown::always));
+}
+
 void readWorld(const TomlTable& table, Scene& scene) {
-    table.allowOnly({"background", "ambient"});
+    table.allowOnly({"background", "ambient", "medium"});
     if (auto background = table.find("background")) scene.background = background->rgb();
     if (auto ambient = table.find("ambient")) scene.ambient = ambient->rgb();
+    if (auto medium = table.find("medium")) scene.worldMedium = findMedium(*medium, scene.media);
 }
 
 // Ranges as the reader states them: the loader's messages ("expected a positive number") predate
@@ -227,6 +242,23 @@ std::vector<MaterialSlot> readMaterials(const TomlTable& table) {
     return materials;
 }
 
+// Media keep the order in which the file defines them; a medium's name is its <V'NAME'> label.
+std::vector<MediumSlot> readMedia(const TomlTable& table) {
+    std::vector<MediumSlot> media;
+    for (const auto& [name, value] : table.entries()) {
+        if (!isValidName(name)) {
+            value.fail("expected a medium name of " + std::string(kNameCharacters) + ", got \"" + name + "\"");
+        }
+        const TomlTable declaration = value.table();
+        const MediumType& type = typeNamedIn(declaration, MediumRegistry::instance(), "medium type");
+        const ParameterValues values = readValues(declaration, type.schema);
+        MediumSlot medium = asSceneError([&] { return type.make(values); });
+        medium->name = name;
+        media.push_back(std::move(medium));
+    }
+    return media;
+}
+
 // The loader's side of SceneBuilder: light types add to the scene being read.
 class LoadingScene final : public SceneBuilder {
 public:
@@ -300,8 +332,13 @@ std::uint32_t LoadingScene::addShapeObject(const ParameterValues& values) {
 // A [[SECTION]] of a registered shape kind, read through its schema.
 void readShape(const TomlTable& table, const ShapeType& type, Scene& scene) {
     const ParameterValues values = readShapeValues(table, type.schema, scene.materials);
+    std::uint32_t interior = kNoMedium;
+    if (auto medium = table.find(kShapeInteriorParameter.name)) interior = findMedium(*medium, scene.media);
+    const std::size_t firstObject = scene.objects.size();
     LoadingScene builder(scene);
     asSceneError([&] { type.addTo(values, builder); });
+    // Every object the declaration added (a mesh's parts) is filled by the same medium.
+    for (std::size_t i = firstObject; i < scene.objects.size(); ++i) scene.objects[i].interior = interior;
 }
 
 // The whole file as text. Reading it here (rather than in toml++) lets a missing file report the
@@ -403,7 +440,7 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
     const TomlTable root(document, "");
     // The registered shape kinds' sections, by rank (spheres, planes, the others, then triangles
     // and meshes): their objects are numbered in that order.
-    std::vector<std::string_view> sections{"camera", "world", "materials", "lights"};
+    std::vector<std::string_view> sections{"camera", "world", "materials", "media", "lights"};
     const std::vector<const ShapeType*> shapeTypes = ShapeRegistry::instance().entries();
     for (const ShapeType* type : shapeTypes) sections.push_back(type->section);
     root.allowOnly(sections);
@@ -414,6 +451,8 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
         scene.camera = readCamera(camera->table());
         scene.cameraGiven = true;
     }
+    // Media before the world and the shapes, which name them.
+    if (auto media = root.find("media")) scene.media = readMedia(media->table());
     if (auto world = root.find("world")) readWorld(world->table(), scene);
     if (auto materials = root.find("materials")) {
         scene.materials = readMaterials(materials->table());

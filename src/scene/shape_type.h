@@ -34,6 +34,10 @@ inline constexpr Parameter kShapeNameParameter{
     "name", ParameterType::Name, "", "", {}, "its label in light paths; default: its material's name"};
 inline constexpr Parameter kShapeMaterialParameter{
     "material", ParameterType::Name, "", "", {}, "a material of `[materials]`", true};
+// What fills a closed shape (a sphere, a closed mesh): a medium of `[media]`. The loader resolves it
+// for every object the declaration adds.
+inline constexpr Parameter kShapeInteriorParameter{
+    "interior", ParameterType::Name, "", "", {}, "a medium of `[media]` filling its inside; default: none (vacuum)"};
 
 }  // namespace lightpath
 

@@ -128,6 +128,7 @@ LIGHTPATH_REGISTER_SHAPE(lightpath::ShapeType{
       {"scale", lightpath::ParameterType::PerAxis, "", "1", lightpath::kPositive,
        "applied first, about the file's origin: one factor for every axis or one per axis"},
       {"rotate_y", lightpath::ParameterType::Number, "degrees", "0", {}, "then a turn about the y axis (x towards −z)"},
-      {"translate", lightpath::ParameterType::Point, "m", "[0, 0, 0]", {}, "then a move by this vector"}},
+      {"translate", lightpath::ParameterType::Point, "m", "[0, 0, 0]", {}, "then a move by this vector"},
+      lightpath::kShapeInteriorParameter},
      ""},
     1001, "meshes", lightpath::addMesh, lightpath::ShapeStorage::triangles})

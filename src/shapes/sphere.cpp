@@ -229,6 +229,6 @@ LIGHTPATH_REGISTER_SHAPE(lightpath::ShapeType{
      {lightpath::kShapeNameParameter,
       {"center", lightpath::ParameterType::Point, "m", "", {}, "its centre", true},
       {"radius", lightpath::ParameterType::Number, "m", "", lightpath::kPositive, "its radius", true},
-      lightpath::kShapeMaterialParameter},
+      lightpath::kShapeMaterialParameter, lightpath::kShapeInteriorParameter},
      ""},
     0, "spheres", lightpath::addSphere})

@@ -15,6 +15,7 @@ enum class Subject : std::uint8_t {
     Object,      // scene object `index`: a surface it scattered from, or an emissive surface
     SceneLight,  // scene.lights[index], a light without a shape of its own
     Ambient,     // the ambient term ka * Ia
+    Medium,      // scene medium `index`: a scattering inside it (a V event)
 };
 
 struct PathEvent {

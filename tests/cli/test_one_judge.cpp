@@ -212,9 +212,15 @@ TEST_CASE("one judge: issue 31's expressions get the verdicts the issue asks for
         CAPTURE(name);
         for (const std::string never : {"C.*L<L>", "E(D|G)+", "CDL'key'", "E.*L'key'"})
             CHECK(runCommand({"lpe", "check", "--quiet", "--integrator", name, never}).code == 2);
-        // Empty only in a scene, or until lightpath has media: never refused.
-        for (const std::string black : {"CV.*", "C<V>.*", "E.*<L.'floor'>", "E.*<L'kee'>", "C[LO]", "CB"})
+        // Empty only in a scene: never refused.
+        for (const std::string black : {"E.*<L.'floor'>", "E.*<L'kee'>", "C[LO]", "CB"})
             CHECK(runCommand({"lpe", "check", "--quiet", "--integrator", name, black}).code == 0);
+        // Volume light: empty in a scene without media under an integrator that renders media;
+        // refused under one that never does (it refuses scenes with media).
+        for (const std::string volume : {"CV.*", "C<V>.*"}) {
+            CAPTURE(volume);
+            CHECK(runCommand({"lpe", "check", "--quiet", "--integrator", name, volume}).code == (integrator.rendersMedia ? 0 : 2));
+        }
         // A mirror in a scene without a coat: every integrator that follows mirrors renders it.
         const bool mirrors = name == "whitted" || name == "path" || name == "bdpt";
         for (const std::string specular : {"C<RS[^'coat']>.*", "C<RS'coat'>.*"}) {

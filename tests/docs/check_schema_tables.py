@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 # The types whose tables scenes/README.md shows.
-TABLES = [("material", "phong"), ("material", "modified-phong"), ("light", "point"), ("light", "quad"),
+TABLES = [("material", "phong"), ("material", "modified-phong"), ("medium", "homogeneous"), ("light", "point"), ("light", "quad"),
           ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),
           ("shape", "triangle"), ("shape", "mesh")]
 

@@ -6,7 +6,7 @@
 # The layers, lowest first: the one statement of their order. A folder may include its own files,
 # lpe/ (below all of src/), and the folders before it.
 set(LAYERS
-  math util schema transport sampling geometry accel materials scene shapes lights film io
+  math util schema transport sampling geometry accel materials media scene shapes lights film io
   integrators render config bench stress serve cli)
 
 # Known arrows up, each with the work that removes it: none today. An entry reads

@@ -14,6 +14,7 @@
 #include "lights/point_light.h"
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
+#include "media/homogeneous_medium.h"
 #include "scene/scene_loader.h"
 #include "shapes/obj_loader.h"
 
@@ -340,7 +341,7 @@ TEST_CASE_FIXTURE(SceneFiles, "an unknown top-level table is an error") {
           "scene.toml:4:3: sphere: unknown key \"sphere\"; did you mean \"spheres\"?");
     CHECK(errorOf("[render]\nspp = 4\n") ==
           "scene.toml:1:2: render: unknown key \"render\" (known: camera, world, materials, "
-          "lights, spheres, planes, disks, triangles, meshes)");
+          "media, lights, spheres, planes, disks, triangles, meshes)");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "a value of the wrong type says what was expected and found") {
@@ -888,7 +889,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a mesh's scale is a positive number or 3 positive
     CHECK(errorOf(mesh + "rotate = 90\n") ==
           "scene.toml:3:1: meshes[0].rotate: unknown key \"rotate\"; did you mean \"rotate_y\"?");
     CHECK(errorOf(mesh + "turn = 90\n") ==
-          "scene.toml:3:1: meshes[0].turn: unknown key \"turn\" (known: name, file, material, scale, rotate_y, translate)");
+          "scene.toml:3:1: meshes[0].turn: unknown key \"turn\" (known: name, file, material, scale, rotate_y, translate, interior)");
 }
 
 // Per-vertex normals are kept one per triangle once any triangle has them: the flat triangles
@@ -910,4 +911,63 @@ TEST_CASE_FIXTURE(SceneFiles, "a smooth mesh's normals line up with the triangle
     CHECK(n.y == doctest::Approx(0.0));
     CHECK(n.z == doctest::Approx(0.0).epsilon(1e-6));
     CHECK(scene.triangles[3].b.z == doctest::Approx(-1.0));
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "media are read through their schema and fill the world and closed objects") {
+    const Scene scene = load(
+        "[media.fog]\nsigma_s = 0.05\n"
+        "[media.smoke]\ntype = \"homogeneous\"\nsigma_a = [0.1, 0.2, 0.3]\nsigma_s = 0.5\ng = -0.4\n"
+        "[world]\nmedium = \"fog\"\n"
+        "[materials.glass]\nkt = 1\n"
+        "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"glass\"\ninterior = \"smoke\"\n"
+        "[[spheres]]\ncenter = [3, 0, 0]\nradius = 1\nmaterial = \"glass\"\n");
+    REQUIRE(scene.media.size() == 2);
+    CHECK(scene.media[0]->name == "fog");
+    CHECK(scene.media[1]->name == "smoke");
+    const auto& fog = dynamic_cast<const lightpath::HomogeneousMedium&>(*scene.media[0]);
+    CHECK(fog.sigmaS == Rgb{0.05f});
+    CHECK(fog.sigmaA == Rgb{0.0f});
+    CHECK(fog.g == 0.0f);
+    const auto& smoke = dynamic_cast<const lightpath::HomogeneousMedium&>(*scene.media[1]);
+    CHECK(smoke.sigmaA == Rgb{0.1f, 0.2f, 0.3f});
+    CHECK(smoke.g == -0.4f);
+    CHECK(scene.worldMedium == 0);
+    REQUIRE(scene.objects.size() == 2);
+    CHECK(scene.objects[0].interior == 1);
+    CHECK(scene.objects[1].interior == lightpath::kNoMedium);
+    // No [media]: vacuum everywhere.
+    CHECK(load("[world]\nbackground = 1\n").worldMedium == lightpath::kNoMedium);
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "every part of a mesh is filled by its interior") {
+    write("box.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    const Scene scene = load("[media.fog]\nsigma_s = 1\n[materials.clay]\n"
+                             "[[meshes]]\nfile = \"box.obj\"\nmaterial = \"clay\"\ninterior = \"fog\"\n");
+    REQUIRE(scene.objects.size() == 1);
+    CHECK(scene.objects[0].interior == 0);
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "medium errors are located, with a suggestion when one is close") {
+    const std::string media = "[media.fog]\n[media.smoke]\n";
+    CHECK(errorOf(media + "[world]\nmedium = \"foggy\"\n") ==
+          "scene.toml:4:10: world.medium: unknown medium \"foggy\"; did you mean \"fog\"? (known: fog, smoke)");
+    CHECK(errorOf("[world]\nmedium = \"fog\"\n") ==
+          "scene.toml:2:10: world.medium: unknown medium \"fog\" (known: none)");
+    CHECK(errorOf(media + "[materials.glass]\n[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"glass\"\n"
+                          "interior = \"smoek\"\n") ==
+          "scene.toml:8:12: spheres[0].interior: unknown medium \"smoek\"; did you mean \"smoke\"? "
+          "(known: fog, smoke)");
+    CHECK(errorOf("[media.fog]\ng = 1\n") == "scene.toml:2:5: media.fog.g: expected a number -1 < x < 1, got 1");
+    CHECK(errorOf("[media.fog]\ng = -1.5\n") == "scene.toml:2:5: media.fog.g: expected a number -1 < x < 1, got -1.5");
+    CHECK(errorOf("[media.fog]\nsigma_s = [0.1, -0.2, 0]\n") ==
+          "scene.toml:2:17: media.fog.sigma_s[1]: expected a number >= 0, got -0.2");
+    CHECK(errorOf("[media.fog]\nsigma_t = 1\n") ==
+          "scene.toml:2:1: media.fog.sigma_t: unknown key \"sigma_t\"; did you mean \"sigma_a\"?");
+    CHECK(errorOf("[media.fog]\ntype = \"homogenous\"\n") ==
+          "scene.toml:2:8: media.fog.type: unknown medium type \"homogenous\"; did you mean \"homogeneous\"? "
+          "(known: homogeneous)");
+    // Only a closed shape has an inside.
+    CHECK(errorOf(media + "[materials.grey]\n[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\n"
+                          "material = \"grey\"\ninterior = \"fog\"\n")
+              .starts_with("scene.toml:8:1: planes[0].interior: unknown key \"interior\""));
 }

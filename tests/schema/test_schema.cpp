@@ -10,6 +10,7 @@
 #include "scene/light_type.h"
 #include "scene/shape_type.h"
 #include "materials/material_type.h"
+#include "media/medium_type.h"
 #include "schema/markdown.h"
 #include "schema/parameter_values.h"
 #include "schema/registry.h"
@@ -141,9 +142,10 @@ TEST_CASE("a registry lists by rank then name and refuses a duplicate") {
     CHECK_THROWS_AS(registry.add({{"test", "a", "", {}, ""}, 2}), std::logic_error);
 }
 
-TEST_CASE("every shipped material, light and shape type is registered in this binary") {
+TEST_CASE("every shipped material, medium, light and shape type is registered in this binary") {
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
+    CHECK(MediumRegistry::instance().names() == std::vector<std::string>{"homogeneous"});
     CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh"});
 }
 

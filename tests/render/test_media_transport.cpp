@@ -1,0 +1,244 @@
+// The path tracer through participating media (src/media/) against references that do not come
+// from it: Beer-Lambert's attenuation of a lit floor seen through fog (eye ray and shadow ray),
+// the white furnace (a non-absorbing medium inside an emitting enclosure leaves its radiance
+// unchanged: L = Le solves the radiative transfer equation there), the AOVs' sum with media, and
+// Arnold's volume AOVs filling.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "media/homogeneous_medium.h"
+#include "render/renderer.h"
+#include "scene_builder.h"
+#include "../support/film_checks.h"
+#include "../support/statistics.h"
+
+// Its own namespace: render_tests is a unity build, beside test_path_tracer.cpp's helpers.
+namespace lightpath::media_transport_test {
+namespace {
+
+constexpr double kPValue = 0.001;  // rejection threshold of one test, as test_path_tracer.cpp
+
+Film renderPath(const Scene& scene, const std::vector<lpe::NamedExpression>& set, int spp, int maxDepth = 64) {
+    const AovSet aovs(set);
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = spp;
+    options.maxDepth = maxDepth;
+    options.seed = 7;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+std::uint32_t addMedium(Scene& scene, const std::string& name, Rgb sigmaA, Rgb sigmaS, float g = 0.0f) {
+    HomogeneousMedium medium;
+    medium.name = name;
+    medium.sigmaA = sigmaA;
+    medium.sigmaS = sigmaS;
+    medium.g = g;
+    scene.media.push_back(medium);
+    return static_cast<std::uint32_t>(scene.media.size() - 1);
+}
+
+// Where the centre of pixel (i, j) looks, by the pinhole model written out here (as
+// test_path_tracer.cpp does), and the point of the floor y = 0 it sees.
+glm::dvec3 pixelDirection(const CameraDescription& c, int i, int j) {
+    const glm::dvec3 forward = glm::normalize(glm::dvec3(c.lookAt) - glm::dvec3(c.eye));
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(c.up)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double halfHeight = std::tan(glm::radians(double(c.verticalFovDegrees)) / 2.0);
+    const double aspect = double(c.width) / double(c.height);
+    const double u = (2.0 * (i + 0.5) / c.width - 1.0) * aspect * halfHeight;
+    const double v = (1.0 - 2.0 * (j + 0.5) / c.height) * halfHeight;
+    return glm::normalize(forward + u * right + v * up);
+}
+
+const glm::dvec3 kLight{0.7, 2.5, -0.4};
+constexpr double kAlbedo = 0.6, kIntensity = 3.0;
+
+// A Lambertian floor under a point light, seen from above, all in the world's medium.
+Scene fogFloor(Rgb sigmaA, Rgb sigmaS) {
+    Scene scene;
+    scene.camera = test::centredCamera({0.3f, 1.5f, 0.2f}, {0.3f, 0, 0.2f}, {0, 0, -1}, 31);
+    scene.camera.verticalFovDegrees = 60.0f;
+    PhongMaterial floor;
+    floor.name = "floor";
+    floor.kd = Rgb{float(kAlbedo)};
+    test::addPlane(scene, "floor", test::addMaterial(scene, floor), {0, 0, 0}, {0, 1, 0});
+    scene.lights.push_back(PointLight{"key", Vec3(kLight), Rgb{float(kIntensity)}, Vec3{0, 0, 1}});
+    scene.worldMedium = addMedium(scene, "fog", sigmaA, sigmaS);
+    return scene;
+}
+
+// Pixel (i, j)'s direct light from the floor: kd I cos / d² (test_path_tracer.cpp's closed form),
+// dimmed by exp(-sigma_t d) along the shadow ray (d = the light's distance) and along the eye ray.
+double floorThroughFog(const Scene& scene, int i, int j, double sigmaT) {
+    const CameraDescription& c = scene.camera;
+    const glm::dvec3 d = pixelDirection(c, i, j);
+    const double eyeDistance = -double(c.eye.y) / d.y;
+    const glm::dvec3 p = glm::dvec3(c.eye) + eyeDistance * d;
+    const glm::dvec3 toLight = kLight - p;
+    const double lightDistance = glm::length(toLight);
+    const double unattenuated = kAlbedo * kIntensity * (toLight.y / lightDistance) / (lightDistance * lightDistance);
+    return unattenuated * std::exp(-sigmaT * (lightDistance + eyeDistance));
+}
+
+TEST_CASE("path: a floor seen through absorbing fog is dimmed by exp(-sigma_t d) on the eye ray and the shadow ray") {
+    const Rgb sigmaA{0.05f, 0.2f, 0.4f};
+    const Scene scene = fogFloor(sigmaA, Rgb{0.0f});
+    // A medium that only absorbs makes the estimate exact: one sample per pixel, every pixel within 0.5%.
+    const Film film = renderPath(scene, {}, 1);
+    double worst = 0.0;
+    for (int j = 0; j < film.height(); ++j)
+        for (int i = 0; i < film.width(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                const double expected = floorThroughFog(scene, i, j, sigmaA[c]);
+                worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
+            }
+    CHECK(worst < 0.005);
+}
+
+TEST_CASE("path: through scattering fog the floor's direct light E<RD>L is exp(-sigma_t d) dimmer, unbiased (t-test)") {
+    // Coloured: the free flights are drawn by one channel and weighed over all three (pbrt-v4 14.2).
+    const Rgb sigmaA{0.1f, 0.05f, 0.0f}, sigmaS{0.2f, 0.4f, 0.6f};
+    const Scene scene = fogFloor(sigmaA, sigmaS);
+    const Film film = renderPath(scene, {{"direct", "E<RD>L"}}, 16);
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        std::vector<double> ratios;
+        for (int j = 0; j < film.height(); ++j)
+            for (int i = 0; i < film.width(); ++i)
+                ratios.push_back(film.at(1, i, j)[c] / floorThroughFog(scene, i, j, sigmaA[c] + sigmaS[c]));
+        CHECK(test::studentTTest(ratios, 1.0) > kPValue);
+        CHECK(test::studentTTest(ratios, 1.05) < kPValue);  // the control: 5% off is rejected
+    }
+}
+
+// The camera inside an emitting sphere (radiance Le, no reflection) filled with the world's medium.
+Scene furnace(Rgb sigmaA, Rgb sigmaS, float g) {
+    Scene scene;
+    scene.camera = test::centredCamera({0.1f, -0.2f, 0.3f}, {1, 0, 0}, {0, 1, 0}, 15);
+    scene.camera.verticalFovDegrees = 90.0f;
+    PhongMaterial wall;
+    wall.name = "wall";
+    wall.emission = Rgb{1.0f};
+    test::addSphere(scene, "wall", test::addMaterial(scene, wall), {0, 0, 0}, 1.0f);
+    scene.worldMedium = addMedium(scene, "fog", sigmaA, sigmaS, g);
+    return scene;
+}
+
+double meanOf(const Film& film, std::size_t layer, int c) {
+    double sum = 0.0;
+    for (int j = 0; j < film.height(); ++j)
+        for (int i = 0; i < film.width(); ++i) sum += film.at(layer, i, j)[c];
+    return sum / (film.width() * film.height());
+}
+
+TEST_CASE("path: white furnace: a medium that does not absorb leaves the walls' radiance; one that absorbs dims it") {
+    // Coloured, forward-scattering: every channel's own free flights and the phase function in the loop.
+    const Film conserving = renderPath(furnace(Rgb{0.0f}, {1.0f, 1.5f, 2.0f}, 0.4f), {}, 256);
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        std::vector<double> pixels;
+        for (int j = 0; j < conserving.height(); ++j)
+            for (int i = 0; i < conserving.width(); ++i) pixels.push_back(conserving.at(0, i, j)[c]);
+        CHECK(meanOf(conserving, 0, c) == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(test::studentTTest(pixels, 1.0) > kPValue);
+        CHECK(test::studentTTest(pixels, 0.97) < kPValue);  // the control: 3% off is rejected
+    }
+    const Film absorbing = renderPath(furnace(Rgb{0.5f}, Rgb{2.0f}, 0.0f), {}, 32);
+    for (int c = 0; c < 3; ++c) CHECK(meanOf(absorbing, 0, c) < 0.9);
+}
+
+TEST_CASE("path with media: the classes AOVs and rest sum to the beauty, volume light goes to rest, and C<V>.*, C<V>L fill") {
+    Scene scene = fogFloor(Rgb{0.05f}, Rgb{0.3f});
+    PhongMaterial glass;
+    glass.name = "glass";
+    glass.kt = Rgb{1.0f};
+    glass.fresnel = true;
+    test::addSphere(scene, "ball", test::addMaterial(scene, glass), {0.3f, 0.4f, 0.2f}, 0.3f);
+    scene.objects.back().interior = addMedium(scene, "smoke", Rgb{0.2f}, Rgb{3.0f}, 0.6f);
+    const Film classes = renderPath(scene, classesSet(), 4, 8);
+    CHECK(test::worstSumError(classes) <= 1.0);
+    CHECK(test::finiteNonNegative(classes));
+    CHECK(meanOf(classes, classes.layerCount() - 1, 1) > 0.0);  // `rest` holds the light through V events
+
+    // Arnold's volume AOVs (the camera ray scatters first in a medium), one medium's light, and a
+    // partition: paths with a V event anywhere and paths with none.
+    const Film arnold = renderPath(scene, {{"volume", "C<V>.*"}, {"volume_direct", "C<V>L"},
+                                           {"smoke", "C.*<V'smoke'>.*"}, {"any_volume", "C.*V.*"}, {"surfaces", "C[^V]*"}},
+                                   4, 8);
+    for (std::size_t layer = 1; layer <= 4; ++layer) CHECK(meanOf(arnold, layer, 1) > 0.0);
+    double split = 0.0, beauty = 0.0;
+    for (int j = 0; j < arnold.height(); ++j)
+        for (int i = 0; i < arnold.width(); ++i) {
+            split += arnold.at(4, i, j).g + arnold.at(5, i, j).g;
+            beauty += arnold.at(0, i, j).g;
+        }
+    CHECK(split == doctest::Approx(beauty).epsilon(1e-5));
+}
+
+// Single scattering from a point light in an infinite, isotropic, homogeneous medium (the airlight
+// integral of Sun et al. 2005) along the ray from `eye` in direction w:
+//   L = ∫0^∞ sigma_s e^(-sigma_t t) 1/(4 pi) (pi I) e^(-sigma_t d(t)) / d(t)² dt,  d(t) = |eye + t w - light|
+// by Simpson's rule in double, converged (the tail beyond t = 80 is below e^-32).
+double airlight(const glm::dvec3& eye, const glm::dvec3& w, const glm::dvec3& light, double sigmaS, double sigmaT,
+                double intensity) {
+    constexpr int kIntervals = 40000;
+    constexpr double kEnd = 80.0;
+    const double h = kEnd / kIntervals;
+    double sum = 0.0;
+    for (int k = 0; k <= kIntervals; ++k) {
+        const double t = k * h;
+        const glm::dvec3 toLight = light - (eye + t * w);
+        const double d2 = glm::dot(toLight, toLight);
+        const double f = sigmaS * std::exp(-sigmaT * (t + std::sqrt(d2))) * intensity / 4.0 / d2;
+        sum += f * (k == 0 || k == kIntervals ? 1.0 : k % 2 == 1 ? 4.0 : 2.0);
+    }
+    return sum * h / 3.0;
+}
+
+TEST_CASE("single scattering from a point light in infinite fog matches the airlight integral, raycast and path's E V <L.>") {
+    const glm::dvec3 light{2.5, 0.3, -2.0};  // outside the view: no camera ray passes near it
+    constexpr double kSigmaS = 0.3, kSigmaA = 0.1, kI = 5.0;
+    Scene scene;
+    scene.camera = test::centredCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 41);
+    scene.camera.verticalFovDegrees = 40.0f;
+    scene.lights.push_back(PointLight{"key", Vec3(light), Rgb{float(kI)}, Vec3{0, 0, 1}});
+    scene.worldMedium = addMedium(scene, "fog", Rgb{float(kSigmaA)}, Rgb{float(kSigmaS)});
+    const std::vector<lpe::NamedExpression> single{{"single", "E<V><L.>"}};
+    const auto ratios = [&](const Film& film) {
+        std::vector<double> r;
+        for (int j = 0; j < film.height(); ++j)
+            for (int i = 0; i < film.width(); ++i)
+                r.push_back(film.at(1, i, j).g / airlight(glm::dvec3(scene.camera.eye), pixelDirection(scene.camera, i, j),
+                                                          light, kSigmaS, kSigmaS + kSigmaA, kI));
+        return r;
+    };
+    const auto mean = [](const std::vector<double>& v) {
+        double sum = 0.0;
+        for (double x : v) sum += x;
+        return sum / v.size();
+    };
+    SUBCASE("raycast, at the pixel centres") {
+        const AovSet aovs(single);
+        RenderOptions options;
+        options.integrator = "raycast";
+        options.seed = 7;
+        const std::vector<double> r = ratios(Renderer(scene, aovs, options).render().film);
+        CHECK(mean(r) == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(test::studentTTest(r, 1.0) > kPValue);
+        CHECK(test::studentTTest(r, 1.03) < kPValue);  // the control: 3% off is rejected
+    }
+    SUBCASE("path's E V <L.>") {
+        const std::vector<double> r = ratios(renderPath(scene, single, 16));
+        CHECK(mean(r) == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(test::studentTTest(r, 1.0) > kPValue);
+        CHECK(test::studentTTest(r, 1.03) < kPValue);
+    }
+}
+
+}  // namespace
+}  // namespace lightpath::media_transport_test
