@@ -142,7 +142,7 @@ TEST_CASE("a registry lists by rank then name and refuses a duplicate") {
 }
 
 TEST_CASE("every shipped material, light and shape type is registered in this binary") {
-    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong"});
+    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
     CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh"});
 }
