@@ -169,7 +169,7 @@ MaterialClaims materialClaims(const MaterialType& type, const ParameterValues& v
 
 void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit) {
     // Hand-picked: the lecture's materials (matte, highlights of every width, mirror, glass,
-    // Fresnel glass, a diamond-like index).
+    // Fresnel glass, a diamond-like index), and glTF metallic-roughness materials from a mirror to the roughest.
     using V = Vec3;
     visit(handPicked("phong", {{"kd", V{0.8f}}}));
     visit(handPicked("phong", {{"ks", V{0.9f}}, {"n", 1.0}}));
@@ -183,6 +183,9 @@ void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit) 
     visit(handPicked("modified-phong", {{"ks", V{0.95f}}, {"n", 1.0}}));
     visit(handPicked("modified-phong", {{"kd", V{0.5f, 0.2f, 0.0f}}, {"ks", V{0.5f, 0.3f, 0.8f}}, {"n", 20.0}}));
     visit(handPicked("modified-phong", {{"kd", V{0.1f}}, {"ks", V{0.8f}}, {"n", 200.0}}));
+    visit(handPicked("microfacet", {{"base_color", V{1.0f}}, {"metallic", 0.0}, {"roughness", 0.0}}));
+    visit(handPicked("microfacet", {{"base_color", V{0.95f, 0.64f, 0.54f}}, {"roughness", 0.3}}));
+    visit(handPicked("microfacet", {{"base_color", V{0.8f, 0.3f, 0.2f}}, {"metallic", 0.0}, {"roughness", 1.0}}));
 
     // Drawn: every registered type, its defaults and kDrawsPerMaterialType sets within its schema.
     for (const MaterialType* type : MaterialRegistry::instance().entries()) {

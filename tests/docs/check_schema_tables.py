@@ -7,8 +7,8 @@ import subprocess
 import sys
 
 # The types whose tables scenes/README.md shows.
-TABLES = [("material", "phong"), ("material", "modified-phong"), ("medium", "homogeneous"), ("light", "point"), ("light", "quad"),
-          ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),
+TABLES = [("material", "phong"), ("material", "modified-phong"), ("material", "microfacet"), ("medium", "homogeneous"),
+          ("light", "point"), ("light", "quad"), ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),
           ("shape", "triangle"), ("shape", "mesh")]
 
 

@@ -1,0 +1,210 @@
+#include "materials/microfacet_material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/ggx.h"
+#include "materials/lambert_lobe.h"
+#include "materials/material_type.h"
+#include "materials/optics.h"
+#include "sampling/warp.h"
+
+namespace lightpath {
+namespace {
+
+// glTF 2.0 appendix B: a dielectric's reflectance at normal incidence (index of refraction 1.5).
+constexpr float kDielectricF0 = 0.04f;
+// Visible normals per axis of the stratified grid that integrates the specular albedo table.
+constexpr int kAlbedoStrata = 64;
+
+float fifthPower(float x) {
+    const float x2 = x * x;
+    return x2 * x2 * x;
+}
+
+}  // namespace
+
+MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roughness)
+    : f0_(glm::mix(Rgb{kDielectricF0}, baseColor, metallic)),
+      diffuseColor_((1.0f - metallic) * baseColor),
+      roughness_(roughness) {
+    for (int k = 0; k < kAlbedoNodes; ++k) {
+        const float cosine = float(k) / float(kAlbedoNodes - 1);
+        if (smooth()) {  // the mirror reflects F(cos theta_o) exactly
+            albedoBias_[k] = fifthPower(1.0f - cosine);
+            albedoScale_[k] = 1.0f - albedoBias_[k];
+            continue;
+        }
+        // E = integral over visible normals m of F(wo.m) G2 / G1 (the sampling weight, Heitz 2018),
+        // by the midpoint rule on a stratified grid of sampleVisibleNormal's inputs.
+        const float c = std::max(cosine, 1e-3f);
+        const Vec3 o{std::sqrt(1.0f - c * c), 0.0f, c};
+        const float a = alpha(), g1 = ggx::masking(o, a);
+        double scale = 0.0, bias = 0.0;
+        for (int i = 0; i < kAlbedoStrata; ++i) {
+            for (int j = 0; j < kAlbedoStrata; ++j) {
+                const Vec2 u{(i + 0.5f) / kAlbedoStrata, (j + 0.5f) / kAlbedoStrata};
+                const Vec3 m = ggx::sampleVisibleNormal(o, a, u);
+                const Vec3 in = reflectAbout(o, m);
+                if (in.z <= 0.0f) continue;
+                const float weight = ggx::maskingShadowing(o, in, a) / g1;
+                const float grazing = fifthPower(std::clamp(1.0f - glm::dot(o, m), 0.0f, 1.0f));
+                scale += weight * (1.0f - grazing);
+                bias += weight * grazing;
+            }
+        }
+        albedoScale_[k] = float(scale / (kAlbedoStrata * kAlbedoStrata));
+        albedoBias_[k] = float(bias / (kAlbedoStrata * kAlbedoStrata));
+    }
+    // 2 integral of E(mu) mu dmu by the trapezoid rule on the table's nodes.
+    for (int k = 0; k < kAlbedoNodes; ++k) {
+        const float mu = float(k) / float(kAlbedoNodes - 1);
+        const float w = (k == 0 || k == kAlbedoNodes - 1) ? 0.5f : 1.0f;
+        averageAlbedo_ += specularAlbedo(mu) * (2.0f * mu * w / float(kAlbedoNodes - 1));
+    }
+    averageAlbedo_ = glm::min(Rgb{1.0f}, averageAlbedo_);
+}
+
+float MicrofacetMaterial::alpha() const { return std::max(ggx::kMinAlpha, roughness_ * roughness_); }
+
+Rgb MicrofacetMaterial::fresnel(float cosine) const {
+    return f0_ + (Rgb{1.0f} - f0_) * fifthPower(std::clamp(1.0f - cosine, 0.0f, 1.0f));
+}
+
+Rgb MicrofacetMaterial::specularAlbedo(float cosine) const {
+    const float x = std::clamp(cosine, 0.0f, 1.0f) * float(kAlbedoNodes - 1);
+    const int k = std::min(int(x), kAlbedoNodes - 2);
+    const float t = x - float(k);
+    const float scale = glm::mix(albedoScale_[k], albedoScale_[k + 1], t);
+    const float bias = glm::mix(albedoBias_[k], albedoBias_[k + 1], t);
+    return glm::min(Rgb{1.0f}, f0_ * scale + Rgb{bias});
+}
+
+Rgb MicrofacetMaterial::diffuseWeight(float cosOut, float cosIn) const {
+    return diffuseColor_ * (Rgb{1.0f} - specularAlbedo(cosOut)) * (Rgb{1.0f} - specularAlbedo(cosIn));
+}
+
+Rgb MicrofacetMaterial::diffuseReflectance() const {
+    // The base's albedo from wo is c (1 - E(wo)) (1 - averageAlbedo_); averaged over wo as well:
+    const Rgb remaining = Rgb{1.0f} - averageAlbedo_;
+    return diffuseColor_ * remaining * remaining;
+}
+
+bool MicrofacetMaterial::has(int lobe) const {
+    if (lobe == kDiffuse) return !isBlack(diffuseColor_);
+    if (lobe == kGlossy) return !smooth();
+    if (lobe == kMirror) return smooth();
+    return false;
+}
+
+Rgb MicrofacetMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    if (!has(lobe) || !side.bothAbove(wo, wi)) return Rgb{0.0f};
+    const Frame frame(side.normal);
+    const Vec3 o = frame.toLocal(wo), i = frame.toLocal(wi);
+    if (lobe == kDiffuse) return lambert::eval(diffuseWeight(o.z, i.z), side, wi);
+    if (lobe != kGlossy) return Rgb{0.0f};
+    const Vec3 m = glm::normalize(o + i);
+    const float a = alpha();
+    // f cos theta_i = F D G2 / (4 cos theta_o)
+    return fresnel(glm::dot(o, m)) * (ggx::distribution(m, a) * ggx::maskingShadowing(o, i, a) / (4.0f * o.z));
+}
+
+float MicrofacetMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    if (!has(lobe) || !side.bothAbove(wo, wi)) return 0.0f;
+    if (lobe == kDiffuse) return lambert::pdf(side, wi);
+    if (lobe != kGlossy) return 0.0f;
+    const Frame frame(side.normal);
+    return ggx::reflectionPdf(frame.toLocal(wo), frame.toLocal(wi), alpha());
+}
+
+std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo,
+                                                     Vec2 u) const {
+    if (!has(lobe)) return std::nullopt;
+    if (lobe == kDiffuse) {
+        std::optional<LobeSample> s = lambert::sample(Rgb{1.0f}, side, wo, u);
+        if (s) s->weight = diffuseWeight(glm::dot(wo, side.normal), glm::dot(s->wi, side.normal));
+        return s;
+    }
+    if (lobe != kGlossy) return std::nullopt;
+    const Frame frame(side.normal);
+    const Vec3 o = frame.toLocal(wo);
+    if (!(o.z > 0.0f)) return std::nullopt;  // eval() is 0 there
+    const float a = alpha();
+    const Vec3 m = ggx::sampleVisibleNormal(o, a, u);
+    const Vec3 i = reflectAbout(o, m);
+    if (i.z <= 0.0f) return std::nullopt;
+    LobeSample s;
+    s.wi = glm::normalize(frame.toWorld(i));
+    s.pdf = ggx::reflectionPdf(o, i, a);
+    if (!(s.pdf > 0.0f)) return std::nullopt;
+    // F D G2 / (4 cos_o) over G1(wo) D / (4 cos_o): F G2 / G1 (Heitz 2018, eq. 19).
+    s.weight = fresnel(glm::dot(o, m)) * (ggx::maskingShadowing(o, i, a) / ggx::masking(o, a));
+    return s;
+}
+
+float MicrofacetMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const {
+    if (!has(lobe)) return 0.0f;
+    const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
+    // The base's albedo: c (1 - E(wo)) times the cosine-weighted mean of 1 - E(wi).
+    if (lobe == kDiffuse)
+        return maxComponent(diffuseColor_ * (Rgb{1.0f} - specularAlbedo(cosOut)) * (Rgb{1.0f} - averageAlbedo_));
+    return maxComponent(specularAlbedo(cosOut));
+}
+
+int MicrofacetMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
+    if (!has(kMirror)) return 0;
+    const float cosOut = glm::dot(wo, side.normal);
+    if (cosOut <= 0.0f) return 0;
+    const Rgb weight = fresnel(cosOut);
+    branches[0] = {reflectAbout(wo, side.normal), weight, kMirror, maxComponent(weight)};
+    return 1;
+}
+
+int MicrofacetMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
+                                NamedFactors& factors) const {
+    if (lobe == kDiffuse) {
+        factors = lambert::factors(diffuseWeight(glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
+        factors[0].name = "(1-m) base (1-E(V)) (1-E(L))";
+        return 2;
+    }
+    if (lobe != kGlossy) return 0;
+    const Rgb value = eval(lobe, side, wo, wi);
+    const Rgb f = fresnel(std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi))));
+    // pi eval = F times pi D G2 / (4 N.V)
+    Rgb rest{0.0f};
+    for (int c = 0; c < 3; ++c) rest[c] = f[c] > 0.0f ? kPi * value[c] / f[c] : 0.0f;
+    factors = {{{"F", f}, {"pi D G / (4 N.V)", rest}}};
+    return 2;
+}
+
+}  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+constexpr Range kUnitInterval{0.0, 1.0, false, false};
+
+MaterialSlot makeMicrofacet(const ParameterValues& values) {
+    MicrofacetMaterial material(values.colour("base_color"), values.number("metallic"), values.number("roughness"));
+    material.emission = values.colour("emission");
+    return material;
+}
+
+}  // namespace
+}  // namespace lightpath
+
+LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
+    {"material", "microfacet", "glTF's metallic-roughness: GGX microfacet specular over a diffuse base",
+     {{"base_color", lightpath::ParameterType::Colour, "", "0.8", lightpath::kUnitInterval,
+       "the metal's reflectance at normal incidence F0, the dielectric's diffuse albedo"},
+      {"metallic", lightpath::ParameterType::Number, "", "1", lightpath::kUnitInterval,
+       "1 a conductor (F0 = base_color, no base), 0 a dielectric (F0 = 0.04 over a diffuse base_color)"},
+      {"roughness", lightpath::ParameterType::Number, "", "0.5", lightpath::kUnitInterval,
+       "GGX alpha = roughness²; 0 is a perfect mirror (`<RS>`), above 0 a glossy lobe (`<RG>`)"},
+      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
+       "emitted radiance: the surface is an area light"}},
+     "<R[DGS]>|O"},
+    2, lightpath::makeMicrofacet,
+    // F and G2 at the half vector and (1 - E(wo))(1 - E(wi)) are symmetric: reciprocal. F <= 1,
+    // G2 <= G1 and the base's share 1 - E(wo): at most 1 from every direction.
+    {{true, true, true}, [](const lightpath::ParameterValues&) { return true; }}})

@@ -1,0 +1,287 @@
+// The GGX microfacet material (materials/microfacet_material.h) against references that do not
+// come from it: the single-scattering GGX albedo by a quadrature written here (white furnace),
+// the glTF blend's energy and its F0 and base by hand,
+// Helmholtz reciprocity, chi-square of its visible-normal sampling against its density (the
+// helper of test_bsdf_sampling.cpp), and the path tracer against bdpt on a box holding it.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "materials/bsdf.h"
+#include "materials/microfacet_material.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "../support/direction_chi_square.h"
+#include "../support/statistics.h"
+
+namespace lightpath {
+namespace {
+
+// glTF's metallic = 1: a conductor whose F0 is the base colour.
+MicrofacetMaterial conductor(Rgb f0, float roughness) { return MicrofacetMaterial(f0, 1.0f, roughness); }
+
+Vec3 outgoing(double cosOut, double phi = 0.0) {
+    const double s = std::sqrt(std::max(0.0, 1.0 - cosOut * cosOut));
+    return Vec3{float(s * std::cos(phi)), float(s * std::sin(phi)), float(cosOut)};
+}
+
+// The single-scattering albedo of GGX with F = 1 and height-correlated Smith G2, written out in
+// double from Walter et al. 2007 and Heitz 2014 (eq. 99), integrated over microfacet normals m:
+// E(wo) = integral D(m) G2(wo, wi) (wo.m) / cos theta_o dm, wi the mirror of wo about m
+// (dwi = 4 (wo.m) dm), by the midpoint rule in theta_m and phi_m.
+double ggxAlbedoReference(double cosOut, double alpha) {
+    const double a2 = alpha * alpha, pi = 3.14159265358979323846;
+    const double sinOut = std::sqrt(1.0 - cosOut * cosOut);
+    const double ox = sinOut, oz = cosOut;
+    auto lambda = [&](double cz) {
+        const double tan2 = (1.0 - cz * cz) / (cz * cz);
+        return 0.5 * (std::sqrt(1.0 + a2 * tan2) - 1.0);
+    };
+    const int thetaSteps = 4000, phiSteps = 360;
+    const double dTheta = 0.5 * pi / thetaSteps, dPhi = 2.0 * pi / phiSteps;
+    double sum = 0.0;
+    for (int t = 0; t < thetaSteps; ++t) {
+        const double theta = (t + 0.5) * dTheta, cm = std::cos(theta), sm = std::sin(theta);
+        const double d = a2 / (pi * std::pow((a2 - 1.0) * cm * cm + 1.0, 2.0));
+        for (int p = 0; p < phiSteps; ++p) {
+            const double phi = (p + 0.5) * dPhi;
+            const double mx = sm * std::cos(phi), mz = cm;
+            const double om = ox * mx + oz * mz;
+            if (om <= 0.0) continue;
+            const double iz = 2.0 * om * mz - oz;  // the mirror of wo about m
+            if (iz <= 0.0) continue;
+            const double g2 = 1.0 / (1.0 + lambda(oz) + lambda(iz));
+            sum += d * g2 * om / oz * sm * dTheta * dPhi;
+        }
+    }
+    return sum;
+}
+
+constexpr float kRoughnessSweep[] = {0.2f, 0.35f, 0.5f, 0.7f, 0.85f, 1.0f};
+constexpr float kCosSweep[] = {0.999f, 0.7f, 0.4f, 0.15f};
+
+TEST_CASE("microfacet: white furnace, a conductor with F = 1 reflects the single-scattering GGX albedo, never more than 1") {
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    for (const float roughness : kRoughnessSweep) {
+        const MicrofacetMaterial material = conductor(Rgb{1.0f}, roughness);  // Schlick's F = 1
+        const double alpha = double(roughness) * roughness;
+        for (const float cosOut : kCosSweep) {
+            CAPTURE(roughness);
+            CAPTURE(cosOut);
+            const Vec3 wo = outgoing(cosOut);
+            std::mt19937_64 rng(17);
+            std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+            constexpr int kDraws = 100000;
+            double byWeight = 0.0, byEval = 0.0;
+            for (int i = 0; i < kDraws; ++i) {
+                const auto s = material.sample(MicrofacetMaterial::kGlossy, side, wo, {uniform(rng), uniform(rng)});
+                if (!s) continue;
+                byWeight += s->weight.r;
+                // The same estimate from eval and pdf: sampling and evaluation describe one BSDF.
+                byEval += material.eval(MicrofacetMaterial::kGlossy, side, wo, s->wi).r /
+                          material.pdf(MicrofacetMaterial::kGlossy, side, wo, s->wi);
+            }
+            byWeight /= kDraws;
+            byEval /= kDraws;
+            const double reference = ggxAlbedoReference(cosOut, alpha);
+            CAPTURE(reference);
+            CHECK(reference <= 1.0);
+            CHECK(byWeight <= 1.0);
+            CHECK(byWeight == doctest::Approx(reference).epsilon(0.01));
+            CHECK(byEval == doctest::Approx(reference).epsilon(0.01));
+        }
+    }
+}
+
+TEST_CASE("microfacet: eval is reciprocal, f(wo, wi) = f(wi, wo)") {
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (const float roughness : kRoughnessSweep) {
+        const MicrofacetMaterial material({0.95f, 0.64f, 0.54f}, 0.3f, roughness);
+        for (int i = 0; i < 200; ++i) {
+            const Vec3 wo = outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
+            const Vec3 wi = outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
+            for (const int lobe : {MicrofacetMaterial::kDiffuse, MicrofacetMaterial::kGlossy}) {
+                CAPTURE(lobe);
+                // eval is f |cos theta_i|
+                const Rgb forward = material.eval(lobe, side, wo, wi) / wi.z;
+                const Rgb backward = material.eval(lobe, side, wi, wo) / wo.z;
+                for (int c = 0; c < 3; ++c) CHECK(forward[c] == doctest::Approx(backward[c]).epsilon(1e-4));
+            }
+        }
+    }
+}
+
+// The blend's directional albedo from wo: its glossy lobe by the lobe's sampling weights, its
+// base by uniform hemisphere sampling of eval (not the material's own sampling), and the mirror
+// branch at roughness 0.
+Rgb blendAlbedo(const MicrofacetMaterial& material, float cosOut) {
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    const Vec3 wo = outgoing(cosOut);
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    constexpr int kDraws = 100000;
+    Rgb glossy{0.0f}, base{0.0f};
+    for (int i = 0; i < kDraws; ++i) {
+        if (const auto s = material.sample(MicrofacetMaterial::kGlossy, side, wo, {uniform(rng), uniform(rng)}))
+            glossy += s->weight;
+        const float z = uniform(rng), phi = 2.0f * kPi * uniform(rng), r = std::sqrt(1.0f - z * z);
+        base += material.eval(MicrofacetMaterial::kDiffuse, side, wo, {r * std::cos(phi), r * std::sin(phi), z});
+    }
+    Rgb total = glossy / float(kDraws) + base * (2.0f * kPi / kDraws);
+    SpecularBranches branches;
+    if (material.specularBranches(side, wo, branches) == 1) total += branches[0].weight;
+    return total;
+}
+
+TEST_CASE("microfacet: white furnace, glTF's metallic-roughness blend of a white base reflects at most 1 at every roughness") {
+    for (const float metallic : {0.0f, 0.5f}) {
+        for (const float roughness : {0.0f, 0.2f, 0.35f, 0.5f, 0.7f, 0.85f, 1.0f}) {
+            const MicrofacetMaterial material(Rgb{1.0f}, metallic, roughness);
+            for (const float cosOut : {0.999f, 0.7f, 0.4f, 0.15f, 0.03f}) {
+                CAPTURE(metallic);
+                CAPTURE(roughness);
+                CAPTURE(cosOut);
+                const Rgb albedo = blendAlbedo(material, cosOut);
+                CAPTURE(albedo.r);
+                CHECK(albedo.r <= 1.0f + 0.005f);  // 0.005: a few standard errors of the estimate
+                // and the base is not lost: a white dielectric reflects most of what arrives
+                if (metallic == 0.0f && cosOut > 0.3f) CHECK(albedo.r > 0.8f);
+            }
+        }
+    }
+}
+
+TEST_CASE("microfacet: F0 = mix(0.04, base_color, metallic) and the base is (1 - metallic) base_color (glTF 2.0, appendix B)") {
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    SpecularBranches branches;
+    // At normal incidence Schlick's F is F0: 0.5 * 0.04 + 0.5 * base, by hand.
+    const MicrofacetMaterial half({0.6f, 0.2f, 1.0f}, 0.5f, 0.0f);
+    REQUIRE(half.specularBranches(side, {0, 0, 1}, branches) == 1);
+    CHECK(branches[0].weight.r == doctest::Approx(0.32));
+    CHECK(branches[0].weight.g == doctest::Approx(0.12));
+    CHECK(branches[0].weight.b == doctest::Approx(0.52));
+    const MicrofacetMaterial dielectric(Rgb{0.6f}, 0.0f, 0.0f);
+    REQUIRE(dielectric.specularBranches(side, {0, 0, 1}, branches) == 1);
+    CHECK(branches[0].weight.r == doctest::Approx(0.04));
+    // A smooth base under a mirror layer: (1 - F(1))(1 - F(cos theta_i)) of 0.6/pi, with Schlick's F
+    // written out for cos theta_i = 0.5: 0.04 + 0.96/32.
+    const float cosIn = 0.5f;
+    const Vec3 wi = outgoing(cosIn);
+    const double expected = 0.6 / 3.14159265358979 * (1.0 - 0.04) * (1.0 - (0.04 + 0.96 / 32.0)) * cosIn;
+    CHECK(dielectric.eval(MicrofacetMaterial::kDiffuse, side, {0, 0, 1}, wi).r == doctest::Approx(expected).epsilon(1e-4));
+    const MicrofacetMaterial metal(Rgb{0.6f}, 1.0f, 0.5f);
+    CHECK(!metal.has(MicrofacetMaterial::kDiffuse));
+}
+
+constexpr int kChiSquareTests = 8;
+const double kSignificance = 1.0 - std::pow(1.0 - 0.01, 1.0 / kChiSquareTests);
+
+// p-value that the material's sampled directions follow the density its pdf claims (through
+// the Bsdf, lobe choice included), as test_bsdf_sampling.cpp tests the Phong materials.
+double chiSquarePValue(const MicrofacetMaterial& material, float cosOut) {
+    const Bsdf bsdf(material, {0, 0, 1}, true);
+    const Vec3 wo = outgoing(cosOut, 4.0);  // an azimuth off the frame's axes
+    test::DirectionHistogram histogram;
+    histogram.subdivisions = 24;  // 12 misses narrow grazing lobes: the midpoint rule, not the sampling
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    return test::directionChiSquarePValue(
+        histogram,
+        [&](std::mt19937_64& rng) -> std::optional<Vec3> {
+            const auto s = bsdf.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
+            return s ? std::optional<Vec3>(s->wi) : std::nullopt;
+        },
+        [&](const Vec3& wi) {
+            double density = 0.0;
+            for (int lobe = 0; lobe < int(bsdf.lobes().size()); ++lobe)
+                if (!bsdf.lobe(lobe).delta()) density += bsdf.pdf(lobe, wo, wi);
+            return density;
+        });
+}
+
+TEST_CASE("microfacet: chi-square, visible-normal and the base's cosine sampling follow their densities") {
+    const struct {
+        float metallic, roughness, cosOut;
+    } cases[kChiSquareTests] = {{1, 0.5f, 0.9f}, {1, 0.5f, 0.3f}, {1, 0.7f, 0.6f}, {1, 0.7f, 0.1f},
+                                {1, 1.0f, 0.999f}, {1, 1.0f, 0.2f}, {0, 0.5f, 0.7f}, {0.5f, 0.22f, 0.15f}};
+    for (const auto& c : cases) {
+        CAPTURE(c.metallic);
+        CAPTURE(c.roughness);
+        CAPTURE(c.cosOut);
+        CHECK(chiSquarePValue(MicrofacetMaterial({0.9f, 0.6f, 0.3f}, c.metallic, c.roughness), c.cosOut) > kSignificance);
+    }
+}
+
+TEST_CASE("microfacet: at roughness 0 the conductor is one mirror branch of Schlick's Fresnel, a delta <RS>") {
+    const MicrofacetMaterial material = conductor({0.9f, 0.6f, 0.3f}, 0.0f);
+    const Bsdf bsdf(material, {0, 0, 1}, true);
+    CHECK(!bsdf.hasSmoothLobe());
+    CHECK(bsdf.lobe(MicrofacetMaterial::kMirror).delta());
+    SpecularBranches branches;
+    const float cosOut = 0.5f;
+    REQUIRE(bsdf.specularBranches(outgoing(cosOut), branches) == 1);
+    CHECK(branches[0].wi.z == doctest::Approx(cosOut));
+    CHECK(branches[0].wi.x == doctest::Approx(-outgoing(cosOut).x));
+    // Schlick 1994: F0 + (1 - F0)(1 - cos)^5, by hand for cos = 0.5: (0.5)^5 = 1/32.
+    CHECK(branches[0].weight.r == doctest::Approx(0.9 + 0.1 / 32.0));
+    CHECK(branches[0].weight.b == doctest::Approx(0.3 + 0.7 / 32.0));
+}
+
+Film renderFilm(const Scene& scene, const char* integrator, int spp, std::uint64_t seed) {
+    const AovSet aovs(classesSet());
+    RenderOptions options;
+    options.integrator = integrator;
+    options.samplesPerPixel = spp;
+    options.maxDepth = 5;
+    options.seed = seed;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+std::vector<double> channel(const Film& film, std::size_t layer, int c) {
+    std::vector<double> values;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) values.push_back(film.at(layer, x, y)[c]);
+    return values;
+}
+
+double mean(const std::vector<double>& values) {
+    double sum = 0.0;
+    for (double v : values) sum += v;
+    return sum / double(values.size());
+}
+
+TEST_CASE("microfacet: the path tracer and bdpt agree on a box with a rough and a polished ball (t-test)" *
+          doctest::test_suite("statistical")) {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-microfacet.toml");
+    scene.camera.width = scene.camera.height = 32;
+    // The same seed: common random numbers make the paired differences small (test_bdpt.cpp).
+    const Film bdpt = renderFilm(scene, "bdpt", 256, 11), path = renderFilm(scene, "path", 256, 11);
+    REQUIRE(bdpt.layerNames() == path.layerNames());
+    int controls = 0;
+    for (std::size_t layer = 0; layer < bdpt.layerCount(); ++layer) {
+        for (int c = 0; c < 3; ++c) {
+            const std::vector<double> a = channel(bdpt, layer, c), b = channel(path, layer, c);
+            std::vector<double> difference(a.size()), wrong(a.size());
+            for (std::size_t i = 0; i < a.size(); ++i) {
+                difference[i] = a[i] - b[i];
+                wrong[i] = a[i] - 1.05 * b[i];  // the control: 5% off must be rejected
+            }
+            CAPTURE(bdpt.layerNames()[layer]);
+            CAPTURE(c);
+            CHECK(test::studentTTest(difference, 0.0) > 0.001);
+            if (mean(b) > 1e-3) {
+                CHECK(test::studentTTest(wrong, 0.0) < 0.001);
+                ++controls;
+            }
+        }
+    }
+    CHECK(controls >= 6);
+}
+
+}  // namespace
+}  // namespace lightpath
