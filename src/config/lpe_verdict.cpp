@@ -1,6 +1,7 @@
 #include "config/lpe_verdict.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "config/lpe_feasibility.h"
 #include "config/scene_events.h"
@@ -18,6 +19,21 @@ std::vector<std::string> languages(const std::string& expression, const Integrat
     std::vector<std::string> all = {expression, volumes ? kPathsWithVolumes : kRenderedPaths};
     if (integrator) all.emplace_back(integrator->pathLanguage);
     return all;
+}
+
+// The scene's label placement with each label of `aov` the scene lacks placed on no event, and the
+// message naming the first of those ("" when the scene knows them all).
+std::pair<lpe::LabelPlacement, std::string> placeLabels(const lpe::NamedExpression& aov, const Scene& scene) {
+    const std::vector<std::string> known = sceneLabels(scene);
+    lpe::LabelPlacement placement = labelPlacement(scene);
+    std::string unknown;
+    const lpe::Automaton automaton = lpe::Automaton::compile({{aov.name, aov.expression}});
+    for (const std::string& label : automaton.labels()) {
+        if (std::binary_search(known.begin(), known.end(), label)) continue;
+        placement[label] = {};
+        if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
+    }
+    return {placement, unknown};
 }
 
 }  // namespace
@@ -46,15 +62,7 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
             return {Verdict::BlackHere, "it needs a volume event (V): only a scene with [media] fills it, under an "
                                         "integrator that renders media (path)"};
         // A label that labels nothing here (a misspelt medium) is on no event, as for surfaces below.
-        const std::vector<std::string> known = sceneLabels(*scene);
-        lpe::LabelPlacement placement = labelPlacement(*scene);
-        std::string unknown;
-        const lpe::Automaton automaton = lpe::Automaton::compile({{aov.name, expression}});
-        for (const std::string& label : automaton.labels()) {
-            if (std::binary_search(known.begin(), known.end(), label)) continue;
-            placement[label] = {};
-            if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
-        }
+        auto [placement, unknown] = placeLabels(aov, *scene);
         if (lpe::haveCommonPath(languages(expression, integrator, true), placement))
             return {Verdict::Fillable, unknown.empty() ? "" : unknown + ": it labels nothing in this scene"};
         if (!unknown.empty()) return {Verdict::BlackHere, "this scene has no " + unknown.substr(std::string("unknown ").size())};
@@ -71,15 +79,7 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
     if (auto lack = whyNotInScene(expression, languages(expression, integrator, false), *scene)) return blackForWantOf(*lack);
 
     // In this scene: a label it names that labels nothing here is on no event at all.
-    const std::vector<std::string> known = sceneLabels(*scene);
-    lpe::LabelPlacement placement = labelPlacement(*scene);
-    std::string unknown;
-    const lpe::Automaton automaton = lpe::Automaton::compile({{aov.name, expression}});
-    for (const std::string& label : automaton.labels()) {
-        if (std::binary_search(known.begin(), known.end(), label)) continue;
-        placement[label] = {};
-        if (unknown.empty()) unknown = unknownNameMessage("label", label, known, ListKnown::withoutSuggestion);
-    }
+    auto [placement, unknown] = placeLabels(aov, *scene);
     const bool fillable = lpe::haveCommonPath(languages(expression, integrator, false), placement);
     if (fillable) {
         // On the events each labelled object and light produces (a mirror named by a floor's label).

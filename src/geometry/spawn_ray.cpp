@@ -27,6 +27,19 @@ Vec3 offsetOrigin(const SurfaceHit& hit, const Vec3& side, const NumericsOptions
     return hit.point;
 }
 
+// Points `ray` from its origin at `target`, stopping just short of it.
+void aimShadowRay(Ray& ray, const Vec3& target) {
+    const Vec3 toTarget = target - ray.origin;
+    const float distance = glm::length(toTarget);
+    if (!(distance > 0.0f) || !std::isfinite(distance)) {
+        // The light sits on the origin (or something is not finite): nothing can lie between.
+        ray.tMax = 0.0f;
+        return;
+    }
+    ray.direction = toTarget / distance;
+    ray.tMax = distance * (1.0f - kShadowShortening);
+}
+
 }  // namespace
 
 RayOrigins::RayOrigins(const SurfaceHit& hit, const NumericsOptions& numerics)
@@ -76,28 +89,13 @@ Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOpti
 Ray spawnShadowRay(const Vec3& origin, const Vec3& target) {
     Ray ray;
     ray.origin = origin;
-    const Vec3 toTarget = target - origin;
-    const float distance = glm::length(toTarget);
-    if (!(distance > 0.0f) || !std::isfinite(distance)) {
-        ray.tMax = 0.0f;
-        return ray;
-    }
-    ray.direction = toTarget / distance;
-    ray.tMax = distance * (1.0f - kShadowShortening);
+    aimShadowRay(ray, target);
     return ray;
 }
 
 Ray spawnShadowRay(RayOrigins& origins, const Vec3& target) {
     Ray ray = origins.leave(target - origins.hit().point);
-    const Vec3 toTarget = target - ray.origin;
-    const float distance = glm::length(toTarget);
-    if (!(distance > 0.0f) || !std::isfinite(distance)) {
-        // The light sits on the origin (or something is not finite): nothing can lie between.
-        ray.tMax = 0.0f;
-        return ray;
-    }
-    ray.direction = toTarget / distance;
-    ray.tMax = distance * (1.0f - kShadowShortening);
+    aimShadowRay(ray, target);
     return ray;
 }
 
