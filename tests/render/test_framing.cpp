@@ -27,7 +27,8 @@ TEST_CASE("the framing camera sees all 8 corners of the box for any aspect ratio
     box.grow(Vec3(40.0f, 11.0f, 2.5f));  // long, flat and thin, far from the origin
     const int sizes[][2] = {{640, 480}, {480, 640}, {1000, 10}, {10, 1000}, {1, 1}};
     const Vec3 views[] = {kFramingDirection, Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(-0.2f, 1, 0.1f)};
-    for (const auto& [width, height] : sizes) {
+    for (const auto& size : sizes) {
+        const int width = size[0], height = size[1];  // not a structured binding: clang 14's CAPTURE cannot capture one
         for (const Vec3& view : views) {
             for (const float fov : {10.0f, 45.0f, 120.0f}) {
                 CameraDescription camera;
