@@ -20,6 +20,7 @@
 #include "scene/scene_loader.h"
 #include "render_world.h"
 #include "scene_builder.h"
+#include "../support/paired_agreement.h"
 #include "../support/statistics.h"
 
 namespace lightpath {
@@ -41,46 +42,6 @@ Film render(const Scene& scene, const std::vector<lpe::NamedExpression>& set, co
     return Renderer(scene, aovs, options).render().film;
 }
 
-std::vector<double> channel(const Film& film, std::size_t layer, int c) {
-    std::vector<double> values;
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) values.push_back(film.at(layer, x, y)[c]);
-    return values;
-}
-
-double mean(const std::vector<double>& values) {
-    double sum = 0.0;
-    for (double v : values) sum += v;
-    return sum / double(values.size());
-}
-
-// bdpt - path per pixel has mean zero on every layer and channel; bdpt - 1.05 path must not,
-// wherever the layer holds light.
-void checkAgreement(const Film& bdpt, const Film& path) {
-    REQUIRE(bdpt.layerNames() == path.layerNames());
-    int controls = 0;
-    for (std::size_t layer = 0; layer < bdpt.layerCount(); ++layer) {
-        for (int c = 0; c < 3; ++c) {
-            const std::vector<double> a = channel(bdpt, layer, c), b = channel(path, layer, c);
-            std::vector<double> difference(a.size()), wrong(a.size());
-            for (std::size_t i = 0; i < a.size(); ++i) {
-                difference[i] = a[i] - b[i];
-                wrong[i] = a[i] - 1.05 * b[i];
-            }
-            CAPTURE(bdpt.layerNames()[layer]);
-            CAPTURE(c);
-            CAPTURE(mean(a));
-            CAPTURE(mean(b));
-            CHECK(studentTTest(difference, 0.0) > kPValue);
-            if (mean(b) > 1e-3) {
-                CHECK(studentTTest(wrong, 0.0) < kPValue);
-                ++controls;
-            }
-        }
-    }
-    CHECK(controls >= 6);  // beauty and at least one AOV in every channel carried the controls
-}
-
 TEST_CASE("bdpt: the Cornell box with its area light, every classes AOV equals the path tracer's (t-test)") {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.toml");
     scene.camera.width = scene.camera.height = 32;
@@ -88,7 +49,7 @@ TEST_CASE("bdpt: the Cornell box with its area light, every classes AOV equals t
     // differences are small and the test sharp, while their expectations stay each method's own.
     const Film bdpt = render(scene, classesSet(), "bdpt", 128, 5, 11);
     const Film path = render(scene, classesSet(), "path", 128, 5, 11);
-    checkAgreement(bdpt, path);
+    test::checkPairedAgreement(bdpt, path, kPValue);
 }
 
 // A closed sphere seen from its centre.
@@ -110,8 +71,8 @@ void checkLayer(const Film& film, const std::string& name, double expected) {
     REQUIRE(layer < names.size());
     CAPTURE(name);
     CAPTURE(expected);
-    const std::vector<double> values = channel(film, layer, 0);
-    CAPTURE(mean(values));
+    const std::vector<double> values = test::channelValues(film, layer, 0);
+    CAPTURE(test::meanOf(values));
     CHECK(studentTTest(values, expected) > kPValue);
     CHECK(studentTTest(values, expected * 1.05) < kPValue);
 }
@@ -448,7 +409,7 @@ void checkAgainst(const Film& film, std::size_t layer, const PinholeCamera& came
             wrong.push_back(film.at(layer, i, j).g - 1.05 * e);
         }
     }
-    CAPTURE(mean(differences));
+    CAPTURE(test::meanOf(differences));
     CHECK(studentTTest(differences, 0.0) > kPValue);
     CHECK(studentTTest(wrong, 0.0) < kPValue);
 }
@@ -585,7 +546,7 @@ std::vector<std::vector<double>> spotPixels(const SpotFloor& spot, const char* i
 void checkSpot(const std::vector<std::vector<double>>& values, const std::vector<double>& expected, double control) {
     for (std::size_t k = 0; k < values.size(); ++k) {
         CAPTURE(k);
-        CAPTURE(mean(values[k]));
+        CAPTURE(test::meanOf(values[k]));
         CAPTURE(expected[k]);
         CHECK(studentTTest(values[k], expected[k]) > kPValue);
     }

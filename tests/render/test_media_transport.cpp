@@ -14,6 +14,7 @@
 #include "render/renderer.h"
 #include "scene_builder.h"
 #include "../support/film_checks.h"
+#include "../support/pinhole_reference.h"
 #include "../support/statistics.h"
 
 // Its own namespace: render_tests is a unity build, beside test_path_tracer.cpp's helpers.
@@ -42,19 +43,6 @@ std::uint32_t addMedium(Scene& scene, const std::string& name, Rgb sigmaA, Rgb s
     return static_cast<std::uint32_t>(scene.media.size() - 1);
 }
 
-// Where the centre of pixel (i, j) looks, by the pinhole model written out here (as
-// test_path_tracer.cpp does), and the point of the floor y = 0 it sees.
-glm::dvec3 pixelDirection(const CameraDescription& c, int i, int j) {
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(c.lookAt) - glm::dvec3(c.eye));
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(c.up)));
-    const glm::dvec3 up = glm::cross(right, forward);
-    const double halfHeight = std::tan(glm::radians(double(c.verticalFovDegrees)) / 2.0);
-    const double aspect = double(c.width) / double(c.height);
-    const double u = (2.0 * (i + 0.5) / c.width - 1.0) * aspect * halfHeight;
-    const double v = (1.0 - 2.0 * (j + 0.5) / c.height) * halfHeight;
-    return glm::normalize(forward + u * right + v * up);
-}
-
 const glm::dvec3 kLight{0.7, 2.5, -0.4};
 constexpr double kAlbedo = 0.6, kIntensity = 3.0;
 
@@ -72,11 +60,12 @@ Scene fogFloor(Rgb sigmaA, Rgb sigmaS) {
     return scene;
 }
 
-// Pixel (i, j)'s direct light from the floor: kd I cos / d² (test_path_tracer.cpp's closed form),
+// Pixel (i, j)'s direct light from the floor point it sees (test::pixelDirection, the pinhole model
+// written out): kd I cos / d² (test_path_tracer.cpp's closed form),
 // dimmed by exp(-sigma_t d) along the shadow ray (d = the light's distance) and along the eye ray.
 double floorThroughFog(const Scene& scene, int i, int j, double sigmaT) {
     const CameraDescription& c = scene.camera;
-    const glm::dvec3 d = pixelDirection(c, i, j);
+    const glm::dvec3 d = test::pixelDirection(c, i, j);
     const double eyeDistance = -double(c.eye.y) / d.y;
     const glm::dvec3 p = glm::dvec3(c.eye) + eyeDistance * d;
     const glm::dvec3 toLight = kLight - p;
@@ -213,7 +202,7 @@ TEST_CASE("single scattering from a point light in infinite fog matches the airl
         std::vector<double> r;
         for (int j = 0; j < film.height(); ++j)
             for (int i = 0; i < film.width(); ++i)
-                r.push_back(film.at(1, i, j).g / airlight(glm::dvec3(scene.camera.eye), pixelDirection(scene.camera, i, j),
+                r.push_back(film.at(1, i, j).g / airlight(glm::dvec3(scene.camera.eye), test::pixelDirection(scene.camera, i, j),
                                                           light, kSigmaS, kSigmaS + kSigmaA, kI));
         return r;
     };

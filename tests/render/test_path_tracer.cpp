@@ -9,6 +9,8 @@
 #include "film/aov_set.h"
 #include "render/renderer.h"
 #include "scene_builder.h"
+#include "../support/paired_agreement.h"
+#include "../support/pinhole_reference.h"
 #include "../support/statistics.h"
 #include "film/aov_presets.h"
 
@@ -19,22 +21,9 @@ using test::studentTTest;
 
 constexpr double kPValue = 0.001;  // rejection threshold of one test
 
-// Where the centre of pixel (i, j) looks, by the pinhole model written out independently here:
-// vertical field of view fixed, horizontal from the aspect ratio.
-glm::dvec3 pixelDirection(const CameraDescription& c, int i, int j) {
-    const glm::dvec3 forward = glm::normalize(glm::dvec3(c.lookAt) - glm::dvec3(c.eye));
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(c.up)));
-    const glm::dvec3 up = glm::cross(right, forward);
-    const double halfHeight = std::tan(glm::radians(double(c.verticalFovDegrees)) / 2.0);
-    const double aspect = double(c.width) / double(c.height);
-    const double u = (2.0 * (i + 0.5) / c.width - 1.0) * aspect * halfHeight;
-    const double v = (1.0 - 2.0 * (j + 0.5) / c.height) * halfHeight;
-    return glm::normalize(forward + u * right + v * up);
-}
-
 // The point of the floor y = 0 that pixel (i, j) sees.
 glm::dvec3 floorPoint(const CameraDescription& c, int i, int j) {
-    const glm::dvec3 d = pixelDirection(c, i, j);
+    const glm::dvec3 d = test::pixelDirection(c, i, j);
     return glm::dvec3(c.eye) + (-double(c.eye.y) / d.y) * d;
 }
 
@@ -46,13 +35,6 @@ Film renderPath(const Scene& scene, const std::vector<lpe::NamedExpression>& set
     options.maxDepth = maxDepth;
     options.seed = 7;
     return Renderer(scene, aovs, options).render().film;
-}
-
-std::vector<double> channel(const Film& film, std::size_t layer, int c) {
-    std::vector<double> values;
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x) values.push_back(film.at(layer, x, y)[c]);
-    return values;
 }
 
 // The camera looks down on the floor from below any light, so nothing hides the floor.
@@ -158,7 +140,7 @@ void checkLayer(const Film& film, const std::string& name, double expected) {
     REQUIRE(layer < names.size());
     CAPTURE(name);
     CAPTURE(expected);
-    const std::vector<double> values = channel(film, layer, 0);
+    const std::vector<double> values = test::channelValues(film, layer, 0);
     double mean = 0.0;
     for (double v : values) mean += v / double(values.size());
     const double bias = mean - expected;
