@@ -63,7 +63,7 @@ std::string whyNeverRendered(const std::string& expression) {
                quotedExpression((alternatesAtTop(expression) ? "(" + expression + ")" : expression) + "L");
     }
     if (lpe::haveCommonPath({expression, kPathsWithVolumes})) {
-        return "needs a volume event (V): only scenes with [media] have them, under --integrator raycast, whitted or path";
+        return "needs a volume event (V): only scenes with [media] have them, under --integrator " + mediaRenderers();
     }
     return "matches no path lightpath renders: a path is E, then reflections and transmissions "
            "(<[RT][DGSs]>), then one light, emitting object or background ([LOB])";

@@ -60,7 +60,7 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         const bool volumesHere = scene && integrator && integrator->rendersMedia && !scene->media.empty();
         if (!volumesHere)
             return {Verdict::BlackHere, "it needs a volume event (V): only a scene with [media] fills it, under an "
-                                        "integrator that renders media (path)"};
+                                        "integrator that renders media (" + mediaRenderers() + ")"};
         // A label that labels nothing here (a misspelt medium) is on no event, as for surfaces below.
         auto [placement, unknown] = placeLabels(aov, *scene);
         if (lpe::haveCommonPath(languages(expression, integrator, true), placement))

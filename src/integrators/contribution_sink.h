@@ -25,7 +25,8 @@ struct TermFactor {
     // `explain` shows those apart, so the factors read as the product they are.
     bool inProduct = true;
 };
-inline constexpr std::size_t kMaxTermFactors = 6;
+// The most a term has: MIS's five, a medium's transmittance and the throughput.
+inline constexpr std::size_t kMaxTermFactors = 7;
 
 struct LoggedContribution {
     Rgb value{0.0f};

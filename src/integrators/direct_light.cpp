@@ -1,5 +1,7 @@
 #include "integrators/direct_light.h"
 
+#include <limits>
+
 #include <cmath>
 #include <cstdio>
 
@@ -21,10 +23,11 @@ std::string formatted(const char* format, double a, double b = 0.0) {
 // `explain`: the factors of one term. Under a point light and without MIS they are Szymczak's
 // (kd, N.L, I, attenuation; ks, (H.N)^n, I, attenuation), whose product is the value; otherwise
 // the Monte Carlo estimate's (f |cos|, incident light over its density, the two densities, the
-// MIS weight).
+// MIS weight). In a medium the shadow ray's transmittance is a factor of its own.
 std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& sample, const Light& light,
-                        const Rgb& incident, float lightPdf, float weight, DirectLightWeighting weighting,
-                        const Rgb& throughput, std::array<TermFactor, kMaxTermFactors>& factors) {
+                        const Rgb& incident, const Rgb& transmittance, float lightPdf, float weight,
+                        DirectLightWeighting weighting, const Rgb& throughput,
+                        std::array<TermFactor, kMaxTermFactors>& factors) {
     std::size_t n = 0;
     if (light.isDelta() && weighting == DirectLightWeighting::Alone) {
         const float falloff = light.falloff(sample.distance);
@@ -42,6 +45,7 @@ std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& samp
             factors[n++] = {"mis weight", Rgb{weight}};
         }
     }
+    if (transmittance != Rgb{1.0f} && n < kMaxTermFactors) factors[n++] = {"transmittance", transmittance};
     if (throughput != Rgb{1.0f} && n < kMaxTermFactors) factors[n++] = {"throughput", throughput};
     return n;
 }
@@ -116,8 +120,10 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         return;
     }
 
-    Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
-    if (medium != nullptr) incident *= medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance);
+    const Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
+    const Rgb transmittance =
+        medium != nullptr ? medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance) : Rgb{1.0f};
+    const Rgb seen = medium != nullptr ? incident * transmittance : incident;
     const float lightPdf = sample.pdf * choiceProbability;
     Rgb value[kMaxLobes];
     float weights[kMaxLobes];
@@ -135,7 +141,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         if (glossy) ++counters.glossyEvaluated;
         if (weighting == DirectLightWeighting::MultipleImportance && lightPdf > 0.0f)
             weights[l] = powerHeuristic(lightPdf, p.bsdf.pdf(lobe, p.wo, sample.wi));
-        value[l] = throughput * p.bsdf.eval(lobe, p.wo, sample.wi) * incident * weights[l];
+        value[l] = throughput * p.bsdf.eval(lobe, p.wo, sample.wi) * seen * weights[l];
         anyValue = anyValue || !isBlack(value[l]);
     }
     if (skip && !anyValue) {
@@ -168,7 +174,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         }
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
-            termFactors(p, lobes.lobes[l], sample, light, incident, lightPdf, weights[l], weighting, throughput, factors);
+            termFactors(p, lobes.lobes[l], sample, light, incident, transmittance, lightPdf, weights[l], weighting,
+                        throughput, factors);
         path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
     if (!path.explaining()) return;
@@ -213,7 +220,11 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
         ++counters.shadowDead;
         return;
     }
-    if (!(sample.distance > 0.0f) || (isBlack(sample.weight) && ctx.skipEnabled)) return;
+    if (!(sample.distance > 0.0f) || (isBlack(sample.weight) && ctx.skipEnabled)) {
+        ++counters.shadowZero;
+        if (path.explaining()) path.reject(scatter, lightEvent, "the light sends nothing to the medium point");
+        return;
+    }
     const HenyeyGreensteinPhase phase = m.medium.phase(m.point);
     const float phaseValue = phase.eval(m.wo, sample.wi);
     const float lightPdf = sample.pdf * choiceProbability;
@@ -309,6 +320,15 @@ void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::
             addMediumLightSample(point, weight, light->sample(point.point, Vec2{0.0f}), 1.0f, *light,
                                  DirectLightWeighting::Alone, path);
     }
+}
+
+Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
+                  const Rgb& throughput, PathState& path) {
+    const Medium* medium = path.context.scene.medium(mediumIndex);
+    if (medium == nullptr) return throughput;
+    const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+    addSingleScattering(ray, tMax, *medium, mediumIndex, throughput, path);
+    return throughput * medium->transmittance(ray, 0.0f, tMax);
 }
 
 void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path, const Medium* medium) {

@@ -61,6 +61,11 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
 // stratified free flights (one jitter per ray, keyed by the path), so it is unbiased and smooth.
 void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::uint32_t index, const Rgb& throughput,
                          PathState& path);
+// What the classic methods do along a ray in medium `mediumIndex` (kNoMedium: vacuum) up to its
+// first hit (none: to infinity): add its single scattering, and return the throughput every term
+// beyond is seen with, attenuated by the medium's transmittance.
+Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
+                  const Rgb& throughput, PathState& path);
 
 // Light an emitter sends back along `ray`, which hit it at `hit`, weighted by `weight`.
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path);

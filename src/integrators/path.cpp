@@ -13,17 +13,6 @@ namespace {
 // Paths shorter than this are never cut by Russian roulette.
 constexpr int kRouletteDepth = 3;
 
-// The medium of scene medium `index`, or null for vacuum (kNoMedium).
-const Medium* mediumAt(const Scene& scene, std::uint32_t index) {
-    return index == kNoMedium ? nullptr : &*scene.media[index];
-}
-
-// The medium a ray is in after passing through the surface of `object`: entering a closed object
-// is entering its interior, leaving one is returning to the world's medium (media do not nest).
-std::uint32_t mediumBeyond(const Scene& scene, std::uint32_t object, bool entering) {
-    return entering ? scene.objects[object].interior : scene.worldMedium;
-}
-
 bool continuesRoulette(int depth, Rgb& throughput, Sampler& sampler) {
     if (depth + 1 < kRouletteDepth) return true;
     // Russian roulette: continue with probability q, dividing by q keeps the estimate unbiased.
@@ -50,7 +39,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         const auto hit = ctx.geometry.intersect(ray);
         // Free flight through the medium up to the surface (pbrt-v4 14.2, VolPathIntegrator): a
         // scattering there is a V vertex, else the throughput carries the segment's transmittance.
-        if (const Medium* medium = mediumAt(ctx.scene, mediumIndex)) {
+        if (const Medium* medium = ctx.scene.medium(mediumIndex)) {
             const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
             const float uChannel = sampler.next1D();
             const float uDistance = sampler.next1D();
@@ -92,7 +81,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             const float uChoice = sampler.next1D();
             const Vec2 uPoint = sampler.next2D();
             addDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance, path,
-                           mediumAt(ctx.scene, mediumIndex));
+                           ctx.scene.medium(mediumIndex));
         }
 
         const float uLobe = sampler.next1D();
@@ -108,7 +97,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         throughput *= sample->weight;
         if (!continuesRoulette(depth, throughput, sampler)) break;
         ++(transmitted ? path.counters.refraction : path.counters.reflection);
-        if (transmitted) mediumIndex = mediumBeyond(ctx.scene, point.hit.object, point.entering);
+        if (transmitted) mediumIndex = ctx.scene.mediumBeyond(point.hit.object, point.entering, mediumIndex);
         previousPdf = sample->pdf;
         previousDelta = lobe.delta();
         ray = spawnRay(point.hit, sample->wi, ctx.geometry.numerics());

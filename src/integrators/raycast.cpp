@@ -3,8 +3,6 @@
 #include "integrators/registry.h"
 #include "integrators/direct_light.h"
 
-#include <limits>
-
 namespace lightpath {
 
 void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
@@ -13,34 +11,15 @@ void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
-    if (ctx.scene.worldMedium != kNoMedium) {
-        shadeThroughMedium(hit, ray, ctx.scene.worldMedium, Rgb{1.0f}, path);
-        return;
-    }
-    if (!hit) {
-        addBackground(ray, Rgb{1.0f}, path);
-        return;
-    }
-    addEmission(*hit, ray, Rgb{1.0f}, 1.0f, path);
-    if (ctx.maxDepth < 1) return;
-    addLocalIllumination(makeShadingPoint(*hit, ray, ctx), Rgb{1.0f}, path);
-}
-
-void shadeThroughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
-                        const Rgb& throughput, PathState& path) {
-    const RenderContext& ctx = path.context;
-    const Medium& medium = *ctx.scene.media[mediumIndex];
-    const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
-    addSingleScattering(ray, tMax, medium, mediumIndex, throughput, path);
-    // Every term beyond the segment is seen through it.
-    const Rgb seen = throughput * medium.transmittance(ray, 0.0f, tMax);
+    // The camera is in the world's medium (media do not nest): every term is seen through it.
+    const Rgb seen = throughMedium(hit, ray, ctx.scene.worldMedium, Rgb{1.0f}, path);
     if (!hit) {
         addBackground(ray, seen, path);
         return;
     }
     addEmission(*hit, ray, seen, 1.0f, path);
     if (ctx.maxDepth < 1) return;
-    addLocalIllumination(makeShadingPoint(*hit, ray, ctx), seen, path, &medium);
+    addLocalIllumination(makeShadingPoint(*hit, ray, ctx), seen, path, ctx.scene.medium(ctx.scene.worldMedium));
 }
 
 }  // namespace lightpath

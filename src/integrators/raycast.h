@@ -15,11 +15,8 @@ public:
 
 // What ray casting adds for a camera ray whose first visible surface is `hit` (none: the ray
 // escapes): the emitter or background seen, and the local illumination there. The one shading of
-// the first hit, whichever visibility method found it (ray casting or the rasteriser, raster.h).
+// the first hit, whichever visibility method found it (ray casting or the rasteriser, raster.h),
+// seen through the world's medium, whose single scattering it adds (E V L).
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path);
-// The same for a ray travelling in medium `mediumIndex` (Scene::media): single scattering along it
-// (E V L), and every term beyond it attenuated by the medium's transmittance.
-void shadeThroughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
-                        const Rgb& throughput, PathState& path);
 
 }  // namespace lightpath

@@ -25,4 +25,11 @@ std::vector<std::string> integratorNames() {
     return names;
 }
 
+std::string mediaRenderers() {
+    std::string names;
+    for (const IntegratorInfo& info : integrators())
+        if (info.rendersMedia) names += (names.empty() ? "" : ", ") + std::string(info.name);
+    return names;
+}
+
 }  // namespace lightpath

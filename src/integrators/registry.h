@@ -65,10 +65,12 @@ inline IntegratorInfo rendersMedia(IntegratorInfo row) {
 const std::vector<IntegratorInfo>& integrators();
 const IntegratorInfo* findIntegrator(std::string_view name);
 std::vector<std::string> integratorNames();
+// The integrators that render participating media, by rank: "raycast, whitted, path".
+std::string mediaRenderers();
 
 // Every path any lightpath integrator can emit in a scene without media: the camera, then
 // reflections and transmissions (D, G, S, s), then a light, an emitting object or the background.
-// With media the path tracer adds volume events V (config/lpe_feasibility.h, kPathsWithVolumes).
+// With media raycast, whitted and path add volume events V (config/lpe_feasibility.h, kPathsWithVolumes).
 inline constexpr const char* kRenderedPaths = "E<[RT][DGSs]>*[LOB]";
 
 }  // namespace lightpath

@@ -4,8 +4,6 @@
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
 
-#include <limits>
-
 namespace lightpath {
 
 void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
@@ -16,31 +14,17 @@ void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, 
                               PathState& path) const {
     const RenderContext& ctx = path.context;
     const auto hit = ctx.geometry.intersect(ray);
-    if (mediumIndex != kNoMedium) {
-        // Single scattering along this ray (E S* V L) and its transmittance on all beyond.
-        const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
-        const Medium& medium = *ctx.scene.media[mediumIndex];
-        addSingleScattering(ray, tMax, medium, mediumIndex, throughput, path);
-        const Rgb seen = throughput * medium.transmittance(ray, 0.0f, tMax);
-        if (isBlack(seen) && ctx.skipEnabled) return;
-        traceSurface(hit, ray, seen, depth, mediumIndex, path);
-        return;
-    }
-    traceSurface(hit, ray, throughput, depth, mediumIndex, path);
-}
-
-void WhittedIntegrator::traceSurface(const std::optional<SurfaceHit>& hit, const Ray& ray, const Rgb& throughput,
-                                     int depth, std::uint32_t mediumIndex, PathState& path) const {
-    const RenderContext& ctx = path.context;
+    // Single scattering along this ray (E S* V L), and its transmittance on all beyond.
+    const Rgb seen = throughMedium(hit, ray, mediumIndex, throughput, path);
+    if (isBlack(seen) && ctx.skipEnabled) return;
     if (!hit) {
-        addBackground(ray, throughput, path);
+        addBackground(ray, seen, path);
         return;
     }
-    addEmission(*hit, ray, throughput, 1.0f, path);
+    addEmission(*hit, ray, seen, 1.0f, path);
     if (depth >= ctx.maxDepth) return;
     const ShadingPoint point = makeShadingPoint(*hit, ray, ctx);
-    const Medium* medium = mediumIndex == kNoMedium ? nullptr : &*ctx.scene.media[mediumIndex];
-    addLocalIllumination(point, throughput, path, medium);
+    addLocalIllumination(point, seen, path, ctx.scene.medium(mediumIndex));
 
     // Every delta lobe's branch, while some requested output can still accept the path (the
     // automaton's dead states); the BSDF returns only branches with weight.
@@ -53,11 +37,9 @@ void WhittedIntegrator::traceSurface(const std::optional<SurfaceHit>& hit, const
             continue;
         }
         ++(reflection ? path.counters.reflection : path.counters.refraction);
-        // A refracted ray enters the object's interior or leaves for the world's medium.
-        const std::uint32_t next = reflection ? mediumIndex
-                                   : point.entering ? ctx.scene.objects[point.hit.object].interior
-                                                    : ctx.scene.worldMedium;
-        trace(spawnRay(point.hit, branches[b].wi, ctx.geometry.numerics()), throughput * branches[b].weight,
+        const std::uint32_t next =
+            reflection ? mediumIndex : ctx.scene.mediumBeyond(point.hit.object, point.entering, mediumIndex);
+        trace(spawnRay(point.hit, branches[b].wi, ctx.geometry.numerics()), seen * branches[b].weight,
               depth + 1, next, path);
         path.pop();
     }

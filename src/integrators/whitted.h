@@ -14,8 +14,6 @@ private:
     // `depth`: scattering events on the path so far.
     // `mediumIndex`: the medium the ray travels in (Scene::media), kNoMedium in vacuum.
     void trace(const Ray& ray, const Rgb& throughput, int depth, std::uint32_t mediumIndex, PathState& path) const;
-    void traceSurface(const std::optional<SurfaceHit>& hit, const Ray& ray, const Rgb& throughput, int depth,
-                      std::uint32_t mediumIndex, PathState& path) const;
 };
 
 }  // namespace lightpath

@@ -6,8 +6,6 @@
 // with wo and wi both pointing away from the scattering point (wo back towards the eye), so g > 0
 // scatters forward (wi near -wo) and g < 0 backward. It integrates to 1 over the sphere; sample()
 // draws wi with exactly density p, so a sample's weight p / pdf is 1.
-#include <optional>
-
 #include "math/types.h"
 
 namespace lightpath {

@@ -23,7 +23,6 @@ public:
     Rgb sigmaT() const { return sigmaA + sigmaS; }
     MediumSample sampleDistance(const Ray& ray, float tMax, float uChannel, float uDistance) const override;
     Rgb transmittance(const Ray& ray, float t0, float t1) const override;
-    Rgb scattering(const Vec3&) const override { return sigmaS; }
     HenyeyGreensteinPhase phase(const Vec3&) const override { return HenyeyGreensteinPhase(g); }
 };
 

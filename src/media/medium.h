@@ -41,8 +41,6 @@ public:
     virtual MediumSample sampleDistance(const Ray& ray, float tMax, float uChannel, float uDistance) const = 0;
     // T between distances t0 <= t1 along the ray, per channel.
     virtual Rgb transmittance(const Ray& ray, float t0, float t1) const = 0;
-    // sigma_s at a point of the ray, per unit length (explain's factor).
-    virtual Rgb scattering(const Vec3& p) const = 0;
     virtual HenyeyGreensteinPhase phase(const Vec3& p) const = 0;
 
 protected:

@@ -22,7 +22,11 @@ struct SceneObject {
     // A [[lights]] quad or sphere: its emission ends a path with `L`. Any other surface whose
     // material emits ends it with OSL's `O` (object emission).
     bool declaredLight = false;
-    // The medium that fills it (`interior`, a closed shape's), an index into Scene::media.
+    // Whether it bounds a volume (its kind takes `interior`: a sphere, a closed mesh): a ray through
+    // it enters `interior` or leaves for the world's medium. Any other surface (a quad, a plane, a
+    // disk, a triangle: a glass pane) leaves the ray in the medium it was in.
+    bool enclosesVolume = false;
+    // The medium that fills it, an index into Scene::media.
     std::uint32_t interior = kNoMedium;
 };
 
@@ -50,6 +54,17 @@ struct Scene {
     // Legal but probably unintended, located like errors ("FILE:LINE:COL: KEY: ..."), e.g. a
     // triangle without area. The command line prints them.
     std::vector<std::string> warnings;
+
+    // Medium `index`, or null for vacuum (kNoMedium).
+    const Medium* medium(std::uint32_t index) const { return index == kNoMedium ? nullptr : &*media[index]; }
+
+    // The medium a ray in medium `current` is in after passing through the surface of `object`
+    // (media do not nest).
+    std::uint32_t mediumBeyond(std::uint32_t object, bool entering, std::uint32_t current) const {
+        const SceneObject& o = objects[object];
+        if (!o.enclosesVolume) return current;
+        return entering ? o.interior : worldMedium;
+    }
 
     const std::string& labelOf(std::uint32_t object) const {
         const SceneObject& o = objects[object];

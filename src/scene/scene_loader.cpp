@@ -337,8 +337,12 @@ void readShape(const TomlTable& table, const ShapeType& type, Scene& scene) {
     const std::size_t firstObject = scene.objects.size();
     LoadingScene builder(scene);
     asSceneError([&] { type.addTo(values, builder); });
-    // Every object the declaration added (a mesh's parts) is filled by the same medium.
-    for (std::size_t i = firstObject; i < scene.objects.size(); ++i) scene.objects[i].interior = interior;
+    // Every object the declaration added (a mesh's parts) bounds the same medium, if its kind can.
+    const bool enclosesVolume = type.schema.find(kShapeInteriorParameter.name) != nullptr;
+    for (std::size_t i = firstObject; i < scene.objects.size(); ++i) {
+        scene.objects[i].enclosesVolume = enclosesVolume;
+        scene.objects[i].interior = interior;
+    }
 }
 
 // The whole file as text. Reading it here (rather than in toml++) lets a missing file report the

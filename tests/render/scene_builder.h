@@ -24,6 +24,7 @@ inline void addPlane(Scene& scene, const std::string& name, std::uint32_t materi
 
 inline void addSphere(Scene& scene, const std::string& name, std::uint32_t material, Vec3 center, float radius) {
     scene.spheres.push_back({center, radius, addObject(scene, name, material)});
+    scene.objects.back().enclosesVolume = true;  // as the loader marks every sphere: it has an inside
 }
 
 // A camera whose centre pixel (odd width and height) looks exactly along eye -> lookAt.
