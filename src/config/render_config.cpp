@@ -22,6 +22,7 @@
 #include "render/memory_limit.h"
 #include "schema/format.h"
 #include "schema/schema_error.h"
+#include "scene/emission.h"
 #include "scene/framing.h"
 #include "scene/scene_loader.h"
 
@@ -256,11 +257,13 @@ ParameterValues RenderConfig::integratorValues() const {
 
 namespace {
 
-// Whether anything in `scene` gives light: a light of [[lights]] or a surface whose material emits.
+// Whether anything in `scene` gives light: a light of [[lights]] or an emitting surface
+// (scene/emission.h). A bright background is not counted: only the path tracer and bdpt gather it.
 bool hasLight(const Scene& scene) {
     if (!scene.lights.empty()) return true;
-    return std::any_of(scene.objects.begin(), scene.objects.end(),
-                       [&](const SceneObject& o) { return !isBlack(scene.materials[o.material]->emission); });
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
+        if (emissionEventOf(scene, i)) return true;
+    return false;
 }
 
 // A scene seen by a camera chosen for it (scene/framing.h): one without [camera] from the front,
@@ -341,10 +344,9 @@ namespace {
 // wrong: refused, naming the media and the integrators that render them.
 void refuseMedia(const IntegratorInfo& info, const Scene& scene) {
     if (scene.media.empty() || info.rendersMedia) return;
-    std::string media, renderers;
+    std::string media;
     for (const MediumSlot& medium : scene.media) media += (media.empty() ? "'" : ", '") + medium->name + "'";
-    for (const IntegratorInfo& other : integrators())
-        if (other.rendersMedia) renderers += (renderers.empty() ? "" : ", ") + std::string(other.name);
+    const std::string renderers = mediaRenderers();
     throw ConfigError("integrator", std::string(info.name) + " does not render participating media, and " +
                                         scene.source.filename().string() + " declares " + media + ": " +
                                         (renderers.empty() ? "no integrator renders them yet"

@@ -17,11 +17,6 @@ constexpr float kDielectricF0 = 0.04f;
 // Visible normals per axis of the stratified grid that integrates the specular albedo table.
 constexpr int kAlbedoStrata = 64;
 
-float fifthPower(float x) {
-    const float x2 = x * x;
-    return x2 * x2 * x;
-}
-
 }  // namespace
 
 MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roughness)
@@ -31,7 +26,7 @@ MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roug
     for (int k = 0; k < kAlbedoNodes; ++k) {
         const float cosine = float(k) / float(kAlbedoNodes - 1);
         if (smooth()) {  // the mirror reflects F(cos theta_o) exactly
-            albedoBias_[k] = fifthPower(1.0f - cosine);
+            albedoBias_[k] = schlickWeight(cosine);
             albedoScale_[k] = 1.0f - albedoBias_[k];
             continue;
         }
@@ -48,7 +43,7 @@ MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roug
                 const Vec3 in = reflectAbout(o, m);
                 if (in.z <= 0.0f) continue;
                 const float weight = ggx::maskingShadowing(o, in, a) / g1;
-                const float grazing = fifthPower(std::clamp(1.0f - glm::dot(o, m), 0.0f, 1.0f));
+                const float grazing = schlickWeight(glm::dot(o, m));
                 scale += weight * (1.0f - grazing);
                 bias += weight * grazing;
             }
@@ -68,7 +63,7 @@ MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roug
 float MicrofacetMaterial::alpha() const { return std::max(ggx::kMinAlpha, roughness_ * roughness_); }
 
 Rgb MicrofacetMaterial::fresnel(float cosine) const {
-    return f0_ + (Rgb{1.0f} - f0_) * fifthPower(std::clamp(1.0f - cosine, 0.0f, 1.0f));
+    return f0_ + (Rgb{1.0f} - f0_) * schlickWeight(cosine);
 }
 
 Rgb MicrofacetMaterial::specularAlbedo(float cosine) const {

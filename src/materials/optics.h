@@ -2,6 +2,7 @@
 // The laws of a smooth interface, written once for every integrator: the mirror direction, Snell's
 // law and Fresnel's equations (Hecht, Optics, ch. 4; pbrt-v4 9.3 and 9.5). Vectors point away from
 // the surface; `n` is the unit normal on the side of wo.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -30,6 +31,14 @@ inline float fresnelDielectric(float cosIncident, float eta) {
     const float parallel = (cosIncident - eta * cosTransmitted) / (cosIncident + eta * cosTransmitted);
     const float perpendicular = (eta * cosIncident - cosTransmitted) / (eta * cosIncident + cosTransmitted);
     return 0.5f * (parallel * parallel + perpendicular * perpendicular);
+}
+
+// Schlick's approximation F = F0 + (1 - F0) w with the weight w = (1 - cos)^5 (Schlick 1994);
+// cos is clamped to [0, 1].
+inline float schlickWeight(float cosine) {
+    const float x = std::clamp(1.0f - cosine, 0.0f, 1.0f);
+    const float x2 = x * x;
+    return x2 * x2 * x;
 }
 
 }  // namespace lightpath

@@ -29,6 +29,7 @@ std::string_view typeName(ParameterType type);
 // A Name's characters. Names become labels in light path expressions, written between single
 // quotes (<L'key'>), so they are kept to characters that can always be typed there.
 inline constexpr std::string_view kNameCharacters = "letters, digits, '_', '-' or '.'";
+bool isNameCharacter(char c);
 bool isValidName(std::string_view name);
 
 // What a Number/Integer/Colour channel (or a Point, PerAxis or ThreePoints component) must satisfy.

@@ -49,6 +49,14 @@ ObjStatementLines scanStatementLines(std::string_view text) {
     return found;
 }
 
+// Whether an `mtllib` line's library names (separated by blanks) include `name` exactly.
+bool namesLibrary(const std::string& names, const std::string& name) {
+    std::istringstream words(names);
+    for (std::string word; words >> word;)
+        if (word == name) return true;
+    return false;
+}
+
 // tinyobjloader reports a missing material library and a `usemtl` it cannot resolve only in its
 // warning text, in file order: "Material file [ NAME ] not found in a path : DIR" and
 // "material [ 'NAME' ] not found in .mtl". Each is read back from there and given the OBJ line
@@ -74,7 +82,7 @@ void readMaterialWarnings(const std::filesystem::path& file, const std::string& 
             const std::string path = (file.parent_path() / name).string();
             if (listed(mesh.missingLibraries, path)) continue;
             const auto naming = std::find_if(statements.mtllib.begin(), statements.mtllib.end(),
-                                             [&](const ObjLineRef& r) { return r.text.find(name) != std::string::npos; });
+                                             [&](const ObjLineRef& r) { return namesLibrary(r.text, name); });
             mesh.missingLibraries.push_back({path, naming == statements.mtllib.end() ? 0 : naming->line});
         } else if (between(line, "material [ '", "' ] not found", name)) {
             std::size_t at = 0;
@@ -118,14 +126,13 @@ void labelMaterials(const ObjStatementLines& statements, ObjMesh& mesh) {
 }  // namespace
 
 std::string labelFromName(std::string_view name) {
-    const auto isLabelCharacter = [](char c) { return isValidName(std::string_view(&c, 1)); };
     const std::size_t first = name.find_first_not_of(" \t"), last = name.find_last_not_of(" \t");
     name = first == std::string_view::npos ? std::string_view() : name.substr(first, last - first + 1);
     std::string label;
     for (std::size_t i = 0; i < name.size(); ++i) {
-        if (isLabelCharacter(name[i])) {
+        if (isNameCharacter(name[i])) {
             label += name[i];
-        } else if (i == 0 || isLabelCharacter(name[i - 1])) {
+        } else if (i == 0 || isNameCharacter(name[i - 1])) {
             label += '_';
         }
     }
