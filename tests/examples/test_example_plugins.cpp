@@ -57,7 +57,7 @@ Film renderExample(const AovSet& aovs) {
     return Renderer(scene, aovs, options).render().film;
 }
 
-TEST_CASE("the example material and light render under the example integrator; the AOVs sum to the beauty") {
+TEST_CASE("the example material and light render under the example integrator, the AOVs sum to the beauty") {
     const Film film = renderExample(AovSet(classesSet()));
     CHECK(test::finiteNonNegative(film));
     CHECK(test::worstSumError(film) <= 1.0);
@@ -153,7 +153,7 @@ float hitAlong(const ShapeRecord& record, const Vec3& origin, const Vec3& direct
     return record.ops->intersect(ray, record, tMin, NumericsOptions{});
 }
 
-TEST_CASE("a ray through the cylinder's axis meets its wall at the distance minus and plus the radius; its area is 2 pi r h") {
+TEST_CASE("a ray through the cylinder's axis meets its wall at the distance minus and plus the radius, its area is 2 pi r h") {
     // Upright: base at the origin, 2 m high, radius 0.5; a ray 3 m from the axis, at mid-height.
     const ShapeRecord upright = cylinderRecord("base = [0, 0, 0]\ntop = [0, 2, 0]\nradius = 0.5\n");
     CHECK(hitAlong(upright, {3, 1, 0}, {-1, 0, 0}) == doctest::Approx(2.5));

@@ -50,7 +50,7 @@ TEST_CASE("a bracket holding an operator, a group or | is Heckbert's optional gr
     CHECK(sameLanguage("E[S*]+DL", "ES*DL"));
 }
 
-TEST_CASE("a bracket of single events stays OSL's set; [S] warns with both readings") {
+TEST_CASE("a bracket of single events stays OSL's set, [S] warns with both readings") {
     const lpe::Reading set = lpe::readExpression("C[LO]");
     CHECK(set.text == "C[LO]");
     CHECK(set.notes.empty());

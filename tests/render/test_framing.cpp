@@ -45,6 +45,13 @@ TEST_CASE("the framing camera sees all 8 corners of the box for any aspect ratio
                 CHECK(framed.width == width);
                 CHECK(framed.verticalFovDegrees == fov);
                 CHECK(cornersInside(framed, box) == 8);
+                // Not merely far enough: at 1.1 r / sin(a), a the smaller half-angle (r the box's
+                // half-diagonal), worked out here from the field of view and the aspect ratio.
+                const double r = 0.5 * glm::length(glm::dvec3(box.hi - box.lo));
+                const double halfVertical = glm::radians(double(fov)) / 2.0;
+                const double halfHorizontal = std::atan(std::tan(halfVertical) * double(width) / double(height));
+                const double expected = 1.1 * r / std::sin(std::min(halfVertical, halfHorizontal));
+                CHECK(glm::length(glm::dvec3(framed.eye - framed.lookAt)) == doctest::Approx(expected).epsilon(1e-4));
             }
         }
     }

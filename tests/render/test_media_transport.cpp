@@ -125,7 +125,7 @@ double meanOf(const Film& film, std::size_t layer, int c) {
     return sum / (film.width() * film.height());
 }
 
-TEST_CASE("path: white furnace: a medium that does not absorb leaves the walls' radiance; one that absorbs dims it") {
+TEST_CASE("path: white furnace: a medium that does not absorb leaves the walls' radiance, one that absorbs dims it") {
     // Coloured, forward-scattering: every channel's own free flights and the phase function in the loop.
     const Film conserving = renderPath(furnace(Rgb{0.0f}, {1.0f, 1.5f, 2.0f}, 0.4f), {}, 256);
     for (int c = 0; c < 3; ++c) {

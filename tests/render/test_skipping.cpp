@@ -94,7 +94,7 @@ TEST_CASE("shadow rays: one per lit-side light sample, none to lights behind or 
     CHECK(r.shadowDead == 0);
 }
 
-TEST_CASE("an all-diffuse scene evaluates no highlight; a glossy one does") {
+TEST_CASE("an all-diffuse scene evaluates no highlight, a glossy one does") {
     const AovSet aovs(classesSet());
     const RayCounters diffuse = renderWith(floorWithLights(Rgb{0.0f}), aovs, true, true).stats.rays;
     CHECK(diffuse.glossyEvaluated == 0);

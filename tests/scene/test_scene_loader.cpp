@@ -598,7 +598,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a missing material library is a located warning, 
 }
 
 // Blender, assimp and every viewer open such files with a default material (issue #26).
-TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is a warning naming its line; its faces are grey") {
+TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is a warning naming its line, its faces are grey") {
     write("lost.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
     const Scene lost = load("[[meshes]]\nfile = \"lost.obj\"\n");
     REQUIRE(lost.triangles.size() == 1);
@@ -940,11 +940,35 @@ TEST_CASE_FIXTURE(SceneFiles, "media are read through their schema and fill the 
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "every part of a mesh is filled by its interior") {
-    write("box.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
-    const Scene scene = load("[media.fog]\nsigma_s = 1\n[materials.clay]\n"
-                             "[[meshes]]\nfile = \"box.obj\"\nmaterial = \"clay\"\ninterior = \"fog\"\n");
-    REQUIRE(scene.objects.size() == 1);
-    CHECK(scene.objects[0].interior == 0);
+    // Two materials, so two parts (objects).
+    write("box.mtl", "newmtl red\nKd 1 0 0\nnewmtl green\nKd 0 1 0\n");
+    write("box.obj", "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                     "usemtl red\nf 1 3 2\nf 1 2 4\nusemtl green\nf 1 4 3\nf 2 3 4\n");
+    const Scene scene = load("[media.fog]\nsigma_s = 1\n[[meshes]]\nfile = \"box.obj\"\ninterior = \"fog\"\n");
+    REQUIRE(scene.objects.size() == 2);
+    for (const lightpath::SceneObject& part : scene.objects) {
+        CHECK(part.interior == 0);
+        CHECK(part.enclosesVolume);
+    }
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "a ray through a sphere enters its interior and through a glass pane stays in the fog") {
+    const Scene scene = load(
+        "[media.fog]\nsigma_s = 0.05\n[media.smoke]\nsigma_s = 0.5\n[world]\nmedium = \"fog\"\n"
+        "[materials.glass]\nkt = 1\n"
+        "[[spheres]]\ncenter = [0, 0, 0]\nradius = 1\nmaterial = \"glass\"\ninterior = \"smoke\"\n"
+        "[[spheres]]\ncenter = [3, 0, 0]\nradius = 1\nmaterial = \"glass\"\n"
+        "[[planes]]\npoint = [0, -1, 0]\nnormal = [0, 1, 0]\nmaterial = \"glass\"\n");
+    REQUIRE(scene.objects.size() == 3);
+    const std::uint32_t fog = 0, smoke = 1;
+    CHECK(scene.mediumBeyond(0, true, fog) == smoke);
+    CHECK(scene.mediumBeyond(0, false, smoke) == fog);
+    // A sphere without `interior` holds vacuum (glass, not fog).
+    CHECK(scene.mediumBeyond(1, true, fog) == lightpath::kNoMedium);
+    CHECK(scene.mediumBeyond(1, false, lightpath::kNoMedium) == fog);
+    // A plane has no inside: crossing it changes nothing.
+    CHECK(scene.mediumBeyond(2, true, fog) == fog);
+    CHECK(scene.mediumBeyond(2, false, fog) == fog);
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "medium errors are located, with a suggestion when one is close") {
