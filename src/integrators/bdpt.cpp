@@ -8,12 +8,11 @@
 #include "geometry/spawn_ray.h"
 #include "integrators/bdpt_vertex.h"
 #include "integrators/direct_light.h"
+#include "sampling/russian_roulette.h"
 
 namespace lightpath {
 namespace {
 
-// Walks shorter than this are never cut by Russian roulette (as in the path tracer).
-constexpr int kRouletteDepth = 3;
 // Names the light walk's own random numbers within a pixel sample (Sampler::forVertex), so the
 // eye's walk draws the same numbers whether or not a light walk was traced.
 constexpr std::uint64_t kLightWalkKey = 0x6c69676874ull;  // "light"
@@ -29,15 +28,6 @@ struct Subpaths {
 Subpaths& threadSubpaths() {
     thread_local Subpaths subpaths;
     return subpaths;
-}
-
-// Russian roulette on a walk's throughput: false to stop; on going on, beta carries 1/q.
-bool survives(Rgb& beta, int depth, Sampler& sampler) {
-    if (depth < kRouletteDepth) return true;
-    const float q = std::min(0.95f, maxComponent(beta));
-    if (sampler.next1D() >= q) return false;
-    beta /= q;
-    return true;
 }
 
 // The light walk: x0 on a light chosen by power, then the light's ray and BSDF samples in
@@ -90,7 +80,7 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
         here.delta = step->delta;
         v[count - 2].pdfRev = reverseDensity(*step, here, v[count - 2]);
         beta *= step->weight;
-        if (!survives(beta, count - 1, sampler)) break;
+        if (!survivesRussianRoulette(beta, count - 1, sampler)) break;
         ++(here.surface->bsdf.lobe(step->lobe).transmits() ? path.counters.refraction : path.counters.reflection);
         pdf = step->pdf;
         delta = step->delta;
@@ -385,7 +375,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         z.delta = step->delta;
         if (t >= 3) eye[t - 2].pdfRev = reverseDensity(*step, z, eye[t - 2]);
         beta *= step->weight;
-        if (!survives(beta, t - 1, sampler)) break;
+        if (!survivesRussianRoulette(beta, t - 1, sampler)) break;
         ++(transmitted ? path.counters.refraction : path.counters.reflection);
         pdf = step->pdf;
         delta = step->delta;

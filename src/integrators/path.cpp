@@ -6,23 +6,9 @@
 
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
+#include "sampling/russian_roulette.h"
 
 namespace lightpath {
-namespace {
-
-// Paths shorter than this are never cut by Russian roulette.
-constexpr int kRouletteDepth = 3;
-
-bool continuesRoulette(int depth, Rgb& throughput, Sampler& sampler) {
-    if (depth + 1 < kRouletteDepth) return true;
-    // Russian roulette: continue with probability q, dividing by q keeps the estimate unbiased.
-    const float q = std::min(0.95f, maxComponent(throughput));
-    if (sampler.next1D() >= q) return false;
-    throughput /= q;
-    return true;
-}
-
-}  // namespace
 
 void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const {
     const RenderContext& ctx = path.context;
@@ -58,7 +44,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
                     break;
                 }
                 // The phase function is sampled exactly: its weight p / pdf is 1.
-                if (!continuesRoulette(depth, throughput, sampler)) break;
+                if (!survivesRussianRoulette(throughput, depth + 1, sampler)) break;
                 ++path.counters.volume;
                 previousPdf = scattered.pdf;
                 previousDelta = false;
@@ -95,7 +81,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             break;
         }
         throughput *= sample->weight;
-        if (!continuesRoulette(depth, throughput, sampler)) break;
+        if (!survivesRussianRoulette(throughput, depth + 1, sampler)) break;
         ++(transmitted ? path.counters.refraction : path.counters.reflection);
         if (transmitted) mediumIndex = ctx.scene.mediumBeyond(point.hit.object, point.entering, mediumIndex);
         previousPdf = sample->pdf;

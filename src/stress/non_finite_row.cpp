@@ -10,6 +10,7 @@
 #include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "stress/sampling.h"
+#include "stress/scene_objects.h"
 #include "film/aov_presets.h"
 
 namespace lightpath {
@@ -17,12 +18,6 @@ namespace {
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-std::uint32_t addObject(Scene& scene, const std::string& name, PhongMaterial material) {
-    material.name = name;
-    scene.materials.push_back(material);
-    scene.objects.push_back({name, static_cast<std::uint32_t>(scene.materials.size() - 1)});
-    return static_cast<std::uint32_t>(scene.objects.size() - 1);
-}
 
 // A floor, a glass ball seen from straight above (rays with zero x and z components, total
 // internal reflection inside the ball), a mirror ball, and triangles of zero area: repeated
@@ -44,10 +39,10 @@ Scene hostileScene(int size) {
     glass.ior = 2.4f;  // diamond: a wide range of internal angles reflect totally
     PhongMaterial mirror;
     mirror.kr = {0.9f, 0.9f, 0.9f};
-    scene.planes.push_back({{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, addObject(scene, "floor", matte)});
-    scene.spheres.push_back({{0.0f, 1.0f, 0.0f}, 1.0f, addObject(scene, "glass", glass)});
-    scene.spheres.push_back({{1.8f, 0.7f, 0.9f}, 0.7f, addObject(scene, "mirror", mirror)});
-    const std::uint32_t flat = addObject(scene, "degenerate", matte);
+    scene.planes.push_back({{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, stress::addObject(scene, "floor", matte)});
+    scene.spheres.push_back({{0.0f, 1.0f, 0.0f}, 1.0f, stress::addObject(scene, "glass", glass)});
+    scene.spheres.push_back({{1.8f, 0.7f, 0.9f}, 0.7f, stress::addObject(scene, "mirror", mirror)});
+    const std::uint32_t flat = stress::addObject(scene, "degenerate", matte);
     const Vec3 a{-1.5f, 0.5f, 1.0f}, b{-0.5f, 0.5f, 2.0f};
     scene.triangles.push_back({a, a, b, flat});
     scene.triangles.push_back({a, b, 0.5f * (a + b), flat});

@@ -10,16 +10,11 @@
 #include "materials/phong_material.h"
 #include "render/renderer.h"
 #include "stress/sampling.h"
+#include "stress/scene_objects.h"
 
 namespace lightpath {
 namespace {
 
-std::uint32_t addObject(Scene& scene, const std::string& name, PhongMaterial material) {
-    material.name = name;
-    scene.materials.push_back(material);
-    scene.objects.push_back({name, static_cast<std::uint32_t>(scene.materials.size() - 1)});
-    return static_cast<std::uint32_t>(scene.objects.size() - 1);
-}
 
 void addQuad(Scene& scene, std::uint32_t object, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
     scene.triangles.push_back({a, b, c, object});
@@ -47,18 +42,18 @@ Scene cornellRoom(float scale, int size) {
         return m;
     };
     const auto p = [scale](float x, float y, float z) { return scale * Vec3{x, y + 1.0f, z}; };
-    scene.planes.push_back({Vec3{0.0f}, {0.0f, 1.0f, 0.0f}, addObject(scene, "floor", matte({0.7f, 0.7f, 0.7f}))});
-    addQuad(scene, addObject(scene, "ceiling", matte({0.7f, 0.7f, 0.7f})), p(-1, 1, -1), p(1, 1, -1), p(1, 1, 1), p(-1, 1, 1));
-    addQuad(scene, addObject(scene, "back", matte({0.7f, 0.7f, 0.7f})), p(-1, -1, -1), p(1, -1, -1), p(1, 1, -1), p(-1, 1, -1));
-    addQuad(scene, addObject(scene, "red", matte({0.7f, 0.1f, 0.1f})), p(-1, -1, 1), p(-1, -1, -1), p(-1, 1, -1), p(-1, 1, 1));
-    addQuad(scene, addObject(scene, "green", matte({0.1f, 0.7f, 0.1f})), p(1, -1, -1), p(1, -1, 1), p(1, 1, 1), p(1, 1, -1));
+    scene.planes.push_back({Vec3{0.0f}, {0.0f, 1.0f, 0.0f}, stress::addObject(scene, "floor", matte({0.7f, 0.7f, 0.7f}))});
+    addQuad(scene, stress::addObject(scene, "ceiling", matte({0.7f, 0.7f, 0.7f})), p(-1, 1, -1), p(1, 1, -1), p(1, 1, 1), p(-1, 1, 1));
+    addQuad(scene, stress::addObject(scene, "back", matte({0.7f, 0.7f, 0.7f})), p(-1, -1, -1), p(1, -1, -1), p(1, 1, -1), p(-1, 1, -1));
+    addQuad(scene, stress::addObject(scene, "red", matte({0.7f, 0.1f, 0.1f})), p(-1, -1, 1), p(-1, -1, -1), p(-1, 1, -1), p(-1, 1, 1));
+    addQuad(scene, stress::addObject(scene, "green", matte({0.1f, 0.7f, 0.1f})), p(1, -1, -1), p(1, -1, 1), p(1, 1, 1), p(1, 1, -1));
     PhongMaterial ball = matte({0.5f, 0.5f, 0.8f});
     ball.ks = {0.4f, 0.4f, 0.4f};
     ball.n = 30.0f;
-    scene.spheres.push_back({p(-0.4f, -0.6f, -0.3f), 0.4f * scale, addObject(scene, "ball", ball)});
+    scene.spheres.push_back({p(-0.4f, -0.6f, -0.3f), 0.4f * scale, stress::addObject(scene, "ball", ball)});
     PhongMaterial mirror;
     mirror.kr = {0.8f, 0.8f, 0.8f};
-    scene.spheres.push_back({p(0.45f, -0.7f, 0.3f), 0.3f * scale, addObject(scene, "mirror", mirror)});
+    scene.spheres.push_back({p(0.45f, -0.7f, 0.3f), 0.3f * scale, stress::addObject(scene, "mirror", mirror)});
     scene.lights.push_back(PointLight{"key", p(0.1f, 0.9f, 0.2f), Rgb{1.2f}, Vec3{1.0f, 0.0f, 0.0f}});
     return scene;
 }
