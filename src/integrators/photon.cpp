@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "integrators/registry.h"
+#include "lpe/suffix_reader.h"
 #include "scene/framing.h"
 
 namespace lightpath {
@@ -12,7 +13,7 @@ namespace {
 // Photons are merged only on a surface facing as the eye's point does (Jensen 2001, 7.2: the
 // disc rather than the sphere), so a corner's other wall does not leak into it.
 constexpr float kNormalAgreement = 0.9f;
-// Photon paths are seeded by this and their index alone.
+// Photon paths are seeded by this, the render's seed and their index alone.
 constexpr std::uint64_t kPhotonSeed = 0x70686f746f6eull;  // "photon"
 
 // Pushes a photon's events, its last scattering first, down to its first: the light's walk
@@ -26,6 +27,25 @@ bool pushPhotonEvents(PathState& path, std::span<const PathEvent> history, int b
         }
     }
     return true;
+}
+
+struct PhotonUse {
+    const lpe::SuffixReader* reader;
+    const EventSymbols* symbols;
+};
+
+// Whether a path ending in these light-side events (the light first) may be accepted by a
+// requested output: they are read backwards from the light; the merge and the eye's events, not
+// known yet, are any prefix.
+bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSide) {
+    const PhotonUse& use = *static_cast<const PhotonUse*>(state);
+    thread_local lpe::SuffixReader::StateSet suffix, longer;
+    use.reader->prepend(use.reader->accepting(), (*use.symbols)(lightSide[0]), suffix);
+    for (std::size_t i = 1; i < lightSide.size(); ++i) {
+        use.reader->prepend(suffix, (*use.symbols)(lightSide[i]), longer);
+        std::swap(suffix, longer);
+    }
+    return use.reader->completable(suffix);
 }
 
 }  // namespace
@@ -84,9 +104,14 @@ void PhotonIntegrator::preprocess(const RenderContext& context) {
     const std::uint64_t count = p ? static_cast<std::uint64_t>(p->integer("photons")) : kDefaultPhotons;
     const float radius = p && p->has("photon-radius") ? p->number("photon-radius") : defaultPhotonRadius(context.scene);
     const float causticRadius = p && p->has("caustic-radius") ? p->number("caustic-radius") : radius;
-    PhotonSet set = shootPhotons(context, count, kPhotonSeed);
-    caustic_ = PhotonMap(std::move(set.caustic), std::move(set.causticEvents), causticRadius);
-    global_ = PhotonMap(std::move(set.global), std::move(set.globalEvents), radius);
+    // Unless every path is wanted, a photon is kept only when some requested output may accept a
+    // path ending in its events (the automaton read backwards, lpe/suffix_reader.h).
+    std::optional<lpe::SuffixReader> reader;
+    if (!context.keepAllPaths) reader.emplace(context.automaton, context.requested);
+    const PhotonUse use{reader ? &*reader : nullptr, &context.symbols};
+    PhotonSet set = shootPhotons(context, count, mixBits(kPhotonSeed ^ context.seed), reader ? &completesAcceptedPath : nullptr, &use);
+    caustic_ = PhotonMap(std::move(set.caustic), std::move(set.causticEvents), causticRadius, set.counts.shot);
+    global_ = PhotonMap(std::move(set.global), std::move(set.globalEvents), radius, set.counts.shot);
     stats_ = {};
     stats_.shot = set.counts.shot;
     stats_.causticStored = set.counts.caustic;
@@ -108,7 +133,9 @@ void PhotonIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 }  // namespace lightpath
 
 // Every bounce from the lights; the background only seen directly or through mirrors and glass.
-LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+// Under point lights: every path from the eye's first diffuse or glossy vertex on, photons and
+// shadow rays reaching the light by any bounces.
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::underPointLights(lightpath::integratorRow(
     "photon", "photon mapping (Jensen): photons from the lights, caustics seen in mirrors included",
     "E.*[<L.[^'ambient']>O]|ES*B",
     "photon mapping follows every bounce, but adds no ambient term (ka Ia) and sees the background only directly or "
@@ -121,4 +148,5 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
       .range = lightpath::kPositive,
       .doc = "the global map's search radius (default: 1% of the diagonal of the scene's bounded shapes)"},
      {.name = "caustic-radius", .type = lightpath::ParameterType::Number, .unit = "scene units",
-      .range = lightpath::kPositive, .doc = "the caustic map's search radius (default: --photon-radius)"}}))
+      .range = lightpath::kPositive, .doc = "the caustic map's search radius (default: --photon-radius)"}}),
+    "ES*(D|G).*L"))

@@ -118,10 +118,10 @@ void append(MapPart& to, MapPart&& part) {
 
 }  // namespace
 
-PhotonMap::PhotonMap(std::vector<Photon> photons, std::vector<PathEvent> events, float radius)
+PhotonMap::PhotonMap(std::vector<Photon> photons, std::vector<PathEvent> events, float radius, std::uint64_t shot)
     : events_(std::move(events)), radius_(radius), cellSize_(2.0f * radius) {
     // Twice as many buckets as photons (a power of two), so few cells share one.
-    bucketCount_ = std::bit_ceil(std::max<std::uint32_t>(1u, static_cast<std::uint32_t>(2 * photons.size())));
+    bucketCount_ = std::bit_ceil(static_cast<std::uint32_t>(std::max<std::uint64_t>({1, 2 * shot, 2 * photons.size()})));
     bucketStart_.assign(std::size_t(bucketCount_) + 1, 0);
     std::vector<std::uint32_t> bucket(photons.size());
     for (std::size_t i = 0; i < photons.size(); ++i) {

@@ -32,8 +32,10 @@ struct Photon {
 
 class PhotonMap {
 public:
-    // Takes the photons and their histories and sorts them into cells of width 2 `radius`.
-    PhotonMap(std::vector<Photon> photons, std::vector<PathEvent> events, float radius);
+    // Takes the photons and their histories and sorts them into cells of width 2 `radius`, hashed
+    // into 2 `shot` buckets (at least two per photon): the photons shot, not those kept, so a map
+    // that keeps fewer (the requested outputs filter them) visits the rest in the same order.
+    PhotonMap(std::vector<Photon> photons, std::vector<PathEvent> events, float radius, std::uint64_t shot);
     PhotonMap() = default;
 
     float radius() const { return radius_; }
