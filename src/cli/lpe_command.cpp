@@ -13,6 +13,7 @@
 #include "config/messages.h"
 #include "config/exit_codes.h"
 #include "config/lpe_verdict.h"
+#include "config/reach.h"
 #include "film/aov_presets.h"
 #include "integrators/registry.h"
 #include "lpe/analysis.h"
@@ -301,6 +302,32 @@ void runDot(const SetOptions& options) {
     }
 }
 
+// The lecture's table of methods: per path class and integrator, whether it produces some path of
+// the class under point lights and under area lights (config/reach.h).
+void runReach(const std::vector<std::string>& given) {
+    std::vector<std::string> classes = given;
+    if (classes.empty()) classes.assign(kReachClasses.begin(), kReachClasses.end());
+    std::size_t width = std::string("path class").size();
+    for (const std::string& c : classes) width = std::max(width, c.size());
+    std::cout << "who reaches what: point lights / area lights (yes: it can produce some path of the class)\n";
+    std::cout << "path class" << std::string(width + 2 - 10, ' ');
+    for (const IntegratorInfo& info : integrators()) {
+        const std::string name = info.name;
+        std::cout << name << std::string(std::max<std::size_t>(name.size(), 9) + 2 - name.size(), ' ');
+    }
+    std::cout << '\n';
+    for (const std::string& pathClass : classes) {
+        std::cout << pathClass << std::string(width + 2 - pathClass.size(), ' ');
+        for (const IntegratorInfo& info : integrators()) {
+            const Reach reach = reachOf(info, pathClass);
+            const std::string cell = std::string(reach.pointLights ? "yes" : "no") + "/" + (reach.areaLights ? "yes" : "no");
+            const std::size_t column = std::max<std::size_t>(std::string(info.name).size(), 9) + 2;
+            std::cout << cell << std::string(column - cell.size(), ' ');
+        }
+        std::cout << '\n';
+    }
+}
+
 void addSetArguments(CLI::App& command, SetOptions& options) {
     command.add_option("expressions", options.expressions, "[name=]EXPR, e.g. raycast='E(D|G)L'");
     command.add_option("--set", options.set, "start from a predefined set")->check(oneOf(aovPresetNames(false)));
@@ -385,6 +412,19 @@ void addLpeCommand(CLI::App& app) {
         "  lightpath lpe dot --set classes -o classes.dot\n"
         "  lightpath lpe dot key='E.*<L.'\\''key'\\''>' fill='E.*<L.'\\''fill'\\''>'");
     dotCommand->callback([dot] { reportingErrors([&] { runDot(*dot); }); });
+
+    auto reach = std::make_shared<std::vector<std::string>>();
+    CLI::App* reachCommand =
+        lpe->add_subcommand("reach", "Which integrator can produce which paths, with point lights and with area lights");
+    reachCommand->add_option("classes", *reach, "path classes as LPEs (default: the lecture's seven)");
+    reachCommand->footer(
+        "Prints, for every integrator and path class, whether it can produce some path of the class\n"
+        "when every light is a point light and when lights have area: the lecture's table of methods,\n"
+        "read off each integrator's declared path languages by automata (src/integrators/registry.h).\n\n"
+        "Examples:\n"
+        "  lightpath lpe reach\n"
+        "  lightpath lpe reach 'ES+(D|G)S+<L.>'");
+    reachCommand->callback([reach] { reportingErrors([&] { runReach(*reach); }); });
 
     addLpeExerciseCommand(*lpe);
 }

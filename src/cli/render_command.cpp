@@ -91,6 +91,15 @@ void printRadiosityStats(const RadiosityStats& r) {
                 r.iterations, r.lightBouncesSolved, r.lightsSolved, r.residual, r.seconds);
 }
 
+void printPhotonStats(const PhotonStats& p) {
+    std::printf("photons       %llu shot, %llu stored (%llu caustic within %.4g, %llu global within %.4g), %.1f MiB, "
+                "shot in %.3f s\n",
+                static_cast<unsigned long long>(p.shot), static_cast<unsigned long long>(p.causticStored + p.globalStored),
+                static_cast<unsigned long long>(p.causticStored), double(p.causticRadius),
+                static_cast<unsigned long long>(p.globalStored), double(p.radius), double(p.bytes) / (1024.0 * 1024.0),
+                p.seconds);
+}
+
 void printAcceleratorStats(const std::string& accel, const AcceleratorStats& a) {
     if (accel == "none") {
         std::printf("accelerator   none: every ray tests every primitive\n");
@@ -191,6 +200,7 @@ void run(const RenderCommand& command) {
                         as.c_str(), b.reason.c_str());
         }
         if (result.stats.radiosity) printRadiosityStats(*result.stats.radiosity);
+        if (result.stats.photon) printPhotonStats(*result.stats.photon);
     }
 }
 

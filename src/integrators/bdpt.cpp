@@ -387,9 +387,11 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
 }  // namespace lightpath
 
 // Every bounce, from the eye and from the lights.
-LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
+// Under point lights a light walk's vertex is joined to the eye, to an eye vertex or to the light by a
+// shadow ray, from a diffuse or glossy vertex on each side: never E S+ (D|G) S+ L.
+LIGHTPATH_REGISTER_INTEGRATOR(lightpath::underPointLights(lightpath::integratorRow(
     "bdpt", "bidirectional path tracing: also light from the light's side, caustics under point lights",
     "E.*[<L.[^'ambient']>OB]",
     "bidirectional path tracing follows every bounce, from the eye and from the lights, but adds no ambient term (ka Ia)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::BdptIntegrator>()); },
-    lightpath::ShadowRays::Always, 5))
+    lightpath::ShadowRays::Always, 5), "E.*(D|G)L|E(D|G).*L|E.*(D|G)(D|G).*L"))

@@ -61,6 +61,8 @@ struct RenderContext {
     // The integrator's own parameters (its registry row's schema) as the user gave them; null when
     // the caller set `radiosity` above directly (tests), which then stand.
     const ParameterValues* parameters = nullptr;
+    // The render's seed (--seed), for work a preprocess draws at random (photon mapping's photons).
+    std::uint64_t seed = 0;
 };
 
 class Integrator {

@@ -24,6 +24,9 @@ enum class ShadowRays : std::uint8_t {
     Never,     // no rays to cast (the rasteriser)
 };
 
+// A point light is reached only by a shadow ray from a diffuse or glossy vertex.
+inline constexpr const char* kReachedByShadowRays = "E.*(D|G)L";
+
 struct IntegratorInfo {
     const char* name;
     const char* summary;       // one line for --help
@@ -39,6 +42,11 @@ struct IntegratorInfo {
     // Whether it renders participating media (src/media/): a scene with media is refused under an
     // integrator that would show it as in vacuum (RenderConfig::judge).
     bool rendersMedia = false;
+    // The paths it can produce when every light is a point light (a delta in position, which no
+    // ray can hit), within pathLanguage: by default only those whose last event before the light
+    // is diffuse or glossy, where a shadow ray finds the light (next-event estimation). Methods
+    // that walk from the lights say more (bdpt, photon).
+    const char* pointLightLanguage = kReachedByShadowRays;
 };
 
 using IntegratorRegistry = TypeRegistry<IntegratorInfo>;
@@ -58,6 +66,12 @@ inline IntegratorInfo integratorRow(const char* name, const char* summary, const
 // The row, marked as rendering participating media.
 inline IntegratorInfo rendersMedia(IntegratorInfo row) {
     row.rendersMedia = true;
+    return row;
+}
+
+// The row, with the paths it produces under point lights alone.
+inline IntegratorInfo underPointLights(IntegratorInfo row, const char* language) {
+    row.pointLightLanguage = language;
     return row;
 }
 

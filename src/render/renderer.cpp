@@ -68,6 +68,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
         throw std::invalid_argument("the " + options.integrator + " integrator casts no rays, so it has no shadows; "
                                     "compare it with --integrator raycast --shadows off");
     context_.filter = &filter_;
+    context_.seed = options.seed;
     context_.preprocessSteps = options.preprocessSteps;
     if (options_.integratorParameters) context_.parameters = &*options_.integratorParameters;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
@@ -293,6 +294,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
     stats.threads = threadCount;
     stats.accelerator = geometry_->acceleratorStats();
     if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
+    if (const auto* photon = dynamic_cast<const PhotonIntegrator*>(integrator_.get())) stats.photon = photon->stats();
     for (const auto& cpu : workerCpu) stats.workerCpuSeconds.push_back(cpu.value);
     stats.serialCpuSeconds = serialBeforeCpu + (threadCpuSeconds() - afterWorkersCpu);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -19,6 +19,7 @@
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
+#include "integrators/photon.h"
 #include "integrators/radiosity.h"
 #include "integrators/ray_counters.h"
 #include "lights/light_set.h"
@@ -82,6 +83,7 @@ struct RenderStats {
     int threads = 1;
     AcceleratorStats accelerator;  // what building the BVH (or Embree's) cost, before the render
     std::optional<RadiosityStats> radiosity;  // its mesh and solve, before the render
+    std::optional<PhotonStats> photon;        // the photons shot and kept, before the render
     // CPU seconds of each worker in the render loop, and of the render's serial parts on the
     // calling thread (the film, the splats): load on the machine stretches wall time but not
     // these, so serial + the busiest worker is what the render would take on an idle machine, and
