@@ -59,6 +59,7 @@ class Figure:
         self.dir = run.out / self.id
         self.png = run.out / f"{number:02d}-{self.id}.png"
         self.commands, self.notes, self.dirs, self.seconds = [], [], [], 0.0
+        self.layout_note = ""
 
     def scene(self, i):
         """The i-th scene of figures.toml, as a path."""
@@ -70,14 +71,20 @@ class Figure:
 
     def compose(self, panels, cols=None, aspect=None, side=None, grid_w=None):
         """This figure's slide: its title over the panels (slide.compose)."""
-        slide.compose(self.png, self.title, panels, cols=cols, aspect=aspect,
-                      side=side, grid_w=grid_w)
+        empty = slide.compose(self.png, self.title, panels, cols=cols, aspect=aspect,
+                              side=side, grid_w=grid_w)
+        flagged = [f"'{p.label}' ({p.dark})" for p in [*panels, side] if p is not None and p.dark]
+        self.layout_note = (f"layout: {empty:.1%} of the frame empty (bar {slide.MAX_EMPTY:.0%}); "
+                            f"no panel's lit pixels darker than {slide.DARK_FLOOR} mean display "
+                            "luminance unless its exposure is stated" +
+                            (f"; dark on purpose: {', '.join(flagged)}" if flagged else ""))
 
     def make(self):
         self.dir.mkdir(parents=True, exist_ok=True)
         self.run.commands, self.run.dirs = [], []
         t0 = time.monotonic()
         self.notes = getattr(recipes, self.recipe)(self) or []
+        self.notes.append(self.layout_note)
         self.seconds = time.monotonic() - t0
         if not self.png.is_file():
             raise FigureError(f"recipe {self.recipe} wrote no slide")

@@ -41,6 +41,7 @@ class Run:
         self.spp_direct = 1 if quick else 4      # raycast / Whitted (soft shadows of the area light)
         self.spp_path = 4 if quick else 64       # path tracer and bdpt
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
+        self.spp_caustic = 16 if quick else 256  # bdpt on the caustics slide: a converged focus
         self.commands = []                       # commands of the figure being made
         self.dirs = []                           # folders holding the figure's EXRs
         self.rendered = {}                       # argv -> EXR, so figures share renders
@@ -49,6 +50,11 @@ class Run:
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
         return f"{int(w * self.scale)}x{int(h * self.scale)}"
+
+    def res_for(self, aspect, h=360):
+        """A render resolution h pixels high (halved in quick mode) of width/height = aspect:
+        the aspect of the cells a slide's layout gives its panels (slide.cell_aspect)."""
+        return self.res(round(h * aspect), h)
 
     def rel(self, path):
         """A path as the gallery shows it: relative to the repository's root when inside it."""
