@@ -731,12 +731,26 @@ def pixel_paths(fig):
     image = slide.Panel(exr).display()
     w, h = full_slide_px()
     png = fig.dir / "paths.png"
-    plots.pixel_paths_plot(png, image, (x, y), paths, scene, mesh_points(fig.scene(0), scene), w, h)
+    drawn = plots.pixel_paths_plot(png, image, (x, y), paths, scene,
+                                   mesh_points(fig.scene(0), scene), w, h)
     fig.note_command("python3 lectures/plots.py: pixel_paths_plot of explain's vertices and segments")
+    # every path can be told apart: its colour shows in both views, over the others
+    for (lpe, _, _), n in zip(paths, drawn["colour_pixels"]):
+        if n < PATH_MIN_PIXELS:
+            raise FigureError(f"{png}: the path {lpe} shows {n} pixels of its colour in one view "
+                              f"(< {PATH_MIN_PIXELS}): another path covers it")
+    if drawn["collisions"]:
+        raise FigureError(f"{png}: in the top view " + "; ".join(
+            f"the label '{a}' overlaps {b}" for a, b in drawn["collisions"]))
     fig.compose([Panel(png, f"pixel {x},{y}: every path explain finds",
                        "over the image (projected) and from above")])
     return [f"pixel {x},{y}: {len(paths)} paths; their sum is the rendered pixel",
-            "each camera ray's segment ends at the pixel's centre"]
+            "each camera ray's segment ends at the pixel's centre",
+            f"each path shows at least {min(drawn['colour_pixels'])} pixels of its colour in each "
+            f"view (bar {PATH_MIN_PIXELS}); no label of the top view overlaps a marker or a label"]
+
+
+PATH_MIN_PIXELS = 150  # of a path's colour in each view: a line of its own, not hidden
 
 
 def mesh_points(scene_path, scene):
