@@ -73,25 +73,53 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
         plt.close(fig)
 
 
-def bench_error_plot(csv_path, png, width_px, height_px):
+def _legend_clear_of_data(fig, ax, legend):
+    """True when no data point, nor any point along the lines between them, lies inside the
+    legend's box (display pixels)."""
+    import numpy as np
+    fig.canvas.draw()
+    box = legend.get_window_extent(fig.canvas.get_renderer())
+    for line in ax.get_lines():
+        x, y = (np.asarray(v, float) for v in line.get_data())
+        if len(x) == 0:
+            continue
+        # along each segment, evenly in log space (the axes are log-log)
+        t = np.linspace(0.0, 1.0, 20)[:, None]
+        lx, ly = np.log(x), np.log(y)
+        sx = np.exp(lx[:-1] + t * (lx[1:] - lx[:-1])).ravel() if len(x) > 1 else x
+        sy = np.exp(ly[:-1] + t * (ly[1:] - ly[:-1])).ravel() if len(y) > 1 else y
+        pts = ax.transData.transform(np.column_stack([np.concatenate([x, sx]),
+                                                      np.concatenate([y, sy])]))
+        if np.any((pts[:, 0] > box.x0) & (pts[:, 0] < box.x1) &
+                  (pts[:, 1] > box.y0) & (pts[:, 1] < box.y1)):
+            return False
+    return True
+
+
+def bench_error_plot(csv_path, png, width_px, height_px, extra=(), drop=()):
     """`lightpath bench error`'s CSV as the slide shows it: RMSE against CPU seconds, log-log,
-    one panel per scene, one line per integrator and sampler (radiosity: per patch budget)."""
+    one panel per scene, one line per integrator and sampler (radiosity: per patch budget).
+
+    extra: more rows (dicts with the CSV's keys) measured by the generator; drop: scenes of the
+    CSV left out (replaced by extra). Each legend stands beside its axes; returns False when a
+    legend covers data all the same (_legend_clear_of_data)."""
     import csv
     series = {}
     with open(csv_path, newline="") as f:
-        for row in csv.DictReader(f):
-            name = (f"{row['integrator']} {row['sampler']}"
-                    if row["integrator"] in ("path", "bdpt") else row["integrator"])
-            key = (row["scene"], name)
-            series.setdefault(key, []).append((float(row["seconds"]), float(row["rmse"])))
+        rows = [r for r in csv.DictReader(f) if r["scene"] not in drop] + list(extra)
+    for row in rows:
+        name = (f"{row['integrator']} {row['sampler']}"
+                if row["integrator"] in ("path", "bdpt") else row["integrator"])
+        key = (row["scene"], name)
+        series.setdefault(key, []).append((float(row["seconds"]), float(row["rmse"])))
     scenes = sorted({s for s, _ in series})
     if not scenes:
         raise ValueError(f"{csv_path}: no rows")
     cols = min(len(scenes), 2)
-    rows = math.ceil(len(scenes) / cols)
+    nrows = math.ceil(len(scenes) / cols)
     style = dict(SLIDE_STYLE, **{"font.size": 20, "lines.linewidth": 3})
     with plt.rc_context(style):
-        fig, axes = plt.subplots(rows, cols, figsize=(width_px / DPI, height_px / DPI), dpi=DPI,
+        fig, axes = plt.subplots(nrows, cols, figsize=(width_px / DPI, height_px / DPI), dpi=DPI,
                                  squeeze=False)
         for ax, scene in zip(axes.flat, scenes):
             for (s, name), points in sorted(series.items()):
@@ -101,16 +129,21 @@ def bench_error_plot(csv_path, png, width_px, height_px):
                               label=name)
             ax.set_title(scene)
             ax.grid(alpha=0.3, which="both")
-            ax.legend(fontsize=16, ncol=2)
         for ax in axes[-1]:
             ax.set_xlabel("CPU seconds (one thread)")
         for ax in axes[:, 0]:
             ax.set_ylabel("RMSE")
         for ax in list(axes.flat)[len(scenes):]:
             ax.axis("off")
+        # each legend beside its axes, never over data (the furnace's lines leave no room inside)
+        for ax in list(axes.flat)[:len(scenes)]:
+            ax.legend(fontsize=16, loc="upper left", bbox_to_anchor=(1.01, 1.0), framealpha=0.9)
         fig.tight_layout()
+        clear = all(_legend_clear_of_data(fig, ax, ax.get_legend())
+                    for ax in list(axes.flat)[:len(scenes)])
         fig.savefig(png)
         plt.close(fig)
+    return clear
 
 
 LPE_PT = 27  # 37.5 px at 100 dpi: the issue's 36 px for LPE captions at 1080p
