@@ -23,6 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import gallery  # noqa: E402  (the modules beside this script)
 import recipes  # noqa: E402
 import slide  # noqa: E402
+import steps  # noqa: E402
 from steps import HERE, REPO, FigureError, Run  # noqa: E402
 
 FIGURES_TOML = HERE / "figures.toml"
@@ -90,6 +91,11 @@ class Figure:
             raise FigureError(f"recipe {self.recipe} wrote no slide")
         self.commands = list(self.run.commands)
         self.dirs = sorted(set(self.run.dirs))
+        for exr, noise in sorted(self.run.noise.items()):
+            if exr.parent.name in self.dirs:
+                self.notes.append(f"noise: {exr.parent.name}/{exr.name} relative RMSE {noise:.3f} "
+                                  f"against {steps.NOISE_REFERENCE_FACTOR}x its samples (level "
+                                  f"{steps.NOISE_LEVEL})")
 
 
 def main():
@@ -136,7 +142,14 @@ def main():
     gallery.write_gallery(run.out / "index.html", made, run.quick, PDF_NAME)
     print("time in tools: " + ", ".join(f"{tool} {s:.1f} s" for tool, s in
                                         sorted(run.seconds.items(), key=lambda kv: -kv[1])))
+    if run.noise:
+        above = [run.rel(e) for e, n in sorted(run.noise.items()) if n > steps.NOISE_LEVEL]
+        print(f"noise: {len(run.noise)} path, bdpt and radiosity renders, relative RMSE "
+              f"{min(run.noise.values()):.3f} to {max(run.noise.values()):.3f}; "
+              + (f"above the level {steps.NOISE_LEVEL}: {', '.join(above)}" if above else
+                 f"all at or below the level {steps.NOISE_LEVEL}"))
     print(f"gallery {run.out / 'index.html'}  ({time.monotonic() - start:.1f} s in all)")
+    print(f"total time {time.monotonic() - start:.1f} s")
 
 
 if __name__ == "__main__":
