@@ -240,6 +240,7 @@ def shadow_scene(fig, s):
 # floor left of it, where acne shows, and the contact, where a detached shadow shows.
 ACNE_CROP = (0.2, 0.3, 0.6, 0.7)  # 16:9, as the panels
 ACNE_MIN_FRACTION = 0.01  # of the inset's pixels darker than the robust render's: acne shows
+ACNE_SPP = 4              # the samples per pixel of the shadow renders (4: the slides' before)
 ACNE_DARKER = 0.8          # "darker": below this fraction of the robust render's luminance
 
 
@@ -261,8 +262,10 @@ def shadow_acne(fig):
              (2e-4, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "eps 1e-4",
               "scale 2e-4: detached", False),
              (1e3, [], "robust offset", "scale 1e3: right", False)]
+    # at most ACNE_SPP samples: more anti-aliasing averages the acne's speckles into a tone
     exrs = [render(run, fig.id, f"shadow-{i}", shadow_scene(fig, s), *opts,
-                   "--resolution", run.res_for(slide.cell_aspect(8, 4)), "--spp", run.spp_direct)
+                   "--resolution", run.res_for(slide.cell_aspect(8, 4)),
+                   "--spp", min(run.spp_direct, ACNE_SPP))
             for i, (s, opts, _, _, _) in enumerate(cases)]
     # the insets must show what their labels say: acne where there is, none from the robust offset
     notes = []
