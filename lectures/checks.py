@@ -104,20 +104,21 @@ def layer(exr, name):
     return layers[name]
 
 
-def check_sum(exr, names, tol=1e-4):
-    """Fail unless the named AOV layers sum to the beauty in every pixel and channel.
+def check_sum(exr, names, tol=1e-4, total=""):
+    """Fail unless the named AOV layers sum to the layer total (the beauty by default) in every
+    pixel and channel.
 
     Why: the slide claims beauty = sum of its panels; this proves it on the very EXR the panels
     come from (relative tolerance, with an absolute floor of 1 for dark pixels)."""
     layers = read_layers(exr)
-    missing = [n for n in names if n not in layers]
+    missing = [n for n in [*names, total] if n not in layers]
     if missing:
         raise FigureError(f"{exr}: no layer {', '.join(missing)}")
-    beauty = layers[""]
+    beauty = layers[total]
     total = sum(layers[n] for n in names)
     worst = float((np.abs(total - beauty) / np.maximum(np.abs(beauty), 1.0)).max())
     if not worst <= tol:
-        raise FigureError(f"{exr}: {' + '.join(names)} differs from the beauty by {worst:.3g} "
+        raise FigureError(f"{exr}: {' + '.join(names)} differs from {total or 'the beauty'} by {worst:.3g} "
                           f"(relative, worst pixel) > {tol}: the slide's sum would lie")
     return worst
 

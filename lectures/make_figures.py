@@ -23,6 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import gallery  # noqa: E402  (the modules beside this script)
 import recipes  # noqa: E402
 import slide  # noqa: E402
+import steps  # noqa: E402
 from steps import HERE, REPO, FigureError, Run  # noqa: E402
 
 FIGURES_TOML = HERE / "figures.toml"
@@ -59,6 +60,7 @@ class Figure:
         self.dir = run.out / self.id
         self.png = run.out / f"{number:02d}-{self.id}.png"
         self.commands, self.notes, self.dirs, self.seconds = [], [], [], 0.0
+        self.layout_note = ""
 
     def scene(self, i):
         """The i-th scene of figures.toml, as a path."""
@@ -70,19 +72,30 @@ class Figure:
 
     def compose(self, panels, cols=None, aspect=None, side=None, grid_w=None):
         """This figure's slide: its title over the panels (slide.compose)."""
-        slide.compose(self.png, self.title, panels, cols=cols, aspect=aspect,
-                      side=side, grid_w=grid_w)
+        empty = slide.compose(self.png, self.title, panels, cols=cols, aspect=aspect,
+                              side=side, grid_w=grid_w)
+        flagged = [f"'{p.label}' ({p.dark})" for p in [*panels, side] if p is not None and p.dark]
+        self.layout_note = (f"layout: {empty:.1%} of the frame empty (bar {slide.MAX_EMPTY:.0%}); "
+                            f"no panel's lit pixels darker than {slide.DARK_FLOOR} mean display "
+                            "luminance unless its exposure is stated" +
+                            (f"; dark on purpose: {', '.join(flagged)}" if flagged else ""))
 
     def make(self):
         self.dir.mkdir(parents=True, exist_ok=True)
         self.run.commands, self.run.dirs = [], []
         t0 = time.monotonic()
         self.notes = getattr(recipes, self.recipe)(self) or []
+        self.notes.append(self.layout_note)
         self.seconds = time.monotonic() - t0
         if not self.png.is_file():
             raise FigureError(f"recipe {self.recipe} wrote no slide")
         self.commands = list(self.run.commands)
         self.dirs = sorted(set(self.run.dirs))
+        for exr, noise in sorted(self.run.noise.items()):
+            if exr.parent.name in self.dirs:
+                self.notes.append(f"noise: {exr.parent.name}/{exr.name} relative RMSE {noise:.3f} "
+                                  f"against {steps.NOISE_REFERENCE_FACTOR}x its samples (level "
+                                  f"{steps.NOISE_LEVEL})")
 
 
 def main():
@@ -129,7 +142,14 @@ def main():
     gallery.write_gallery(run.out / "index.html", made, run.quick, PDF_NAME)
     print("time in tools: " + ", ".join(f"{tool} {s:.1f} s" for tool, s in
                                         sorted(run.seconds.items(), key=lambda kv: -kv[1])))
+    if run.noise:
+        above = [run.rel(e) for e, n in sorted(run.noise.items()) if n > steps.NOISE_LEVEL]
+        print(f"noise: {len(run.noise)} path, bdpt and radiosity renders, relative RMSE "
+              f"{min(run.noise.values()):.3f} to {max(run.noise.values()):.3f}; "
+              + (f"above the level {steps.NOISE_LEVEL}: {', '.join(above)}" if above else
+                 f"all at or below the level {steps.NOISE_LEVEL}"))
     print(f"gallery {run.out / 'index.html'}  ({time.monotonic() - start:.1f} s in all)")
+    print(f"total time {time.monotonic() - start:.1f} s")
 
 
 if __name__ == "__main__":

@@ -73,25 +73,53 @@ def ray_sphere_diagram(png, cases, width_px, height_px):
         plt.close(fig)
 
 
-def bench_error_plot(csv_path, png, width_px, height_px):
+def _legend_clear_of_data(fig, ax, legend):
+    """True when no data point, nor any point along the lines between them, lies inside the
+    legend's box (display pixels)."""
+    import numpy as np
+    fig.canvas.draw()
+    box = legend.get_window_extent(fig.canvas.get_renderer())
+    for line in ax.get_lines():
+        x, y = (np.asarray(v, float) for v in line.get_data())
+        if len(x) == 0:
+            continue
+        # along each segment, evenly in log space (the axes are log-log)
+        t = np.linspace(0.0, 1.0, 20)[:, None]
+        lx, ly = np.log(x), np.log(y)
+        sx = np.exp(lx[:-1] + t * (lx[1:] - lx[:-1])).ravel() if len(x) > 1 else x
+        sy = np.exp(ly[:-1] + t * (ly[1:] - ly[:-1])).ravel() if len(y) > 1 else y
+        pts = ax.transData.transform(np.column_stack([np.concatenate([x, sx]),
+                                                      np.concatenate([y, sy])]))
+        if np.any((pts[:, 0] > box.x0) & (pts[:, 0] < box.x1) &
+                  (pts[:, 1] > box.y0) & (pts[:, 1] < box.y1)):
+            return False
+    return True
+
+
+def bench_error_plot(csv_path, png, width_px, height_px, extra=(), drop=()):
     """`lightpath bench error`'s CSV as the slide shows it: RMSE against CPU seconds, log-log,
-    one panel per scene, one line per integrator and sampler (radiosity: per patch budget)."""
+    one panel per scene, one line per integrator and sampler (radiosity: per patch budget).
+
+    extra: more rows (dicts with the CSV's keys) measured by the generator; drop: scenes of the
+    CSV left out (replaced by extra). Each legend stands beside its axes; returns False when a
+    legend covers data all the same (_legend_clear_of_data)."""
     import csv
     series = {}
     with open(csv_path, newline="") as f:
-        for row in csv.DictReader(f):
-            name = (f"{row['integrator']} {row['sampler']}"
-                    if row["integrator"] in ("path", "bdpt") else row["integrator"])
-            key = (row["scene"], name)
-            series.setdefault(key, []).append((float(row["seconds"]), float(row["rmse"])))
+        rows = [r for r in csv.DictReader(f) if r["scene"] not in drop] + list(extra)
+    for row in rows:
+        name = (f"{row['integrator']} {row['sampler']}"
+                if row["integrator"] in ("path", "bdpt") else row["integrator"])
+        key = (row["scene"], name)
+        series.setdefault(key, []).append((float(row["seconds"]), float(row["rmse"])))
     scenes = sorted({s for s, _ in series})
     if not scenes:
         raise ValueError(f"{csv_path}: no rows")
     cols = min(len(scenes), 2)
-    rows = math.ceil(len(scenes) / cols)
+    nrows = math.ceil(len(scenes) / cols)
     style = dict(SLIDE_STYLE, **{"font.size": 20, "lines.linewidth": 3})
     with plt.rc_context(style):
-        fig, axes = plt.subplots(rows, cols, figsize=(width_px / DPI, height_px / DPI), dpi=DPI,
+        fig, axes = plt.subplots(nrows, cols, figsize=(width_px / DPI, height_px / DPI), dpi=DPI,
                                  squeeze=False)
         for ax, scene in zip(axes.flat, scenes):
             for (s, name), points in sorted(series.items()):
@@ -101,16 +129,21 @@ def bench_error_plot(csv_path, png, width_px, height_px):
                               label=name)
             ax.set_title(scene)
             ax.grid(alpha=0.3, which="both")
-            ax.legend(fontsize=16, ncol=2)
         for ax in axes[-1]:
             ax.set_xlabel("CPU seconds (one thread)")
         for ax in axes[:, 0]:
             ax.set_ylabel("RMSE")
         for ax in list(axes.flat)[len(scenes):]:
             ax.axis("off")
+        # each legend beside its axes, never over data (the furnace's lines leave no room inside)
+        for ax in list(axes.flat)[:len(scenes)]:
+            ax.legend(fontsize=16, loc="upper left", bbox_to_anchor=(1.01, 1.0), framealpha=0.9)
         fig.tight_layout()
+        clear = all(_legend_clear_of_data(fig, ax, ax.get_legend())
+                    for ax in list(axes.flat)[:len(scenes)])
         fig.savefig(png)
         plt.close(fig)
+    return clear
 
 
 LPE_PT = 27  # 37.5 px at 100 dpi: the issue's 36 px for LPE captions at 1080p
@@ -125,70 +158,136 @@ def _segments_2d(vertices, drop=None):
     return list(zip(pts, pts[1:]))
 
 
+PATH_LW = 6          # px/1.39 (points at 100 dpi): each path's line, thick enough to follow
+PATH_SPACING = 9     # dots between the parallel lines of paths that share a segment
+LABEL_BOX = dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85)
+
+
 def _scene_top_view(ax, scene, bunny_points):
     """The scene seen from above (x right, z down the page, as serve's top view): walls and
-    triangles as lines, balls as circles, meshes as their vertices, lights and the eye."""
+    triangles as lines, balls as circles, meshes as their vertices, lights and the eye. Returns
+    the markers drawn [(x, z, size in points)] and the labels [Text], for the collision check:
+    each label stands beside its marker (balls: below the circle), never on it."""
+    markers, labels = [], []
     for t in scene.get("triangles", []):
         v = t["vertices"] + [t["vertices"][0]]
         ax.plot([p[0] for p in v], [p[2] for p in v], color="#888", lw=3, zorder=1)
     for s in scene.get("spheres", []):
-        ax.add_patch(plt.Circle((s["center"][0], s["center"][2]), s["radius"], fill=False,
-                                color="#aaa", lw=3, zorder=1))
-        ax.text(s["center"][0], s["center"][2], s["name"], ha="center", va="center",
-                fontsize=16, color="#555")
+        x, z, r = s["center"][0], s["center"][2], s["radius"]
+        ax.add_patch(plt.Circle((x, z), r, fill=False, color="#aaa", lw=3, zorder=1))
+        labels.append(ax.text(x, z - r - 0.15, s["name"], ha="center", va="bottom", fontsize=18,
+                              color="#444", bbox=LABEL_BOX, zorder=5))
     for pts in bunny_points:
         ax.plot(pts[:, 0], pts[:, 2], ",", color="#bbb", zorder=0)
     for light in scene.get("lights", []):
-        ax.plot(light["position"][0], light["position"][2], "*", ms=28, color="#f5c518",
-                mec="k", zorder=4)
-        ax.text(light["position"][0] + 0.15, light["position"][2], light["name"], fontsize=18,
-                va="center")
+        x, z = light["position"][0], light["position"][2]
+        ax.plot(x, z, "*", ms=28, color="#f5c518", mec="k", zorder=4)
+        markers.append((x, z, 28))
+        labels.append(ax.annotate(light["name"], (x, z), xytext=(20, 0), textcoords="offset points",
+                                  fontsize=22, va="center", bbox=LABEL_BOX, zorder=5))
     eye = scene["camera"]["eye"]
     ax.plot(eye[0], eye[2], "s", ms=16, color="k", zorder=4)
-    ax.text(eye[0] + 0.15, eye[2], "eye", fontsize=18, va="center")
+    markers.append((eye[0], eye[2], 16))
+    labels.append(ax.annotate("eye", (eye[0], eye[2]), xytext=(16, 0), textcoords="offset points",
+                              fontsize=22, va="center", bbox=LABEL_BOX, zorder=5))
+    return markers, labels
+
+
+def _label_collisions(fig, ax, markers, labels):
+    """Pairs (label, what it overlaps) among the top view's labels and markers, in display
+    pixels after drawing: a marker is the square of its size around its centre."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in labels]
+    found = []
+    for i, (name, box) in enumerate(boxes):
+        for x, z, size in markers:
+            cx, cy = ax.transData.transform((x, z))
+            half = size * fig.dpi / 72 / 2
+            if box.x0 < cx + half and cx - half < box.x1 and box.y0 < cy + half and cy - half < box.y1:
+                found.append((name, f"the marker at ({x:g}, {z:g})"))
+        for other, obox in boxes[i + 1:]:
+            if box.overlaps(obox):
+                found.append((name, f"the label '{other}'"))
+    return found
+
+
+def _offset(fig, ax, segment, k):
+    """A transform that shifts a segment k * PATH_SPACING dots sideways (perpendicular to it on
+    the page), so that paths sharing a segment are drawn as parallel lines, each visible."""
+    from matplotlib.transforms import offset_copy
+    (x0, y0), (x1, y1) = ax.transData.transform(segment[0]), ax.transData.transform(segment[1])
+    length = math.hypot(x1 - x0, y1 - y0) or 1.0
+    nx, ny = -(y1 - y0) / length, (x1 - x0) / length
+    return offset_copy(ax.transData, fig=fig, x=nx * k * PATH_SPACING, y=ny * k * PATH_SPACING,
+                       units="dots")
 
 
 def pixel_paths_plot(png, image, pixel, paths, scene, bunny_points, width_px, height_px):
     """Left: the rendered image with every path's segments drawn over it (projected with the
     scene's camera by `explain --json`); right: the same paths seen from above. Each path in its
-    colour, labelled with its LPE in the legend below.
+    colour, sideways from the others where they share a segment, and its LPE in the legend below
+    in the same colour.
 
-    paths: [(lpe, vertices [[x, y, z] | None], segments [[x0, y0, x1, y1] | None])]."""
+    paths: [(lpe, vertices [[x, y, z] | None], segments [[x0, y0, x1, y1] | None])].
+    Returns {"collisions": the top view's overlapping labels (_label_collisions),
+    "colour_pixels": for each path, the pixels of the saved PNG in its colour}."""
+    import numpy as np
     h, w = image.shape[:2]
     with plt.rc_context(SLIDE_STYLE):
         fig = plt.figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
         legend_h = (LPE_PT * 1.45 / 72 * DPI) * len(paths) / height_px + 0.02
         image_ax = fig.add_axes((0.01, legend_h + 0.02, 0.56, 0.97 - legend_h))
-        top_ax = fig.add_axes((0.60, legend_h + 0.06, 0.39, 0.86 - legend_h))
+        top_ax = fig.add_axes((0.60, legend_h + 0.04, 0.39, 0.95 - legend_h))
         image_ax.imshow(image, extent=(0, w, h, 0), interpolation="nearest")
         image_ax.set_xlim(0, w)
         image_ax.set_ylim(h, 0)
         image_ax.axis("off")
-        _scene_top_view(top_ax, scene, bunny_points)
+        markers, labels = _scene_top_view(top_ax, scene, bunny_points)
+        top_ax.set_aspect("equal")
+        top_ax.invert_yaxis()  # z grows down the page, toward the eye
+        fig.canvas.draw()  # the axes' final limits, for the sideways offsets in dots
         handles = []
         for i, (lpe, vertices, segments) in enumerate(paths):
             colour = PATH_COLOURS[i % len(PATH_COLOURS)]
-            offset = (i - (len(paths) - 1) / 2) * 0.6  # a fan of parallel lines, each visible
+            k = i - (len(paths) - 1) / 2  # a fan of parallel lines, each visible
             for s in segments:
                 if s is not None:
-                    image_ax.plot([s[0] + offset, s[2] + offset], [s[1], s[3]], color=colour,
-                                  lw=4, solid_capstyle="round")
-                    image_ax.plot([s[2] + offset], [s[3]], "o", ms=9, color=colour)
+                    seg = ((s[0], s[1]), (s[2], s[3]))
+                    t = _offset(fig, image_ax, seg, k)
+                    image_ax.plot([s[0], s[2]], [s[1], s[3]], color=colour, lw=PATH_LW,
+                                  solid_capstyle="round", transform=t, zorder=3)
+                    image_ax.plot([s[2]], [s[3]], "o", ms=11, color=colour, transform=t, zorder=3)
             for a, b in _segments_2d(vertices):
-                top_ax.plot([a[0], b[0]], [a[1], b[1]], color=colour, lw=3, zorder=3)
-                top_ax.plot([b[0]], [b[1]], "o", ms=8, color=colour, zorder=3)
-            handles.append(plt.Line2D([], [], color=colour, lw=6, label=lpe))
+                t = _offset(fig, top_ax, (a, b), k)
+                top_ax.plot([a[0], b[0]], [a[1], b[1]], color=colour, lw=PATH_LW - 1,
+                            transform=t, zorder=3)
+                top_ax.plot([b[0]], [b[1]], "o", ms=9, color=colour, transform=t, zorder=3)
+            handles.append(plt.Line2D([], [], color=colour, lw=10, label=lpe))
         image_ax.add_patch(plt.Circle((pixel[0] + 0.5, pixel[1] + 0.5), w / 40, fill=False,
                                       ec="white", lw=3))
-        top_ax.set_aspect("equal")
-        top_ax.invert_yaxis()  # z grows down the page, toward the eye
         top_ax.set_xlabel("x")
         top_ax.set_ylabel("z")
         top_ax.set_title("from above", fontsize=26)
-        fig.legend(handles=handles, loc="lower center", ncol=1, fontsize=LPE_PT, frameon=False,
-                   bbox_to_anchor=(0.5, 0.0), handlelength=1.5, borderpad=0.1, labelspacing=0.25)
+        legend = fig.legend(handles=handles, loc="lower center", ncol=1, fontsize=LPE_PT,
+                            frameon=False, bbox_to_anchor=(0.5, 0.0), handlelength=1.5,
+                            borderpad=0.1, labelspacing=0.25)
+        for text, handle in zip(legend.get_texts(), handles):
+            text.set_color(handle.get_color())  # the legend linked to its line by colour
+        collisions = _label_collisions(fig, top_ax, markers, labels)
+        views = [ax.get_window_extent() for ax in (image_ax, top_ax)]
         fig.savefig(png, facecolor="white")
         plt.close(fig)
+    import matplotlib.image as mpimg
+    saved = mpimg.imread(png)[..., :3]
+    rows = saved.shape[0]
+    colour_pixels = []  # per path, the fewest of its pixels in either view (the legend aside)
+    for i in range(len(paths)):
+        rgb = np.array(matplotlib.colors.to_rgb(PATH_COLOURS[i % len(PATH_COLOURS)]))
+        near = np.abs(saved - rgb).max(axis=2) < 0.06
+        colour_pixels.append(min(int(near[rows - int(v.y1):rows - int(v.y0), int(v.x0):int(v.x1)].sum())
+                                 for v in views))
+    return {"collisions": collisions, "colour_pixels": colour_pixels}
 
 
 def automaton_with_states(png, automaton_png, rows, width_px, height_px):

@@ -99,7 +99,8 @@ def four_methods(fig):
     panels = [Panel(exrs[integ], label, lpe) for integ, label, lpe in METHODS[:3]]
     panels += [Panel(exrs["radiosity"], "radiosity", "ED*L"),
                Panel(exrs["path"], "path tracing: indirect", "ES*(D|G)(D|G|S)+L", layer="indirect"),
-               Panel(exrs["bdpt"], "bdpt: caustics", "E(D|G)S+<L.>", layer="caustic")]
+               Panel(exrs["bdpt"], "bdpt: caustics, x4", "E(D|G)S+<L.>", layer="caustic",
+                     exposure=4.0)]
     notes.append(check_panel_lpes(fig, panels))
     fig.compose(panels, cols=3)
     return notes
@@ -174,17 +175,22 @@ def decomposition(fig):
 def szymczak(fig):
     run = fig.run
     exr = render(run, fig.id, "szymczak", fig.scene(0), "--integrator", "raycast",
-                 "--resolution", run.res(640, 480), "--spp", run.spp_direct,
+                 "--resolution", run.res_for(slide.cell_aspect(6, 3)), "--spp", run.spp_direct,
                  "--lpe", "ambient=ED<L.'ambient'>", "--lpe", "diffuse=ED<L.'lamp'>",
-                 "--lpe", "specular=EG<L.'lamp'>", "--lpe", "background=EB")
+                 "--lpe", "specular=EG<L.'lamp'>", "--lpe", "background=EB",
+                 "--lpe", "lamp=E(D|G)<L.'lamp'>")
     worst = checks.check_sum(exr, ["ambient", "diffuse", "specular", "background"])
+    # the sixth panel, the lamp's whole term, is the diffuse and specular panels together
+    lamp_worst = checks.check_sum(exr, ["diffuse", "specular"], total="lamp")
     panels = [Panel(exr, "ambient ka Ia", "ED<L.'ambient'>", layer="ambient"),
               Panel(exr, "diffuse kd N.L I/att", "ED<L.'lamp'>", layer="diffuse"),
               Panel(exr, "specular ks (H.N)^n", "EG<L.'lamp'>", layer="specular"),
               Panel(exr, "background", "EB", layer="background"),
+              Panel(exr, "the lamp: diffuse + specular", "E(D|G)<L.'lamp'>", layer="lamp"),
               Panel(exr, "total: the beauty", "= the sum of the four")]
-    fig.compose(panels)
-    return [f"ambient + diffuse + specular + background = beauty (worst pixel {worst:.2g})"]
+    fig.compose(panels, cols=3)
+    return [f"ambient + diffuse + specular + background = beauty (worst pixel {worst:.2g})",
+            f"diffuse + specular = the lamp's E(D|G)<L.'lamp'> (worst pixel {lamp_worst:.2g})"]
 
 
 def exponent(fig):
@@ -215,9 +221,11 @@ def attenuation(fig):
     for i, (label, att, intensity, note) in enumerate(cases):
         scene = scene_variant(fig.dir, fig.scene(0).name, f"attenuation-{i}",
                               intensity=intensity, attenuation=att)
+        # three tall panels side by side: the row of balls receding, as high as the frame
         exr = render(run, fig.id, f"attenuation-{i}", scene, "--integrator", "raycast",
-                     "--resolution", run.res(640, 360), "--spp", run.spp_direct)
-        panels.append(Panel(exr, f"{label}  [c0,c1,c2] = {att}", note))
+                     "--resolution", run.res_for(slide.cell_aspect(3, 3), 640),
+                     "--spp", run.spp_direct)
+        panels.append(Panel(exr, f"{label}: {att}", note))
     fig.compose(panels)
 
 
@@ -232,6 +240,7 @@ def shadow_scene(fig, s):
 # floor left of it, where acne shows, and the contact, where a detached shadow shows.
 ACNE_CROP = (0.2, 0.3, 0.6, 0.7)  # 16:9, as the panels
 ACNE_MIN_FRACTION = 0.01  # of the inset's pixels darker than the robust render's: acne shows
+ACNE_SPP = 4              # the samples per pixel of the shadow renders (4: the slides' before)
 ACNE_DARKER = 0.8          # "darker": below this fraction of the robust render's luminance
 
 
@@ -253,8 +262,10 @@ def shadow_acne(fig):
              (2e-4, ["--ray-offset", "epsilon", "--epsilon", "1e-4"], "eps 1e-4",
               "scale 2e-4: detached", False),
              (1e3, [], "robust offset", "scale 1e3: right", False)]
+    # at most ACNE_SPP samples: more anti-aliasing averages the acne's speckles into a tone
     exrs = [render(run, fig.id, f"shadow-{i}", shadow_scene(fig, s), *opts,
-                   "--resolution", run.res(640, 360), "--spp", run.spp_direct)
+                   "--resolution", run.res_for(slide.cell_aspect(8, 4)),
+                   "--spp", min(run.spp_direct, ACNE_SPP))
             for i, (s, opts, _, _, _) in enumerate(cases)]
     # the insets must show what their labels say: acne where there is, none from the robust offset
     notes = []
@@ -349,27 +360,108 @@ def automaton(fig):
     run = fig.run
     dot, png = fig.dir / "automaton.dot", fig.dir / "automaton.png"
     dot.write_text(sh(run, [run.lightpath, "lpe", "dot", "E[S*](D|G)L"], capture=True))
-    sh(run, ["dot", "-Tpng", "-Gdpi=200", "-Gfontname=DejaVu Sans", "-Nfontname=DejaVu Sans",
+    # Laid out to the slide's one cell (ratio=fill spreads the states over it; the size in
+    # inches at DOT_DPI is the cell's pixels), so that the graph fills the frame
+    w, h = full_slide_px()
+    sh(run, ["dot", "-Tpng", f"-Gdpi={DOT_DPI}", f"-Gsize={w / DOT_DPI:.3f},{h / DOT_DPI:.3f}!",
+             "-Gratio=fill", "-Gfontname=DejaVu Sans", "-Nfontname=DejaVu Sans",
              "-Efontname=DejaVu Sans", "-o", png, dot])
     fig.compose([Panel(png, "E[S*](D|G)L, minimised", "lightpath lpe dot | dot -Tpng")])
+
+
+DOT_DPI = 200  # Graphviz's 14 pt labels at 200 dpi: 39 px on the slide (MIN_TEXT_PX 36)
+
+
+# The mirror caustic measured here, on the beauty: budgets of 1 to 256 spp on one thread, each
+# against bdpt at REFERENCE_SPP (its own seed), a converged image that holds the caustic.
+CAUSTIC_BUDGETS = [1 << k for k in range(9)]
+REFERENCE_SPP = 4096
+BIAS_FLAT = 0.8    # the path tracer's error at 256 spp keeps this share of its error at 32 spp
+BIAS_ABOVE = 1.5   # and ends this many times above bdpt's: its error is bias, bdpt's noise
+
+
+def caustic_error_rows(fig):
+    """RMSE of the beauty against seconds for path and bdpt on the mirror caustic: rows as
+    bench error's CSV has them. The reference is bdpt at REFERENCE_SPP with another seed; the
+    seconds are each budget's samples at the rate of the largest budget's render on one thread
+    (render_seconds: its own time, without loading the scene or starting the process)."""
+    run, scene = fig.run, fig.scene(0)
+    reference = fig.dir / "reference.exr"  # render() fixes seed 1: the budgets' seed
+    sh(run, [run.lightpath, "render", scene, "-o", reference, "--seed", 2, "--quiet",
+             "--integrator", "bdpt", "--spp", REFERENCE_SPP, "--aovs", "none"])
+    truth = checks.layer(reference, "")
+    rows = []
+    for integ in ("path", "bdpt"):
+        exrs = [render(run, fig.id, f"{integ}-{spp}", scene, "--integrator", integ,
+                       "--spp", spp, "--threads", 1, "--aovs", "none") for spp in CAUSTIC_BUDGETS]
+        # seconds per sample from the largest budget: the small renders' times are their
+        # set-up's (a constant share) and the machine's noise
+        per_sample = render_seconds(exrs[-1]) / CAUSTIC_BUDGETS[-1]
+        for spp, exr in zip(CAUSTIC_BUDGETS, exrs):
+            rmse = float(np.sqrt(((checks.layer(exr, "") - truth) ** 2).mean()))
+            rows.append({"scene": "mirror-caustic (beauty)", "integrator": integ,
+                         "sampler": "sobol", "spp": spp, "seconds": spp * per_sample,
+                         "rmse": rmse})
+    return rows
+
+
+def render_seconds(exr):
+    """The seconds the render itself took, as lightpath writes them into the EXR's header."""
+    import OpenImageIO as oiio
+    inp = oiio.ImageInput.open(str(exr))
+    if inp is None:
+        raise FigureError(f"{exr}: cannot open: {oiio.geterror()}")
+    value = inp.spec().getattribute("lightpath:seconds")
+    inp.close()
+    if value is None:
+        raise FigureError(f"{exr}: no lightpath:seconds in its header")
+    return max(float(value), 1e-4)
+
+
+def check_bias(rows):
+    """The lesson of the caustic panel: the path tracer's error is its bias (it stops falling,
+    at a level above bdpt's), bdpt's is noise (it falls)."""
+    err = {(r["integrator"], r["spp"]): r["rmse"] for r in rows}
+    last, mid = CAUSTIC_BUDGETS[-1], CAUSTIC_BUDGETS[-4]
+    flat = err[("path", last)] / err[("path", mid)]
+    above = err[("path", last)] / err[("bdpt", last)]
+    if not flat >= BIAS_FLAT:
+        raise FigureError(f"mirror caustic: the path tracer's error falls to {flat:.2f} of itself "
+                          f"from {mid} to {last} spp (< {BIAS_FLAT}): it is not bias")
+    if not above >= BIAS_ABOVE:
+        raise FigureError(f"mirror caustic: the path tracer's error at {last} spp is {above:.2f} "
+                          f"times bdpt's (< {BIAS_ABOVE}): the slide would not show its bias")
+    return flat, above
 
 
 def run_time_error(fig):
     run = fig.run
     csv, png = fig.dir / "bench-error.csv", fig.dir / "bench-error.png"
     # The full benchmark renders a 4096-spp reference; both modes use --quick (closed-form
-    # scenes, budgets up to 32 spp) so that the figures stay within minutes.
+    # scenes, budgets up to 32 spp) so that the figures stay within minutes. Its mirror caustic
+    # measures the caustic's AOV alone; the slide measures the beauty instead (below).
     sh(run, [run.lightpath, "bench", "error", "--quick", "--csv", csv, "--cache", fig.dir / "cache"])
-    plots.bench_error_plot(csv, png, *full_slide_px())
-    fig.note_command("python3 lectures/plots.py: bench_error_plot of bench-error.csv")
+    caustic = caustic_error_rows(fig)
+    flat, above = check_bias(caustic)
+    clear = plots.bench_error_plot(csv, png, *full_slide_px(), extra=caustic,
+                                   drop={"mirror-caustic"})
+    fig.note_command("python3 lectures/plots.py: bench_error_plot of bench-error.csv and the "
+                     "mirror caustic's beauty against bdpt at 4096 spp")
+    if not clear:
+        raise FigureError(f"{png}: a legend covers data in every place tried")
     fig.compose([Panel(png, "RMSE against CPU seconds, log-log", "lightpath bench error --quick")])
+    return [f"mirror caustic: the path tracer's error from {CAUSTIC_BUDGETS[-4]} to "
+            f"{CAUSTIC_BUDGETS[-1]} spp keeps {flat:.0%} of itself (bar {BIAS_FLAT:.0%}) and ends "
+            f"{above:.1f} x bdpt's (bar {BIAS_ABOVE:g}): its bias",
+            "no legend covers a data point or line"]
 
 
 def light_groups(fig):
     run = fig.run
     groups = [("red", "red-lamp"), ("green", "green-lamp"), ("blue", "blue-lamp"),
               ("ambient", "ambient")]
-    exr = render(run, fig.id, "groups", fig.scene(0), "--resolution", run.res(640, 480),
+    exr = render(run, fig.id, "groups", fig.scene(0),
+                 "--resolution", run.res_for(slide.cell_aspect(6, 3)),
                  "--spp", run.spp_direct,
                  *sum((["--lpe", f"{n}=E.*<L.'{l}'>"] for n, l in groups), []),
                  "--lpe", "background=E.*B")
@@ -386,13 +478,23 @@ def ambient(fig):
     w, p = exrs["whitted"], exrs["path"]
     checks.check_nonzero(p, "bounced", "what ambient stands for")
     checks.check_caption_objects(fig.caption, fig.scene(0))
+    # Right column: where the guess is wrong, signed (the nest's diverging scale and median)
+    wl, pl = checks.read_layers(w), checks.read_layers(p)
+    (beauty_diff, term_diff), scale = checks.diverging_exrs(
+        [pl[""] - wl[""], pl["bounced"] - wl["ambient"]],
+        [fig.dir / "path-minus-whitted.exr", fig.dir / "bounced-minus-ambient.exr"],
+        radius=NEST_SMOOTH_RADIUS)
     panels = [Panel(w, "Whitted: beauty", METHODS[1][2]),
               Panel(p, "path tracer: beauty", METHODS[2][2]),
+              Panel(beauty_diff, "path - Whitted", "red +, blue -, white 0"),
               Panel(w, "ambient term ka Ia", "E.*<L.'ambient'>", layer="ambient"),
-              Panel(p, "what it stands for", "ES*D(D|G|S)+L", layer="bounced")]
+              Panel(p, "what it stands for", "ES*D(D|G|S)+L", layer="bounced"),
+              Panel(term_diff, "bounced - ambient", "where the guess is wrong")]
     notes = [check_panel_lpes(fig, panels),
-             "every object the caption names is in the scene, as often as it says"]
-    fig.compose(panels, cols=2)
+             "every object the caption names is in the scene, as often as it says",
+             f"signed differences: full red or blue at +-{scale:.3g}, each pixel the median of "
+             f"{2 * NEST_SMOOTH_RADIUS + 1}x{2 * NEST_SMOOTH_RADIUS + 1}"]
+    fig.compose(panels, cols=3)
     return notes
 
 
@@ -432,8 +534,10 @@ def bounce_by_bounce(fig):
 
 def patch_mesh(fig):
     run = fig.run
-    budgets = [256, run.patches]
-    panels, notes = [], []
+    # five budgets, doubling up to the one the other radiosity figures use: square panels in
+    # five columns fill the frame (flat above, smooth below)
+    budgets = [run.patches >> k for k in range(4, -1, -1)]
+    flat_panels, smooth_panels, notes = [], [], []
     for budget in budgets:
         exrs = {}
         for display in ("flat", "smooth"):
@@ -446,31 +550,70 @@ def patch_mesh(fig):
         flat, smooth = (checks.layer(exrs[k], "") for k in ("flat", "smooth"))
         diff = checks.check_close(smooth, flat, 0.1, f"{budget} patches: smooth against flat")
         notes.append(f"{budget} patches: smooth and flat means differ by {diff:.3g}")
-        panels += [Panel(exrs["flat"], f"{budget} patches, flat", "--radiosity-display flat"),
-                   Panel(exrs["smooth"], f"{budget}, smooth", "vertex radiosities")]
-    fig.compose(panels)
+        flat_panels.append(Panel(exrs["flat"], f"{budget} patches", "flat"))
+        smooth_panels.append(Panel(exrs["smooth"], f"{budget}", "smooth"))
+    fig.compose(flat_panels + smooth_panels, cols=len(budgets))
     return notes
+
+
+CAUSTIC_ZOOM = 3          # the insets: a third of the image's width and height, around the focus
+CAUSTIC_SHARE = 0.5       # of the caustic's light inside the inset: focused, not spread
+CAUSTIC_CONTRAST = 2.0    # its peak against the brightest tenth of the path tracer's image
+
+
+def check_caustic_in_view(caustic_exr, path_exr):
+    """The caustic is seen and focused: the inset centred on the caustic's light holds at least
+    CAUSTIC_SHARE of it, and its peak (median of 3x3, so no single firefly) outshines the lit
+    floor, the 90th percentile of the path tracer's luminance, CAUSTIC_CONTRAST times. Returns
+    (crop, share, contrast)."""
+    c = checks.median_filter(checks.luminance(checks.layer(caustic_exr, "caustic")), 1)
+    h, w = c.shape
+    ys, xs = np.mgrid[0:h, 0:w]
+    total = float(c.sum())
+    if total <= 0.0:
+        raise FigureError(f"{caustic_exr}: no caustic light to centre the inset on")
+    cx, cy = float((xs * c).sum() / total) / w, float((ys * c).sum() / total) / h
+    half = 0.5 / CAUSTIC_ZOOM
+    x0, y0 = min(max(cx - half, 0.0), 1.0 - 2 * half), min(max(cy - half, 0.0), 1.0 - 2 * half)
+    crop = (x0, y0, x0 + 2 * half, y0 + 2 * half)
+    cut = (slice(round(crop[1] * h), round(crop[3] * h)), slice(round(crop[0] * w), round(crop[2] * w)))
+    share = float(c[cut].sum()) / total
+    floor = float(np.percentile(checks.luminance(checks.layer(path_exr, "")), 90))
+    contrast = float(c.max()) / max(floor, 1e-6)
+    if not share >= CAUSTIC_SHARE:
+        raise FigureError(f"{caustic_exr}: the inset around the caustic holds {share:.0%} of its "
+                          f"light (< {CAUSTIC_SHARE:.0%}): the caustic is spread or out of view")
+    if not contrast >= CAUSTIC_CONTRAST:
+        raise FigureError(f"{caustic_exr}: the caustic's peak is {contrast:.2g} times the lit "
+                          f"floor (< {CAUSTIC_CONTRAST:g}): it is not focused where it can be seen")
+    return crop, share, contrast
 
 
 def caustics(fig):
     run = fig.run
+    res = run.res_for(slide.cell_aspect(6, 3))
     exrs = {}
-    for integ in ("path", "bdpt"):
+    for integ, spp in (("path", run.spp_path), ("bdpt", run.spp_caustic)):
         exrs[integ] = render(run, fig.id, integ, fig.scene(0), "--integrator", integ,
-                             "--spp", run.spp_path, "--resolution", run.res(640, 480),
+                             "--spp", spp, "--resolution", res,
                              "--aovs", "classes", "--lpe", CAUSTIC)
         checks.check_sum(exrs[integ], CLASS_NAMES)
     # a small bright spot: its image mean is small, so the bar is low (but far above zero)
     mean = checks.check_nonzero(exrs["bdpt"], "caustic", "bdpt's caustic", min_mean=1e-4)
     checks.check_zero(exrs["path"], "caustic", "the path tracer's caustic under a point light")
-    strategies = check_caustic_strategy(run, fig.scene(0), exrs["bdpt"], run.res(640, 480))
+    strategies = check_caustic_strategy(run, fig.scene(0), exrs["bdpt"], res)
+    crop, share, contrast = check_caustic_in_view(exrs["bdpt"], exrs["path"])
     panels = [Panel(exrs["path"], "path tracing", "caustic: E(D|G)S+<L.> = 0"),
               Panel(exrs["bdpt"], "bidirectional (bdpt)", "the same light transport"),
-              Panel(exrs["bdpt"], "bdpt: the caustic, x4", "E(D|G)S+<L.>", layer="caustic",
-                    exposure=4.0)]
+              Panel(exrs["bdpt"], "bdpt: the caustic", "E(D|G)S+<L.>", layer="caustic")]
+    panels += [Panel(p.source, f"zoom x{CAUSTIC_ZOOM}", p.below if i == 2 else "",
+                     layer=p.layer, crop=crop) for i, p in enumerate(panels)]
     fig.compose(panels, cols=3)
-    return [f"bdpt's caustic: mean luminance {mean:.3g}; the path tracer's: exactly 0",
+    return [f"bdpt ({run.spp_caustic} spp): the caustic's mean luminance {mean:.3g}; the path "
+            "tracer's: exactly 0",
             "both: classes sum to the beauty",
+            f"the inset holds {share:.0%} of the caustic's light (bar {CAUSTIC_SHARE:.0%}); its "
+            f"peak is {contrast:.1f} x the lit floor (bar {CAUSTIC_CONTRAST:g})",
             f"the caustic's brightest pixel: {strategies}"]
 
 
@@ -562,14 +705,15 @@ RASTER_TOLERANCE = 1e-4  # relative: rounding of two formulas for one point (tes
 def raster_vs_raycast(fig):
     run = fig.run
     scene = fig.scene(0)
-    common = ["--resolution", run.res(640, 480), "--spp", 1, "--aovs", "classes"]
+    res = run.res_for(slide.cell_aspect(6, 3))  # six panels, three columns: filling the frame
+    common = ["--resolution", res, "--spp", 1, "--aovs", "classes"]
     raster = render(run, fig.id, "raster", scene, "--integrator", "raster", *common)
     rays = render(run, fig.id, "raycast-no-shadows", scene, "--integrator", "raycast",
                   "--shadows", "off", *common)
     shadowed = render(run, fig.id, "raycast", scene, "--integrator", "raycast", *common)
     id_scene, objects = object_id_scene(scene, fig.dir / "object-ids.toml")
     ids_exr = render(run, fig.id, "object-ids", id_scene, "--integrator", "raycast",
-                     "--resolution", run.res(640, 480), "--spp", 1, "--aovs", "none")
+                     "--resolution", res, "--spp", 1, "--aovs", "none")
     ids = np.rint(checks.layer(ids_exr, "")[..., 0] * ID_SCALE).astype(int)
     if not 1 < len(np.unique(ids)) <= objects + 1:
         raise FigureError(f"{ids_exr}: {len(np.unique(ids))} object ids for {objects} objects")
@@ -603,8 +747,10 @@ def raster_vs_raycast(fig):
     edge_exr = checks.write_exr(edge_rgb, d / "edges.exr")
     panels = [Panel(raster, "rasteriser", "--integrator raster"),
               Panel(rays, "ray casting", "--shadows off"),
-              Panel(diff_exr, "|difference| x 10", f"off the edges: {worst:.1e}"),
-              Panel(edge_exr, "edge pixels", f"{edge_differing} of {int(edge.sum())} differ (red)"),
+              Panel(diff_exr, "|difference| x 10", f"off the edges: {worst:.1e}",
+                    dark="black where the two agree: the point"),
+              Panel(edge_exr, "edge pixels", f"{edge_differing} of {int(edge.sum())} differ (red)",
+                    dark="only the edges are drawn"),
               Panel(shadowed, "ray casting", "with shadow rays"),
               Panel(checks.signed_exr(shadow_gain, d / "shadows-add.exr"),
                     "what shadow rays add", "blue: light they remove")]
@@ -661,12 +807,26 @@ def pixel_paths(fig):
     image = slide.Panel(exr).display()
     w, h = full_slide_px()
     png = fig.dir / "paths.png"
-    plots.pixel_paths_plot(png, image, (x, y), paths, scene, mesh_points(fig.scene(0), scene), w, h)
+    drawn = plots.pixel_paths_plot(png, image, (x, y), paths, scene,
+                                   mesh_points(fig.scene(0), scene), w, h)
     fig.note_command("python3 lectures/plots.py: pixel_paths_plot of explain's vertices and segments")
+    # every path can be told apart: its colour shows in both views, over the others
+    for (lpe, _, _), n in zip(paths, drawn["colour_pixels"]):
+        if n < PATH_MIN_PIXELS:
+            raise FigureError(f"{png}: the path {lpe} shows {n} pixels of its colour in one view "
+                              f"(< {PATH_MIN_PIXELS}): another path covers it")
+    if drawn["collisions"]:
+        raise FigureError(f"{png}: in the top view " + "; ".join(
+            f"the label '{a}' overlaps {b}" for a, b in drawn["collisions"]))
     fig.compose([Panel(png, f"pixel {x},{y}: every path explain finds",
                        "over the image (projected) and from above")])
     return [f"pixel {x},{y}: {len(paths)} paths; their sum is the rendered pixel",
-            "each camera ray's segment ends at the pixel's centre"]
+            "each camera ray's segment ends at the pixel's centre",
+            f"each path shows at least {min(drawn['colour_pixels'])} pixels of its colour in each "
+            f"view (bar {PATH_MIN_PIXELS}); no label of the top view overlaps a marker or a label"]
+
+
+PATH_MIN_PIXELS = 150  # of a path's colour in each view: a line of its own, not hidden
 
 
 def mesh_points(scene_path, scene):

@@ -38,17 +38,26 @@ class Run:
         self.quick = quick
         # Quality: the default is for slides, --quick for CI (2 loaded cores, ctest's 300 s).
         self.scale = 0.5 if quick else 1.0
-        self.spp_direct = 1 if quick else 4      # raycast / Whitted (soft shadows of the area light)
+        # raycast / Whitted: one sample at the pixel centre for CI; anti-aliased (and smooth soft
+        # shadows of the area light) for slides
+        self.spp_direct = 1 if quick else 16
         self.spp_path = 4 if quick else 64       # path tracer and bdpt
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
+        self.spp_caustic = 16 if quick else 256  # bdpt on the caustics slide: a converged focus
         self.commands = []                       # commands of the figure being made
         self.dirs = []                           # folders holding the figure's EXRs
         self.rendered = {}                       # argv -> EXR, so figures share renders
         self.seconds = defaultdict(float)        # wall seconds per tool ("lightpath render", ...)
+        self.noise = {}                          # EXR -> its relative RMSE (measure_noise)
 
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
         return f"{int(w * self.scale)}x{int(h * self.scale)}"
+
+    def res_for(self, aspect, h=360):
+        """A render resolution h pixels high (halved in quick mode) of width/height = aspect:
+        the aspect of the cells a slide's layout gives its panels (slide.cell_aspect)."""
+        return self.res(round(h * aspect), h)
 
     def rel(self, path):
         """A path as the gallery shows it: relative to the repository's root when inside it."""
@@ -97,7 +106,51 @@ def render(run, folder, name, scene, *options):
         return exr
     sh(run, argv)
     run.rendered[key] = exr
+    if not run.quick:
+        measure_noise(run, argv, exr)
     return exr
+
+
+# The quality level of the default figures: every path-traced, bdpt and radiosity render's
+# relative RMSE against a reference at NOISE_REFERENCE_FACTOR times its samples (another seed,
+# cached between runs in out/references/) is measured and printed; NOISE_LEVEL is the level the
+# slides aim at, and a render above it is named in the gallery and the run's summary.
+NOISY_INTEGRATORS = ("path", "bdpt", "radiosity")
+NOISE_REFERENCE_FACTOR = 4
+NOISE_LEVEL = 0.1
+
+
+def relative_rmse(exr, reference):
+    """sqrt(mean((image - reference)^2)) / mean(reference), over the beauty's pixels and channels.
+    Against an independent reference with k times the samples the noise of both counts: this
+    overstates the image's own error by sqrt(1 + 1/k)."""
+    import numpy as np
+    from checks import layer
+    a, b = layer(exr, ""), layer(reference, "")
+    return float(np.sqrt(((a - b) ** 2).mean()) / max(float(b.mean()), 1e-9))
+
+
+def measure_noise(run, argv, exr):
+    """The render's noise against its cached higher-spp reference (NOISE_REFERENCE_FACTOR)."""
+    import hashlib
+    options = argv[argv.index("--quiet") + 1:]
+    get = lambda flag: options[options.index(flag) + 1] if flag in options else None  # noqa: E731
+    if get("--integrator") not in NOISY_INTEGRATORS or get("--spp") is None:
+        return
+    spp = int(get("--spp"))
+    ref_options = list(options)
+    ref_options[ref_options.index("--spp") + 1] = str(spp * NOISE_REFERENCE_FACTOR)
+    ref_argv = [argv[0], "render", argv[2], "--seed", "2", "--quiet", *ref_options]
+    key = hashlib.sha256("\0".join([*ref_argv, Path(argv[2]).read_text()]).encode()).hexdigest()[:16]
+    reference = run.out / "references" / f"{key}.exr"
+    reference.parent.mkdir(parents=True, exist_ok=True)
+    if not reference.is_file():
+        sh(run, ref_argv[:3] + ["-o", str(reference)] + ref_argv[3:], record=False)
+    noise = relative_rmse(exr, reference)
+    run.noise[exr] = noise
+    verdict = "" if noise <= NOISE_LEVEL else f"  ABOVE the level {NOISE_LEVEL}"
+    print(f"  noise {run.rel(exr)}: relative RMSE {noise:.3f} against "
+          f"{spp * NOISE_REFERENCE_FACTOR} spp{verdict}", flush=True)
 
 
 def explain(run, scene, x, y, *options):
