@@ -77,14 +77,14 @@ private:
 
 bool hasMirrorMaterial(const Scene& scene) {
     for (const auto& m : scene.materials) {
-        if (!lightpath::isBlack(lightpath::phongOf(m).kr)) return true;
+        if (!lightpath::isBlack(lightpath::phongOf(m).kr.constant())) return true;
     }
     return false;
 }
 
 bool hasGlassMaterial(const Scene& scene) {
     for (const auto& m : scene.materials) {
-        if (!lightpath::isBlack(lightpath::phongOf(m).kt)) return true;
+        if (!lightpath::isBlack(lightpath::phongOf(m).kt.constant())) return true;
     }
     return false;
 }
