@@ -10,6 +10,7 @@
 #include "accel/bvh_traversal.h"
 #include "geometry/builtin_shapes.h"
 #include "geometry/intersect.h"
+#include "sampling/warp.h"
 #include "util/parallel_chunks.h"
 #ifdef LIGHTPATH_HAS_EMBREE
 #include "accel/embree_accelerator.h"
@@ -49,11 +50,14 @@ bool embreeAvailable() {
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
                              std::vector<TriangleNormals> vertexNormals, unsigned buildThreads,
-                             std::vector<ShapeRecord> shapes)
-    : triangles_(std::move(triangles)), vertexNormals_(std::move(vertexNormals)), numerics_(numerics),
+                             std::vector<ShapeRecord> shapes, std::vector<TriangleUvs> triangleUvs)
+    : triangles_(std::move(triangles)), vertexNormals_(std::move(vertexNormals)), triangleUvs_(std::move(triangleUvs)),
+      numerics_(numerics),
       accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
         throw std::invalid_argument("vertex normals: expected one entry per triangle");
+    if (!triangleUvs_.empty() && triangleUvs_.size() != triangles_.size())
+        throw std::invalid_argument("texture coordinates: expected one entry per triangle");
     shapes_.reserve(spheres.size() + planes.size() + shapes.size());
     for (const Sphere& sphere : spheres) shapes_.push_back(sphereRecord(sphere));
     for (const Plane& plane : planes) shapes_.push_back(planeRecord(plane));
@@ -301,6 +305,55 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id,
         }
     }
     return hit;
+}
+
+namespace {
+
+// Metres along the tangent frame of `normal`: flat shapes' natural coordinates.
+SurfaceParameters planarParameters(const Vec3& point, const Vec3& normal) {
+    const Frame frame(normal);
+    return {Vec2(glm::dot(point, frame.s), glm::dot(point, frame.t)), frame.s, frame.t};
+}
+
+// The barycentric weights of `p` (on the triangle's plane) for a, b, c.
+Vec3 barycentricsOf(const Triangle& tri, const Vec3& p) {
+    const Vec3 e1 = tri.b - tri.a, e2 = tri.c - tri.a, d = p - tri.a;
+    const float d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+    const float dp1 = glm::dot(d, e1), dp2 = glm::dot(d, e2);
+    const float det = d11 * d22 - d12 * d12;
+    if (!(det > 0.0f)) return {1.0f, 0.0f, 0.0f};
+    const float wb = (d22 * dp1 - d12 * dp2) / det, wc = (d11 * dp2 - d12 * dp1) / det;
+    return {1.0f - wb - wc, wb, wc};
+}
+
+}  // namespace
+
+SurfaceParameters SceneGeometry::surfaceParameters(const SurfaceHit& hit) const {
+    if (hit.primitive < shapes_.size()) {
+        const ShapeRecord& shape = shapes_[hit.primitive];
+        if (shape.ops->parametrise != nullptr) return shape.ops->parametrise(shape, hit.point);
+        return planarParameters(hit.point, hit.normal);
+    }
+    const std::uint32_t index = hit.primitive - firstTriangle();
+    if (triangleUvs_.empty() || !triangleUvs_[index].given) return planarParameters(hit.point, hit.normal);
+    const Triangle& tri = triangles_[index];
+    const TriangleUvs& uvs = triangleUvs_[index];
+    const Vec3 w = barycentricsOf(tri, hit.point);
+    SurfaceParameters result;
+    result.uv = w.x * uvs.a + w.y * uvs.b + w.z * uvs.c;
+    // dp/du and dp/dv from the corners (pbrt-v4 6.5.3): solve [duv02 duv12] [dpdu dpdv]^T = [dp02 dp12].
+    const Vec2 duv02 = uvs.a - uvs.c, duv12 = uvs.b - uvs.c;
+    const Vec3 dp02 = tri.a - tri.c, dp12 = tri.b - tri.c;
+    const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+    if (std::abs(det) < 1e-12f) {
+        const SurfaceParameters planar = planarParameters(hit.point, hit.normal);
+        result.dpdu = planar.dpdu;
+        result.dpdv = planar.dpdv;
+        return result;
+    }
+    result.dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
+    result.dpdv = (duv02.x * dp12 - duv12.x * dp02) / det;
+    return result;
 }
 
 }  // namespace lightpath

@@ -49,7 +49,7 @@ public:
     SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes, std::vector<Triangle> triangles,
                   NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
                   std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0,
-                  std::vector<ShapeRecord> shapes = {});
+                  std::vector<ShapeRecord> shapes = {}, std::vector<TriangleUvs> triangleUvs = {});
     // `spheres` and `planes` become the table's first records (geometry/builtin_shapes.h), in
     // that order, before `shapes`.
     // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
@@ -75,6 +75,11 @@ public:
     // (weights of a, b, c) when given — a rasteriser's interpolated coordinates — else from
     // intersecting the triangle again.
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics = nullptr) const;
+
+    // The texture coordinates of a hit and dpdu, dpdv there: a kind's `parametrise`, a triangle's
+    // corner uvs interpolated, else (a triangle without uvs, a kind without one) metres along the
+    // tangent frame of its normal (sampling/warp.h's Frame), from the world's origin.
+    SurfaceParameters surfaceParameters(const SurfaceHit& hit) const;
 
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }
@@ -116,6 +121,7 @@ private:
     std::vector<std::uint32_t> unbounded_;  // ids of the records no box holds (planes): tested apart
     bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
+    std::vector<TriangleUvs> triangleUvs_;        // empty, or one per triangle
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // bounded shapes and triangles (Bvh); no triangles (Embree)

@@ -122,6 +122,10 @@ struct ShapeOps {
     // eye + s direction the nearest point of the surface, for a direction of any length; not
     // positive or not finite where there is none (the plane's n.(p - eye) / n.direction).
     float (*depthAlong)(const ShapeRecord&, const Vec3& eye, const Vec3& direction) = nullptr;
+    // Optional, for textures (nullptr: metres along the tangent frame of the hit's normal,
+    // SceneGeometry::surfaceParameters): the kind's natural parametrisation at a point on it
+    // (the sphere's longitude and latitude, the plane's frame from its point).
+    SurfaceParameters (*parametrise)(const ShapeRecord&, const Vec3& point) = nullptr;
 };
 
 }  // namespace lightpath

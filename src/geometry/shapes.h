@@ -33,6 +33,21 @@ struct TriangleNormals {
     Vec3 a{0.0f}, b{0.0f}, c{0.0f};
 };
 
+// The texture coordinates at a triangle's corners (a mesh's `vt`); `given` false: the triangle
+// has none and is parametrised by its plane (SceneGeometry::surfaceParameters).
+struct TriangleUvs {
+    Vec2 a{0.0f}, b{0.0f}, c{0.0f};
+    bool given = false;
+};
+
+// A surface point's texture coordinates and the surface's derivatives along them (pbrt-v4's
+// dpdu, dpdv): what turns a footprint on the surface into one in texture space.
+struct SurfaceParameters {
+    Vec2 uv{0.0f};
+    Vec3 dpdu{0.0f};
+    Vec3 dpdv{0.0f};
+};
+
 // The smallest emitting area a light samples: below the smallest normal float, the density 1/A
 // per unit area overflows (or has lost its digits), so such an emitter is only seen where a ray
 // hits it. The scene loader warns about emitters below it; LightSet never samples them.

@@ -261,7 +261,7 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     if (lobes.ambient < 0) return;  // no diffuse reflection to carry it
     const lpe::OutputMask accepted = path.acceptsAfter(lobes.after[lobes.ambient], ambient);
     if (!path.wanted(accepted)) return;
-    const Rgb ka = point.material.ambientReflectance();
+    const Rgb ka = point.bsdf.ambientReflectance();
     const Rgb value = throughput * ka * ctx.scene.ambient;
     if (!path.explaining()) {
         path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted);

@@ -14,7 +14,7 @@ namespace lightpath {
 // or nullptr when `interfaceVersion` is not the one it was built with (a stale module).
 inline constexpr const char* kImageCodecEntryPoint = "lightpathImageCodec";
 // Bumped whenever anything in this header changes.
-inline constexpr int kImageCodecInterfaceVersion = 2;
+inline constexpr int kImageCodecInterfaceVersion = 3;
 
 enum class PixelFormat { UInt8, Float32 };
 
@@ -36,6 +36,17 @@ struct ImageData {
     std::vector<float> pixels;
 };
 
+// A filtered texture lookup (OpenImageIO's TextureSystem::texture): the texture coordinates (s, t)
+// of a surface point and their change across one pixel in x and in y, which set the filter.
+struct TextureQuery {
+    float s = 0.0f, t = 0.0f;
+    float dsdx = 0.0f, dtdx = 0.0f, dsdy = 0.0f, dtdy = 0.0f;
+    bool filtered = true;  // false: the finest level's nearest texels, bilinearly (point sampling)
+};
+
+// A texture file opened in the module's one TextureSystem (shared, with its cache); opaque here.
+struct TextureFileHandle;
+
 class ImageCodec {
 public:
     // Writes `pixels` as format `formatName` ("png", "exr") into `file`, whatever its name's
@@ -49,6 +60,15 @@ public:
                                std::vector<unsigned char>& bytes) const = 0;
     // Reads `file` into `image`. Returns an empty string, or why it could not.
     virtual std::string read(const std::string& file, ImageData& image) const = 0;
+    // Opens `file` as a texture (MIP-mapped on first use if it has no levels, tiled, cached);
+    // nullptr with `error` set when it cannot be read. Handles live as long as the process.
+    virtual TextureFileHandle* openTexture(const std::string& file, std::string& error) const = 0;
+    // The filtered RGB of `texture` at `query`, wrapping periodically (a grey image is replicated
+    // into R, G and B). Safe to call from many threads at once: each uses its own per-thread
+    // state of the TextureSystem.
+    virtual void lookupTexture(TextureFileHandle* texture, const TextureQuery& query, float rgb[3]) const = 0;
+    // The mean RGB of the whole texture.
+    virtual void averageTexture(TextureFileHandle* texture, float rgb[3]) const = 0;
 
 protected:
     ~ImageCodec() = default;  // the module owns its codec; it lives as long as the process

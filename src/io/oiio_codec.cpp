@@ -3,6 +3,9 @@
 // nothing but its entry point.
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/texture.h>
+
+#include <algorithm>
 
 #include "io/image_codec.h"
 
@@ -37,7 +40,59 @@ public:
         return {};
     }
 
+    TextureFileHandle* openTexture(const std::string& file, std::string& error) const override {
+        OIIO::TextureSystem& system = textureSystem();
+        OIIO::TextureSystem::TextureHandle* handle = system.get_texture_handle(OIIO::ustring(file));
+        int exists = 0;
+        if (handle == nullptr || !system.get_texture_info(handle, nullptr, 0, OIIO::ustring("exists"), OIIO::TypeInt, &exists) ||
+            exists == 0 || !system.good(handle)) {
+            error = system.geterror();
+            if (error.empty()) error = "cannot open " + file;
+            return nullptr;
+        }
+        return reinterpret_cast<TextureFileHandle*>(handle);
+    }
+
+    void lookupTexture(TextureFileHandle* texture, const TextureQuery& query, float rgb[3]) const override {
+        OIIO::TextureSystem& system = textureSystem();
+        // Each thread's own state, asked once per thread (pbrt and OSL do the same).
+        thread_local OIIO::TextureSystem::Perthread* const perThread = system.get_perthread_info();
+        OIIO::TextureOpt options;
+        options.swrap = options.twrap = OIIO::TextureOpt::WrapPeriodic;
+        if (!query.filtered) {
+            options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
+            options.interpmode = OIIO::TextureOpt::InterpBilinear;
+        }
+        if (!system.texture(reinterpret_cast<OIIO::TextureSystem::TextureHandle*>(texture), perThread, options, query.s,
+                            query.t, query.dsdx, query.dtdx, query.dsdy, query.dtdy, 3, rgb)) {
+            rgb[0] = rgb[1] = rgb[2] = 0.0f;  // opened before the render: only a file changed on disk since
+        }
+    }
+
+    void averageTexture(TextureFileHandle* texture, float rgb[3]) const override {
+        float average[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        OIIO::TextureSystem& system = textureSystem();
+        auto* handle = reinterpret_cast<OIIO::TextureSystem::TextureHandle*>(texture);
+        int channels = 0;
+        system.get_texture_info(handle, nullptr, 0, OIIO::ustring("channels"), OIIO::TypeInt, &channels);
+        system.get_texture_info(handle, nullptr, 0, OIIO::ustring("averagecolor"),
+                                OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, std::max(1, std::min(channels, 4))), average);
+        for (int c = 0; c < 3; ++c) rgb[c] = channels == 1 ? average[0] : average[c];
+    }
+
 private:
+    // One TextureSystem for the process, shared (with its ImageCache), made on first use.
+    static OIIO::TextureSystem& textureSystem() {
+        static OIIO::TextureSystem* const system = [] {
+            OIIO::TextureSystem* made = OIIO::TextureSystem::create(true);
+            made->attribute("automip", 1);      // a plain PNG gets its MIP levels when first read
+            made->attribute("autotile", 64);    // and is cached in tiles
+            made->attribute("gray_to_rgb", 1);  // a grey image is grey, not red
+            return made;
+        }();
+        return *system;
+    }
+
     static std::string writeThrough(const std::string& formatName, const std::string& file, const ImageFileSpec& spec,
                                     const void* pixels, OIIO::Filesystem::IOProxy* proxy) {
         const OIIO::TypeDesc format = spec.format == PixelFormat::Float32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;

@@ -21,9 +21,10 @@ class Bsdf {
 public:
     // `normal`: unit shading normal on the side of the path's outgoing direction. `entering`: that
     // side is the outside of the material (it refracts from 1 into its index of refraction).
+    // `texture`: where its textured parameters are looked up (zero when it has none).
     Bsdf(const Material& material, const Vec3& normal, bool entering,
-         TransportMode mode = TransportMode::Radiance)
-        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode} {}
+         TransportMode mode = TransportMode::Radiance, const TextureFootprint& texture = {})
+        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode, texture} {}
 
     Lobes lobes() const { return lobes_; }
     const LobeInfo& lobe(int index) const { return lobes_[index]; }
@@ -54,6 +55,8 @@ public:
     }
 
     const Vec3& normal() const { return side_.normal; }
+    // ka of the ambient term here (the material's, a texture read at this point).
+    Rgb ambientReflectance() const { return material_.ambientReflectanceAt(side_); }
 
 private:
     // Probability of choosing each lobe for wo, in proportion to its albedo. Integrators ask

@@ -53,11 +53,21 @@ inline constexpr LobeInfo kRefraction{{lpe::EventType::Transmission, lpe::Scatte
 // refraction's 1/eta^2 radiance compression tells them apart (Veach 1997, 5.2; pbrt-v4 9.5.2).
 enum class TransportMode : std::uint8_t { Radiance, Importance };
 
+// Where on a texture a surface point is and the area about it one pixel covers: its texture
+// coordinates and their change from one pixel to the next in x and in y (the filter's footprint,
+// pbrt-v4 10.1). All zero where the material has no texture (nothing reads it there).
+struct TextureFootprint {
+    Vec2 uv{0.0f};
+    Vec2 dUVdx{0.0f};
+    Vec2 dUVdy{0.0f};
+};
+
 // Which side of a surface a path is on, as a material needs it to scatter.
 struct SurfaceSide {
     Vec3 normal{0.0f, 0.0f, 1.0f};  // unit shading normal on the side of the outgoing direction wo
     bool entering = true;           // that side is the material's outside
     TransportMode mode = TransportMode::Radiance;
+    TextureFootprint texture;       // what its textured parameters are looked up at (texture.h)
 
     // Both directions leave the surface on this side: a reflection lobe can connect them.
     bool bothAbove(const Vec3& wo, const Vec3& wi) const {

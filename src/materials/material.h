@@ -19,6 +19,9 @@ public:
 
     std::string name;
     Rgb emission{0.0f};  // emitted radiance: makes the surface an emitter (`O`, or `L` when declared a light)
+    // Some parameter is a texture (materials/texture.h): shading points then find their texture
+    // coordinates and footprint, which an untextured material never pays for.
+    bool textured = false;
 
     virtual std::unique_ptr<Material> clone() const = 0;
 
@@ -50,6 +53,11 @@ public:
     virtual Rgb diffuseReflectance() const = 0;
     // ka of the illumination formula's ambient term, which only the classic integrators add.
     virtual Rgb ambientReflectance() const { return Rgb{0.0f}; }
+    // ka at one surface point (a textured ka varies; ambientReflectance is then its mean).
+    virtual Rgb ambientReflectanceAt(const SurfaceSide& side) const {
+        (void)side;
+        return ambientReflectance();
+    }
 
 protected:
     Material() = default;

@@ -19,16 +19,16 @@ float cosToMirror(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) {
 }  // namespace
 
 bool ModifiedPhongMaterial::has(int lobe) const {
-    if (lobe == kDiffuse) return !isBlack(kd);
-    if (lobe == kHighlight) return !isBlack(ks);
+    if (lobe == kDiffuse) return !kd.black();
+    if (lobe == kHighlight) return !ks.black();
     return false;
 }
 
 Rgb ModifiedPhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
-    if (lobe == kDiffuse) return lambert::eval(kd, side, wi);
+    if (lobe == kDiffuse) return lambert::eval(kd.at(side), side, wi);
     if (lobe == kHighlight)
-        return ks * ((n + 2.0f) / (2.0f * kPi) * std::pow(cosToMirror(side, wo, wi), n) * glm::dot(wi, side.normal));
+        return ks.at(side) * ((n + 2.0f) / (2.0f * kPi) * std::pow(cosToMirror(side, wo, wi), n) * glm::dot(wi, side.normal));
     return Rgb{0.0f};
 }
 
@@ -43,7 +43,7 @@ float ModifiedPhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& 
 
 std::optional<LobeSample> ModifiedPhongMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo,
                                                         Vec2 u) const {
-    if (lobe == kDiffuse) return lambert::sample(kd, side, wo, u);
+    if (lobe == kDiffuse) return lambert::sample(kd.at(side), side, wo, u);
     if (lobe == kHighlight) {
         if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;  // eval() is 0 there
         LobeSample s;
@@ -52,27 +52,27 @@ std::optional<LobeSample> ModifiedPhongMaterial::sample(int lobe, const SurfaceS
         if (cosIn <= 0.0f) return std::nullopt;
         s.pdf = phongLobePdf(cosToMirror(side, wo, s.wi), n);
         // ks (n+2)/(2 pi) cos^n cos_i over (n+1)/(2 pi) cos^n: the lobe cancels.
-        s.weight = ks * ((n + 2.0f) / (n + 1.0f) * cosIn);
+        s.weight = ks.at(side) * ((n + 2.0f) / (n + 1.0f) * cosIn);
         return s;
     }
     return std::nullopt;
 }
 
-float ModifiedPhongMaterial::albedo(int lobe, const SurfaceSide&, const Vec3&) const {
-    if (lobe == kDiffuse) return maxComponent(kd);
-    if (lobe == kHighlight) return maxComponent(ks);  // exact at normal incidence, less elsewhere
+float ModifiedPhongMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3&) const {
+    if (lobe == kDiffuse) return kd.maxAt(side);
+    if (lobe == kHighlight) return ks.maxAt(side);  // exact at normal incidence, less elsewhere
     return 0.0f;
 }
 
 int ModifiedPhongMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                                    NamedFactors& factors) const {
     if (lobe == kDiffuse) {
-        factors = lambert::factors(kd, side, wi);
+        factors = lambert::factors(kd.at(side), side, wi);
         return 2;
     }
     if (lobe == kHighlight) {
         const float cosIn = glm::dot(side.normal, wi);
-        factors = {{{"ks", ks}, {"(n+2)/2 cos^n(a) N.L", Rgb{(n + 2.0f) / 2.0f * std::pow(cosToMirror(side, wo, wi), n) * cosIn}}}};
+        factors = {{{"ks", ks.at(side)}, {"(n+2)/2 cos^n(a) N.L", Rgb{(n + 2.0f) / 2.0f * std::pow(cosToMirror(side, wo, wi), n) * cosIn}}}};
         return 2;
     }
     return 0;
@@ -85,8 +85,8 @@ namespace {
 
 MaterialSlot makeModifiedPhong(const ParameterValues& values) {
     ModifiedPhongMaterial material;
-    material.kd = values.colour("kd");
-    material.ks = values.colour("ks");
+    material.kd = colorParameter(values, "kd");
+    material.ks = colorParameter(values, "ks");
     material.n = values.number("n");
     material.emission = values.colour("emission");
     return material;

@@ -10,13 +10,14 @@
 #include <array>
 
 #include "materials/material.h"
+#include "materials/texture.h"
 
 namespace lightpath {
 
 class ModifiedPhongMaterial final : public Material {
 public:
-    Rgb kd{0.0f};     // diffuse albedo
-    Rgb ks{0.0f};     // specular albedo at normal incidence
+    ColorParameter kd{Rgb{0.0f}};  // diffuse albedo, a constant or a texture
+    ColorParameter ks{Rgb{0.0f}};  // specular albedo at normal incidence
     float n = 20.0f;  // specular exponent, >= 0
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<ModifiedPhongMaterial>(*this); }
@@ -32,7 +33,7 @@ public:
     float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const override;
     int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
-    Rgb diffuseReflectance() const override { return kd; }
+    Rgb diffuseReflectance() const override { return kd.mean(); }
 };
 
 }  // namespace lightpath

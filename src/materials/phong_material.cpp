@@ -29,18 +29,18 @@ float blinnTerm(const Vec3& normal, const Vec3& wo, const Vec3& wi, float expone
 
 bool PhongMaterial::has(int lobe) const {
     switch (lobe) {
-        case kDiffuse: return !isBlack(kd);
-        case kHighlight: return !isBlack(ks);
-        case kMirror: return !isBlack(kr) || !isBlack(kt);  // kt: total internal reflection
-        case kRefraction: return !isBlack(kt);
+        case kDiffuse: return !kd.black();
+        case kHighlight: return !ks.black();
+        case kMirror: return !kr.black() || !kt.black();  // kt: total internal reflection
+        case kRefraction: return !kt.black();
     }
     return false;
 }
 
 Rgb PhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
-    if (lobe == kDiffuse) return lambert::eval(kd, side, wi);
-    if (lobe == kHighlight) return ks * (blinnTerm(side.normal, wo, wi, n) / kPi);
+    if (lobe == kDiffuse) return lambert::eval(kd.at(side), side, wi);
+    if (lobe == kHighlight) return ks.at(side) * (blinnTerm(side.normal, wo, wi, n) / kPi);
     return Rgb{0.0f};  // a delta lobe has no value to evaluate
 }
 
@@ -59,7 +59,7 @@ float PhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, cons
 }
 
 std::optional<LobeSample> PhongMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
-    if (lobe == kDiffuse) return lambert::sample(kd, side, wo, u);
+    if (lobe == kDiffuse) return lambert::sample(kd.at(side), side, wo, u);
     if (lobe == kHighlight) {
         if (!(glm::dot(wo, side.normal) > 0.0f)) return std::nullopt;  // eval() is 0 there
         LobeSample s;
@@ -70,39 +70,40 @@ std::optional<LobeSample> PhongMaterial::sample(int lobe, const SurfaceSide& sid
         if (glm::dot(s.wi, side.normal) <= 0.0f) return std::nullopt;
         s.pdf = pdf(lobe, side, wo, s.wi);
         // (ks (H.N)^n / pi) / ((n+1)/(2 pi) (H.N)^n / (4 wo.H)): the lobe's power cancels.
-        s.weight = ks * (8.0f * woDotHalf / (n + 1.0f));
+        s.weight = ks.at(side) * (8.0f * woDotHalf / (n + 1.0f));
         return s;
     }
     return std::nullopt;
 }
 
-float PhongMaterial::albedo(int lobe, const SurfaceSide&, const Vec3&) const {
+float PhongMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3&) const {
     // A rough albedo of the highlight lobe, only to choose lobes in proportion to what they
     // reflect: ks (H.N)^n / pi integrates to 2 ks for n = 0 and to about 8 ks / (n + 1) for a sharp lobe.
-    if (lobe == kDiffuse) return maxComponent(kd);
-    if (lobe == kHighlight) return maxComponent(ks) * std::min(2.0f, 8.0f / (n + 1.0f));
+    if (lobe == kDiffuse) return kd.maxAt(side);
+    if (lobe == kHighlight) return ks.maxAt(side) * std::min(2.0f, 8.0f / (n + 1.0f));
     return 0.0f;
 }
 
 int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
-    if (isBlack(kr) && isBlack(kt)) return 0;
+    if (kr.black() && kt.black()) return 0;
     const float cosOut = glm::dot(wo, side.normal);
     if (cosOut <= 0.0f) return 0;
     // n_incident / n_transmitted for light arriving from the side of the normal.
     const float eta = side.entering ? 1.0f / ior : ior;
     const Vec3 mirror = reflectAbout(wo, side.normal);
-    const std::optional<Vec3> refracted = isBlack(kt) ? std::nullopt : refractThrough(wo, side.normal, eta);
+    const Rgb mirrorWeight = kr.at(side), refractionWeight = kt.at(side);
+    const std::optional<Vec3> refracted = kt.black() ? std::nullopt : refractThrough(wo, side.normal, eta);
     if (!refracted) {
         // Total internal reflection: the transmitted share is reflected too.
-        const Rgb weight = kr + kt;
+        const Rgb weight = mirrorWeight + refractionWeight;
         branches[0] = {mirror, weight, kMirror, maxComponent(weight)};
         return isBlack(weight) ? 0 : 1;
     }
-    Rgb reflected = kr, transmitted = kt;
+    Rgb reflected = mirrorWeight, transmitted = refractionWeight;
     float compression = 1.0f;
     if (fresnel) {
         const float reflectance = fresnelDielectric(cosOut, eta);
-        reflected += kt * reflectance;
+        reflected += refractionWeight * reflectance;
         transmitted *= 1.0f - reflectance;
         // Radiance is compressed by (n_i / n_t)^2 as it crosses (pbrt-v4 9.5.2); importance is not.
         if (side.mode == TransportMode::Radiance) compression = eta * eta;
@@ -116,11 +117,11 @@ int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, Spe
 int PhongMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                            NamedFactors& factors) const {
     if (lobe == kDiffuse) {
-        factors = lambert::factors(kd, side, wi);
+        factors = lambert::factors(kd.at(side), side, wi);
         return 2;
     }
     if (lobe == kHighlight) {
-        factors = {{{"ks", ks}, {"(H.N)^n", Rgb{blinnTerm(side.normal, wo, wi, n)}}}};
+        factors = {{{"ks", ks.at(side)}, {"(H.N)^n", Rgb{blinnTerm(side.normal, wo, wi, n)}}}};
         return 2;
     }
     return 0;
@@ -133,12 +134,12 @@ namespace {
 
 MaterialSlot makePhong(const ParameterValues& values) {
     PhongMaterial material;
-    material.ka = values.colour("ka");
-    material.kd = values.colour("kd");
-    material.ks = values.colour("ks");
+    material.ka = colorParameter(values, "ka");
+    material.kd = colorParameter(values, "kd");
+    material.ks = colorParameter(values, "ks");
     material.n = values.number("n");
-    material.kr = values.colour("kr");
-    material.kt = values.colour("kt");
+    material.kr = colorParameter(values, "kr");
+    material.kt = colorParameter(values, "kt");
     material.ior = values.number("ior");
     material.fresnel = values.boolean("fresnel");
     material.emission = values.colour("emission");

@@ -15,17 +15,19 @@
 #include <array>
 
 #include "materials/material.h"
+#include "materials/texture.h"
 
 namespace lightpath {
 
 class PhongMaterial final : public Material {
 public:
-    Rgb ka{0.0f};      // ambient reflectance
-    Rgb kd{0.0f};      // diffuse reflectance
-    Rgb ks{0.0f};      // specular (highlight) reflectance
-    float n = 20.0f;   // specular exponent, >= 0
-    Rgb kr{0.0f};      // mirror reflection weight
-    Rgb kt{0.0f};      // transmission (refraction) weight
+    // Each colour a constant or a texture (materials/texture.h), read at the shading point.
+    ColorParameter ka{Rgb{0.0f}};  // ambient reflectance
+    ColorParameter kd{Rgb{0.0f}};  // diffuse reflectance
+    ColorParameter ks{Rgb{0.0f}};  // specular (highlight) reflectance
+    float n = 20.0f;               // specular exponent, >= 0
+    ColorParameter kr{Rgb{0.0f}};  // mirror reflection weight
+    ColorParameter kt{Rgb{0.0f}};  // transmission (refraction) weight
     float ior = 1.5f;  // index of refraction of the inside, > 0
     // Fresnel glass: the mirror ray gains kt F and the refracted ray keeps kt (1 - F), F the
     // dielectric's reflectance at the angle of incidence; off, the weights are kr and kt exactly.
@@ -45,8 +47,9 @@ public:
     int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const override;
     int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
-    Rgb diffuseReflectance() const override { return kd; }
-    Rgb ambientReflectance() const override { return ka; }
+    Rgb diffuseReflectance() const override { return kd.mean(); }
+    Rgb ambientReflectance() const override { return ka.mean(); }
+    Rgb ambientReflectanceAt(const SurfaceSide& side) const override { return ka.at(side); }
 };
 
 // The Phong material in a scene's slot, for code that built the scene from Phong materials and

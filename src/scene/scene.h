@@ -50,6 +50,8 @@ struct Scene {
     std::vector<Triangle> triangles;
     // Empty when no triangle has vertex normals, else one entry per triangle (meshes' `vn`).
     std::vector<TriangleNormals> triangleNormals;
+    // Empty when no triangle has texture coordinates, else one entry per triangle (meshes' `vt`).
+    std::vector<TriangleUvs> triangleUvs;
 
     // Legal but probably unintended, located like errors ("FILE:LINE:COL: KEY: ..."), e.g. a
     // triangle without area. The command line prints them.

@@ -34,6 +34,8 @@ public:
     // A triangle shaded with the normals at its corners interpolated (a mesh's `vn`); a zero
     // normal shades it flat.
     virtual void addTriangle(const Triangle& triangle, const TriangleNormals& normals) = 0;
+    // The texture coordinates at the corners of the triangle added last (a mesh's `vt`).
+    virtual void setTriangleUvs(const TriangleUvs& uvs) { (void)uvs; }
     // A shape declaration's object, from its `name` (optional) and `material` (a material of the
     // scene, else a located error at `material`). Returns the object index its shapes store.
     virtual std::uint32_t addShapeObject(const ParameterValues& values) = 0;

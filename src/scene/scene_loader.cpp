@@ -95,6 +95,20 @@ std::string expectedNumber(const Range& range) {
     return "a number " + range.describe();
 }
 
+// A Colour given as a texture: `{ texture = "FILE", tint = RGB, uv_scale = N, filter = BOOL }`,
+// FILE relative to the scene file's folder (materials/texture.h opens it).
+TextureReference readTexture(const TomlValue& value) {
+    const TomlTable table = value.table();
+    table.allowOnly({"texture", "tint", "uv_scale", "filter"});
+    TextureReference texture;
+    const std::filesystem::path file = table.required("texture").string();
+    texture.file = (file.is_absolute() ? file : value.folder() / file).string();
+    if (auto tint = table.find("tint")) texture.tint = tint->rgb();
+    if (auto scale = table.find("uv_scale")) texture.uvScale = scale->number(positive);
+    if (auto filter = table.find("filter")) texture.filtered = filter->boolean();
+    return texture;
+}
+
 // One value of a declaration, read as its parameter's type says and checked against its range.
 void readParameter(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
     const std::string expected = expectedNumber(parameter.range);
@@ -112,7 +126,10 @@ void readParameter(const TomlValue& value, const Parameter& parameter, Parameter
             break;
         }
         case ParameterType::Boolean: values.set(name, value.boolean()); break;
-        case ParameterType::Colour: values.set(name, value.rgb()); break;
+        case ParameterType::Colour:
+            if (value.isTable()) values.set(name, readTexture(value));
+            else values.set(name, value.rgb());
+            break;
         case ParameterType::Point: values.set(name, value.vec3(rule)); break;
         case ParameterType::Vector: values.set(name, readNonZeroVector(value)); break;
         case ParameterType::PerAxis: values.set(name, value.numberOrVec3(rule)); break;
@@ -226,6 +243,7 @@ MaterialSlot readMaterial(const std::string& name, const TomlTable& table) {
     const ParameterValues values = readValues(table, type.schema);
     MaterialSlot material = asSceneError([&] { return type.make(values); });
     material->name = name;
+    material->textured = values.anyTexture();
     return material;
 }
 
@@ -282,6 +300,11 @@ public:
         scene_.triangleNormals.resize(scene_.triangles.size());
         scene_.triangles.push_back(triangle);
         scene_.triangleNormals.push_back(normals);
+    }
+    void setTriangleUvs(const TriangleUvs& uvs) override {
+        // Like triangleNormals: empty until a triangle has uvs, then one per triangle.
+        scene_.triangleUvs.resize(scene_.triangles.size());
+        scene_.triangleUvs.back() = uvs;
     }
     std::uint32_t addShapeObject(const ParameterValues& values) override;
     std::uint32_t addObject(std::string name, std::uint32_t material) override {
@@ -468,6 +491,7 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
         forEachSection(root, type->section, [&](const TomlTable& shape) { readShape(shape, *type, scene); });
     // Flat triangles after the last one with normals have none yet.
     if (!scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
+    if (!scene.triangleUvs.empty()) scene.triangleUvs.resize(scene.triangles.size());
     return scene;
 }
 

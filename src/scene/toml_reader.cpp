@@ -69,6 +69,11 @@ std::vector<std::pair<const toml::key*, const toml::node*>> inFileOrder(const to
 TomlValue::TomlValue(const toml::node& node, std::string keyPath)
     : node_(&node), keyPath_(std::move(keyPath)) {}
 
+std::filesystem::path TomlValue::folder() const {
+    const auto& path = node_->source().path;
+    return path ? std::filesystem::path(*path).parent_path() : std::filesystem::path();
+}
+
 std::string TomlValue::position() const { return positionOf(node_->source()); }
 
 std::string TomlValue::located(std::string_view message) const {

@@ -4,6 +4,7 @@
 //   FILE:LINE:COLUMN: KEY_PATH: expected ..., got ...
 // Private to the scene loader: nothing outside src/scene sees toml++.
 #include <cstddef>
+#include <filesystem>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -72,6 +73,9 @@ public:
     std::string string() const;
     bool boolean() const;
     TomlTable table() const;
+    bool isTable() const { return node_->is_table(); }
+    // The folder of the file this value was read from ("" when it came from no file).
+    std::filesystem::path folder() const;
     // An array of exactly `size` elements; `expected` says what kind, e.g. "3 numbers".
     std::vector<TomlValue> array(std::size_t size, std::string_view expected) const;
     // An array of tables ([[name]] sections).

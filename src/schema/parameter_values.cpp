@@ -88,7 +88,21 @@ const ParameterValues::Value& ParameterValues::valueOf(std::string_view name, Pa
 float ParameterValues::number(std::string_view name) const { return std::get<float>(valueOf(name, ParameterType::Number)); }
 int ParameterValues::integer(std::string_view name) const { return std::get<int>(valueOf(name, ParameterType::Integer)); }
 bool ParameterValues::boolean(std::string_view name) const { return std::get<bool>(valueOf(name, ParameterType::Boolean)); }
-Rgb ParameterValues::colour(std::string_view name) const { return std::get<Vec3>(valueOf(name, ParameterType::Colour)); }
+Rgb ParameterValues::colour(std::string_view name) const {
+    const Vec3 value = std::get<Vec3>(valueOf(name, ParameterType::Colour));
+    if (slots_[indexOf(name)].texture) fail(name, "expected a number or an array of 3 numbers (this parameter takes no texture)");
+    return value;
+}
+
+const TextureReference* ParameterValues::texture(std::string_view name) const {
+    (void)valueOf(name, ParameterType::Colour);
+    const Slot& slot = slots_[indexOf(name)];
+    return slot.texture ? &*slot.texture : nullptr;
+}
+
+bool ParameterValues::anyTexture() const {
+    return std::any_of(slots_.begin(), slots_.end(), [](const Slot& slot) { return slot.texture.has_value(); });
+}
 Vec3 ParameterValues::vec3(std::string_view name) const { return std::get<Vec3>(valueOf(name, ParameterType::Point)); }
 std::array<Vec3, 3> ParameterValues::points(std::string_view name) const {
     return std::get<std::array<Vec3, 3>>(valueOf(name, ParameterType::ThreePoints));
@@ -104,6 +118,7 @@ void ParameterValues::store(std::string_view name, Value value, std::initializer
         throw SchemaError(std::string(name) + ": expected a " + std::string(typeName(p.type)));
     }
     slots_[i].value = std::move(value);
+    slots_[i].texture.reset();
     slots_[i].given = true;
 }
 
@@ -166,6 +181,19 @@ void ParameterValues::set(std::string_view name, std::string value) {
         throw SchemaError(std::string(name) + ": expected one of " + expected + ", got \"" + value + "\"");
     }
     store(name, std::move(value), {ParameterType::Name, ParameterType::Text});
+}
+
+void ParameterValues::set(std::string_view name, TextureReference texture) {
+    const Parameter& p = schema_->parameters[indexOf(name)];
+    for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(texture.tint[c]) || !p.range.admits(texture.tint[c]))
+            throw SchemaError(std::string(name) + ".tint: expected each of 3 numbers " + p.range.describe() + ", got " +
+                              formatVec3(texture.tint));
+    }
+    if (!(std::isfinite(texture.uvScale) && texture.uvScale > 0.0f))
+        throw SchemaError(std::string(name) + ".uv_scale: expected a positive number, got " + formatNumber(texture.uvScale));
+    store(name, Vec3(0.0f), {ParameterType::Colour});
+    slots_[indexOf(name)].texture = std::move(texture);
 }
 
 void ParameterValues::locateDeclaration(std::string position, std::string keyPath) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -13,6 +14,16 @@
 #include "schema/type_schema.h"
 
 namespace lightpath {
+
+// A Colour given as an image, `{ texture = "FILE", tint = ..., uv_scale = ..., filter = ... }`:
+// the file (resolved against the scene's folder) and how to read it. Materials open it
+// (materials/texture.h, colorParameter); the schema only carries it.
+struct TextureReference {
+    std::string file;
+    Rgb tint{1.0f};        // multiplies the texels
+    float uvScale = 1.0f;  // texture coordinates are multiplied by it: repeats per unit of uv
+    bool filtered = true;  // false: point sampled (the finest level's texels), to show aliasing
+};
 
 class ParameterValues {
 public:
@@ -25,7 +36,12 @@ public:
     float number(std::string_view name) const;
     int integer(std::string_view name) const;
     bool boolean(std::string_view name) const;
+    // A Colour given as a number or RGB; a located error when it was given as a texture (a
+    // parameter its type reads as a constant, e.g. `emission`).
     Rgb colour(std::string_view name) const;
+    // The texture a Colour was given as, or null for a constant.
+    const TextureReference* texture(std::string_view name) const;
+    bool anyTexture() const;  // some Colour was given as a texture
     Vec3 vec3(std::string_view name) const;  // a Point, a Vector or a PerAxis
     std::array<Vec3, 3> points(std::string_view name) const;  // ThreePoints
     const std::string& text(std::string_view name) const;  // a Name or a Text
@@ -38,6 +54,7 @@ public:
     void set(std::string_view name, const std::array<Vec3, 3>& value);  // ThreePoints
     void set(std::string_view name, std::string value);  // Name, Text
     void set(std::string_view name, const char* value) { set(name, std::string(value)); }
+    void set(std::string_view name, TextureReference texture);  // a Colour as a texture
 
     // Where the declaration is ("FILE:LINE:COL" and its key path, "lights[0]"), for errors about
     // keys it leaves out; and where one value was read.
@@ -53,6 +70,7 @@ private:
     using Value = std::variant<float, int, bool, Vec3, std::array<Vec3, 3>, std::string>;
     struct Slot {
         Value value;
+        std::optional<TextureReference> texture;  // a Colour given as a texture
         bool given = false;
         std::string position, keyPath;
     };

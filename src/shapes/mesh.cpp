@@ -71,6 +71,28 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         scene.warn(values.located("file", at(unknown.line) + "usemtl \"" + printableName(unknown.text) +
                                               "\" names no material of its material libraries; " + instead));
 
+    // `map_Kd` makes the material's kd a texture, relative to the OBJ's folder, times Kd (the MTL
+    // spec; a black Kd, which some tools write beside a map, counts as white). One that cannot be
+    // read is a warning, as everything else other tools forgive: Kd alone is used.
+    const auto withDiffuseTexture = [&](const PhongMaterial& mtl, std::uint32_t mtlIndex) {
+        PhongMaterial material = mtl;
+        const std::string& image = mesh.diffuseTextures[mtlIndex];
+        if (image.empty()) return material;
+        const std::filesystem::path path = file.parent_path() / image;
+        std::string error;
+        std::shared_ptr<const Texture> texture = openTexture(path.string(), error);
+        if (!texture) {
+            scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" + mtl.name +
+                                                  "\": cannot read its map_Kd \"" + printableName(image) + "\" (" + error +
+                                                  "); Kd is used"));
+            return material;
+        }
+        const Rgb tint = mtl.kd.black() ? Rgb{1.0f} : mtl.kd.constant();
+        material.kd = ColorParameter(std::move(texture), tint, 1.0f, true);
+        material.textured = true;
+        return material;
+    };
+
     // Scene object of each MTL material index, created on first use, in order of first use.
     std::vector<std::uint32_t> objectOf(mesh.materials.size() + 1, kNoMeshMaterial);
     const auto objectFor = [&](std::uint32_t mtlIndex) {
@@ -87,7 +109,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
                 scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" +
                                                       printableName(*original) + "\" is no label of " +
                                                       std::string(kNameCharacters) + "; it is labelled \"" + mtl.name + "\""));
-            objectOf[slot] = scene.addObject(name, scene.sceneMaterial(mtl));
+            objectOf[slot] = scene.addObject(name, scene.sceneMaterial(withDiffuseTexture(mtl, mtlIndex)));
         }
         return objectOf[slot];
     };
@@ -95,6 +117,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
     if (mesh.degenerateDropped > 0)
         scene.warn(values.located("file", std::to_string(mesh.degenerateDropped) + " faces without area were left out"));
     const bool smooth = !mesh.normals.empty();
+    const bool textured = !mesh.uvs.empty();
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         const Triangle& t = mesh.triangles[i];
         const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)};
@@ -112,6 +135,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         } else {
             scene.addTriangle(placed);
         }
+        if (textured && mesh.uvs[i].given) scene.setTriangleUvs(mesh.uvs[i]);
     }
 }
 

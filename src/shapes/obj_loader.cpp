@@ -224,14 +224,16 @@ void refuseBadMaterial(const tinyobj::material_t& m, const std::filesystem::path
 // corners.
 ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& file) {
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    const auto refuseNonFinite = [&](const std::vector<tinyobj::real_t>& xyz, const char* what, const char* part) {
+    const auto refuseNonFinite = [&](const std::vector<tinyobj::real_t>& xyz, const char* what, const char* part,
+                                     std::size_t stride = 3) {
         for (std::size_t k = 0; k < xyz.size(); ++k)
             if (!std::isfinite(xyz[k]))
-                throw SceneError(file.string() + ": " + what + " " + std::to_string(k / 3 + 1) + " has a " + part +
+                throw SceneError(file.string() + ": " + what + " " + std::to_string(k / stride + 1) + " has a " + part +
                                  " that is not a finite single-precision number");
     };
     refuseNonFinite(attrib.vertices, "vertex", "coordinate");
     refuseNonFinite(attrib.normals, "normal", "component");
+    refuseNonFinite(attrib.texcoords, "texture coordinate", "component", 2);
     const auto refuseIndex = [&](std::size_t face, const char* what, int index, std::size_t count) {
         throw SceneError(file.string() + ": face " + std::to_string(face + 1) + " refers to " + what + " " +
                          std::to_string(index + 1) + ", but the file has " + std::to_string(count));
@@ -242,6 +244,7 @@ ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& 
         refuseBadMaterial(m, file);
         mesh.materials.push_back(phongFromMtl(m.name, m.ambient, m.diffuse, m.specular, m.transmittance, m.emission,
                                               m.shininess, m.ior, m.dissolve, m.illum));
+        mesh.diffuseTextures.push_back(m.diffuse_texname);
     }
 
     const auto position = [&](const tinyobj::index_t& i) {
@@ -256,8 +259,14 @@ ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& 
         const double length = glm::length(n);
         return length > 0.0 ? Vec3(n / length) : Vec3(0.0f);
     };
+    const auto texcoord = [&](const tinyobj::index_t& i) {
+        const auto k = static_cast<std::size_t>(2 * i.texcoord_index);
+        return Vec2(attrib.texcoords[k], attrib.texcoords[k + 1]);
+    };
     const bool hasNormals = !attrib.normals.empty();
+    const bool hasUvs = !attrib.texcoords.empty();
     const std::size_t vertexCount = attrib.vertices.size() / 3, normalCount = attrib.normals.size() / 3;
+    const std::size_t uvCount = attrib.texcoords.size() / 2;
     std::size_t face = 0;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         const std::vector<tinyobj::index_t>& indices = shape.mesh.indices;
@@ -277,6 +286,8 @@ ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& 
                     refuseIndex(face, "vertex", i.vertex_index, vertexCount);
                 if (i.normal_index >= 0 && static_cast<std::size_t>(i.normal_index) >= normalCount)
                     refuseIndex(face, "normal", i.normal_index, normalCount);
+                if (i.texcoord_index >= 0 && static_cast<std::size_t>(i.texcoord_index) >= uvCount)
+                    refuseIndex(face, "texture coordinate", i.texcoord_index, uvCount);
             }
             Triangle triangle{position(corner[0]), position(corner[1]), position(corner[2]), kNoMeshMaterial};
             if (glm::cross(triangle.b - triangle.a, triangle.c - triangle.a) == Vec3(0.0f)) {
@@ -287,6 +298,12 @@ ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& 
             if (material >= 0 && static_cast<std::size_t>(material) < mesh.materials.size()) triangle.object = static_cast<std::uint32_t>(material);
             mesh.triangles.push_back(triangle);
             if (hasNormals) mesh.normals.push_back({normal(corner[0]), normal(corner[1]), normal(corner[2])});
+            if (hasUvs) {
+                const bool given = corner[0].texcoord_index >= 0 && corner[1].texcoord_index >= 0 &&
+                                   corner[2].texcoord_index >= 0;
+                mesh.uvs.push_back(given ? TriangleUvs{texcoord(corner[0]), texcoord(corner[1]), texcoord(corner[2]), true}
+                                         : TriangleUvs{});
+            }
         }
     }
     return mesh;

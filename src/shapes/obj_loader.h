@@ -27,6 +27,12 @@ struct ObjMesh {
     std::vector<Triangle> triangles;
     // Empty when the file has no normals, else one per triangle (zero for faces without `vn`).
     std::vector<TriangleNormals> normals;
+    // Empty when the file has no texture coordinates, else one per triangle (`given` false for
+    // faces without `vt`).
+    std::vector<TriangleUvs> uvs;
+    // Per material: its `map_Kd` image as the MTL names it (empty: none); the mesh's reader opens
+    // it relative to the OBJ file's folder and makes it the material's kd texture.
+    std::vector<std::string> diffuseTextures;
     std::size_t degenerateDropped = 0;  // faces without area: they have no normal to shade with
     // Material libraries named by `mtllib` lines that could not be opened (paths as looked for),
     // and `usemtl` names that no library read defines, each with the OBJ line naming it. Faces of

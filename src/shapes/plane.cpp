@@ -38,6 +38,15 @@ void describePlane(const ShapeRecord& record, SurfaceHit& hit) {
     hit.shadingNormal = hit.normal;
 }
 
+// Metres from the plane's point along its frame (s, t) (sampling/warp.h; a floor with normal +y:
+// u along x, v along -z).
+SurfaceParameters parametrisePlane(const ShapeRecord& record, const Vec3& point) {
+    const Plane plane = planeOf(record);
+    const Frame frame(plane.normal);
+    const Vec3 d = point - plane.point;
+    return {Vec2(glm::dot(d, frame.s), glm::dot(d, frame.t)), frame.s, frame.t};
+}
+
 double planeArea(const ShapeRecord&) { return std::numeric_limits<double>::infinity(); }
 
 void tessellatePlaneRegion(const ShapeRecord& record, const Bounds& region, std::vector<Triangle>& out) {
@@ -94,7 +103,8 @@ const ShapeOps kPlaneOps{.name = "plane",
                          .area = planeArea,
                          .bounded = false,
                          .tessellateRegion = tessellatePlaneRegion,
-                         .depthAlong = planeDepthAlong};
+                         .depthAlong = planeDepthAlong,
+                         .parametrise = parametrisePlane};
 
 }  // namespace
 

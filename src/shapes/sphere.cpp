@@ -68,6 +68,23 @@ void describeSphere(const ShapeRecord& record, SurfaceHit& hit) {
     hit.shadingNormal = hit.normal;
 }
 
+// Longitude and latitude about the y axis (pbrt-v4 6.2 with y up): u = phi / 2 pi, phi from +x
+// towards +z, v = theta / pi from the +y pole.
+SurfaceParameters parametriseSphere(const ShapeRecord& record, const Vec3& point) {
+    const Sphere s = sphereOf(record);
+    const Vec3 d = (point - s.center) / s.radius;
+    float phi = std::atan2(d.z, d.x);
+    if (phi < 0.0f) phi += 2.0f * kPi;
+    const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
+    const float sinTheta = std::sin(theta), cosTheta = std::cos(theta);
+    const float sinPhi = std::sin(phi), cosPhi = std::cos(phi);
+    SurfaceParameters p;
+    p.uv = {phi / (2.0f * kPi), theta / kPi};
+    p.dpdu = 2.0f * kPi * s.radius * Vec3(-sinTheta * sinPhi, 0.0f, sinTheta * cosPhi);
+    p.dpdv = kPi * s.radius * Vec3(cosTheta * cosPhi, -sinTheta, cosTheta * sinPhi);
+    return p;
+}
+
 double sphereArea(const ShapeRecord& record) { return surfaceArea(sphereOf(record)); }
 
 AreaSample sampleSphere(const ShapeRecord& record, Vec2 u) {
@@ -210,7 +227,8 @@ const ShapeOps kSphereOps{.name = "sphere",
                           .tessellate = tessellateSphere,
                           .sampleSolidAngle = sampleSphereSolidAngle,
                           .pdfSolidAngle = pdfSphereSolidAngle,
-                          .patchGrid = &kSphereCells};
+                          .patchGrid = &kSphereCells,
+                          .parametrise = parametriseSphere};
 
 ShapeRecord sphereRecord(const Sphere& sphere) {
     ShapeRecord record;

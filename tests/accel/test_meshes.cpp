@@ -87,18 +87,18 @@ TEST_CASE("MTL materials map to the Phong material") {
         return phongOf(scene.materials.front());
     };
     const PhongMaterial& mirror = find("leftSphere");  // illum 5, Ks 0.95
-    CHECK(mirror.kr == Rgb(0.95f));
+    CHECK(mirror.kr.constant() == Rgb(0.95f));
     CHECK(mirror.n == 1000.0f);
     const PhongMaterial& glass = find("rightSphere");  // illum 7, Tf 0.1, Ni 2.5
-    CHECK(glass.kt == Rgb(0.1f));
+    CHECK(glass.kt.constant() == Rgb(0.1f));
     CHECK(glass.ior == 2.5f);
-    CHECK(glass.kr == Rgb(0.3f));
+    CHECK(glass.kr.constant() == Rgb(0.3f));
     const PhongMaterial& light = find("light");  // illum 2 with Tf 1: no transmission; Ke 10
-    CHECK(light.kt == Rgb(0.0f));
+    CHECK(light.kt.constant() == Rgb(0.0f));
     CHECK(light.emission == Rgb(10.0f));
     const PhongMaterial& wall = find("leftWall");
-    CHECK(wall.kd == Rgb(0.63f, 0.065f, 0.05f));
-    CHECK(wall.kr == Rgb(0.0f));
+    CHECK(wall.kd.constant() == Rgb(0.63f, 0.065f, 0.05f));
+    CHECK(wall.kr.constant() == Rgb(0.0f));
     // The sphere meshes have vertex normals: smooth shading.
     CHECK(scene.triangleNormals.size() == scene.triangles.size());
 }
@@ -153,7 +153,7 @@ TEST_CASE("MTL values outside the scene file's limits are refused, naming the ma
     // What the loader always tolerated still loads: a negative Ns is 0, an Ni of 0 is ignored.
     const ObjMesh mesh = loadObjFromText(triangle, "newmtl red\nKd 1e6 0 0\nNs -5\nNi 0\nillum 7\n", "mesh.obj");
     REQUIRE(mesh.materials.size() == 1);
-    CHECK(mesh.materials[0].kd == Rgb(1e6f, 0.0f, 0.0f));
+    CHECK(mesh.materials[0].kd.constant() == Rgb(1e6f, 0.0f, 0.0f));
     CHECK(mesh.materials[0].n == 0.0f);
     CHECK(mesh.materials[0].ior == 1.5f);
 }

@@ -65,11 +65,11 @@ void checkScene(const Scene& scene) {
         std::vector<Rgb> colours{slot->emission};
         float exponent = 0.0f, ior = 1.0f;
         if (const auto* m = dynamic_cast<const PhongMaterial*>(&*slot)) {
-            colours.insert(colours.end(), {m->ka, m->kd, m->ks, m->kr, m->kt});
+            colours.insert(colours.end(), {m->ka.constant(), m->kd.constant(), m->ks.constant(), m->kr.constant(), m->kt.constant()});
             exponent = m->n;
             ior = m->ior;
         } else if (const auto* m = dynamic_cast<const ModifiedPhongMaterial*>(&*slot)) {
-            colours.insert(colours.end(), {m->kd, m->ks});
+            colours.insert(colours.end(), {m->kd.constant(), m->ks.constant()});
             exponent = m->n;
         } else {
             broken("material " + name + " has a type the fuzzer does not know");

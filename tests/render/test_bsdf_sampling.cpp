@@ -110,11 +110,11 @@ Rgb directionalAlbedo(const Material& material, float cosOut) {
 TEST_CASE("modified Phong reflects exactly kd + ks at normal incidence and never more (Lafortune and Willems 1994)") {
     const ModifiedPhongMaterial material = makeMaterial<ModifiedPhongMaterial>({0.5f, 0.2f, 0.0f}, {0.5f, 0.3f, 0.8f}, 20);
     const Rgb normal = directionalAlbedo(material, 1.0f);
-    for (int c = 0; c < 3; ++c) CHECK(normal[c] == doctest::Approx(material.kd[c] + material.ks[c]).epsilon(0.01));
+    for (int c = 0; c < 3; ++c) CHECK(normal[c] == doctest::Approx(material.kd.constant()[c] + material.ks.constant()[c]).epsilon(0.01));
     for (float cosOut : {0.8f, 0.4f, 0.1f}) {
         CAPTURE(cosOut);
         const Rgb oblique = directionalAlbedo(material, cosOut);
-        for (int c = 0; c < 3; ++c) CHECK(oblique[c] <= material.kd[c] + material.ks[c] + 0.01f);
+        for (int c = 0; c < 3; ++c) CHECK(oblique[c] <= material.kd.constant()[c] + material.ks.constant()[c] + 0.01f);
     }
     // The control: the classic highlight ks (H.N)^n / pi is not normalised, so the same ks
     // reflects far from ks (about 8 ks / (n + 1) at normal incidence, Bsdf's lobe-choice estimate).

@@ -67,9 +67,9 @@ TEST_CASE("floor under a point light: ambient, diffuse and highlight terms by th
         const Rgb beauty = centrePixel(scene, kBeauty);
         const auto& m = phongOf(scene.materials[0]);
         for (int c = 0; c < 3; ++c) {
-            const double expectAmbient = double(m.ka[c]) * double(scene.ambient[c]);
-            const double expectDiffuse = intensity[c] * att * double(m.kd[c]) * nDotL;
-            const double expectHighlight = intensity[c] * att * double(m.ks[c]) * std::pow(hDotN, 8.0);
+            const double expectAmbient = double(m.ka.constant()[c]) * double(scene.ambient[c]);
+            const double expectDiffuse = intensity[c] * att * double(m.kd.constant()[c]) * nDotL;
+            const double expectHighlight = intensity[c] * att * double(m.ks.constant()[c]) * std::pow(hDotN, 8.0);
             CHECK(ambient[c] == doctest::Approx(expectAmbient).epsilon(1e-5));
             CHECK(diffuse[c] == doctest::Approx(expectDiffuse).epsilon(1e-5));
             CHECK(highlight[c] == doctest::Approx(expectHighlight).epsilon(1e-5));
@@ -117,7 +117,7 @@ TEST_CASE("a point in shadow gets only the ambient term") {
     addSphere(scene, "blocker", addMaterial(scene, blocker), {1.5f, 2.0f, 0.0f}, 0.5f);
     const Rgb beauty = centrePixel(scene, kBeauty);
     const auto& m = phongOf(scene.materials[0]);
-    for (int c = 0; c < 3; ++c) CHECK(beauty[c] == doctest::Approx(double(m.ka[c]) * double(scene.ambient[c])));
+    for (int c = 0; c < 3; ++c) CHECK(beauty[c] == doctest::Approx(double(m.ka.constant()[c]) * double(scene.ambient[c])));
 }
 
 TEST_CASE("a mirror seen straight on returns kr times what it reflects") {
@@ -136,7 +136,7 @@ TEST_CASE("a mirror seen straight on returns kr times what it reflects") {
     SUBCASE("the background, through the mirror") {
         const Film film = Renderer(scene, aovs, options).render().film;
         const Rgb seen = film.at(1, 4, 4);
-        for (int c = 0; c < 3; ++c) CHECK(seen[c] == doctest::Approx(double(mirror.kr[c]) * scene.background[c]));
+        for (int c = 0; c < 3; ++c) CHECK(seen[c] == doctest::Approx(double(mirror.kr.constant()[c]) * scene.background[c]));
     }
     SUBCASE("an ambient-lit wall behind the camera, through the mirror") {
         PhongMaterial wall;
@@ -145,7 +145,7 @@ TEST_CASE("a mirror seen straight on returns kr times what it reflects") {
         addPlane(scene, "wall", addMaterial(scene, wall), {0, 0, 20}, {0, 0, -1});
         const Film film = Renderer(scene, aovs, options).render().film;
         const Rgb seen = film.at(2, 4, 4);
-        for (int c = 0; c < 3; ++c) CHECK(seen[c] == doctest::Approx(double(mirror.kr[c]) * wall.ka[c]));
+        for (int c = 0; c < 3; ++c) CHECK(seen[c] == doctest::Approx(double(mirror.kr.constant()[c]) * wall.ka.constant()[c]));
         CHECK(film.at(1, 4, 4) == Rgb{0.0f});
     }
 }

@@ -255,7 +255,7 @@ TEST_CASE("the Cornell box: radiosity's ED*L converges to the path tracer's as p
 
 TEST_CASE("control: radiosity of a Cornell box 10% darker fails the same tolerance" * doctest::test_suite("statistical")) {
     Scene darker = cornellBox(kCornellSize);
-    for (MaterialSlot& m : darker.materials) phongOf(m).kd *= 0.9f;
+    for (MaterialSlot& m : darker.materials) phongOf(m).kd = phongOf(m).kd.constant() * 0.9f;
     const double error = blockError(cornellDiffuse(darker, "radiosity", 16, 4096), pathTracedCornell(), 8);
     CAPTURE(error);
     CHECK(error > kCornellTolerance);
@@ -435,7 +435,7 @@ TEST_CASE("the Cornell box under its lamp alone: radiosity with every bounce mat
     };
     const double error = blockError(render(lamp), reference, 4);
     Scene darker = lamp;
-    for (MaterialSlot& m : darker.materials) phongOf(m).kd *= 0.9f;
+    for (MaterialSlot& m : darker.materials) phongOf(m).kd = phongOf(m).kd.constant() * 0.9f;
     const double control = blockError(render(darker), reference, 4);
     CAPTURE(error);
     CAPTURE(control);

@@ -77,14 +77,14 @@ private:
 
 bool hasMirrorMaterial(const Scene& scene) {
     for (const auto& m : scene.materials) {
-        if (!lightpath::isBlack(lightpath::phongOf(m).kr)) return true;
+        if (!lightpath::isBlack(lightpath::phongOf(m).kr.constant())) return true;
     }
     return false;
 }
 
 bool hasGlassMaterial(const Scene& scene) {
     for (const auto& m : scene.materials) {
-        if (!lightpath::isBlack(lightpath::phongOf(m).kt)) return true;
+        if (!lightpath::isBlack(lightpath::phongOf(m).kt.constant())) return true;
     }
     return false;
 }
@@ -213,12 +213,12 @@ material = "red"
         REQUIRE(scene.materials.size() == 2);
         const auto& red = phongOf(scene.materials[0]);
         CHECK(red.name == "red");
-        CHECK(red.ka == Rgb(0.1f, 0, 0));
-        CHECK(red.kd == Rgb(0.7f, 0.25f, 0.5f));
-        CHECK(red.ks == Rgb(0.3f, 0.3f, 0.3f));
+        CHECK(red.ka.constant() == Rgb(0.1f, 0, 0));
+        CHECK(red.kd.constant() == Rgb(0.7f, 0.25f, 0.5f));
+        CHECK(red.ks.constant() == Rgb(0.3f, 0.3f, 0.3f));
         CHECK(red.n == 50.0f);
-        CHECK(red.kr == Rgb(0.125f));
-        CHECK(red.kt == Rgb(0, 0.5f, 1));
+        CHECK(red.kr.constant() == Rgb(0.125f));
+        CHECK(red.kt.constant() == Rgb(0, 0.5f, 1));
         CHECK(red.ior == 1.25f);
         CHECK(scene.materials[1]->name == "plain");
     }
@@ -284,11 +284,11 @@ material = "plain"
 
     REQUIRE(scene.materials.size() == 1);
     const auto& plain = phongOf(scene.materials[0]);
-    CHECK(plain.ka == Rgb(0));
-    CHECK(plain.kd == Rgb(0));
-    CHECK(plain.ks == Rgb(0));
-    CHECK(plain.kr == Rgb(0));
-    CHECK(plain.kt == Rgb(0));
+    CHECK(plain.ka.constant() == Rgb(0));
+    CHECK(plain.kd.constant() == Rgb(0));
+    CHECK(plain.ks.constant() == Rgb(0));
+    CHECK(plain.kr.constant() == Rgb(0));
+    CHECK(plain.kt.constant() == Rgb(0));
     CHECK(plain.n == 20.0f);
     CHECK(plain.ior == 1.5f);
 
@@ -509,12 +509,12 @@ TEST_CASE_FIXTURE(SceneFiles, "a material's type picks its model and its keys") 
     const Scene scene = load("[materials.classic]\nkd = 0.5\n[materials.plastic]\ntype = \"modified-phong\"\n"
                              "kd = 0.4\nks = [0.5, 0.4, 0.3]\nn = 50\nemission = 2\n");
     REQUIRE(scene.materials.size() == 2);
-    CHECK(phongOf(scene.materials[0]).kd == Rgb(0.5f));
+    CHECK(phongOf(scene.materials[0]).kd.constant() == Rgb(0.5f));
     const auto* plastic = dynamic_cast<const ModifiedPhongMaterial*>(&*scene.materials[1]);
     REQUIRE(plastic != nullptr);
     CHECK(plastic->name == "plastic");
-    CHECK(plastic->kd == Rgb(0.4f));
-    CHECK(plastic->ks == Rgb(0.5f, 0.4f, 0.3f));
+    CHECK(plastic->kd.constant() == Rgb(0.4f));
+    CHECK(plastic->ks.constant() == Rgb(0.5f, 0.4f, 0.3f));
     CHECK(plastic->n == 50.0f);
     CHECK(plastic->emission == Rgb(2.0f));
 
@@ -591,8 +591,8 @@ TEST_CASE_FIXTURE(SceneFiles, "a missing material library is a located warning, 
     const Scene grey = load("[[meshes]]\nname = \"lost\"\nfile = \"lost.obj\"\n");
     REQUIRE(grey.triangles.size() == 1);
     const auto& material = phongOf(grey.materials[grey.objects[grey.triangles[0].object].material]);
-    CHECK(material.kd == Rgb(0.5f));
-    CHECK(material.ks == Rgb(0.0f));
+    CHECK(material.kd.constant() == Rgb(0.5f));
+    CHECK(material.ks.constant() == Rgb(0.0f));
     REQUIRE(grey.warnings.size() == 1);
     CHECK(withoutFolder(grey.warnings[0]) == "scene.toml:3:8: " + expectedWarning + "its faces are grey");
 }
@@ -602,7 +602,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is a warning
     write("lost.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
     const Scene lost = load("[[meshes]]\nfile = \"lost.obj\"\n");
     REQUIRE(lost.triangles.size() == 1);
-    CHECK(phongOf(lost.materials[lost.objects[lost.triangles[0].object].material]).kd == Rgb(0.5f));
+    CHECK(phongOf(lost.materials[lost.objects[lost.triangles[0].object].material]).kd.constant() == Rgb(0.5f));
     REQUIRE(lost.warnings.size() == 2);
     CHECK(withoutFolder(lost.warnings[1]) == "scene.toml:2:8: meshes[0].file: " + (dir() / "lost.obj").string() +
                                                  ":5: usemtl \"red\" names no material of its material libraries; "
@@ -614,7 +614,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is a warning
     const Scene wrong = load("[[meshes]]\nfile = \"wrong.obj\"\n");
     REQUIRE(wrong.triangles.size() == 2);
     CHECK(wrong.labelOf(wrong.triangles[0].object) == "blue");
-    CHECK(phongOf(wrong.materials[wrong.objects[wrong.triangles[1].object].material]).kd == Rgb(0.5f));
+    CHECK(phongOf(wrong.materials[wrong.objects[wrong.triangles[1].object].material]).kd.constant() == Rgb(0.5f));
     REQUIRE(wrong.warnings.size() == 1);
     CHECK(wrong.warnings[0].ends_with("wrong.obj:8: usemtl \"red\" names no material of its material libraries; "
                                       "its faces are grey"));
@@ -626,7 +626,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a usemtl material no library defines is a warning
     write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const Scene plain = load("[[meshes]]\nfile = \"plain.obj\"\n");
     REQUIRE(plain.triangles.size() == 1);
-    CHECK(phongOf(plain.materials[plain.objects[plain.triangles[0].object].material]).kd == Rgb(0.5f));
+    CHECK(phongOf(plain.materials[plain.objects[plain.triangles[0].object].material]).kd.constant() == Rgb(0.5f));
     CHECK(plain.warnings.empty());
 }
 
@@ -668,8 +668,8 @@ TEST_CASE_FIXTURE(SceneFiles, "material names that are no labels become labels, 
     CHECK(scene.labelOf(scene.triangles[0].object) == "Terraind_k-2");
     CHECK(scene.labelOf(scene.triangles[1].object) == "Terraind_k-3");
     CHECK(scene.labelOf(scene.triangles[2].object) == "Terraind_k");
-    CHECK(phongOf(scene.materials[scene.objects[scene.triangles[0].object].material]).kd == Rgb(1, 0, 0));
-    CHECK(phongOf(scene.materials[scene.objects[scene.triangles[2].object].material]).kd == Rgb(0, 0, 1));
+    CHECK(phongOf(scene.materials[scene.objects[scene.triangles[0].object].material]).kd.constant() == Rgb(1, 0, 0));
+    CHECK(phongOf(scene.materials[scene.objects[scene.triangles[2].object].material]).kd.constant() == Rgb(0, 0, 1));
     const std::string at = "scene.toml:2:8: meshes[0].file: " + obj.string();
     const std::string notLabel = "\" is no label of letters, digits, '_', '-' or '.'; it is labelled \"";
     REQUIRE(scene.warnings.size() == 2);

@@ -1,0 +1,53 @@
+// The textures of materials/texture.h, read through the image module's OpenImageIO TextureSystem:
+// registered as the texture opener when the renderer's library is linked in (materials cannot
+// include io/, which sits above them).
+#include <memory>
+#include <string>
+
+#include "io/image_codec.h"
+#include "io/image_module.h"
+#include "materials/texture.h"
+
+namespace lightpath {
+namespace {
+
+class ImageTexture final : public Texture {
+public:
+    ImageTexture(const ImageCodec& codec, TextureFileHandle* handle) : codec_(codec), handle_(handle) {
+        float rgb[3];
+        codec_.averageTexture(handle_, rgb);
+        average_ = {rgb[0], rgb[1], rgb[2]};
+    }
+
+    Rgb lookup(const TextureFootprint& f, bool filtered) const override {
+        // Image rows run down from t = 0 while v runs up (OBJ's vt, OpenGL): t = 1 - v.
+        const TextureQuery query{f.uv.x, 1.0f - f.uv.y, f.dUVdx.x, -f.dUVdx.y, f.dUVdy.x, -f.dUVdy.y, filtered};
+        float rgb[3];
+        codec_.lookupTexture(handle_, query, rgb);
+        return {rgb[0], rgb[1], rgb[2]};
+    }
+
+    Rgb average() const override { return average_; }
+
+private:
+    const ImageCodec& codec_;
+    TextureFileHandle* handle_;  // the TextureSystem's, alive for the process
+    Rgb average_{0.0f};
+};
+
+std::shared_ptr<const Texture> openImageTexture(const std::string& file, std::string& error) {
+    try {
+        const ImageCodec& codec = imageCodec();
+        TextureFileHandle* handle = codec.openTexture(file, error);
+        if (handle == nullptr) return nullptr;
+        return std::make_shared<const ImageTexture>(codec, handle);
+    } catch (const ImageModuleError& e) {
+        error = e.what();
+        return nullptr;
+    }
+}
+
+const bool kRegistered = (registerTextureOpener(openImageTexture), true);
+
+}  // namespace
+}  // namespace lightpath

@@ -1,0 +1,214 @@
+// Textures (materials/texture.h): a checkerboard written by the test (OpenImageIO through the image
+// module), lit by the ambient term alone so that a pixel is ka exactly (ka Ia, Ia = 1). Far away
+// the filtered texture renders the checks' average like a supersampled render, where point
+// sampling aliases; up close each pixel is its texel; an OBJ's map_Kd shows its checks; a file
+// that cannot be read is an error located at its key; the AOVs still sum.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "io/image_codec.h"
+#include "io/image_module.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "../support/film_checks.h"
+
+namespace lightpath {
+namespace {
+
+constexpr int kTexels = 64;  // the image's side
+constexpr int kCheck = 8;    // texels per check: 8 x 8 checks, black at texel (0, 0)
+
+// The checkerboard's value at texel (i, j): 0 or 1.
+float checkAt(int i, int j) { return float(((i / kCheck) + (j / kCheck)) % 2); }
+
+// Writes the checkerboard as an 8-bit PNG (0 and 255: 0 and 1 exactly) once; returns its path.
+std::filesystem::path checkerboard() {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "lightpath-texture-tests";
+    const std::filesystem::path file = folder / "checker.png";
+    std::filesystem::create_directories(folder);
+    std::vector<unsigned char> pixels;
+    for (int j = 0; j < kTexels; ++j)
+        for (int i = 0; i < kTexels; ++i)
+            for (int c = 0; c < 3; ++c) pixels.push_back(checkAt(i, j) > 0.0f ? 255 : 0);
+    ImageFileSpec spec;
+    spec.width = spec.height = kTexels;
+    spec.channelNames = {"R", "G", "B"};
+    const std::string error = imageCodec().write("png", file.string(), spec, pixels.data());
+    REQUIRE(error.empty());
+    return file;
+}
+
+// A plane y = 0 seen from `eye` towards `lookAt`, ka the checkerboard repeated once per
+// `repeat` metres, lit by Ia = 1 alone.
+std::string floorScene(const std::string& texture, const char* eye, const char* lookAt, const char* up, float repeat,
+                       bool filtered) {
+    return "[world]\nambient = 1\n[camera]\neye = " + std::string(eye) + "\nlook_at = " + lookAt + "\nup = " + up +
+           "\nfov = 40\nresolution = [96, 72]\n[materials.floor]\nka = { texture = \"" + texture +
+           "\", uv_scale = " + std::to_string(1.0f / repeat) + ", filter = " + (filtered ? "true" : "false") +
+           " }\n[[planes]]\npoint = [0, 0, 0]\nnormal = [0, 1, 0]\nmaterial = \"floor\"\n";
+}
+
+Film renderBeauty(const Scene& scene, int samplesPerPixel) {
+    const AovSet aovs(classesSet());
+    RenderOptions options;
+    options.integrator = "raycast";
+    options.samplesPerPixel = samplesPerPixel;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+// The pixels (their centres) whose ray meets the floor farther than `distance` from the eye.
+std::vector<std::pair<int, int>> floorPixelsBeyond(const Scene& scene, float distance) {
+    const PinholeCamera camera(scene.camera);
+    std::vector<std::pair<int, int>> pixels;
+    for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) {
+            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+            const float t = -ray.origin.y / ray.direction.y;
+            if (t > distance && std::isfinite(t)) pixels.emplace_back(x, y);
+        }
+    return pixels;
+}
+
+double rmse(const Film& a, const Film& b, const std::vector<std::pair<int, int>>& pixels) {
+    double sum = 0.0;
+    for (const auto& [x, y] : pixels) {
+        const double d = double(a.at(0, x, y).g) - double(b.at(0, x, y).g);
+        sum += d * d;
+    }
+    return std::sqrt(sum / double(pixels.size()));
+}
+
+}  // namespace
+
+TEST_CASE("textures: far away a filtered checkerboard renders its average, as a supersampled render does") {
+    const std::string texture = checkerboard().string();
+    // The eye 1 m above the floor, looking at the horizon: checks 0.5 m wide (4 m per repeat).
+    const auto scene = [&](bool filtered) {
+        return loadSceneFromText(floorScene(texture, "[0, 1, 0]", "[0, 0.8, -10]", "[0, 1, 0]", 4.0f, filtered),
+                                 "far.toml");
+    };
+    const Scene filteredScene = scene(true), pointScene = scene(false);
+    // Beyond 15 m one pixel spans several checks in depth (its footprint there is about 0.15 m
+    // across and 2.3 m deep); that is where point sampling aliases.
+    const std::vector<std::pair<int, int>> far = floorPixelsBeyond(filteredScene, 15.0f);
+    REQUIRE(far.size() > 300);
+    // The reference: point sampled, 256 jittered samples in each pixel (the box filter's average).
+    const Film reference = renderBeauty(pointScene, 256);
+    const Film filtered = renderBeauty(filteredScene, 1);
+    const Film pointSampled = renderBeauty(pointScene, 1);
+    double mean = 0.0;
+    for (const auto& [x, y] : far) mean += filtered.at(0, x, y).g;
+    mean /= double(far.size());
+    CAPTURE(mean);
+    CHECK(mean == doctest::Approx(0.5).epsilon(0.04));  // the checks' analytic average
+    const double filteredError = rmse(filtered, reference, far), pointError = rmse(pointSampled, reference, far);
+    CAPTURE(filteredError);
+    CAPTURE(pointError);
+    CHECK(filteredError < 0.06);
+    // The control: one point sample per pixel lands on a black or a white check.
+    CHECK(pointError > 0.3);
+}
+
+TEST_CASE("textures: up close each pixel is its texel's colour") {
+    const std::string texture = checkerboard().string();
+    // Looking straight down from 0.5 m: a texel (1/64 m for a repeat of 1 m) spans about 3 pixels.
+    const Scene scene = loadSceneFromText(
+        floorScene(texture, "[0.3, 0.5, 0.2]", "[0.3, 0, 0.2]", "[0, 0, -1]", 1.0f, true), "near.toml");
+    const Film film = renderBeauty(scene, 1);
+    const PinholeCamera camera(scene.camera);
+    int checked = 0;
+    for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) {
+            // The floor point under the pixel centre, its uv (the plane's frame: u = x, v = -z),
+            // and the texel: image rows run down from t = 1 - v.
+            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+            const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
+            const float s = p.x - std::floor(p.x), t = 1.0f - (-p.z - std::floor(-p.z));
+            const float i = s * kTexels, j = t * kTexels;
+            // Only points 2 texels or more inside a check: magnification blends neighbours.
+            const auto inside = [](float texel) {
+                const float within = std::fmod(texel, float(kCheck));
+                return within > 2.0f && within < float(kCheck) - 2.0f;
+            };
+            if (!inside(i) || !inside(j)) continue;
+            ++checked;
+            CAPTURE(x);
+            CAPTURE(y);
+            CHECK(film.at(0, x, y).g == doctest::Approx(checkAt(int(i), int(j))).epsilon(1e-4));
+        }
+    CHECK(checked > 1000);
+}
+
+TEST_CASE("textures: an OBJ's map_Kd is its kd, at its vt") {
+    const std::filesystem::path folder = checkerboard().parent_path();
+    // A 2 m square on the floor, vt (0,0) .. (1,1), its MTL's map_Kd the checkerboard, lit from
+    // straight above by a point light.
+    std::ofstream(folder / "square.mtl") << "newmtl checks\nKd 1 1 1\nmap_Kd checker.png\n";
+    std::ofstream(folder / "square.obj") << "mtllib square.mtl\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\n"
+                                            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checks\nf 1/1 2/2 3/3 4/4\n";
+    const std::string text = "[camera]\neye = [0, 3, 0]\nlook_at = [0, 0, 0]\nup = [0, 0, -1]\nfov = 40\n"
+                             "resolution = [96, 72]\n[[lights]]\ntype = \"point\"\nposition = [0, 4, 0]\n"
+                             "intensity = 16\n[[meshes]]\nfile = \"" + (folder / "square.obj").string() + "\"\n";
+    const Scene scene = loadSceneFromText(text, "obj.toml");
+    REQUIRE(scene.warnings.empty());
+    const Film film = renderBeauty(scene, 1);
+    const PinholeCamera camera(scene.camera);
+    int black = 0, white = 0;
+    for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) {
+            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+            const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
+            if (std::abs(p.x) >= 1.0f || std::abs(p.z) >= 1.0f) continue;
+            // vt interpolated: u = (x + 1) / 2, v = (1 - z) / 2; the texel row runs down from t = 1 - v.
+            const float i = (p.x + 1.0f) / 2.0f * kTexels, j = (1.0f - (1.0f - p.z) / 2.0f) * kTexels;
+            const float wi = std::fmod(i, float(kCheck)), wj = std::fmod(j, float(kCheck));
+            if (wi < 2.0f || wi > kCheck - 2.0f || wj < 2.0f || wj > kCheck - 2.0f) continue;
+            CAPTURE(x);
+            CAPTURE(y);
+            if (checkAt(int(i), int(j)) == 0.0f) {
+                ++black;
+                CHECK(film.at(0, x, y).g == 0.0f);
+            } else {
+                ++white;
+                CHECK(film.at(0, x, y).g > 0.1f);
+            }
+        }
+    CHECK(black > 200);
+    CHECK(white > 200);
+}
+
+TEST_CASE("textures: a texture file that cannot be read is an error at its key") {
+    const std::string text = "[materials.wood]\nkd = { texture = \"/nonexistent/wood.png\" }\n";
+    CHECK_THROWS_WITH_AS(loadSceneFromText(text, "wood.toml"),
+                         doctest::Contains("wood.toml:2:6: materials.wood.kd: cannot read the texture \"/nonexistent/wood.png\""),
+                         SceneError);
+    // A parameter read as a constant refuses one, located too.
+    const std::string emission = "[materials.lamp]\nemission = { texture = \"" + checkerboard().string() + "\" }\n";
+    CHECK_THROWS_WITH_AS(loadSceneFromText(emission, "lamp.toml"),
+                         doctest::Contains("lamp.toml:2:12: materials.lamp.emission: expected a number or an array of 3 numbers (this parameter takes no texture)"),
+                         SceneError);
+}
+
+TEST_CASE("textures: the AOVs of a textured scene sum to the beauty") {
+    const std::string texture = checkerboard().string();
+    std::string text = floorScene(texture, "[0, 1, 0]", "[0, 0.8, -10]", "[0, 1, 0]", 4.0f, true);
+    text += "[materials.ball]\nkd = { texture = \"" + texture + "\", tint = [1, 0.5, 0.25] }\nks = 0.2\n"
+            "[[spheres]]\ncenter = [0, 1, -4]\nradius = 0.8\nmaterial = \"ball\"\n"
+            "[[lights]]\ntype = \"point\"\nposition = [2, 4, 0]\nintensity = 10\n";
+    const Scene scene = loadSceneFromText(text, "sums.toml");
+    const AovSet aovs(classesSet());
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = 4;
+    const Film film = Renderer(scene, aovs, options).render().film;
+    CHECK(test::worstSumError(film) <= 1.0);
+}
+
+}  // namespace lightpath
