@@ -293,7 +293,7 @@ TEST_CASE("serve: every refused request gets a 4xx naming what was wrong, and no
         {"{\"width\": 0}", 400, "width", "width: expected an integer 1\\.\\.4096, got 0"},
         {"{\"width\": 1000000000}", 400, "width", "expected an integer 1\\.\\.4096, got 1000000000"},
         {"{\"height\": 1e9}", 400, "height", "expected an integer 1\\.\\.4096"},
-        {"{\"width\": 4096, \"height\": 4096}", 400, "width,height", "4096x4096 pixels times 7 layers is 117440512; expected at most 16777216"},
+        {"{\"width\": 4096, \"height\": 4096}", 400, "width,height", "4096x4096 pixels times 8 layers is 134217728; expected at most 16777216"},
         {"{\"spp\": \"many\"}", 400, "spp", "spp: expected an integer 1\\.\\.4096, got \"many\""},
         {"{\"spp\": -3}", 400, "spp", "got -3"},
         {"{\"maxDepth\": 65}", 400, "maxDepth", "0\\.\\.64"},
