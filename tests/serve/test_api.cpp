@@ -133,7 +133,7 @@ TEST_CASE("serve: a render at 1 spp is the renderer's own image, its layers summ
     CHECK(done["passes"] == 1);
     CHECK(done["samples"] == 1);
     CHECK(done["sumError"].get<double>() < 1e-5);
-    CHECK(done["layers"] == json::array({"beauty", "raycast", "raytrace", "mirror", "emission", "indirect", "rest"}));
+    CHECK(done["layers"] == json::array({"beauty", "raycast", "raytrace", "mirror", "emission", "indirect", "volume", "rest"}));
 
     auto c = fixture.client();
     const auto exr = c->Get("/api/render.exr");
