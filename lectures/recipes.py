@@ -8,8 +8,10 @@ returns notes for the gallery: what the checks measured.
 One LPE spelling everywhere, the README's: no spaces, `<L.'name'>` for a light's label.
 """
 
+import itertools
 import re
 import tomllib
+from pathlib import Path
 
 import numpy as np
 
@@ -883,3 +885,70 @@ def automaton_at_work(fig):
                        "lpe dot --set classes, lpe match --set classes --trace")])
     return [f"pixel {x},{y}: {len(rows)} paths through states {sorted(visited)}; "
             "lpe match's AOVs are the render's for every path"]
+
+
+# "What fog adds" (issue #24): the fog scene's light split by its volume events, a partition
+# (checked: the three sum to the beauty). `EV<L.>` is the lecture's single scattering (what ray
+# casting adds in fog), a part of `once`.
+FOG_PARTS = [("surfaces", "E[^V]*L"), ("once", "E[^V]*V[^V]*L"), ("multiple", "E.*V.*V.*L")]
+FOG_SINGLE = ("single", "EV<L.>")
+
+
+def without_media(src, dst):
+    """A copy of scene src with its media unassigned ([world] medium and every interior line
+    dropped): the same room in vacuum. Returns dst."""
+    lines = [line for line in Path(src).read_text().splitlines()
+             if not re.match(r"\s*(medium|interior)\s*=", line)]
+    dst.parent.mkdir(parents=True, exist_ok=True)
+    dst.write_text("\n".join(lines) + "\n")
+    return dst
+
+
+def check_fog_labels(lightpath, labelled):
+    """Each printed LPE accepts exactly the paths of its AOV's expression, on every path of up
+    to four events from D, S and V (checks.check_label's comparison, with volume events)."""
+    paths = ["E" + "".join(p) + "L" for k in range(5) for p in itertools.product("DSV", repeat=k)]
+    for label, expr in labelled:
+        said, meant = (checks.lpe_accepts(lightpath, e, paths) for e in (label, expr))
+        if said != meant:
+            raise FigureError(f"the panel labelled '{label}' shows '{expr}': they differ on "
+                              f"{', '.join(sorted(said ^ meant, key=len)[:4])}")
+        if not meant:
+            raise FigureError(f"'{expr}' accepts no path of up to four events")
+
+
+def fog(fig):
+    run = fig.run
+    scene = fig.scene(0)
+    # Quick mode (CI's figures-quick, its longest test) at 160x120 and 4 samples: a few seconds.
+    common = ["--integrator", "path", "--spp", run.spp_path,
+              "--resolution", "160x120" if run.quick else "480x360"]
+    vacuum = render(run, fig.id, "no-fog", without_media(scene, fig.dir / "no-fog.toml"), *common)
+    lpes = sum((["--lpe", f"{n}={e}"] for n, e in FOG_PARTS + [FOG_SINGLE]), [])
+    exr = render(run, fig.id, "fog", scene, *common, *lpes)
+    worst = checks.check_sum(exr, [n for n, _ in FOG_PARTS])
+    layers = checks.read_layers(exr)
+    # The lecture's single scattering is part of the light that scattered once in the fog.
+    beyond = float((layers["single"] - layers["once"]).max())
+    if not beyond <= 1e-5 * max(float(layers["once"].max()), 1.0):
+        raise FigureError(f"{exr}: EV<L.> exceeds E[^V]*V[^V]*L by {beyond:.3g}: it is not a part of it")
+    means = {n: checks.check_nonzero(exr, n, what) for n, what in
+             (("", "the fog's beauty"), ("single", "single scattering"), ("multiple", "multiple scattering"))}
+    dimmed = checks.check_nonzero(vacuum, "", "the room without fog")
+    surfaces = float(checks.luminance(layers["surfaces"]).mean())
+    if not surfaces < dimmed:
+        raise FigureError(f"the surfaces seen through fog ({surfaces:.3g}) are not dimmer than "
+                          f"without it ({dimmed:.3g})")
+    check_fog_labels(run.lightpath, [(e, e) for _, e in FOG_PARTS + [FOG_SINGLE]])
+    panels = [Panel(vacuum, "without fog", "in vacuum"),
+              Panel(exr, "with fog", "= bottom row"),
+              Panel(exr, "single scattering", "EV<L.>", layer="single"),
+              Panel(exr, "surfaces", "E[^V]*L", layer="surfaces"),
+              Panel(exr, "scattered once", "E[^V]*V[^V]*L", layer="once"),
+              Panel(exr, "multiple scattering", "E.*V.*V.*L", layer="multiple")]
+    fig.compose(panels, cols=3)
+    return [f"surfaces + once + multiple = beauty (worst pixel {worst:.2g})",
+            f"EV<L.> is within E[^V]*V[^V]*L; mean luminance: beauty {means['']:.3g}, "
+            f"single {means['single']:.3g}, multiple {means['multiple']:.3g}",
+            f"surfaces through fog {surfaces:.3g} < without fog {dimmed:.3g}",
+            "every printed LPE parsed by lpe match and compared on paths with V"]

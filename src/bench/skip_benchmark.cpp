@@ -47,17 +47,24 @@ SkipBenchmarkResult runSkipBenchmark(const std::filesystem::path& scenePath, boo
         {"beauty only, --aovs none", none, withBeauty},
     };
     std::vector<unsigned long long> rays(configs.size());
+    std::vector<RayCounters> counters(configs.size());
     std::vector<std::function<void()>> jobs;
     for (std::size_t i = 0; i < configs.size(); ++i) {
         jobs.push_back([&, i] {
             const Renderer renderer(scene, configs[i].aovs, configs[i].options);
-            rays[i] = renderer.render().stats.rays.total();
+            counters[i] = renderer.render().stats.rays;
+            rays[i] = counters[i].total();
         });
     }
     const std::vector<double> seconds = medianSeconds(jobs, result.repetitions);
     for (std::size_t i = 0; i < configs.size(); ++i) result.rows.push_back({configs[i].request, seconds[i], rays[i]});
     result.restrictedOverFull = seconds[1] / seconds[0];
     result.aovsOverBeauty = seconds[0] / seconds[2];
+    result.media = scene.media.size();
+    for (const RayCounters& c : counters) {
+        result.mediumSegments += c.mediumSegments;
+        result.mediumShadowRays += c.mediumShadow;
+    }
     return result;
 }
 

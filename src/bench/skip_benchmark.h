@@ -2,8 +2,10 @@
 // `lightpath bench skip`: what skipping buys, as time ratios measured in one run.
 //   restricted_over_full  time of an E(D|G)L-only request (no beauty) / time of the full render
 //                         (beauty + classes) on a mirror-heavy scene; target <= 1/1.5
-//   aovs_over_beauty      time of beauty + the five classes AOVs / time of the beauty alone;
+//   aovs_over_beauty      time of beauty + the six classes AOVs / time of the beauty alone;
 //                         target <= 1.05
+// and the media work every render did (segments through a medium, attenuated shadow rays): zero in
+// a scene without media, which runs no medium code at all (issue #24: media cost such a scene nothing)
 // and every integrator's scaling from 1 thread to all (target >= 1.85x on 2 threads), with the
 // classes AOVs' cost on 1 thread and on all (target <= 5% on each).
 #include <filesystem>
@@ -24,6 +26,9 @@ struct SkipBenchmarkResult {
     std::vector<SkipBenchmarkRow> rows;  // full (beauty + classes), restricted, beauty only
     double restrictedOverFull = 0.0;
     double aovsOverBeauty = 0.0;
+    std::size_t media = 0;                      // the scene's [media]
+    unsigned long long mediumSegments = 0;      // summed over the rows' renders
+    unsigned long long mediumShadowRays = 0;    // summed over the rows' renders
 };
 
 SkipBenchmarkResult runSkipBenchmark(const std::filesystem::path& scene, bool quick);

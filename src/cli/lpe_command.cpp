@@ -379,7 +379,7 @@ void addLpeCommand(CLI::App& app) {
     CLI::App* checkCommand = lpe->add_subcommand("check", "Report overlaps and gaps of a set of expressions");
     addSetArguments(*checkCommand, *check);
     checkCommand->add_option("--universe", check->universe,
-                             "the paths the set should split (default E.*L; E(D|G|S)*L with --set classes)");
+                             "the paths the set should split (default E.*L; E(<[RT][DGS]>|<Vx>)*L with --set classes)");
     checkCommand->add_option("--integrator", check->integrator,
                              "refuse, as render does, an expression this integrator can never fill (default: "
                              "one no integrator can fill), and say which of a --set's it fills")

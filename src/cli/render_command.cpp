@@ -57,6 +57,9 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
                 n(r.shadowBehind + r.shadowZero + r.shadowDead), n(r.shadowBehind), n(r.shadowZero), n(r.shadowDead));
     std::printf("              reflection %llu, refraction %llu (no requested output can accept)\n",
                 n(r.reflectionDead), n(r.refractionDead));
+    std::printf("media         %llu segments through a medium, %llu rays scattered in one (V), %llu single-scattering "
+                "points, %llu shadow rays attenuated\n",
+                n(r.mediumSegments), n(r.volume), n(r.singleScattering), n(r.mediumShadow));
     std::printf("glossy terms  %llu evaluated, %llu skipped (the material's glossy lobe is zero, e.g. ks = 0)\n",
                 n(r.glossyEvaluated), n(r.glossyAbsent));
     std::printf("time          %.3f s on %d thread%s (%.3f s CPU): %.0f samples/s, %.2f M rays/s\n", stats.seconds,

@@ -58,9 +58,15 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
         // Volume events occur only where a scene has media and the integrator renders them (its
         // refusal of the others is RenderConfig::judge's); there the labels decide.
         const bool volumesHere = scene && integrator && integrator->rendersMedia && !scene->media.empty();
-        if (!volumesHere)
-            return {Verdict::BlackHere, "it needs a volume event (V): only a scene with [media] fills it, under an "
-                                        "integrator that renders media (" + mediaRenderers() + ")"};
+        if (!volumesHere) {
+            const std::string why = "it needs a volume event (V): only a scene with [media] fills it, under an "
+                                    "integrator that renders media (" + mediaRenderers() + ")";
+            // A preset's volume AOV (classes') is written black without a word, as its other AOVs are.
+            if (!isPresetMember(aov, scene)) return {Verdict::BlackHere, why};
+            const bool sceneLacks = scene && scene->media.empty();
+            return {Verdict::PresetBlack, sceneLacks ? "in this scene no medium ([media])" : why,
+                    sceneLacks ? "no medium ([media])" : ""};
+        }
         // A label that labels nothing here (a misspelt medium) is on no event, as for surfaces below.
         auto [placement, unknown] = placeLabels(aov, *scene);
         if (lpe::haveCommonPath(languages(expression, integrator, true), placement))

@@ -152,6 +152,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
 
     if (ctx.shadows) {
         ++counters.shadow;
+        if (medium != nullptr) ++counters.mediumShadow;
         const Ray shadowRay = spawnShadowRay(origins, sample.point);
         if (ctx.geometry.occluded(shadowRay)) {
             if (path.explaining()) {
@@ -234,6 +235,7 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
     const Ray shadowRay = spawnShadowRay(m.point, sample.point);
     if (ctx.shadows) {
         ++counters.shadow;
+        ++counters.mediumShadow;
         if (ctx.geometry.occluded(shadowRay)) {
             if (path.explaining()) path.reject(scatter, lightEvent, "the shadow ray from the medium point is blocked");
             return;
@@ -316,6 +318,7 @@ void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::
         if (!flight.scattered || isBlack(flight.weight)) continue;
         const MediumPoint point{ray.at(flight.t), -ray.direction, medium, index};
         const Rgb weight = throughput * flight.weight / float(kSingleScatteringSteps);
+        ++path.counters.singleScattering;
         for (const Light* light : lights.deltaLights())
             addMediumLightSample(point, weight, light->sample(point.point, Vec2{0.0f}), 1.0f, *light,
                                  DirectLightWeighting::Alone, path);
@@ -327,6 +330,7 @@ Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uin
     const Medium* medium = path.context.scene.medium(mediumIndex);
     if (medium == nullptr) return throughput;
     const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
+    ++path.counters.mediumSegments;
     addSingleScattering(ray, tMax, *medium, mediumIndex, throughput, path);
     return throughput * medium->transmittance(ray, 0.0f, tMax);
 }

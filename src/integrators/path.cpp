@@ -30,6 +30,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             const float uChannel = sampler.next1D();
             const float uDistance = sampler.next1D();
             const MediumSample flight = medium->sampleDistance(ray, tMax, uChannel, uDistance);
+            ++path.counters.mediumSegments;
             throughput *= flight.weight;
             if (isBlack(throughput)) break;
             if (flight.scattered) {

@@ -14,6 +14,11 @@ struct alignas(64) RayCounters {
     std::uint64_t refraction = 0;
     std::uint64_t volume = 0;  // rays scattered at a point inside a medium (a V event)
 
+    // Work in participating media (`--stats`; all zero in a scene without media, which does none).
+    std::uint64_t mediumSegments = 0;   // ray segments through a medium: a free flight or single scattering along each
+    std::uint64_t mediumShadow = 0;     // shadow rays attenuated by a medium's transmittance
+    std::uint64_t singleScattering = 0; // ray casting's and Whitted's single-scattering points lit (E S* V L)
+
     // Skipped rays by reason.
     std::uint64_t cameraDead = 0;          // no requested output accepts any path from here
     std::uint64_t shadowBehind = 0;        // light behind the surface: N.(b - p) <= 0
@@ -39,6 +44,9 @@ struct alignas(64) RayCounters {
         reflection += o.reflection;
         refraction += o.refraction;
         volume += o.volume;
+        mediumSegments += o.mediumSegments;
+        mediumShadow += o.mediumShadow;
+        singleScattering += o.singleScattering;
         cameraDead += o.cameraDead;
         shadowBehind += o.shadowBehind;
         shadowZero += o.shadowZero;

@@ -115,7 +115,7 @@ TEST_CASE("the scene's events: the warning names the cause, a preset's black AOV
     CHECK(warnings[0].rfind("AOV s (ES+DL) stays black: in this scene no material has a mirror lobe", 0) == 0);
 
     // classes' raytrace and mirror need a mirror or glass, emission a light a ray can hit (the
-    // point light is not one) or a sky: written black, no warning, noted.
+    // point light is not one) or a sky, volume a medium: written black, no warning, noted.
     config.lpes.clear();
     config.aovs = "classes";
     warnings.clear();
@@ -126,9 +126,10 @@ TEST_CASE("the scene's events: the warning names the cause, a preset's black AOV
         black.push_back(b.name);
         CHECK(b.inThisScene);
     }
-    CHECK(black == std::vector<std::string>{"raytrace", "mirror", "emission"});
-    // The control: a mirror ball and a sky to see in it, and every class can be filled.
-    const Scene lit = load(kMatteRoom + withBall("kr = 0.9") + "[world]\nbackground = 0.5\n");
+    CHECK(black == std::vector<std::string>{"raytrace", "mirror", "emission", "volume"});
+    // The control: a mirror ball, a sky to see in it and fog, and every class can be filled.
+    const Scene lit = load(kMatteRoom + withBall("kr = 0.9") +
+                           "[world]\nbackground = 0.5\nmedium = \"fog\"\n[media.fog]\nsigma_s = 0.1\n");
     CHECK(blackPresetAovs(config.buildAovSet(lit).expressions(), Judge(findIntegrator("path"), &lit)).empty());
 }
 

@@ -137,7 +137,13 @@ TEST_CASE("every preset on every shipped scene: the command line, serve and lpe 
                 setup.integrator = integrator.name;
                 CAPTURE(setup.integrator);
                 std::vector<std::string> warnings;
-                CHECK_NOTHROW(setup.buildAovSet(scene, &warnings));  // a preset is never refused
+                if (!scene.media.empty() && !integrator.rendersMedia) {
+                    // The scene is refused, whatever the AOVs (RenderConfig::judge), not the preset.
+                    CHECK_THROWS_WITH(setup.buildAovSet(scene, &warnings),
+                                      doctest::Contains("does not render participating media"));
+                } else {
+                    CHECK_NOTHROW(setup.buildAovSet(scene, &warnings));  // a preset is never refused
+                }
                 for (const auto& aov : set) {
                     CAPTURE(aov.expression);
                     // `lpe check` offers no preset made from a scene: its AOVs are a preset's only given one

@@ -141,7 +141,7 @@ TEST_CASE("path: white furnace: a medium that does not absorb leaves the walls' 
     for (int c = 0; c < 3; ++c) CHECK(meanOf(absorbing, 0, c) < 0.9);
 }
 
-TEST_CASE("path with media: the classes AOVs and rest sum to the beauty, volume light goes to rest, and C<V>.*, C<V>L fill") {
+TEST_CASE("path with media: the classes AOVs sum to the beauty, volume light goes to volume, rest is zero, and C<V>.*, C<V>L fill") {
     Scene scene = fogFloor(Rgb{0.05f}, Rgb{0.3f});
     PhongMaterial glass;
     glass.name = "glass";
@@ -152,7 +152,10 @@ TEST_CASE("path with media: the classes AOVs and rest sum to the beauty, volume 
     const Film classes = renderPath(scene, classesSet(), 4, 8);
     CHECK(test::worstSumError(classes) <= 1.0);
     CHECK(test::finiteNonNegative(classes));
-    CHECK(meanOf(classes, classes.layerCount() - 1, 1) > 0.0);  // `rest` holds the light through V events
+    // `volume` (E.*V.*L) holds the light through V events and the six partition: `rest` is zero.
+    REQUIRE(classes.layerNames()[6] == "volume");
+    CHECK(meanOf(classes, 6, 1) > 0.0);
+    for (int c = 0; c < 3; ++c) CHECK(meanOf(classes, classes.layerCount() - 1, c) == 0.0);
 
     // Arnold's volume AOVs (the camera ray scatters first in a medium), one medium's light, and a
     // partition: paths with a V event anywhere and paths with none.

@@ -10,9 +10,9 @@
 namespace lightpath {
 namespace {
 
-// 4x3 pixels; the classes set: beauty, raycast, raytrace, mirror, emission, indirect, rest.
+// 4x3 pixels; the classes set: beauty, raycast, raytrace, mirror, emission, indirect, volume, rest.
 constexpr std::uint64_t kPixels = 4 * 3;
-constexpr std::uint64_t kLayers = 7;
+constexpr std::uint64_t kLayers = 8;
 
 PixelMemory memoryOf(const std::string& integrator, bool writeBeauty = true) {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml");
@@ -29,21 +29,21 @@ TEST_CASE("a film holds three 4-byte floats per layer per pixel") {
     CHECK(memory.width == 4);
     CHECK(memory.height == 3);
     CHECK(memory.layers.size() == kLayers);
-    CHECK(memory.film == kPixels * kLayers * 3 * 4);  // 1008
+    CHECK(memory.film == kPixels * kLayers * 3 * 4);  // 1152
     CHECK(memory.splats == 0);
     CHECK(memory.preprocess == 0);
-    CHECK(memory.total() == 1008);
-    CHECK(memory.describe() == "a 4x3 image of 7 layers (beauty, raycast, raytrace, mirror, emission, indirect, rest)");
+    CHECK(memory.total() == 1152);
+    CHECK(memory.describe() == "a 4x3 image of 8 layers (beauty, raycast, raytrace, mirror, emission, indirect, volume, rest)");
 }
 
 TEST_CASE("without the beauty the film holds the AOVs alone") {
-    CHECK(memoryOf("whitted", false).film == kPixels * (kLayers - 2) * 3 * 4);  // 720
+    CHECK(memoryOf("whitted", false).film == kPixels * (kLayers - 2) * 3 * 4);  // 864
 }
 
 TEST_CASE("bdpt's splat film adds three 16-byte (128-bit) fixed-point sums per layer per pixel") {
     const PixelMemory memory = memoryOf("bdpt");
-    CHECK(memory.splats == kPixels * kLayers * 3 * 16);  // 4032
-    CHECK(memory.total() == 1008 + 4032);
+    CHECK(memory.splats == kPixels * kLayers * 3 * 16);  // 4608
+    CHECK(memory.total() == 1152 + 4608);
 }
 
 TEST_CASE("the rasteriser's z-buffer adds one fragment per pixel: depth, primitive id, barycentrics") {

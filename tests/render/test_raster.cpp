@@ -102,6 +102,7 @@ TEST_CASE("the rasteriser and ray casting without shadows agree off the edges on
     for (const std::filesystem::path& path : test::shippedScenes()) {
         CAPTURE(path.filename().string());
         const Scene scene = loadScene(path.string());
+        if (!scene.media.empty()) continue;  // the rasteriser refuses media (RenderConfig::judge)
         const Comparison c =
             compare(scene, renderWith(scene, aovs, "raster", std::nullopt), renderWith(scene, aovs, "raycast", false));
         MESSAGE(path.filename().string() << ": " << c.interiorPixels << " interior pixels, largest relative difference "
