@@ -920,9 +920,9 @@ def check_fog_labels(lightpath, labelled):
 def fog(fig):
     run = fig.run
     scene = fig.scene(0)
-    # Quick mode (CI's figures-quick, its longest test) at 160x120 and 4 samples: a few seconds.
+    # Quick mode (CI's figures-quick, its longest test) at half height and 4 samples: seconds.
     common = ["--integrator", "path", "--spp", run.spp_path,
-              "--resolution", "160x120" if run.quick else "480x360"]
+              "--resolution", run.res_for(slide.cell_aspect(6, 3))]
     vacuum = render(run, fig.id, "no-fog", without_media(scene, fig.dir / "no-fog.toml"), *common)
     lpes = sum((["--lpe", f"{n}={e}"] for n, e in FOG_PARTS + [FOG_SINGLE]), [])
     exr = render(run, fig.id, "fog", scene, *common, *lpes)

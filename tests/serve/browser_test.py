@@ -318,7 +318,7 @@ def lecture_hall(browser, x, y, shots):
     browser.set_viewport(1920, 1080)
     print("the long expression in every LPE input, a broken one in raytrace's")
     browser.evaluate("document.querySelector('button[data-preset=classes]').click(), true")
-    browser.wait_for("document.querySelectorAll('.tile.aov').length === 5", "the classes set's five tiles")
+    browser.wait_for("document.querySelectorAll('.tile.aov').length === 6", "the classes set's six tiles")
     for name in browser.evaluate("[...document.querySelectorAll('.tile.aov')].map(t => t.dataset.layer)"):
         if name != "raytrace":
             browser.type_into(f"{tile(name)}.querySelector('.expression')", LONG_LPE)
@@ -450,7 +450,7 @@ def run(args, profile):
         browser.call("Page.navigate", url=server.url)
 
         print("load the page")
-        browser.wait_for("document.querySelectorAll('.tile.aov').length === 5", "five AOV tiles of the classes set")
+        browser.wait_for("document.querySelectorAll('.tile.aov').length === 6", "six AOV tiles of the classes set")
         browser.wait_for("document.getElementById('beauty').naturalWidth === 640", "the beauty image")
         browser.wait_for(f"{tile_hash('raycast')} !== null", "the raycast tile's image")
         browser.wait_for("document.getElementById('sum-check').className === 'ok'", "the sum check")
