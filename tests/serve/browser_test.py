@@ -290,7 +290,8 @@ def check_layout(browser, width, height, shots, projector):
                    [e.getBoundingClientRect().width, parseFloat(getComputedStyle(e).fontSize)]) }; })()""")
     assert boxes["image"][2] >= 0.4 * width, f"the image is {boxes['image'][2]} px wide in a {width}-pixel window"
     outside = [b for b in [boxes["image"], boxes["explain"], *boxes["tiles"]] if b[0] < 0 or b[1] > width]
-    assert len(boxes["tiles"]) == 7 and not outside, f"parts outside the {width}-pixel window: {outside}"
+    # the classes set: six AOV tiles and two more (7 before the volume AOV came)
+    assert len(boxes["tiles"]) == 8 and not outside, f"parts outside the {width}-pixel window: {outside}"
     narrow = [f for f in boxes["fields"] if f[0] < 12 * f[1]]
     assert boxes["fields"] and not narrow, f"LPE fields narrower than 12 characters' width (px, font px): {narrow}"
     error = browser.evaluate(f"(() => {{ const p = {tile('raytrace')}.querySelector('pre.error'); "
@@ -376,7 +377,7 @@ def lecture_hall(browser, x, y, shots):
     # The long expression is indirect light, which the rasteriser never fills: the one judge refuses
     # it there (docs/lpe.md), as the command line does. The classes preset's own AOVs are not refused.
     browser.evaluate("document.querySelector('button[data-preset=classes]').click(), true")
-    browser.wait_for("state.settings.lpes.length === 5 && state.settings.lpes[0].expression === 'E(D|G)L'",
+    browser.wait_for("state.settings.lpes.length === 6 && state.settings.lpes[0].expression === 'E(D|G)L'",
                      "the classes set back in the tiles")
     assert browser.evaluate("document.getElementById('spp').value") == "16"
     select_integrator(browser, "raster")
