@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <type_traits>
 #include <optional>
@@ -266,6 +267,19 @@ bool hasLight(const Scene& scene) {
     return false;
 }
 
+// Gives a scene without any light kDefaultLightName, a point light above and to the left of its
+// camera's eye; says so.
+std::string addDefaultLight(Scene& scene) {
+    const PinholeCamera view(scene.camera);
+    const Vec3 right = glm::normalize(glm::cross(view.forward(), scene.camera.up));
+    const Vec3 up = glm::cross(right, view.forward());
+    const float distance = glm::length(scene.camera.lookAt - scene.camera.eye);
+    const Vec3 position = scene.camera.eye + kDefaultLightOffset * distance * (up - right);
+    scene.lights.emplace_back(PointLight(std::string(kDefaultLightName), position, Rgb(1.0f), Vec3(1.0f, 0.0f, 0.0f)));
+    return "it has no light: a point light \"" + std::string(kDefaultLightName) + "\" of intensity 1 at " +
+           formatVec3(position) + ", above and left of the eye";
+}
+
 // A scene seen by a camera chosen for it (scene/framing.h): one without [camera] from the front,
 // a little above and to the right; under --fit along its own camera's view. Without any light it
 // gets kDefaultLightName, a point light above and to the left of the eye (scenes/README.md,
@@ -280,16 +294,7 @@ void frameScene(Scene& scene, const Warnings& warn) {
     std::string chosen = (scene.cameraGiven ? "--fit: the camera" : "the scene has no [camera]: a camera") +
                          std::string(" at ") + formatVec3(scene.camera.eye) + " looks at " +
                          formatVec3(scene.camera.lookAt) + (bounds.empty() ? " (the scene has no bounded shape)" : " and sees all of it");
-    if (!hasLight(scene)) {
-        const PinholeCamera view(scene.camera);
-        const Vec3 right = glm::normalize(glm::cross(view.forward(), scene.camera.up));
-        const Vec3 up = glm::cross(right, view.forward());
-        const float distance = glm::length(scene.camera.lookAt - scene.camera.eye);
-        const Vec3 position = scene.camera.eye + kDefaultLightOffset * distance * (up - right);
-        scene.lights.emplace_back(PointLight(std::string(kDefaultLightName), position, Rgb(1.0f), Vec3(1.0f, 0.0f, 0.0f)));
-        chosen += "; it has no light: a point light \"" + std::string(kDefaultLightName) + "\" of intensity 1 at " +
-                  formatVec3(position) + ", above and left of the eye";
-    }
+    if (!hasLight(scene)) chosen += "; " + addDefaultLight(scene);
     warn(chosen);
 }
 
@@ -308,7 +313,13 @@ Scene RenderConfig::loadScene() const {
         scene.camera.width = size->width;
         scene.camera.height = size->height;
     }
-    if (fit || !scene.cameraGiven) frameScene(scene, warn);
+    if (fit || !scene.cameraGiven) {
+        frameScene(scene, warn);
+    } else if (isGltfFile(scenePath) && !hasLight(scene)) {
+        // A glTF file given as the scene brings its camera but may bring no light: lit as a
+        // framed model is (scenes/README.md, "Framing").
+        warn(std::filesystem::path(scenePath).filename().string() + ": " + addDefaultLight(scene));
+    }
     return scene;
 }
 

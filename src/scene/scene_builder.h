@@ -13,6 +13,7 @@
 #include "geometry/shapes.h"
 #include "materials/material.h"
 #include "math/types.h"
+#include "scene/camera.h"
 #include "scene/scene_light.h"
 #include "schema/format.h"
 #include "schema/parameter_values.h"
@@ -51,6 +52,12 @@ public:
     // The emission of object `object`'s material (for tooSmallToSampleWarning).
     virtual Rgb emissionOf(std::uint32_t object) const = 0;
     virtual void addShape(const ShapeRecord& shape) = 0;
+    // A camera a model file brings (a glTF camera): the scene's camera unless it has one already
+    // (its [camera], or an earlier model's). Returns whether it was taken.
+    virtual bool offerCamera(const CameraDescription& camera) {
+        (void)camera;
+        return false;
+    }
     // A located warning ("FILE:LINE:COL: KEY: ..."), printed by the command line.
     virtual void warn(std::string located) = 0;
 };

@@ -323,6 +323,12 @@ public:
     }
     void addShape(const ShapeRecord& shape) override { scene_.shapes.push_back(shape); }
     void warn(std::string located) override { scene_.warnings.push_back(std::move(located)); }
+    bool offerCamera(const CameraDescription& camera) override {
+        if (scene_.cameraGiven) return false;
+        scene_.camera = camera;
+        scene_.cameraGiven = true;
+        return true;
+    }
 
 private:
     Scene& scene_;
@@ -406,10 +412,21 @@ void forEachSection(const TomlTable& root, std::string_view key, Read read) {
 
 }  // namespace
 
-bool isObjFile(const std::filesystem::path& path) {
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".obj";
+    return extension;
+}
+
+}  // namespace
+
+bool isObjFile(const std::filesystem::path& path) { return lowerExtension(path) == ".obj"; }
+
+bool isGltfFile(const std::filesystem::path& path) {
+    const std::string extension = lowerExtension(path);
+    return extension == ".gltf" || extension == ".glb";
 }
 
 namespace {
@@ -432,13 +449,14 @@ std::string tomlString(const std::string& text) {
     return quoted + "\"";
 }
 
-// An OBJ file as the whole scene is the scene `[[meshes]] file = "NAME"` beside it: no camera and
-// no light, which the render then chooses (scene/framing.h). Its messages name the OBJ file only,
-// not that one-line scene.
-Scene loadObjAsScene(const std::filesystem::path& path) {
-    const std::string text = "[[meshes]]\nfile = " + tomlString(path.filename().string()) + "\n";
-    const auto ownMessage = [](const std::string& message) {
-        const std::string key = "meshes[0].file: ";
+// A model file as the whole scene is the scene `[[SECTION]] file = "NAME"` beside it (`meshes` for
+// OBJ, `gltf` for glTF): an OBJ has no camera and no light, which the render then chooses
+// (scene/framing.h), as it does for a glTF file without them. Its messages name the model file
+// only, not that one-line scene.
+Scene loadModelAsScene(const std::filesystem::path& path, const std::string& section) {
+    const std::string text = "[[" + section + "]]\nfile = " + tomlString(path.filename().string()) + "\n";
+    const auto ownMessage = [&](const std::string& message) {
+        const std::string key = section + "[0].file: ";
         const auto at = message.find(key);
         return at == std::string::npos ? message : message.substr(at + key.size());
     };
@@ -457,7 +475,11 @@ Scene loadObjAsScene(const std::filesystem::path& path) {
 Scene loadScene(const std::filesystem::path& path) {
     if (isObjFile(path)) {
         readFile(path);  // says why a missing or unreadable file cannot be opened, as for a scene file
-        return loadObjAsScene(path);
+        return loadModelAsScene(path, "meshes");
+    }
+    if (isGltfFile(path)) {
+        readFile(path);
+        return loadModelAsScene(path, "gltf");
     }
     return loadSceneFromText(readFile(path), path);
 }

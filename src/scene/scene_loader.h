@@ -25,9 +25,11 @@ inline constexpr std::string_view kMaxMagnitudeText = "1e6";
 inline constexpr std::string_view kMagnitudeRange = "from -1e6 to 1e6";
 
 // Reads a TOML scene (format: scenes/README.md), or an OBJ file (isObjFile) as a scene of that one
-// mesh, without camera or light. Throws SceneError; never returns a partial scene.
+// mesh, without camera or light, or a glTF file (isGltfFile) as the scene of that one model, with
+// its own camera and lights if it has them. Throws SceneError; never returns a partial scene.
 Scene loadScene(const std::filesystem::path& path);
-bool isObjFile(const std::filesystem::path& path);  // by its extension, .obj in any case
+bool isObjFile(const std::filesystem::path& path);   // by its extension, .obj in any case
+bool isGltfFile(const std::filesystem::path& path);  // .gltf or .glb, in any case
 // The same from memory (for fuzzing and tests): `path` names the file in errors, and mesh files
 // are looked up next to it.
 Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path);

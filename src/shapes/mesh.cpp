@@ -9,37 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "shapes/mesh_placement.h"
 #include "shapes/obj_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/shape_type.h"
 
 namespace lightpath {
 namespace {
-
-// scale, then rotate_y, then translate: a mesh is placed as its file describes it, resized about
-// its own origin, turned about the vertical axis and moved.
-struct MeshPlacement {
-    Vec3 scale{1.0f};
-    float rotateY = 0.0f;  // radians
-    Vec3 translate{0.0f};
-
-    Vec3 point(Vec3 p) const {
-        p *= scale;
-        const float c = std::cos(rotateY), s = std::sin(rotateY);
-        return Vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z) + translate;
-    }
-    // Normals take the inverse transpose: divide by the scale, rotate like points.
-    Vec3 normal(Vec3 n) const {
-        if (n == Vec3(0.0f)) return n;
-        n /= scale;
-        const float c = std::cos(rotateY), s = std::sin(rotateY);
-        return glm::normalize(Vec3(c * n.x + s * n.z, n.y, -s * n.x + c * n.z));
-    }
-};
-
-MeshPlacement placementOf(const ParameterValues& values) {
-    return {values.vec3("scale"), glm::radians(values.number("rotate_y")), values.vec3("translate")};
-}
 
 // Every MTL material used becomes one scene object (labelled by the mesh's name, else by the
 // material's MTL name); `material` puts the whole mesh in one scene material. Errors and warnings

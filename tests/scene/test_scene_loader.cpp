@@ -341,7 +341,7 @@ TEST_CASE_FIXTURE(SceneFiles, "an unknown top-level table is an error") {
           "scene.toml:4:3: sphere: unknown key \"sphere\"; did you mean \"spheres\"?");
     CHECK(errorOf("[render]\nspp = 4\n") ==
           "scene.toml:1:2: render: unknown key \"render\" (known: camera, world, materials, "
-          "media, lights, spheres, planes, disks, triangles, meshes)");
+          "media, lights, spheres, planes, disks, triangles, meshes, gltf)");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "a value of the wrong type says what was expected and found") {

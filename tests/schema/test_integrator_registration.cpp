@@ -20,7 +20,7 @@ TEST_CASE("every shipped type is registered in the render tests") {
     CHECK(std::string(findIntegrator("radiosity")->schema.events) == "ED*[<L.[^'ambient']>OB]");
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
-    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh"});
+    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh", "gltf"});
 }
 
 }  // namespace lightpath

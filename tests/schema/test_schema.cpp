@@ -146,7 +146,7 @@ TEST_CASE("every shipped material, medium, light and shape type is registered in
     CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere"});
     CHECK(MediumRegistry::instance().names() == std::vector<std::string>{"homogeneous"});
-    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh"});
+    CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh", "gltf"});
 }
 
 }  // namespace

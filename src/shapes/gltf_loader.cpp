@@ -1,0 +1,460 @@
+#include "shapes/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "materials/microfacet_material.h"
+#include "materials/phong_material.h"
+#include "scene/scene_loader.h"
+#include "schema/format.h"
+#include "schema/parameter.h"
+#include "shapes/obj_loader.h"
+
+namespace lightpath {
+namespace {
+
+// glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
+constexpr const char* kDefaultMaterialLabel = "gltf-default";
+
+class Reader {
+public:
+    Reader(const tinygltf::Model& model, const std::filesystem::path& file) : model_(model), file_(file) {}
+
+    GltfModel read() {
+        readMaterials();
+        const std::vector<int> roots = rootNodes();
+        visited_.assign(model_.nodes.size(), false);
+        for (int root : roots) visit(root, glm::dmat4(1.0), "scene nodes");
+        return std::move(out_);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw SceneError(file_.string() + ": " + where + ": " + what);
+    }
+    void warn(const std::string& text) { out_.warnings.push_back(file_.string() + ": " + text); }
+
+    // A label for `name` unique among `taken`: the name made a label, numbered on a collision;
+    // `fallback` when the name is empty. A changed name is reported in `renamed`.
+    std::string label(const std::string& name, const std::string& fallback, std::vector<std::string>& taken,
+                      const std::string& what) {
+        const std::string base = name.empty() ? fallback : labelFromName(name);
+        std::string result = base;
+        for (int k = 2; std::find(taken.begin(), taken.end(), result) != taken.end(); ++k)
+            result = base + "-" + std::to_string(k);
+        taken.push_back(result);
+        if (!name.empty() && result != name) out_.renamed.push_back({what, printableName(name), result});
+        return result;
+    }
+
+    static bool finite(double x) { return std::isfinite(x) && std::abs(x) <= kMaxMagnitude; }
+
+    // A factor of `count` numbers each within [low, high], else its default.
+    std::vector<double> factor(const std::vector<double>& given, std::size_t count, double low, double high,
+                               std::vector<double> fallback, const std::string& where) const {
+        if (given.empty()) return fallback;
+        if (given.size() != count)
+            fail(where, "expected " + std::to_string(count) + " numbers, got " + std::to_string(given.size()));
+        for (double x : given)
+            if (!(x >= low && x <= high))
+                fail(where, "expected numbers from " + formatNumber(low) + " to " + formatNumber(high) + ", got " +
+                                formatNumber(x));
+        return given;
+    }
+    double number(double given, double low, double high, const std::string& where) const {
+        if (!(given >= low && given <= high))
+            fail(where, "expected a number from " + formatNumber(low) + " to " + formatNumber(high) + ", got " +
+                            formatNumber(given));
+        return given;
+    }
+
+    // A number in an extension object, else `fallback`.
+    static double extensionNumber(const tinygltf::ExtensionMap& extensions, const std::string& extension,
+                                  const std::string& key, double fallback) {
+        const auto found = extensions.find(extension);
+        if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key)) return fallback;
+        const tinygltf::Value& value = found->second.Get(key);
+        return value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+    }
+
+    void readMaterials() {
+        std::vector<std::string> taken;
+        for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+            const tinygltf::Material& m = model_.materials[i];
+            const std::string where = "materials[" + std::to_string(i) + "]";
+            const auto& pbr = m.pbrMetallicRoughness;
+            const std::vector<double> base =
+                factor(pbr.baseColorFactor, 4, 0.0, 1.0, {1, 1, 1, 1}, where + ".pbrMetallicRoughness.baseColorFactor");
+            const Rgb baseColor{float(base[0]), float(base[1]), float(base[2])};
+            const float metallic = float(number(pbr.metallicFactor, 0.0, 1.0, where + ".pbrMetallicRoughness.metallicFactor"));
+            const float roughness = float(number(pbr.roughnessFactor, 0.0, 1.0, where + ".pbrMetallicRoughness.roughnessFactor"));
+            const std::vector<double> emissive = factor(m.emissiveFactor, 3, 0.0, 1.0, {0, 0, 0}, where + ".emissiveFactor");
+            const double strength = number(extensionNumber(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0),
+                                           0.0, kMaxMagnitude, where + ".extensions.KHR_materials_emissive_strength.emissiveStrength");
+            const double transmission = number(extensionNumber(m.extensions, "KHR_materials_transmission", "transmissionFactor", 0.0),
+                                               0.0, 1.0, where + ".extensions.KHR_materials_transmission.transmissionFactor");
+            const double ior = number(extensionNumber(m.extensions, "KHR_materials_ior", "ior", 1.5), 1.0, kMaxMagnitude,
+                                      where + ".extensions.KHR_materials_ior.ior");
+            MaterialSlot material = [&]() -> MaterialSlot {
+                if (transmission > 0.0) {
+                    // Smooth Fresnel glass of the lecture's material: the rough dielectric is not
+                    // there yet, so roughness is ignored for a transmitting material (a warning).
+                    if (roughness > 0.0f)
+                        warn(where + ": a transmitting material is rendered as smooth glass; its roughness " +
+                             formatNumber(roughness) + " is ignored");
+                    PhongMaterial glass;
+                    glass.kd = float(1.0 - transmission) * (1.0f - metallic) * baseColor;
+                    glass.kt = float(transmission) * baseColor;
+                    glass.ior = float(ior);
+                    glass.fresnel = true;
+                    return glass;
+                }
+                return MicrofacetMaterial(baseColor, metallic, roughness);
+            }();
+            material->emission = float(strength) * Rgb(float(emissive[0]), float(emissive[1]), float(emissive[2]));
+            material->name = label(m.name, "material-" + std::to_string(i), taken, where);
+            if (pbr.baseColorTexture.index >= 0 || m.normalTexture.index >= 0 ||
+                m.emissiveTexture.index >= 0 || pbr.metallicRoughnessTexture.index >= 0)
+                texturesIgnored_ = true;
+            out_.materials.push_back(std::move(material));
+        }
+        if (texturesIgnored_) warn("textures are not read yet: materials use their factors alone");
+        materialLabels_ = std::move(taken);
+    }
+
+    std::uint32_t defaultMaterial() {
+        if (defaultMaterial_ == kNoMeshMaterial) {
+            MaterialSlot material = MicrofacetMaterial(Rgb(1.0f), 1.0f, 1.0f);
+            material->name = label(kDefaultMaterialLabel, kDefaultMaterialLabel, materialLabels_, "the default material");
+            defaultMaterial_ = std::uint32_t(out_.materials.size());
+            out_.materials.push_back(std::move(material));
+        }
+        return defaultMaterial_;
+    }
+
+    std::vector<int> rootNodes() const {
+        if (!model_.scenes.empty()) {
+            const int chosen = model_.defaultScene >= 0 ? model_.defaultScene : 0;
+            if (std::size_t(chosen) >= model_.scenes.size())
+                fail("scene", "expected a scene index below " + std::to_string(model_.scenes.size()) + ", got " +
+                                  std::to_string(chosen));
+            return model_.scenes[std::size_t(chosen)].nodes;
+        }
+        // No scene: every node that is no other's child (glTF 2.0, 3.5.1 leaves this to the reader).
+        std::vector<bool> child(model_.nodes.size(), false);
+        for (const tinygltf::Node& node : model_.nodes)
+            for (int c : node.children)
+                if (c >= 0 && std::size_t(c) < child.size()) child[std::size_t(c)] = true;
+        std::vector<int> roots;
+        for (std::size_t i = 0; i < child.size(); ++i)
+            if (!child[i]) roots.push_back(int(i));
+        return roots;
+    }
+
+    // The node's local transform: its matrix, else T R S (glTF 2.0, 3.5.3).
+    glm::dmat4 localTransform(const tinygltf::Node& node, const std::string& where) const {
+        const double limit = kMaxMagnitude;
+        if (!node.matrix.empty()) {
+            const std::vector<double> m = factor(node.matrix, 16, -limit, limit, {}, where + ".matrix");
+            return glm::make_mat4(m.data());  // column-major, as glTF stores it
+        }
+        const std::vector<double> t = factor(node.translation, 3, -limit, limit, {0, 0, 0}, where + ".translation");
+        const std::vector<double> r = factor(node.rotation, 4, -1.0, 1.0, {0, 0, 0, 1}, where + ".rotation");
+        const std::vector<double> s = factor(node.scale, 3, -limit, limit, {1, 1, 1}, where + ".scale");
+        const glm::dquat q(r[3], r[0], r[1], r[2]);  // glTF stores x, y, z, w
+        if (!(glm::length(q) > 0.0)) fail(where + ".rotation", "expected a unit quaternion, got zero");
+        return glm::translate(glm::dmat4(1.0), glm::dvec3(t[0], t[1], t[2])) * glm::mat4_cast(glm::normalize(q)) *
+               glm::scale(glm::dmat4(1.0), glm::dvec3(s[0], s[1], s[2]));
+    }
+
+    void visit(int index, const glm::dmat4& parent, const std::string& referrer) {
+        if (index < 0 || std::size_t(index) >= model_.nodes.size())
+            fail(referrer, "expected a node index below " + std::to_string(model_.nodes.size()) + ", got " +
+                               std::to_string(index));
+        const std::string where = "nodes[" + std::to_string(index) + "]";
+        if (visited_[std::size_t(index)])
+            fail(referrer, "node " + std::to_string(index) + " is reached twice: glTF nodes form trees (a node has one parent)");
+        visited_[std::size_t(index)] = true;
+        const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+        const glm::dmat4 world = parent * localTransform(node, where);
+        if (node.mesh >= 0) addMesh(node, world, where);
+        if (node.camera >= 0) addCamera(node, world, where);
+        const double light = extensionNumber(node.extensions, "KHR_lights_punctual", "light", -1.0);
+        if (light != -1.0) addLight(node, light, world, where);
+        for (int child : node.children) visit(child, world, where + ".children");
+    }
+
+    // ---- accessors
+
+    struct View {
+        const unsigned char* data = nullptr;
+        std::size_t count = 0, stride = 0;
+        int componentType = 0;
+    };
+
+    // The accessor's elements, bounds-checked against its buffer: `components` numbers each.
+    View view(int index, int type, const std::string& where) const {
+        if (index < 0 || std::size_t(index) >= model_.accessors.size())
+            fail(where, "expected an accessor index below " + std::to_string(model_.accessors.size()) + ", got " +
+                            std::to_string(index));
+        const std::string at = where + ": accessor " + std::to_string(index);
+        const tinygltf::Accessor& a = model_.accessors[std::size_t(index)];
+        if (a.type != type) fail(at, std::string("expected type ") + (type == TINYGLTF_TYPE_VEC3 ? "VEC3" : "SCALAR"));
+        if (a.sparse.isSparse) fail(at, "expected a dense accessor; sparse accessors are not read");
+        if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
+            fail(at, "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
+        const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(a.bufferView)];
+        if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size())
+            fail(at, "its bufferView names no buffer");
+        const std::vector<unsigned char>& buffer = model_.buffers[std::size_t(bv.buffer)].data;
+        const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
+        const int components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
+        if (componentSize <= 0 || components <= 0) fail(at, "expected a known componentType");
+        const std::size_t element = std::size_t(componentSize) * std::size_t(components);
+        const std::size_t stride = bv.byteStride == 0 ? element : bv.byteStride;
+        if (stride < element) fail(at, "expected a byteStride of at least " + std::to_string(element));
+        if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
+            fail(at, "its bufferView reaches beyond its buffer of " + std::to_string(buffer.size()) + " bytes");
+        if (a.count > 0) {
+            const std::size_t last = a.count - 1;
+            if (a.byteOffset > bv.byteLength || last > (bv.byteLength - a.byteOffset) / stride ||
+                a.byteOffset + last * stride + element > bv.byteLength)
+                fail(at, std::to_string(a.count) + " elements reach beyond its bufferView of " +
+                             std::to_string(bv.byteLength) + " bytes");
+        }
+        return {buffer.data() + bv.byteOffset + a.byteOffset, a.count, stride, a.componentType};
+    }
+
+    std::vector<Vec3> floats3(int index, const std::string& where) const {
+        const View v = view(index, TINYGLTF_TYPE_VEC3, where);
+        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components");
+        std::vector<Vec3> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            float xyz[3];
+            std::memcpy(xyz, v.data + i * v.stride, sizeof xyz);
+            out[i] = Vec3(xyz[0], xyz[1], xyz[2]);
+            if (!finite(xyz[0]) || !finite(xyz[1]) || !finite(xyz[2]))
+                fail(where, "element " + std::to_string(i) + " is " + formatVec3(out[i]) + "; expected numbers " +
+                                std::string(kMagnitudeRange));
+        }
+        return out;
+    }
+
+    std::vector<std::uint32_t> indices(int index, std::size_t vertexCount, const std::string& where) const {
+        const View v = view(index, TINYGLTF_TYPE_SCALAR, where);
+        std::vector<std::uint32_t> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            const unsigned char* p = v.data + i * v.stride;
+            std::uint32_t value = 0;
+            switch (v.componentType) {
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: value = *p; break;
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                    std::uint16_t s;
+                    std::memcpy(&s, p, sizeof s);
+                    value = s;
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&value, p, sizeof value); break;
+                default: fail(where, "expected indices of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+            }
+            if (value >= vertexCount)
+                fail(where, "index " + std::to_string(i) + " is " + std::to_string(value) + ", but there are " +
+                                std::to_string(vertexCount) + " vertices");
+            out[i] = value;
+        }
+        return out;
+    }
+
+    // ---- nodes
+
+    void addMesh(const tinygltf::Node& node, const glm::dmat4& world, const std::string& where) {
+        if (std::size_t(node.mesh) >= model_.meshes.size())
+            fail(where + ".mesh", "expected a mesh index below " + std::to_string(model_.meshes.size()) + ", got " +
+                                      std::to_string(node.mesh));
+        const tinygltf::Mesh& mesh = model_.meshes[std::size_t(node.mesh)];
+        const std::size_t nodeIndex = std::size_t(&node - model_.nodes.data());
+        const std::string name = !node.name.empty() ? node.name : mesh.name;
+        const std::string objectLabel = label(name, "node-" + std::to_string(nodeIndex), objectLabels_, where);
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        std::vector<std::uint32_t> objectOfMaterial(model_.materials.size() + 1, kNoMeshMaterial);
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& primitive = mesh.primitives[p];
+            const std::string at = "meshes[" + std::to_string(node.mesh) + "].primitives[" + std::to_string(p) + "]";
+            const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+                warn(at + ": points and lines have no area and are left out");
+                continue;
+            }
+            const auto position = primitive.attributes.find("POSITION");
+            if (position == primitive.attributes.end()) fail(at + ".attributes", "expected a POSITION accessor");
+            const std::vector<Vec3> positions = floats3(position->second, at + ".attributes.POSITION");
+            std::vector<Vec3> normals;
+            if (const auto normal = primitive.attributes.find("NORMAL"); normal != primitive.attributes.end()) {
+                normals = floats3(normal->second, at + ".attributes.NORMAL");
+                if (normals.size() != positions.size())
+                    fail(at + ".attributes.NORMAL", "expected " + std::to_string(positions.size()) +
+                                                        " normals, one per position, got " + std::to_string(normals.size()));
+            }
+            std::vector<std::uint32_t> order;
+            if (primitive.indices >= 0) {
+                order = indices(primitive.indices, positions.size(), at + ".indices");
+            } else {
+                order.resize(positions.size());
+                for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
+            }
+            if (primitive.material >= 0 && std::size_t(primitive.material) >= model_.materials.size())
+                fail(at + ".material", "expected a material index below " + std::to_string(model_.materials.size()) +
+                                           ", got " + std::to_string(primitive.material));
+            const std::uint32_t material = primitive.material >= 0 ? std::uint32_t(primitive.material) : defaultMaterial();
+            const std::size_t slot = primitive.material >= 0 ? material : model_.materials.size();
+            if (objectOfMaterial[slot] == kNoMeshMaterial) {
+                objectOfMaterial[slot] = std::uint32_t(out_.objects.size());
+                out_.objects.push_back({objectLabel, material});
+            }
+            const std::uint32_t object = objectOfMaterial[slot];
+            const auto place = [&](std::uint32_t i) { return Vec3(world * glm::dvec4(glm::dvec3(positions[i]), 1.0)); };
+            const auto orient = [&](std::uint32_t i) {
+                const glm::dvec3 n = normalMatrix * glm::dvec3(normals[i]);
+                const double length = glm::length(n);
+                return length > 0.0 && std::isfinite(length) ? Vec3(n / length) : Vec3(0.0f);
+            };
+            const auto addTriangle = [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+                const Triangle t{place(i), place(j), place(k), object};
+                if (glm::cross(t.b - t.a, t.c - t.a) == Vec3(0.0f)) {
+                    ++out_.degenerateDropped;
+                    return;
+                }
+                // Normals for every triangle once any has them, zero (flat) for the others.
+                if (!normals.empty() && out_.normals.size() < out_.triangles.size()) out_.normals.resize(out_.triangles.size());
+                out_.triangles.push_back(t);
+                if (!normals.empty()) out_.normals.push_back({orient(i), orient(j), orient(k)});
+                else if (!out_.normals.empty()) out_.normals.push_back({});
+            };
+            if (mode == TINYGLTF_MODE_TRIANGLES) {
+                for (std::size_t i = 0; i + 2 < order.size(); i += 3) addTriangle(order[i], order[i + 1], order[i + 2]);
+            } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+                for (std::size_t i = 0; i + 2 < order.size(); ++i)
+                    i % 2 == 0 ? addTriangle(order[i], order[i + 1], order[i + 2])
+                               : addTriangle(order[i + 1], order[i], order[i + 2]);
+            } else {
+                for (std::size_t i = 1; i + 1 < order.size(); ++i) addTriangle(order[0], order[i], order[i + 1]);
+            }
+        }
+    }
+
+    void addCamera(const tinygltf::Node& node, const glm::dmat4& world, const std::string& where) {
+        if (std::size_t(node.camera) >= model_.cameras.size())
+            fail(where + ".camera", "expected a camera index below " + std::to_string(model_.cameras.size()) + ", got " +
+                                        std::to_string(node.camera));
+        const tinygltf::Camera& c = model_.cameras[std::size_t(node.camera)];
+        const std::string at = "cameras[" + std::to_string(node.camera) + "]";
+        if (c.type != "perspective") {
+            warn(at + ": only perspective cameras are read; this " + printableName(c.type) + " camera is left out");
+            return;
+        }
+        GltfCamera camera;
+        camera.label = label(c.name, "camera-" + std::to_string(node.camera), cameraLabels_, at);
+        // The camera looks down its node's -z with +y up (glTF 2.0, 3.10.1).
+        const Vec3 eye(world * glm::dvec4(0, 0, 0, 1));
+        const glm::dvec3 forward(world * glm::dvec4(0, 0, -1, 0)), up(world * glm::dvec4(0, 1, 0, 0));
+        if (!(glm::length(forward) > 0.0) || !(glm::length(glm::cross(forward, up)) > 0.0))
+            fail(where, "its transform leaves the camera no viewing direction");
+        camera.camera.eye = eye;
+        camera.camera.lookAt = eye + Vec3(glm::normalize(forward));
+        camera.camera.up = Vec3(glm::normalize(up));
+        const double fov = number(c.perspective.yfov, 1e-6, kPi - 1e-6, at + ".perspective.yfov");
+        camera.camera.verticalFovDegrees = float(glm::degrees(fov));
+        if (c.perspective.aspectRatio > 0.0 && std::isfinite(c.perspective.aspectRatio)) {
+            const double width = std::clamp(std::round(camera.camera.height * c.perspective.aspectRatio), 1.0, 16384.0);
+            camera.camera.width = int(width);
+        }
+        out_.cameras.push_back(camera);
+    }
+
+    void addLight(const tinygltf::Node& node, double index, const glm::dmat4& world, const std::string& where) {
+        const std::string ref = where + ".extensions.KHR_lights_punctual.light";
+        if (!(index >= 0.0 && index < double(model_.lights.size())) || index != std::floor(index))
+            fail(ref, "expected a light index below " + std::to_string(model_.lights.size()));
+        const tinygltf::Light& l = model_.lights[std::size_t(index)];
+        const std::string at = "extensions.KHR_lights_punctual.lights[" + std::to_string(std::size_t(index)) + "]";
+        GltfLight light;
+        if (l.type == "point") light.kind = GltfLightKind::point;
+        else if (l.type == "spot") light.kind = GltfLightKind::spot;
+        else if (l.type == "directional") light.kind = GltfLightKind::directional;
+        else fail(at + ".type", "expected \"point\", \"spot\" or \"directional\", got \"" + printableName(l.type) + "\"");
+        const std::vector<double> colour = factor(l.color, 3, 0.0, 1.0, {1, 1, 1}, at + ".color");
+        const double intensity = number(l.intensity, 0.0, kMaxMagnitude, at + ".intensity");
+        light.intensity = float(intensity) * Rgb(float(colour[0]), float(colour[1]), float(colour[2]));
+        light.position = Vec3(world * glm::dvec4(0, 0, 0, 1));
+        const glm::dvec3 direction(world * glm::dvec4(0, 0, -1, 0));
+        if (!(glm::length(direction) > 0.0)) fail(where, "its transform leaves the light no direction");
+        light.direction = Vec3(glm::normalize(direction));
+        if (light.kind == GltfLightKind::spot) {
+            light.outerConeRadians = float(number(l.spot.outerConeAngle, 0.0, kPi / 2, at + ".spot.outerConeAngle"));
+            light.innerConeRadians = float(number(l.spot.innerConeAngle, 0.0, l.spot.outerConeAngle, at + ".spot.innerConeAngle"));
+        }
+        if (l.range > 0.0) warn(at + ": range " + formatNumber(l.range) + " is ignored: the light falls off as 1/d^2 everywhere");
+        (void)node;
+        light.label = label(l.name, "light-" + std::to_string(std::size_t(index)), lightLabels_, at);
+        out_.lights.push_back(light);
+    }
+
+    const tinygltf::Model& model_;
+    std::filesystem::path file_;
+    GltfModel out_;
+    std::vector<bool> visited_;
+    std::vector<std::string> materialLabels_, objectLabels_, cameraLabels_;
+    std::vector<std::string> lightLabels_{"ambient"};  // the ambient term's label (scene/light_type.h)
+    std::uint32_t defaultMaterial_ = kNoMeshMaterial;
+    bool texturesIgnored_ = false;
+};
+
+// Images are not decoded: textures are not read yet, and an image the file names need not exist
+// for its geometry to load.
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
+std::string firstLine(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    return text;
+}
+
+GltfModel parse(const std::string& bytes, const std::filesystem::path& file) {
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    tinygltf::Model model;
+    std::string error, warning;
+    const std::string base = file.parent_path().string();
+    const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    const bool ok = binary
+                        ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                                      reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                      unsigned(bytes.size()), base)
+                        : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), base);
+    if (!ok) throw SceneError(file.string() + ": cannot read glTF file: " + firstLine(error.empty() ? warning : error));
+    return Reader(model, file).read();
+}
+
+}  // namespace
+
+GltfModel loadGltf(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in || std::filesystem::is_directory(file)) throw SceneError(file.string() + ": cannot open glTF file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse(text.str(), file);
+}
+
+GltfModel loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& file) { return parse(bytes, file); }
+
+}  // namespace lightpath

@@ -1,0 +1,90 @@
+// glTF scenes (issue #26): each file in tests/render/data/gltf/ (made by make_gltf.py there) renders
+// as the TOML scene written beside it by hand, with the node transforms, the light's units and the
+// emissive strength worked out on paper: the same mean radiance per 4x4 block within 1%. The AOVs
+// sum to the beauty on a glTF scene as on every other.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "film/aov_presets.h"
+#include "film/aov_set.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+#include "../support/film_checks.h"
+
+namespace lightpath {
+namespace {
+
+const std::filesystem::path kData = std::filesystem::path(LIGHTPATH_SOURCE_DIR) / "tests/render/data/gltf";
+
+Film renderSmall(const std::filesystem::path& file, const std::string& integrator, int spp) {
+    Scene scene = loadScene(file);
+    REQUIRE(scene.cameraGiven);
+    scene.camera.width = 48;
+    scene.camera.height = 36;
+    RenderOptions options;
+    options.integrator = integrator;
+    options.samplesPerPixel = spp;
+    return Renderer(scene, AovSet(classesSet()), options).render().film;
+}
+
+// The largest difference of two beauties' 4x4 block means (the sum of the channels), relative to
+// the larger of the two, over the blocks holding light: a block darker than 1% of the image's
+// brightest is held to 1% of that instead (a relative error of a near-black block is noise).
+double worstBlockDifference(const Film& a, const Film& b) {
+    REQUIRE(a.width() == b.width());
+    REQUIRE(a.height() == b.height());
+    const auto blockMean = [](const Film& film, int bx, int by) {
+        double sum = 0.0;
+        for (int y = by * 4; y < by * 4 + 4; ++y)
+            for (int x = bx * 4; x < bx * 4 + 4; ++x) {
+                const Rgb v = film.at(0, x, y);
+                sum += double(v.r) + double(v.g) + double(v.b);
+            }
+        return sum / 16.0;
+    };
+    double brightest = 0.0;
+    for (int by = 0; by < a.height() / 4; ++by)
+        for (int bx = 0; bx < a.width() / 4; ++bx) brightest = std::max(brightest, blockMean(a, bx, by));
+    REQUIRE(brightest > 0.0);
+    double worst = 0.0;
+    for (int by = 0; by < a.height() / 4; ++by)
+        for (int bx = 0; bx < a.width() / 4; ++bx) {
+            const double p = blockMean(a, bx, by), q = blockMean(b, bx, by);
+            worst = std::max(worst, std::fabs(p - q) / std::max({p, q, 0.01 * brightest}));
+        }
+    return worst;
+}
+
+TEST_CASE("a glTF point light, its nodes and camera render as the TOML scene written by hand") {
+    for (const char* integrator : {"raycast", "path"}) {
+        CAPTURE(integrator);
+        const Film gltf = renderSmall(kData / "point.gltf", integrator, 16);
+        const Film toml = renderSmall(kData / "point.toml", integrator, 16);
+        CHECK(worstBlockDifference(gltf, toml) <= 0.01);
+    }
+}
+
+TEST_CASE("a glTF emissive material (emissiveFactor, KHR_materials_emissive_strength) renders as its TOML scene") {
+    const Film gltf = renderSmall(kData / "emissive.gltf", "raycast", 256);
+    const Film toml = renderSmall(kData / "emissive.toml", "raycast", 256);
+    CHECK(worstBlockDifference(gltf, toml) <= 0.01);
+}
+
+TEST_CASE("the AOVs sum to the beauty on glTF scenes") {
+    for (const char* file : {"point.gltf", "emissive.gltf"}) {
+        for (const char* integrator : {"raycast", "whitted", "path", "bdpt"}) {
+            CAPTURE(file);
+            CAPTURE(integrator);
+            const Film film = renderSmall(kData / file, integrator, 2);
+            CHECK(test::worstSumError(film) <= 1.0);
+            CHECK(test::finiteNonNegative(film));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace lightpath

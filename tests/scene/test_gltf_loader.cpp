@@ -1,0 +1,123 @@
+// The glTF reader (shapes/gltf_loader.h) as the scene loader uses it: a .gltf file as the scene,
+// and [[gltf]] in a TOML scene with its placement, label and material overrides. The files are
+// tests/render/data/gltf/ (made by make_gltf.py there); the expected values are worked out by hand
+// in that folder's TOML scenes.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "lights/point_light.h"
+#include "materials/microfacet_material.h"
+#include "scene/scene_loader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace lightpath;
+
+const fs::path kData = fs::path(LIGHTPATH_SOURCE_DIR) / "tests/render/data/gltf";
+
+bool hasObject(const Scene& scene, const std::string& label) {
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.labelOf(i) == label) return true;
+    return false;
+}
+
+bool warns(const Scene& scene, const std::string& part) {
+    return std::any_of(scene.warnings.begin(), scene.warnings.end(),
+                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
+}
+
+std::string errorOf(const fs::path& file) {
+    try {
+        loadScene(file);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST_CASE("a glTF file as the scene: its nodes placed, its camera, its light in W/sr, names as labels") {
+    const Scene scene = loadScene(kData / "point.gltf");
+    CHECK(scene.cameraGiven);
+    CHECK(scene.camera.eye.y == doctest::Approx(2.0));
+    CHECK(scene.camera.eye.z == doctest::Approx(5.0));
+    // Looking down by 20 degrees: the camera node's -z turned about x.
+    const Vec3 forward = glm::normalize(scene.camera.lookAt - scene.camera.eye);
+    CHECK(forward.y == doctest::Approx(-0.3420201).epsilon(1e-5));
+    CHECK(forward.z == doctest::Approx(-0.9396926).epsilon(1e-5));
+    CHECK(scene.camera.verticalFovDegrees == doctest::Approx(40.107046).epsilon(1e-5));
+    CHECK(scene.camera.width == 640);
+
+    REQUIRE(scene.lights.size() == 1);
+    const PointLight& lamp = pointLightOf(scene.lights[0]);
+    CHECK(lamp.name == "Lamp");
+    CHECK(lamp.location.x == doctest::Approx(-0.5));
+    CHECK(lamp.location.y == doctest::Approx(2.5));
+    CHECK(kPi * lamp.intensity.r == doctest::Approx(20.0));  // 20 cd read as 20 W/sr
+    CHECK(lamp.attenuationAt(2.0f) == doctest::Approx(0.25));  // physical 1/d^2
+
+    // Material "Floor Paint" is labelled Floor_Paint, and says so.
+    CHECK(std::any_of(scene.materials.begin(), scene.materials.end(),
+                      [](const MaterialSlot& m) { return m->name == "Floor_Paint"; }));
+    CHECK(warns(scene, "materials[0] \"Floor Paint\" is labelled \"Floor_Paint\" in light paths"));
+    CHECK(hasObject(scene, "Floor"));
+    CHECK(hasObject(scene, "Panel"));
+
+    // The panel (unit quad, halved, turned 90 degrees about y, moved by (1, 0, 0) then (0, 1, -1))
+    // lies in the plane x = 1 between y 0.5 and 1.5, z -1.5 and -0.5.
+    REQUIRE(scene.triangles.size() == 4);
+    for (const Triangle& t : {scene.triangles[2], scene.triangles[3]})
+        for (const Vec3& corner : {t.a, t.b, t.c}) {
+            CHECK(corner.x == doctest::Approx(1.0));
+            CHECK(((corner.y == doctest::Approx(0.5)) || (corner.y == doctest::Approx(1.5))));
+            CHECK(((corner.z == doctest::Approx(-0.5)) || (corner.z == doctest::Approx(-1.5))));
+        }
+    // Vertex normals turned like the node: +z becomes +x.
+    REQUIRE(scene.triangleNormals.size() == 4);
+    CHECK(scene.triangleNormals[2].a.x == doctest::Approx(1.0));
+}
+
+TEST_CASE("a glTF emissive material emits its emissiveFactor times its emissive strength") {
+    const Scene scene = loadScene(kData / "emissive.gltf");
+    const auto glow = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                   [](const MaterialSlot& m) { return m->name == "Glow"; });
+    REQUIRE(glow != scene.materials.end());
+    CHECK((*glow)->emission.r == doctest::Approx(5.0));
+    CHECK((*glow)->emission.g == doctest::Approx(4.5));
+    CHECK((*glow)->emission.b == doctest::Approx(4.0));
+}
+
+TEST_CASE("[[gltf]] in a TOML scene: placed, relabelled, in a scene material, its camera yielding to [camera]") {
+    const fs::path folder = fs::temp_directory_path() / "lightpath-gltf-test";
+    fs::create_directories(folder);
+    fs::copy_file(kData / "point.gltf", folder / "point.gltf", fs::copy_options::overwrite_existing);
+    std::ofstream(folder / "scene.toml") << "[camera]\neye = [0, 0, 9]\n"
+                                            "[materials]\nchalk = { kd = 0.5 }\n"
+                                            "[[gltf]]\nfile = \"point.gltf\"\nname = \"model\"\nmaterial = \"chalk\"\n"
+                                            "translate = [10, 0, 0]\nlights = false\n";
+    const Scene scene = loadScene(folder / "scene.toml");
+    CHECK(scene.camera.eye.z == doctest::Approx(9.0));
+    CHECK(scene.lights.empty());
+    REQUIRE(scene.objects.size() == 1);
+    CHECK(scene.labelOf(0) == "model");
+    CHECK(scene.materials[scene.objects[0].material]->name == "chalk");
+    for (const Triangle& t : scene.triangles) CHECK(t.a.x >= 8.0f);
+    fs::remove_all(folder);
+}
+
+TEST_CASE("a malformed glTF file is refused naming the file, the element and what was expected") {
+    CHECK(errorOf(kData / "bad_index.gltf") ==
+          (kData / "bad_index.gltf").string() +
+              ": meshes[0].primitives[0].indices: index 5 is 7, but there are 4 vertices");
+    const fs::path folder = fs::temp_directory_path() / "lightpath-gltf-bad";
+    fs::create_directories(folder);
+    std::ofstream(folder / "syntax.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [";
+    CHECK(errorOf(folder / "syntax.gltf").rfind((folder / "syntax.gltf").string() + ": cannot read glTF file: ", 0) == 0);
+    fs::remove_all(folder);
+}
+
+}  // namespace
