@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/spawn_ray.h"
+#include "integrators/light_ray.h"
 #include "integrators/bdpt_vertex.h"
 #include "integrators/direct_light.h"
 #include "sampling/russian_roulette.h"
@@ -44,14 +45,9 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
     v[0].pdfFwd = chosen.probability * e.pdfPosition;
     v[0].beta = e.radiance / (chosen.probability * e.pdfPosition);
 
-    // Leave an area light's surface like any surface, so the ray does not find its own start.
-    SurfaceHit origin;
-    origin.point = e.ray.origin;
-    origin.normal = origin.shadingNormal = e.normal;
-    origin.object = light.event().index;
-    origin.primitive = kNoPrimitive;
-    Ray ray = light.isDelta() ? e.ray : spawnRay(origin, e.ray.direction, ctx.geometry.numerics());
-    const float cosine = light.isDelta() ? 1.0f : std::fabs(glm::dot(e.normal, e.ray.direction));
+    const LightRay leaving = leaveLight(light, e, ctx.geometry);
+    Ray ray = leaving.ray;
+    const float cosine = leaving.cosine;
     Rgb beta = e.radiance * (cosine / (chosen.probability * e.pdfPosition * e.pdfDirection));
     float pdf = e.pdfDirection;
     bool delta = false;

@@ -4,6 +4,7 @@
 #include <bit>
 
 #include "geometry/spawn_ray.h"
+#include "integrators/light_ray.h"
 #include "integrators/integrator.h"
 #include "integrators/shading_point.h"
 #include "sampling/sampler.h"
@@ -59,14 +60,9 @@ void tracePhoton(const RenderContext& ctx, std::uint64_t index, std::uint64_t se
     out.caustic.beginPath();
     out.global.beginPath();
 
-    // Leave an area light's surface like any surface, so the ray does not find its own start.
-    SurfaceHit origin;
-    origin.point = e.ray.origin;
-    origin.normal = origin.shadingNormal = e.normal;
-    origin.object = light.event().index;
-    origin.primitive = kNoPrimitive;
-    Ray ray = light.isDelta() ? e.ray : spawnRay(origin, e.ray.direction, ctx.geometry.numerics());
-    const float cosine = light.isDelta() ? 1.0f : std::fabs(glm::dot(e.normal, e.ray.direction));
+    const LightRay leaving = leaveLight(light, e, ctx.geometry);
+    Ray ray = leaving.ray;
+    const float cosine = leaving.cosine;
     // Phi = Le cos / (p(light) p(x) p(w) N): the flux one photon of N carries (Jensen 2001, 5.1).
     Rgb power = e.radiance * static_cast<float>(double(cosine) / (double(chosen.probability) * e.pdfPosition *
                                                                   e.pdfDirection * scale));

@@ -16,6 +16,7 @@
 #include "film/aov_set.h"
 #include "fuzz_support.h"
 #include "lights/point_light.h"
+#include "materials/microfacet_material.h"
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
 #include "render/renderer.h"
@@ -71,6 +72,10 @@ void checkScene(const Scene& scene) {
         } else if (const auto* m = dynamic_cast<const ModifiedPhongMaterial*>(&*slot)) {
             colours.insert(colours.end(), {m->kd.constant(), m->ks.constant()});
             exponent = m->n;
+        } else if (const auto* m = dynamic_cast<const MicrofacetMaterial*>(&*slot)) {
+            // F0 and the diffuse colour mix base_color by metallic: each within the base's bounds.
+            colours.insert(colours.end(), {m->f0(), m->diffuseColor()});
+            if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
         } else {
             broken("material " + name + " has a type the fuzzer does not know");
         }
