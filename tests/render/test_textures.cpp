@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -28,21 +29,43 @@ constexpr int kCheck = 8;    // texels per check: 8 x 8 checks, black at texel (
 // The checkerboard's value at texel (i, j): 0 or 1.
 float checkAt(int i, int j) { return float(((i / kCheck) + (j / kCheck)) % 2); }
 
-// Writes the checkerboard as an 8-bit PNG (0 and 255: 0 and 1 exactly) once; returns its path.
+// The checkerboard as an 8-bit PNG (0 and 255: 0 and 1 exactly), written once per test process into
+// a folder of its own (ctest runs test cases as processes at once, so the name is random) that is
+// removed when the process ends: the suite leaves nothing in the temporary directory.
+class CheckerboardFile {
+public:
+    CheckerboardFile()
+        : folder_(std::filesystem::temp_directory_path() /
+                  ("lightpath-texture-tests-" + std::to_string(std::random_device{}()))) {
+        std::filesystem::create_directories(folder_);
+        std::vector<unsigned char> pixels;
+        for (int j = 0; j < kTexels; ++j)
+            for (int i = 0; i < kTexels; ++i)
+                for (int c = 0; c < 3; ++c) pixels.push_back(checkAt(i, j) > 0.0f ? 255 : 0);
+        ImageFileSpec spec;
+        spec.width = spec.height = kTexels;
+        spec.channelNames = {"R", "G", "B"};
+        error_ = imageCodec().write("png", path().string(), spec, pixels.data());
+    }
+    ~CheckerboardFile() {
+        std::error_code ignored;
+        std::filesystem::remove_all(folder_, ignored);
+    }
+    CheckerboardFile(const CheckerboardFile&) = delete;
+    CheckerboardFile& operator=(const CheckerboardFile&) = delete;
+
+    std::filesystem::path path() const { return folder_ / "checker.png"; }
+    const std::string& error() const { return error_; }
+
+private:
+    std::filesystem::path folder_;
+    std::string error_;
+};
+
 std::filesystem::path checkerboard() {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "lightpath-texture-tests";
-    const std::filesystem::path file = folder / "checker.png";
-    std::filesystem::create_directories(folder);
-    std::vector<unsigned char> pixels;
-    for (int j = 0; j < kTexels; ++j)
-        for (int i = 0; i < kTexels; ++i)
-            for (int c = 0; c < 3; ++c) pixels.push_back(checkAt(i, j) > 0.0f ? 255 : 0);
-    ImageFileSpec spec;
-    spec.width = spec.height = kTexels;
-    spec.channelNames = {"R", "G", "B"};
-    const std::string error = imageCodec().write("png", file.string(), spec, pixels.data());
-    REQUIRE(error.empty());
-    return file;
+    static const CheckerboardFile file;
+    REQUIRE(file.error().empty());
+    return file.path();
 }
 
 // A plane y = 0 seen from `eye` towards `lookAt`, ka the checkerboard repeated once per
