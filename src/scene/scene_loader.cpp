@@ -110,7 +110,7 @@ TextureReference readTexture(const TomlValue& value) {
 }
 
 // One value of a declaration, read as its parameter's type says and checked against its range.
-void readParameter(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
+void readParameterValue(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
     const std::string expected = expectedNumber(parameter.range);
     const NumberRule rule{parameter.range.low, parameter.range.high, parameter.range.lowExclusive,
                           parameter.range.highExclusive, expected};
@@ -156,6 +156,19 @@ std::vector<std::string_view> allowedKeys(const TypeSchema& schema, TypeKey type
     const auto at = !keys.empty() && keys.front() == "name" ? keys.begin() + 1 : keys.begin();
     if (typeKey == TypeKey::allowed) keys.insert(at, "type");
     return keys;
+}
+
+// The schema checks what the TOML reader does not (a colour's range, e.g. base_color within [0, 1]:
+// ParameterValues::set); its refusal is located at the value like every other scene error.
+void readParameter(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
+    try {
+        readParameterValue(value, parameter, values);
+    } catch (const SchemaError& error) {
+        std::string_view message = error.what();
+        const std::string prefix = std::string(parameter.name) + ": ";
+        if (message.starts_with(prefix)) message.remove_prefix(prefix.size());
+        value.fail(message);
+    }
 }
 
 // One key of a declaration: read and checked if given, else an error at the table if required.
