@@ -108,18 +108,11 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
     }
     for (std::size_t i = 0; i < model.triangles.size(); ++i) {
         const Triangle& t = model.triangles[i];
-        const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), sceneObject[t.object]};
-        for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
-            if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude)))))
-                values.fail("file", file.string() + ": triangle " + std::to_string(i + 1) + " has a corner at " +
-                                        formatVec3(corner) + " once placed; expected coordinates " +
-                                        std::string(kMagnitudeRange));
-        }
+        const Triangle placed = placeTriangle(placement, t, sceneObject[t.object], values, file, i);
         if (model.normals.empty()) {
             scene.addTriangle(placed);
         } else {
-            const TriangleNormals& n = model.normals[i];
-            scene.addTriangle(placed, {placement.normal(n.a), placement.normal(n.b), placement.normal(n.c)});
+            scene.addTriangle(placed, placement.normals(model.normals[i]));
         }
     }
     if (values.boolean("lights"))

@@ -96,18 +96,9 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
     const bool textured = !mesh.uvs.empty();
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         const Triangle& t = mesh.triangles[i];
-        const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), objectFor(t.object)};
-        // The limit of the file's own numbers holds for the mesh's vertices where they end up.
-        for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
-            if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude))))) {
-                values.fail("file", file.string() + ": triangle " + std::to_string(i + 1) + " has a corner at " +
-                                        formatVec3(corner) + " once placed; expected coordinates " +
-                                        std::string(kMagnitudeRange));
-            }
-        }
+        const Triangle placed = placeTriangle(placement, t, objectFor(t.object), values, file, i);
         if (smooth) {
-            const TriangleNormals& n = mesh.normals[i];
-            scene.addTriangle(placed, {placement.normal(n.a), placement.normal(n.b), placement.normal(n.c)});
+            scene.addTriangle(placed, placement.normals(mesh.normals[i]));
         } else {
             scene.addTriangle(placed);
         }

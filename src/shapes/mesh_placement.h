@@ -2,8 +2,15 @@
 // scale, then rotate_y, then translate: how a scene places a mesh file ([[meshes]], [[gltf]]) as
 // the file describes it, resized about its own origin, turned about the vertical axis and moved.
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
 
+#include "geometry/shapes.h"
 #include "math/types.h"
+#include "scene/scene_loader.h"
+#include "schema/format.h"
 #include "schema/parameter_values.h"
 
 namespace lightpath {
@@ -31,10 +38,26 @@ struct MeshPlacement {
         const float c = std::cos(rotateY), s = std::sin(rotateY);
         return glm::normalize(Vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z));
     }
+    TriangleNormals normals(const TriangleNormals& n) const { return {normal(n.a), normal(n.b), normal(n.c)}; }
 };
 
 inline MeshPlacement placementOf(const ParameterValues& values) {
     return {values.vec3("scale"), glm::radians(values.number("rotate_y")), values.vec3("translate")};
+}
+
+// Triangle `index` (from 0) of a mesh file, placed and given `object`. The limit of the file's own
+// numbers holds for its vertices where they end up: beyond it, an error at the key `file`.
+inline Triangle placeTriangle(const MeshPlacement& placement, const Triangle& t, std::uint32_t object,
+                              const ParameterValues& values, const std::filesystem::path& file, std::size_t index) {
+    const Triangle placed{placement.point(t.a), placement.point(t.b), placement.point(t.c), object};
+    for (const Vec3& corner : {placed.a, placed.b, placed.c}) {
+        if (!(glm::all(glm::lessThanEqual(glm::abs(corner), Vec3(kMaxMagnitude))))) {
+            values.fail("file", file.string() + ": triangle " + std::to_string(index + 1) + " has a corner at " +
+                                    formatVec3(corner) + " once placed; expected coordinates " +
+                                    std::string(kMagnitudeRange));
+        }
+    }
+    return placed;
 }
 
 }  // namespace lightpath
