@@ -97,20 +97,20 @@ std::string expectedNumber(const Range& range) {
 
 // A Colour given as a texture: `{ texture = "FILE", tint = RGB, uv_scale = N, filter = BOOL }`,
 // FILE relative to the scene file's folder (materials/texture.h opens it).
-TextureReference readTexture(const TomlValue& value) {
+TextureReference readTexture(const TomlValue& value, const NumberRule& rule) {
     const TomlTable table = value.table();
     table.allowOnly({"texture", "tint", "uv_scale", "filter"});
     TextureReference texture;
     const std::filesystem::path file = table.required("texture").string();
     texture.file = (file.is_absolute() ? file : value.folder() / file).string();
-    if (auto tint = table.find("tint")) texture.tint = tint->rgb();
+    if (auto tint = table.find("tint")) texture.tint = tint->numberOrVec3(rule);
     if (auto scale = table.find("uv_scale")) texture.uvScale = scale->number(positive);
     if (auto filter = table.find("filter")) texture.filtered = filter->boolean();
     return texture;
 }
 
 // One value of a declaration, read as its parameter's type says and checked against its range.
-void readParameterValue(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
+void readParameter(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
     const std::string expected = expectedNumber(parameter.range);
     const NumberRule rule{parameter.range.low, parameter.range.high, parameter.range.lowExclusive,
                           parameter.range.highExclusive, expected};
@@ -127,8 +127,8 @@ void readParameterValue(const TomlValue& value, const Parameter& parameter, Para
         }
         case ParameterType::Boolean: values.set(name, value.boolean()); break;
         case ParameterType::Colour:
-            if (value.isTable()) values.set(name, readTexture(value));
-            else values.set(name, value.rgb());
+            if (value.isTable()) values.set(name, readTexture(value, rule));
+            else values.set(name, value.numberOrVec3(rule));
             break;
         case ParameterType::Point: values.set(name, value.vec3(rule)); break;
         case ParameterType::Vector: values.set(name, readNonZeroVector(value)); break;
@@ -156,19 +156,6 @@ std::vector<std::string_view> allowedKeys(const TypeSchema& schema, TypeKey type
     const auto at = !keys.empty() && keys.front() == "name" ? keys.begin() + 1 : keys.begin();
     if (typeKey == TypeKey::allowed) keys.insert(at, "type");
     return keys;
-}
-
-// The schema checks what the TOML reader does not (a colour's range, e.g. base_color within [0, 1]:
-// ParameterValues::set); its refusal is located at the value like every other scene error.
-void readParameter(const TomlValue& value, const Parameter& parameter, ParameterValues& values) {
-    try {
-        readParameterValue(value, parameter, values);
-    } catch (const SchemaError& error) {
-        std::string_view message = error.what();
-        const std::string prefix = std::string(parameter.name) + ": ";
-        if (message.starts_with(prefix)) message.remove_prefix(prefix.size());
-        value.fail(message);
-    }
 }
 
 // One key of a declaration: read and checked if given, else an error at the table if required.
