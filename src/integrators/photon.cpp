@@ -119,7 +119,6 @@ void PhotonIntegrator::preprocess(const RenderContext& context) {
     stats_.bytes = caustic_.bytes() + global_.bytes();
     stats_.radius = radius;
     stats_.causticRadius = causticRadius;
-    stats_.passes = 1;
     stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 

@@ -23,7 +23,6 @@ struct PhotonStats {
     std::uint64_t shot = 0, causticStored = 0, globalStored = 0;
     std::size_t bytes = 0;
     float radius = 0.0f, causticRadius = 0.0f;
-    int passes = 0;
     double seconds = 0.0;
 };
 

@@ -14,7 +14,7 @@ namespace lightpath {
 
 class ParameterValues;
 
-// An image texture, shared by every parameter that names its file. Immutable; thread-safe.
+// An image texture (OpenImageIO caches its file once for all who open it). Immutable; thread-safe.
 class Texture {
 public:
     virtual ~Texture() = default;
@@ -52,7 +52,7 @@ public:
     bool black() const { return isBlack(value_); }
     // The mean over the surface: the constant, or the tint times the image's mean.
     Rgb mean() const { return texture_ ? value_ * texture_->average() : value_; }
-    // The largest channel it can take anywhere (a lobe's albedo bound for choosing lobes).
+    // Its largest channel at this point (a lobe's albedo, for choosing lobes).
     float maxAt(const SurfaceSide& side) const { return maxComponent(at(side)); }
 
 private:

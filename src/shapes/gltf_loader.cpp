@@ -189,7 +189,7 @@ private:
         if (node.mesh >= 0) addMesh(node, world, where);
         if (node.camera >= 0) addCamera(node, world, where);
         const double light = extensionNumber(node.extensions, "KHR_lights_punctual", "light", -1.0);
-        if (light != -1.0) addLight(node, light, world, where);
+        if (light != -1.0) addLight(light, world, where);
         for (int child : node.children) visit(child, world, where + ".children");
     }
 
@@ -380,7 +380,7 @@ private:
         out_.cameras.push_back(camera);
     }
 
-    void addLight(const tinygltf::Node& node, double index, const glm::dmat4& world, const std::string& where) {
+    void addLight(double index, const glm::dmat4& world, const std::string& where) {
         const std::string ref = where + ".extensions.KHR_lights_punctual.light";
         if (!(index >= 0.0 && index < double(model_.lights.size())) || index != std::floor(index))
             fail(ref, "expected a light index below " + std::to_string(model_.lights.size()));
@@ -403,7 +403,6 @@ private:
             light.innerConeRadians = float(number(l.spot.innerConeAngle, 0.0, l.spot.outerConeAngle, at + ".spot.innerConeAngle"));
         }
         if (l.range > 0.0) warn(at + ": range " + formatNumber(l.range) + " is ignored: the light falls off as 1/d^2 everywhere");
-        (void)node;
         light.label = label(l.name, "light-" + std::to_string(std::size_t(index)), lightLabels_, at);
         out_.lights.push_back(light);
     }

@@ -21,12 +21,13 @@ using fuzz::broken;
 constexpr std::size_t kMaxInput = 65536;
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteNonNegative(const Rgb& c) { return finite(c) && c.r >= 0.0f && c.g >= 0.0f && c.b >= 0.0f; }
 bool unitOrZero(const Vec3& n) { return finite(n) && (n == Vec3(0.0f) || std::abs(glm::length(n) - 1.0f) <= 1e-4f); }
 
 void checkModel(const GltfModel& model) {
     for (const MaterialSlot& m : model.materials) {
         if (!isValidName(m->name)) broken("material labelled \"" + m->name + "\", no label");
-        if (!finite(Vec3(m->emission.r, m->emission.g, m->emission.b)) || m->emission.r < 0.0f)
+        if (!finiteNonNegative(m->emission))
             broken("material \"" + m->name + "\" emits a negative or non-finite radiance");
     }
     for (const GltfObject& o : model.objects) {
@@ -51,7 +52,7 @@ void checkModel(const GltfModel& model) {
         if (!isValidName(l.label) || l.label == "ambient") broken("light labelled \"" + l.label + "\"");
         if (!finite(l.position) || !unitOrZero(l.direction) || l.direction == Vec3(0.0f))
             broken("light \"" + l.label + "\" has no finite position or unit direction");
-        if (!finite(Vec3(l.intensity.r, l.intensity.g, l.intensity.b)) || l.intensity.r < 0.0f)
+        if (!finiteNonNegative(l.intensity))
             broken("light \"" + l.label + "\" has a negative or non-finite intensity");
     }
     for (const GltfCamera& c : model.cameras) {

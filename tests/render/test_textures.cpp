@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -19,6 +18,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "../support/film_checks.h"
+#include "../support/temp_folder.h"
 
 namespace lightpath {
 namespace {
@@ -29,15 +29,11 @@ constexpr int kCheck = 8;    // texels per check: 8 x 8 checks, black at texel (
 // The checkerboard's value at texel (i, j): 0 or 1.
 float checkAt(int i, int j) { return float(((i / kCheck) + (j / kCheck)) % 2); }
 
-// The checkerboard as an 8-bit PNG (0 and 255: 0 and 1 exactly), written once per test process into
-// a folder of its own (ctest runs test cases as processes at once, so the name is random) that is
-// removed when the process ends: the suite leaves nothing in the temporary directory.
+// The checkerboard as an 8-bit PNG (0 and 255: 0 and 1 exactly), written once per test process
+// into a folder of its own that goes when the process ends.
 class CheckerboardFile {
 public:
-    CheckerboardFile()
-        : folder_(std::filesystem::temp_directory_path() /
-                  ("lightpath-texture-tests-" + std::to_string(std::random_device{}()))) {
-        std::filesystem::create_directories(folder_);
+    CheckerboardFile() {
         std::vector<unsigned char> pixels;
         for (int j = 0; j < kTexels; ++j)
             for (int i = 0; i < kTexels; ++i)
@@ -47,18 +43,12 @@ public:
         spec.channelNames = {"R", "G", "B"};
         error_ = imageCodec().write("png", path().string(), spec, pixels.data());
     }
-    ~CheckerboardFile() {
-        std::error_code ignored;
-        std::filesystem::remove_all(folder_, ignored);
-    }
-    CheckerboardFile(const CheckerboardFile&) = delete;
-    CheckerboardFile& operator=(const CheckerboardFile&) = delete;
 
-    std::filesystem::path path() const { return folder_ / "checker.png"; }
+    std::filesystem::path path() const { return folder_.path() / "checker.png"; }
     const std::string& error() const { return error_; }
 
 private:
-    std::filesystem::path folder_;
+    test::TempFolder folder_{"lightpath-texture-tests"};
     std::string error_;
 };
 

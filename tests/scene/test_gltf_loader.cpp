@@ -13,6 +13,8 @@
 #include "materials/microfacet_material.h"
 #include "scene/scene_loader.h"
 
+#include "../support/temp_folder.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -92,8 +94,8 @@ TEST_CASE("a glTF emissive material emits its emissiveFactor times its emissive 
 }
 
 TEST_CASE("[[gltf]] in a TOML scene: placed, relabelled, in a scene material, its camera yielding to [camera]") {
-    const fs::path folder = fs::temp_directory_path() / "lightpath-gltf-test";
-    fs::create_directories(folder);
+    const test::TempFolder temp("lightpath-gltf-test");
+    const fs::path& folder = temp.path();
     fs::copy_file(kData / "point.gltf", folder / "point.gltf", fs::copy_options::overwrite_existing);
     std::ofstream(folder / "scene.toml") << "[camera]\neye = [0, 0, 9]\n"
                                             "[materials]\nchalk = { kd = 0.5 }\n"
@@ -106,18 +108,16 @@ TEST_CASE("[[gltf]] in a TOML scene: placed, relabelled, in a scene material, it
     CHECK(scene.labelOf(0) == "model");
     CHECK(scene.materials[scene.objects[0].material]->name == "chalk");
     for (const Triangle& t : scene.triangles) CHECK(t.a.x >= 8.0f);
-    fs::remove_all(folder);
 }
 
 TEST_CASE("a malformed glTF file is refused naming the file, the element and what was expected") {
     CHECK(errorOf(kData / "bad_index.gltf") ==
           (kData / "bad_index.gltf").string() +
               ": meshes[0].primitives[0].indices: index 5 is 7, but there are 4 vertices");
-    const fs::path folder = fs::temp_directory_path() / "lightpath-gltf-bad";
-    fs::create_directories(folder);
+    const test::TempFolder temp("lightpath-gltf-bad");
+    const fs::path& folder = temp.path();
     std::ofstream(folder / "syntax.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [";
     CHECK(errorOf(folder / "syntax.gltf").rfind((folder / "syntax.gltf").string() + ": cannot read glTF file: ", 0) == 0);
-    fs::remove_all(folder);
 }
 
 }  // namespace
