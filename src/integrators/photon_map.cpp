@@ -7,14 +7,13 @@
 #include "integrators/light_ray.h"
 #include "integrators/integrator.h"
 #include "integrators/shading_point.h"
+#include "sampling/russian_roulette.h"
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
 
 namespace lightpath {
 namespace {
 
-// Paths shorter than this are never cut by Russian roulette (as in the path tracer and bdpt).
-constexpr int kRouletteDepth = 3;
 // Photons traced per chunk of work: chunks depend on the count alone, so on any thread count the
 // photons come out in the same order.
 constexpr std::size_t kPhotonsPerChunk = 4096;
@@ -92,8 +91,9 @@ void tracePhoton(const RenderContext& ctx, std::uint64_t index, std::uint64_t se
         const LobeInfo& lobe = sp.bsdf.lobe(sample->lobe);
         power *= sample->weight;
         throughput *= sample->weight;
-        if (bounces + 1 >= kRouletteDepth) {
-            // Russian roulette on the path's throughput (not its flux, which carries 1/N).
+        if (bounces + 1 >= kRouletteVertices) {
+            // Russian roulette on the path's throughput (not its flux, which carries 1/N), as
+            // survivesRussianRoulette does it, with the flux divided by the same q.
             const float q = std::min(0.95f, maxComponent(throughput));
             if (!(q > 0.0f) || sampler.next1D() >= q) break;
             power /= q;
