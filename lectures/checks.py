@@ -115,8 +115,8 @@ def check_sum(exr, names, tol=1e-4, total=""):
     if missing:
         raise FigureError(f"{exr}: no layer {', '.join(missing)}")
     beauty = layers[total]
-    total = sum(layers[n] for n in names)
-    worst = float((np.abs(total - beauty) / np.maximum(np.abs(beauty), 1.0)).max())
+    summed = sum(layers[n] for n in names)
+    worst = float((np.abs(summed - beauty) / np.maximum(np.abs(beauty), 1.0)).max())
     if not worst <= tol:
         raise FigureError(f"{exr}: {' + '.join(names)} differs from {total or 'the beauty'} by {worst:.3g} "
                           f"(relative, worst pixel) > {tol}: the slide's sum would lie")

@@ -939,13 +939,15 @@ def fog(fig):
     if not surfaces < dimmed:
         raise FigureError(f"the surfaces seen through fog ({surfaces:.3g}) are not dimmer than "
                           f"without it ({dimmed:.3g})")
-    check_fog_labels(run.lightpath, [(e, e) for _, e in FOG_PARTS + [FOG_SINGLE]])
     panels = [Panel(vacuum, "without fog", "in vacuum"),
               Panel(exr, "with fog", "= bottom row"),
               Panel(exr, "single scattering", "EV<L.>", layer="single"),
               Panel(exr, "surfaces", "E[^V]*L", layer="surfaces"),
               Panel(exr, "scattered once", "E[^V]*V[^V]*L", layer="once"),
               Panel(exr, "multiple scattering", "E.*V.*V.*L", layer="multiple")]
+    # The LPE printed under each AOV panel against the expression its layer was rendered with.
+    rendered = dict(FOG_PARTS + [FOG_SINGLE])
+    check_fog_labels(run.lightpath, [(p.below, rendered[p.layer]) for p in panels if p.layer])
     fig.compose(panels, cols=3)
     return [f"surfaces + once + multiple = beauty (worst pixel {worst:.2g})",
             f"EV<L.> is within E[^V]*V[^V]*L; mean luminance: beauty {means['']:.3g}, "
