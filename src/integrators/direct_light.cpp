@@ -123,7 +123,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     const Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
     const Rgb transmittance =
         medium != nullptr ? medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance) : Rgb{1.0f};
-    const Rgb seen = medium != nullptr ? incident * transmittance : incident;
+    const Rgb seen = incident * transmittance;  // x * 1 is x: no cost to bit-identity without media
     const float lightPdf = sample.pdf * choiceProbability;
     Rgb value[kMaxLobes];
     float weights[kMaxLobes];
