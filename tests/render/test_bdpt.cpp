@@ -42,7 +42,7 @@ Film render(const Scene& scene, const std::vector<lpe::NamedExpression>& set, co
     return Renderer(scene, aovs, options).render().film;
 }
 
-TEST_CASE("bdpt: the Cornell box with its area light, every classes AOV equals the path tracer's (t-test)") {
+TEST_CASE("bdpt: the Cornell box with its area light, every classes AOV equals the path tracer's (t-test)" * doctest::test_suite("statistical")) {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.toml");
     scene.camera.width = scene.camera.height = 32;
     // The same seed: both see the same jittered first hits (common random numbers), so the paired
@@ -555,7 +555,7 @@ void checkSpot(const std::vector<std::vector<double>>& values, const std::vector
     CHECK(studentTTest(values[0], control) < kPValue);
 }
 
-TEST_CASE("bdpt: with a tent filter, splats and eye samples estimate the tent's mean, as the path tracer does") {
+TEST_CASE("bdpt: with a tent filter, splats and eye samples estimate the tent's mean, as the path tracer does" * doctest::test_suite("statistical")) {
     const SpotFloor spot(15);
     const int c = spot.size / 2;
     const std::vector<double> tent = {spot.tent(c, c), spot.tent(c + 1, c), spot.tent(c - 1, c), spot.tent(c, c + 1),

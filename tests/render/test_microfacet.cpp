@@ -140,7 +140,7 @@ Rgb blendAlbedo(const MicrofacetMaterial& material, float cosOut) {
     return total;
 }
 
-TEST_CASE("microfacet: white furnace, glTF's metallic-roughness blend of a white base reflects at most 1 at every roughness") {
+TEST_CASE("microfacet: white furnace, glTF's metallic-roughness blend of a white base reflects at most 1 at every roughness" * doctest::test_suite("statistical")) {
     for (const float metallic : {0.0f, 0.5f}) {
         for (const float roughness : {0.0f, 0.2f, 0.35f, 0.5f, 0.7f, 0.85f, 1.0f}) {
             const MicrofacetMaterial material(Rgb{1.0f}, metallic, roughness);

@@ -154,7 +154,7 @@ TEST_CASE("photon: with E S+ D S+ <L.> alone requested, photons no output can ac
 // radius and photon count below meet and a 15% brighter path tracer does not.
 constexpr double kBlockTolerance = 0.08;
 
-TEST_CASE("photon: converges to the path tracer on the diffuse Cornell box with its area light (4x4 block means within 8%)") {
+TEST_CASE("photon: converges to the path tracer on the diffuse Cornell box with its area light (4x4 block means within 8%)" * doctest::test_suite("statistical")) {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-lamp.toml");
     scene.camera.width = scene.camera.height = 24;
     const Film photon = render(scene, classesSet(), "photon", 64, 0, {1000000, 0.025f});
