@@ -98,18 +98,28 @@ void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeB
     }
 }
 
+std::optional<lpe::SuffixReader> requestedPhotonReader(const RenderContext& context) {
+    // Unless every path is wanted, a photon is kept only when some requested output may accept a
+    // path ending in its events (the automaton read backwards, lpe/suffix_reader.h).
+    std::optional<lpe::SuffixReader> reader;
+    if (!context.keepAllPaths) reader.emplace(context.automaton, context.requested);
+    return reader;
+}
+
+PhotonSet shootRequestedPhotons(const RenderContext& context, const lpe::SuffixReader* reader, std::uint64_t count,
+                                std::uint64_t seed) {
+    const PhotonUse use{reader, &context.symbols};
+    return shootPhotons(context, count, seed, reader ? &completesAcceptedPath : nullptr, &use);
+}
+
 void PhotonIntegrator::preprocess(const RenderContext& context) {
     const auto started = std::chrono::steady_clock::now();
     const ParameterValues* p = context.parameters;
     const std::uint64_t count = p ? static_cast<std::uint64_t>(p->integer("photons")) : kDefaultPhotons;
     const float radius = p && p->has("photon-radius") ? p->number("photon-radius") : defaultPhotonRadius(context.scene);
     const float causticRadius = p && p->has("caustic-radius") ? p->number("caustic-radius") : radius;
-    // Unless every path is wanted, a photon is kept only when some requested output may accept a
-    // path ending in its events (the automaton read backwards, lpe/suffix_reader.h).
-    std::optional<lpe::SuffixReader> reader;
-    if (!context.keepAllPaths) reader.emplace(context.automaton, context.requested);
-    const PhotonUse use{reader ? &*reader : nullptr, &context.symbols};
-    PhotonSet set = shootPhotons(context, count, mixBits(kPhotonSeed ^ context.seed), reader ? &completesAcceptedPath : nullptr, &use);
+    const std::optional<lpe::SuffixReader> reader = requestedPhotonReader(context);
+    PhotonSet set = shootRequestedPhotons(context, reader ? &*reader : nullptr, count, mixBits(kPhotonSeed ^ context.seed));
     caustic_ = PhotonMap(std::move(set.caustic), std::move(set.causticEvents), causticRadius, set.counts.shot);
     global_ = PhotonMap(std::move(set.global), std::move(set.globalEvents), radius, set.counts.shot);
     stats_ = {};
