@@ -70,10 +70,12 @@ TEST_CASE("sppm: a caustic seen in a mirror, E S+ D S+ <L.>, shows, and the clas
 
 TEST_CASE("sppm: the same image, bit for bit, on one thread and on four") {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/caustic-in-mirror.toml");
-    scene.camera.width = 16;
-    scene.camera.height = 12;
-    const Film one = render(scene, classesSet(), "sppm", 3, 1, {5000, 0.0f});
-    const Film four = render(scene, classesSet(), "sppm", 3, 4, {5000, 0.0f});
+    scene.camera.width = 48;
+    scene.camera.height = 36;
+    // Several tiles, so four threads share them; 4 samples over 3 passes, so a pass chosen by
+    // anything but the sample's index shows.
+    const Film one = render(scene, classesSet(), "sppm", 4, 1, {5000, 0.0f, 3});
+    const Film four = render(scene, classesSet(), "sppm", 4, 4, {5000, 0.0f, 3});
     for (std::size_t l = 0; l < one.layerCount(); ++l) {
         const auto a = one.layer(l), b = four.layer(l);
         CHECK(std::equal(a.begin(), a.end(), b.begin(), b.end()));
