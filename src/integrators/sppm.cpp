@@ -6,6 +6,7 @@
 #include <string>
 
 #include "integrators/registry.h"
+#include "util/progress.h"
 
 namespace lightpath {
 namespace {
@@ -38,6 +39,8 @@ void SppmIntegrator::preprocess(const RenderContext& context) {
     passes_.clear();
     passes_.reserve(std::size_t(passCount));
     stats_ = {};
+    // A bar of passes while they are shot, as radiosity shows its solve; Ctrl-C stops between passes.
+    ProgressBar progress(passCount, context.progress, "photon passes", context.preprocessSteps);
     for (int pass = 0; pass < passCount; ++pass) {
         if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) break;
         const float radius = sppmRadius(firstRadius, alpha, pass);
@@ -51,6 +54,7 @@ void SppmIntegrator::preprocess(const RenderContext& context) {
         stats_.bytes += maps.caustic.bytes() + maps.global.bytes();
         passes_.push_back(std::move(maps));
         stats_.lastRadius = radius;
+        progress.tileDone();
     }
     stats_.radius = stats_.causticRadius = firstRadius;
     stats_.passes = passCount;
