@@ -34,10 +34,10 @@ struct PhotonUse {
     const EventSymbols* symbols;
 };
 
-// Whether a path ending in these light-side events (the light first) may be accepted by a
-// requested output: they are read backwards from the light; the merge and the eye's events, not
-// known yet, are any prefix.
-bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSide) {
+// Whether a path ending in these light-side events (the light first) after one of the merge
+// events may be accepted by a requested output: they are read backwards from the light, then the
+// merge; the eye's events, not known yet, are any prefix.
+bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSide, std::span<const PathEvent> merges) {
     const PhotonUse& use = *static_cast<const PhotonUse*>(state);
     thread_local lpe::SuffixReader::StateSet suffix, longer;
     use.reader->prepend(use.reader->accepting(), (*use.symbols)(lightSide[0]), suffix);
@@ -45,7 +45,11 @@ bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSi
         use.reader->prepend(suffix, (*use.symbols)(lightSide[i]), longer);
         std::swap(suffix, longer);
     }
-    return use.reader->completable(suffix);
+    for (const PathEvent& merge : merges) {
+        use.reader->prepend(suffix, (*use.symbols)(merge), longer);
+        if (use.reader->completable(longer)) return true;
+    }
+    return false;
 }
 
 }  // namespace
