@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <cstdio>
 #include <numbers>
 
 #include "util/timing.h"
 #include "film/aov_set.h"
+#include "integrators/registry.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"
 #include "lights/point_light.h"
@@ -297,6 +299,46 @@ void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory
     }
 }
 
+// Photon mapping on the mirror caustic, against its closed form: sppm's error as passes double
+// (one pass per pixel sample, photons per pass fixed; its slope says how fast bias and noise fall
+// together), and fixed-radius photon mapping's error against its radius at many photons, where
+// error is the blur (bias) at large radii and noise at small ones: a minimum between.
+void photonMappingRows(bool quick, ErrorBenchmarkResult& result) {
+    Reference caustic;
+    const Scene scene = mirrorCausticScene(quick ? 32 : 64, caustic);
+    const std::string expression = "E(D|G)S+L";
+    std::vector<ErrorBenchmarkRow> curve;
+    for (int k = 0; k <= (quick ? 5 : 7); ++k) {
+        RenderOptions options;
+        options.integrator = "sppm";
+        options.threads = 1;
+        options.samplesPerPixel = 1 << k;
+        options.seed = 1;
+        ParameterValues values(findIntegrator("sppm")->schema);
+        values.set("photons", 10000);
+        options.integratorParameters = values;
+        const Measurement m = measure(scene, caustic, options, expression);
+        curve.push_back({"mirror-caustic", "sppm", "passes", options.samplesPerPixel, 0, m.seconds, m.rmse, m.relmse});
+    }
+    result.rows.insert(result.rows.end(), curve.begin(), curve.end());
+    result.summaries.push_back({"mirror-caustic", "sppm", fitSlope(curve), 0.0});
+    for (const double radius : {0.64, 0.32, 0.16, 0.08, 0.04, 0.02}) {
+        RenderOptions options;
+        options.integrator = "photon";
+        options.threads = 1;
+        options.samplesPerPixel = 4;
+        options.seed = 1;
+        ParameterValues values(findIntegrator("photon")->schema);
+        values.set("photons", quick ? 200000 : 1000000);
+        values.set("photon-radius", radius);
+        options.integratorParameters = values;
+        const Measurement m = measure(scene, caustic, options, expression);
+        char name[32];
+        std::snprintf(name, sizeof name, "radius %.2f", radius);
+        result.rows.push_back({"mirror-caustic", "photon", name, options.samplesPerPixel, 0, m.seconds, m.rmse, m.relmse});
+    }
+}
+
 }  // namespace
 
 ErrorBenchmarkResult runErrorBenchmark(bool quick, bool integratorsOnly, const std::filesystem::path& scenesDirectory,
@@ -304,6 +346,7 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, bool integratorsOnly, const s
     ErrorBenchmarkResult result;
     if (integratorsOnly) {
         compareIntegrators(quick, scenesDirectory, cacheDirectory, result);
+        photonMappingRows(quick, result);
         return result;
     }
     struct BenchScene {
@@ -388,6 +431,7 @@ ErrorBenchmarkResult runErrorBenchmark(bool quick, bool integratorsOnly, const s
         result.summaries.push_back({bench.name, "radiosity", fitSlope(curve), seconds / independentSeconds});
     }
     compareIntegrators(quick, scenesDirectory, cacheDirectory, result);
+    photonMappingRows(quick, result);
     return result;
 }
 

@@ -11,7 +11,9 @@
 //                     light's mirror image in closed form; only bdpt's light tracing finds it
 //   cornell-lamp      the Cornell box under its area light, against a cached high-sample render
 //   cornell           the diffuse Cornell box, against the path tracer's cached high-sample render
-// Radiosity gets its own rows on the furnace and the Cornell box, one per patch budget.
+// Radiosity gets its own rows on the furnace and the Cornell box, one per patch budget; photon
+// mapping its own on mirror-caustic: sppm as passes double (with its slope), fixed-radius photon
+// mapping against its radius (the bias of the blur).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,7 +34,7 @@ struct ErrorBenchmarkSummary {
     double slope = 0.0;       // fitted d log(rmse) / d log(seconds)
     // Seconds to reach the common error, over independent sampling's (samplers) or over the path
     // tracer's at its largest budget (integrators).
-    double timeRatio = 0.0;
+    double timeRatio = 0.0;  // 0: not compared (sppm)
     // Integrators: rays cast per pixel sample (camera, shadow and connection rays, walks' bounces)
     // at the largest budget; their ratio to the path tracer's is the cost of the extra strategies.
     double raysPerSample = 0.0;

@@ -69,7 +69,8 @@ void run(const ErrorOptions& options) {
     std::printf("\n%-18s %-12s %10s %26s\n", "scene", "sampler", "slope", "time to reference error");
     std::printf("(samplers and radiosity: independent's error at its largest budget; path/bdpt: the path tracer's)\n");
     for (const auto& s : r.summaries) {
-        std::printf("%-18s %-12s %10.3f %25.2fx", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
+        if (s.timeRatio > 0.0) std::printf("%-18s %-12s %10.3f %25.2fx", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
+        else std::printf("%-18s %-12s %10.3f %26s", s.scene.c_str(), s.sampler.c_str(), s.slope, "-");
         if (s.raysPerSample > 0.0) std::printf("   %.2f rays/sample", s.raysPerSample);
         std::printf("\n");
     }

@@ -95,6 +95,15 @@ void printRadiosityStats(const RadiosityStats& r) {
 }
 
 void printPhotonStats(const PhotonStats& p) {
+    if (p.passes > 1) {
+        std::printf("photons       %llu shot in %d passes, %llu stored (%llu caustic, %llu global), radius %.4g to %.4g, "
+                    "%.1f MiB, shot in %.3f s\n",
+                    static_cast<unsigned long long>(p.shot), p.passes,
+                    static_cast<unsigned long long>(p.causticStored + p.globalStored),
+                    static_cast<unsigned long long>(p.causticStored), static_cast<unsigned long long>(p.globalStored),
+                    double(p.radius), double(p.lastRadius), double(p.bytes) / (1024.0 * 1024.0), p.seconds);
+        return;
+    }
     std::printf("photons       %llu shot, %llu stored (%llu caustic within %.4g, %llu global within %.4g), %.1f MiB, "
                 "shot in %.3f s\n",
                 static_cast<unsigned long long>(p.shot), static_cast<unsigned long long>(p.causticStored + p.globalStored),

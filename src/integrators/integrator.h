@@ -63,6 +63,8 @@ struct RenderContext {
     const ParameterValues* parameters = nullptr;
     // The render's seed (--seed), for work a preprocess draws at random (photon mapping's photons).
     std::uint64_t seed = 0;
+    // The samples each pixel takes (--spp): progressive photon mapping's passes by default.
+    int samplesPerPixel = 1;
 };
 
 class Integrator {

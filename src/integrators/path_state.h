@@ -68,6 +68,7 @@ public:
     const RenderContext& context;
     RayCounters& counters;
     Sampler* sampler = nullptr;  // the current pixel sample's random numbers
+    int sampleIndex = 0;         // which of its pixel's samples this is (sppm's pass)
 
 private:
     // Inline, as the two lookups they are: every light sample of every shading point asks them.

@@ -34,10 +34,10 @@ struct PhotonUse {
     const EventSymbols* symbols;
 };
 
-// Whether a path ending in these light-side events (the light first) may be accepted by a
-// requested output: they are read backwards from the light; the merge and the eye's events, not
-// known yet, are any prefix.
-bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSide) {
+// Whether a path ending in these light-side events (the light first) after one of the merge
+// events may be accepted by a requested output: they are read backwards from the light, then the
+// merge; the eye's events, not known yet, are any prefix.
+bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSide, std::span<const PathEvent> merges) {
     const PhotonUse& use = *static_cast<const PhotonUse*>(state);
     thread_local lpe::SuffixReader::StateSet suffix, longer;
     use.reader->prepend(use.reader->accepting(), (*use.symbols)(lightSide[0]), suffix);
@@ -45,7 +45,11 @@ bool completesAcceptedPath(const void* state, std::span<const PathEvent> lightSi
         use.reader->prepend(suffix, (*use.symbols)(lightSide[i]), longer);
         std::swap(suffix, longer);
     }
-    return use.reader->completable(suffix);
+    for (const PathEvent& merge : merges) {
+        use.reader->prepend(suffix, (*use.symbols)(merge), longer);
+        if (use.reader->completable(longer)) return true;
+    }
+    return false;
 }
 
 }  // namespace
@@ -98,18 +102,28 @@ void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeB
     }
 }
 
+std::optional<lpe::SuffixReader> requestedPhotonReader(const RenderContext& context) {
+    // Unless every path is wanted, a photon is kept only when some requested output may accept a
+    // path ending in its events (the automaton read backwards, lpe/suffix_reader.h).
+    std::optional<lpe::SuffixReader> reader;
+    if (!context.keepAllPaths) reader.emplace(context.automaton, context.requested);
+    return reader;
+}
+
+PhotonSet shootRequestedPhotons(const RenderContext& context, const lpe::SuffixReader* reader, std::uint64_t count,
+                                std::uint64_t seed) {
+    const PhotonUse use{reader, &context.symbols};
+    return shootPhotons(context, count, seed, reader ? &completesAcceptedPath : nullptr, &use);
+}
+
 void PhotonIntegrator::preprocess(const RenderContext& context) {
     const auto started = std::chrono::steady_clock::now();
     const ParameterValues* p = context.parameters;
     const std::uint64_t count = p ? static_cast<std::uint64_t>(p->integer("photons")) : kDefaultPhotons;
     const float radius = p && p->has("photon-radius") ? p->number("photon-radius") : defaultPhotonRadius(context.scene);
     const float causticRadius = p && p->has("caustic-radius") ? p->number("caustic-radius") : radius;
-    // Unless every path is wanted, a photon is kept only when some requested output may accept a
-    // path ending in its events (the automaton read backwards, lpe/suffix_reader.h).
-    std::optional<lpe::SuffixReader> reader;
-    if (!context.keepAllPaths) reader.emplace(context.automaton, context.requested);
-    const PhotonUse use{reader ? &*reader : nullptr, &context.symbols};
-    PhotonSet set = shootPhotons(context, count, mixBits(kPhotonSeed ^ context.seed), reader ? &completesAcceptedPath : nullptr, &use);
+    const std::optional<lpe::SuffixReader> reader = requestedPhotonReader(context);
+    PhotonSet set = shootRequestedPhotons(context, reader ? &*reader : nullptr, count, mixBits(kPhotonSeed ^ context.seed));
     caustic_ = PhotonMap(std::move(set.caustic), std::move(set.causticEvents), causticRadius, set.counts.shot);
     global_ = PhotonMap(std::move(set.global), std::move(set.globalEvents), radius, set.counts.shot);
     stats_ = {};

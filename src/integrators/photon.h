@@ -16,6 +16,7 @@
 #include "integrators/integrator.h"
 #include "integrators/photon_map.h"
 #include "integrators/shading_point.h"
+#include "lpe/suffix_reader.h"
 
 namespace lightpath {
 
@@ -23,6 +24,10 @@ struct PhotonStats {
     std::uint64_t shot = 0, causticStored = 0, globalStored = 0;
     std::size_t bytes = 0;
     float radius = 0.0f, causticRadius = 0.0f;
+    // Progressive photon mapping's passes, each a map of `shot / passes` photons whose radius
+    // shrinks from `radius` to `lastRadius` (sppm.h); 1 for Jensen's.
+    int passes = 1;
+    float lastRadius = 0.0f;
     double seconds = 0.0;
 };
 
@@ -85,6 +90,13 @@ inline constexpr std::uint64_t kMaxPhotons = 10000000;
 // The default search radius: this share of the diagonal of the scene's bounded shapes.
 inline constexpr float kDefaultRadiusShare = 0.01f;
 float defaultPhotonRadius(const Scene& scene);
+
+// The reader of the requested outputs backwards from the light, when photons may be filtered by it
+// (not when every path is wanted), and the photons of `count` paths kept by it: the one photon
+// filter of photon mapping and of its progressive form (sppm.h).
+std::optional<lpe::SuffixReader> requestedPhotonReader(const RenderContext& context);
+PhotonSet shootRequestedPhotons(const RenderContext& context, const lpe::SuffixReader* reader, std::uint64_t count,
+                                std::uint64_t seed);
 
 class PhotonIntegrator final : public Integrator {
 public:

@@ -40,6 +40,15 @@ struct ChunkResult {
     std::uint64_t shot = 0;
 };
 
+// The events of the smooth lobes at `sp`, the merges the eye's side may read a photon there with
+// (every smooth lobe, as addPhotonDensity reads them), in `out`.
+std::span<const PathEvent> smoothEvents(const ShadingPoint& sp, std::array<PathEvent, kMaxLobes>& out) {
+    std::size_t n = 0;
+    for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()) && n < out.size(); ++lobe)
+        if (!sp.bsdf.lobe(lobe).delta()) out[n++] = sp.eventOf(lobe);
+    return {out.data(), n};
+}
+
 void tracePhoton(const RenderContext& ctx, std::uint64_t index, std::uint64_t seed, double scale, PhotonFilter keep,
                  const void* keepState, ChunkResult& out) {
     Sampler sampler(SamplerKind::Independent, mixBits(seed ^ mixBits(index)), 0, 1);
@@ -52,6 +61,7 @@ void tracePhoton(const RenderContext& ctx, std::uint64_t index, std::uint64_t se
     if (!(e.pdfPosition > 0.0f) || !(e.pdfDirection > 0.0f) || isBlack(e.radiance)) return;
 
     std::array<PathEvent, kMaxDepth + 1> history;
+    std::array<PathEvent, kMaxLobes> merges;
     history[0] = light.event();
     history[0].position = e.ray.origin;
     int bounces = 0;
@@ -79,7 +89,7 @@ void tracePhoton(const RenderContext& ctx, std::uint64_t index, std::uint64_t se
         if (bounces + 1 > ctx.maxDepth) break;
         const ShadingPoint sp = makeShadingPoint(*hit, ray, ctx, TransportMode::Importance);
         if (bounces >= 1 && sp.bsdf.hasSmoothLobe() &&
-            (keep == nullptr || keep(keepState, {history.data(), std::size_t(bounces) + 1}))) {
+            (keep == nullptr || keep(keepState, {history.data(), std::size_t(bounces) + 1}, smoothEvents(sp, merges)))) {
             const Photon photon{hit->point, sp.wo, sp.normal, power, 0, static_cast<std::uint8_t>(bounces)};
             (allSpecular ? out.caustic : out.global).store(photon, {history.data(), std::size_t(bounces) + 1});
         }

@@ -96,14 +96,17 @@ struct PhotonPassCounts {
 // path i seeded by `seed` and i alone, so the result is the same on any number of threads. A photon
 // is kept at every hit with a smooth lobe after at least one scattering event (direct light is next-
 // event estimation's), while 1 + its events <= maxDepth, and only when `keep`(its light-side events
-// as PathEvents from the light) says some requested output may accept a path ending in them.
+// as PathEvents from the light, and the merge's candidate events) says some requested output may accept
+// a path ending in them.
 struct PhotonSet {
     std::vector<Photon> caustic, global;
     std::vector<PathEvent> causticEvents, globalEvents;
     PhotonPassCounts counts;
 };
-// Whether a photon's light-side events (the light first) may still end an accepted path.
-using PhotonFilter = bool (*)(const void* state, std::span<const PathEvent> lightSide);
+// Whether a photon's light-side events (the light first) may still end an accepted path whose
+// merge vertex is one of `merges` (the events of the smooth lobes where it is stored: the eye's
+// side reads it through one of them).
+using PhotonFilter = bool (*)(const void* state, std::span<const PathEvent> lightSide, std::span<const PathEvent> merges);
 PhotonSet shootPhotons(const RenderContext& context, std::uint64_t count, std::uint64_t seed,
                        PhotonFilter keep = nullptr, const void* keepState = nullptr);
 

@@ -69,6 +69,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
                                     "compare it with --integrator raycast --shadows off");
     context_.filter = &filter_;
     context_.seed = options.seed;
+    context_.samplesPerPixel = options.samplesPerPixel;
     context_.preprocessSteps = options.preprocessSteps;
     if (options_.integratorParameters) context_.parameters = &*options_.integratorParameters;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);
@@ -155,6 +156,7 @@ int Renderer::renderPixel(int x, int y, std::uint64_t seed, int spp, std::span<R
         const Rgb beautyBefore = layers[0];
         Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, seed);
         path.sampler = &sampler;
+        path.sampleIndex = taken;
         // One sample goes through the pixel centre, as in the lecture; more are spread around it
         // as the pixel filter weighs them. Under light tracing even one is spread: its splats
         // estimate the filter's mean over the pixel, and so must the eye's strategies.
@@ -295,6 +297,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
     stats.accelerator = geometry_->acceleratorStats();
     if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
     if (const auto* photon = dynamic_cast<const PhotonIntegrator*>(integrator_.get())) stats.photon = photon->stats();
+    if (const auto* sppm = dynamic_cast<const SppmIntegrator*>(integrator_.get())) stats.photon = sppm->stats();
     for (const auto& cpu : workerCpu) stats.workerCpuSeconds.push_back(cpu.value);
     stats.serialCpuSeconds = serialBeforeCpu + (threadCpuSeconds() - afterWorkersCpu);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

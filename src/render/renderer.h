@@ -20,6 +20,7 @@
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
 #include "integrators/photon.h"
+#include "integrators/sppm.h"
 #include "integrators/radiosity.h"
 #include "integrators/ray_counters.h"
 #include "lights/light_set.h"

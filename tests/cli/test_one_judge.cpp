@@ -222,7 +222,7 @@ TEST_CASE("one judge: issue 31's expressions get the verdicts the issue asks for
             CHECK(runCommand({"lpe", "check", "--quiet", "--integrator", name, volume}).code == (integrator.rendersMedia ? 0 : 2));
         }
         // A mirror in a scene without a coat: every integrator that follows mirrors renders it.
-        const bool mirrors = name == "whitted" || name == "path" || name == "bdpt" || name == "photon";
+        const bool mirrors = name == "whitted" || name == "path" || name == "bdpt" || name == "photon" || name == "sppm";
         for (const std::string specular : {"C<RS[^'coat']>.*", "C<RS'coat'>.*"}) {
             CAPTURE(specular);
             CHECK(runCommand({"lpe", "check", "--quiet", "--integrator", name, specular}).code == (mirrors ? 0 : 2));

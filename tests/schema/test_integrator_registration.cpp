@@ -14,7 +14,7 @@ namespace lightpath {
 
 TEST_CASE("every shipped type is registered in the render tests") {
     CHECK(integratorNames() ==
-          std::vector<std::string>{"raycast", "raster", "whitted", "path", "radiosity", "bdpt", "photon"});
+          std::vector<std::string>{"raycast", "raster", "whitted", "path", "radiosity", "bdpt", "photon", "sppm"});
     CHECK(findIntegrator("whitted")->shadowRays == ShadowRays::Optional);
     // Its path language, which leaves out the ambient term only ray casting and Whitted's formula add.
     CHECK(std::string(findIntegrator("radiosity")->schema.events) == "ED*[<L.[^'ambient']>OB]");
