@@ -29,7 +29,7 @@ std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& samp
                         DirectLightWeighting weighting, const Rgb& throughput,
                         std::array<TermFactor, kMaxTermFactors>& factors) {
     std::size_t n = 0;
-    if (light.isDelta() && weighting == DirectLightWeighting::Alone) {
+    if (light.isDelta() && !light.atInfinity() && weighting == DirectLightWeighting::Alone) {
         const float falloff = light.falloff(sample.distance);
         NamedFactors named;
         const int count = p.bsdf.factors(lobe, p.wo, sample.wi, named);

@@ -4,6 +4,7 @@
 // sample a ray leaving the light (light tracing), and its power (choosing lights). A new kind of
 // shapeless light is one file implementing this and scene/scene_light.h's SceneLight, which
 // registers its LightType (scene/light_type.h; examples/plugins/spot_light.cpp is one).
+#include "geometry/bounds.h"
 #include "geometry/surface_hit.h"
 #include "transport/path_event.h"
 #include "math/ray.h"
@@ -62,6 +63,14 @@ public:
     // Emitted flux (W): lights are chosen in proportion to it.
     virtual Rgb power() const = 0;
     virtual bool isDelta() const = 0;
+    // A light at infinity (directional): its rays are parallel, a delta in direction. Its
+    // sampleEmission() then picks the ray's place on a disk across the scene with pdfDirection
+    // per unit area perpendicular to the rays (pdfPosition 1), and the density of a receiver per
+    // unit area is that times |cos| at the receiver, with no 1/d^2 (pbrt-v4's DistantLight).
+    virtual bool atInfinity() const { return false; }
+    // The box around the scene's bounded shapes and the camera, once before rendering: a light at
+    // infinity sizes its emission disk by it (pbrt-v4 DistantLight::Preprocess).
+    virtual void preprocess(const Bounds& /*sceneBounds*/) {}
     // Whether light sampling and light tracing may start on it; an emitter too small for its
     // densities to be floats is seen only where a ray hits it (LightSet chooses it never).
     virtual bool sampleable() const { return true; }
