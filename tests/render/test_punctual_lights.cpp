@@ -6,12 +6,15 @@
 #include <cmath>
 #include <string>
 
+#include "accel/scene_geometry.h"
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "schema/parameter_values.h"
+#include "integrators/bdpt_vertex.h"
 #include "integrators/registry.h"
+#include "lights/light_set.h"
 #include "../support/film_checks.h"
 
 namespace lightpath {
@@ -126,6 +129,14 @@ material = "matte"
 vertices = [[-1.5, 0, -1.5], [-1.5, 3, 1.5], [-1.5, 0, 1.5]]
 )";
 
+constexpr const char* kSunDeclaration = R"(
+[[lights]]
+type = "directional"
+name = "sun"
+direction = [-0.5, -1, -0.6]
+irradiance = 2
+)";
+
 Film renderRoom(const std::string& light, const char* integrator, int spp) {
     const Scene scene = loadSceneFromText(std::string(kRoom) + light, "punctual-room.toml");
     RenderOptions options;
@@ -139,6 +150,30 @@ Film renderRoom(const std::string& light, const char* integrator, int spp) {
     return Renderer(scene, AovSet(classesSet()), options).render().film;
 }
 
+// bdpt weighs strategies by each one's area density of a vertex: under parallel rays a receiver's
+// is the emission disk's density times |cos| at the receiver, at any distance (no 1/d^2: the rays
+// do not spread). A wrong density here biases nothing (the weights still sum to 1) but hands the
+// light walks a weight they do not earn, so it is checked by itself.
+TEST_CASE("under a directional light, a receiver's area density is the disk's density times |cos|, at any distance") {
+    const Scene scene = loadSceneFromText(std::string(kRoom) + kSunDeclaration, "punctual-density.toml");
+    const SceneGeometry geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh, {}, 0, scene.shapes);
+    const LightSet lights(scene, geometry);
+    REQUIRE(lights.all().size() == 1);
+    const Light& sun = *lights.all()[0];
+    REQUIRE(sun.atInfinity());
+    const EmittedRay e = sun.sampleEmission({0.3f, 0.6f}, {0.5f, 0.5f});
+    const BdptVertex y = lightVertex(sun, e.ray.origin, Vec3{0.0f}, e.pdfPosition, e.pdfPosition);
+    const Vec3 normal = glm::normalize(Vec3{0.2f, 1.0f, 0.1f});
+    for (const float distance : {0.5f, 3.0f, 10.0f}) {
+        BdptVertex z;
+        z.point = e.ray.at(distance);
+        z.normal = normal;
+        CAPTURE(distance);
+        CHECK(toAreaDensity(e.pdfDirection, y, z) ==
+              doctest::Approx(e.pdfDirection * std::fabs(glm::dot(normal, e.ray.direction))).epsilon(1e-5));
+    }
+}
+
 constexpr const char* kSpot = R"(
 [[lights]]
 type = "spot"
@@ -150,13 +185,7 @@ cone_angle = 35
 falloff_start = 15
 )";
 
-constexpr const char* kSun = R"(
-[[lights]]
-type = "directional"
-name = "sun"
-direction = [-0.5, -1, -0.6]
-irradiance = 2
-)";
+constexpr const char* kSun = kSunDeclaration;
 
 TEST_CASE("spot and directional lights: bdpt and photon mapping (light walks from sampleEmission) agree with the path tracer" *
           doctest::test_suite("statistical")) {
