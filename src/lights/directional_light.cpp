@@ -107,4 +107,4 @@ LIGHTPATH_REGISTER_LIGHT(lightpath::LightType{
       {"irradiance", lightpath::ParameterType::Colour, "W/m²", "1", lightpath::kNonNegative,
        "E on a surface perpendicular to the rays: a Lambertian surface of albedo ρ at angle θ reflects ρ/π E cos θ"}},
      "<L.>"},
-    2, lightpath::addDirectionalLight})
+    4, lightpath::addDirectionalLight})

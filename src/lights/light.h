@@ -3,7 +3,7 @@
 // receiver (next-event estimation, ray casting's shadow rays), the density of that sampling (MIS),
 // sample a ray leaving the light (light tracing), and its power (choosing lights). A new kind of
 // shapeless light is one file implementing this and scene/scene_light.h's SceneLight, which
-// registers its LightType (scene/light_type.h; examples/plugins/spot_light.cpp is one).
+// registers its LightType (scene/light_type.h; lights/spot_light.cpp is one).
 #include "geometry/bounds.h"
 #include "geometry/surface_hit.h"
 #include "transport/path_event.h"

@@ -130,4 +130,4 @@ LIGHTPATH_REGISTER_LIGHT(lightpath::LightType{
        "the inner cone's half angle (glTF `innerConeAngle`), at most `cone_angle`: full intensity inside it, "
        "between the two the intensity is t², t = (cos θ − cos outer) / (cos inner − cos outer)"}},
      "<L.>"},
-    1, lightpath::addSpotLight})
+    3, lightpath::addSpotLight})
