@@ -12,7 +12,8 @@ float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVerte
     if (!(distance2 > 0.0f)) return 0.0f;
     // Parallel rays: the density is per unit area across them already (lights/light.h).
     if (from.kind == VertexKind::Light && from.light != nullptr && from.light->atInfinity())
-        return glm::dot(to.normal, to.normal) > 0.0f ? pdfSolidAngle * std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2)
+        return !from.light->emitsTowards(to.point) ? 0.0f
+               : glm::dot(to.normal, to.normal) > 0.0f ? pdfSolidAngle * std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2)
                                                      : pdfSolidAngle;
     float pdf = pdfSolidAngle / distance2;
     // A point light and the pinhole have no surface: their density stays per unit solid angle

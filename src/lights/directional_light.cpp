@@ -69,6 +69,12 @@ public:
     float pdfEmissionDirection(const Vec3&, const Vec3& direction) const override {
         return glm::dot(direction, light_.direction) > kParallel ? diskDensity() : 0.0f;
     }
+    // Within the cylinder the disk sweeps along the rays.
+    bool emitsTowards(const Vec3& receiver) const override {
+        const Vec3 offset = receiver - centre_;
+        const Vec3 across = offset - glm::dot(offset, light_.direction) * light_.direction;
+        return glm::dot(across, across) <= radius_ * radius_;
+    }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
     // The flux through the disk.
     Rgb power() const override { return light_.irradiance * (kPi * radius_ * radius_); }

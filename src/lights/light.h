@@ -68,6 +68,10 @@ public:
     // per unit area perpendicular to the rays (pdfPosition 1), and the density of a receiver per
     // unit area is that times |cos| at the receiver, with no 1/d^2 (pbrt-v4's DistantLight).
     virtual bool atInfinity() const { return false; }
+    // Whether sampleEmission()'s rays can reach `receiver` at all: a light at infinity's disk
+    // covers the scene's bounds, not an unbounded plane beyond them, where only light sampling
+    // finds its light (and bidirectional path tracing must weigh it so).
+    virtual bool emitsTowards(const Vec3& /*receiver*/) const { return true; }
     // The box around the scene's bounded shapes and the camera, once before rendering: a light at
     // infinity sizes its emission disk by it (pbrt-v4 DistantLight::Preprocess).
     virtual void preprocess(const Bounds& /*sceneBounds*/) {}

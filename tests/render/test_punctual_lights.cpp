@@ -45,8 +45,9 @@ double meanGreen(const Film& film) {
     return sum / (film.width() * film.height());
 }
 
-double renderFloor(const std::string& light, const char* integrator) {
-    const Scene scene = loadSceneFromText(std::string(kFloor) + light, "punctual-floor.toml");
+double renderFloor(const std::string& light, const char* integrator, float fov = 2.0f) {
+    Scene scene = loadSceneFromText(std::string(kFloor) + light, "punctual-floor.toml");
+    scene.camera.verticalFovDegrees = fov;
     RenderOptions options;
     options.integrator = integrator;
     options.samplesPerPixel = 1;
@@ -94,6 +95,11 @@ TEST_CASE("a directional light of irradiance E at theta to a Lambertian floor: r
             CAPTURE(integrator);
             CHECK(renderFloor(light, integrator) == doctest::Approx(expected).epsilon(1e-4));
         }
+        // The floor is a plane, unbounded: the emission disk covers the eye's neighbourhood only
+        // (the scene has no bounded shape), so the floor seen through 60° gets its light by light
+        // sampling alone, and bdpt must give that strategy the whole weight there.
+        CAPTURE(degrees);
+        CHECK(renderFloor(light, "bdpt", 60.0f) == doctest::Approx(expected).epsilon(0.02));
     }
 }
 
