@@ -60,6 +60,9 @@ public:
     // How light from the light falls off over distance d, in place of 1/d^2: the lecture's
     // attenuation 1 / (c0 + c1 d + c2 d^2) for point lights, physical 1/d^2 for area lights.
     virtual float falloff(float distance) const { return 1.0f / (distance * distance); }
+    // The share of its axis' intensity a delta light sends along unit `leaving` (a spot's cone;
+    // 1 for a point light): `explain` prints it as a factor of its own beside I and attenuation.
+    virtual float intensityShare(const Vec3& /*leaving*/) const { return 1.0f; }
     // Emitted flux (W): lights are chosen in proportion to it.
     virtual Rgb power() const = 0;
     virtual bool isDelta() const = 0;

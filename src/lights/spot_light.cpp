@@ -77,6 +77,7 @@ public:
         return glm::dot(direction, spot_.axis) > spot_.cosOuter ? coneDensity() : 0.0f;
     }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
+    float intensityShare(const Vec3& leaving) const override { return spot_.cone(leaving); }
     // Intensity times the cone's solid angle: the full 2 pi (1 - cos inner) and, under the ramp
     // squared, a third of 2 pi (cos inner - cos outer) (t^2 integrates to 1/3 over [0, 1]).
     Rgb power() const override {

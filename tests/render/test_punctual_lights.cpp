@@ -84,6 +84,38 @@ TEST_CASE("a spot light at angle theta to its axis lights a Lambertian floor as 
     }
 }
 
+// `explain` under ray casting: Szymczak's factors with the spot's cone apart, so I is the scene
+// file's intensity and the product is the term.
+TEST_CASE("explain: a spot's term is kd, N.L, I, its cone and attenuation, multiplying to the value") {
+    const double theta = 30.0 * kDegree;
+    Scene scene = loadSceneFromText(std::string(kFloor) + "[[lights]]\ntype = \"spot\"\nposition = [" +
+                                        std::to_string(2.0 * std::tan(theta)) +
+                                        ", 2, 0]\nintensity = 3\ncone_angle = 40\nfalloff_start = 20\n",
+                                    "punctual-explain.toml");
+    RenderOptions options;
+    options.integrator = "raycast";
+    const auto log = Renderer(scene, AovSet(std::vector<lpe::NamedExpression>{}), options).explainPixel(4, 4);
+    int checked = 0;
+    for (const LoggedContribution& c : log) {
+        if (!(c.value.g > 0.0f)) continue;
+        REQUIRE(c.factorCount == 5);
+        const char* names[] = {"kd", "N.L", "I", "cone", "attenuation"};
+        Rgb product{1.0f};
+        for (std::size_t f = 0; f < 5; ++f) {
+            CHECK(std::string(c.factors[f].name) == names[f]);
+            product *= c.factors[f].value;
+        }
+        CHECK(c.factors[2].value.g == doctest::Approx(3.0).epsilon(1e-4));
+        // The axis is vertical, so the angle off it is the angle of incidence, whose cosine is N.L.
+        const double offAxis = std::acos(double(c.factors[1].value.g));
+        CHECK(c.factors[3].value.g == doctest::Approx(gltfCone(offAxis, 20.0 * kDegree, 40.0 * kDegree)).epsilon(1e-3));
+        CHECK(c.factors[3].value.g < 0.5f);  // between the cones: the ramp
+        CHECK(product.g == doctest::Approx(c.value.g).epsilon(1e-5));
+        ++checked;
+    }
+    CHECK(checked == 1);
+}
+
 TEST_CASE("a directional light of irradiance E at theta to a Lambertian floor: radiance kd / pi E cos(theta)") {
     for (const double degrees : {0.0, 30.0, 60.0}) {
         const double theta = degrees * kDegree;
