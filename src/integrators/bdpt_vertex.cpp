@@ -10,6 +10,11 @@ float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVerte
     const Vec3 d = to.point - from.point;
     const float distance2 = glm::dot(d, d);
     if (!(distance2 > 0.0f)) return 0.0f;
+    // Parallel rays: the density is per unit area across them already (lights/light.h).
+    if (from.kind == VertexKind::Light && from.light != nullptr && from.light->atInfinity())
+        return !from.light->emitsTowards(to.point) ? 0.0f
+               : glm::dot(to.normal, to.normal) > 0.0f ? pdfSolidAngle * std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2)
+                                                     : pdfSolidAngle;
     float pdf = pdfSolidAngle / distance2;
     // A point light and the pinhole have no surface: their density stays per unit solid angle
     // times 1/d^2, and no strategy's weight reads it (neither can be hit by chance).

@@ -29,12 +29,15 @@ std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& samp
                         DirectLightWeighting weighting, const Rgb& throughput,
                         std::array<TermFactor, kMaxTermFactors>& factors) {
     std::size_t n = 0;
-    if (light.isDelta() && weighting == DirectLightWeighting::Alone) {
+    if (light.isDelta() && !light.atInfinity() && weighting == DirectLightWeighting::Alone) {
         const float falloff = light.falloff(sample.distance);
         NamedFactors named;
         const int count = p.bsdf.factors(lobe, p.wo, sample.wi, named);
         for (int i = 0; i < count; ++i) factors[n++] = {named[i].name, named[i].value};
-        factors[n++] = {"I", incident / (kPi * falloff)};
+        // A spot's cone is a factor of its own, so that I reads as the scene file's intensity.
+        const float share = light.intensityShare(-sample.wi);
+        factors[n++] = {"I", share > 0.0f ? incident / (kPi * falloff * share) : incident / (kPi * falloff)};
+        if (share != 1.0f) factors[n++] = {"cone", Rgb{share}};
         factors[n++] = {"attenuation", Rgb{falloff}};
     } else {
         factors[n++] = {"f cos", p.bsdf.eval(lobe, p.wo, sample.wi)};

@@ -3,7 +3,8 @@
 // receiver (next-event estimation, ray casting's shadow rays), the density of that sampling (MIS),
 // sample a ray leaving the light (light tracing), and its power (choosing lights). A new kind of
 // shapeless light is one file implementing this and scene/scene_light.h's SceneLight, which
-// registers its LightType (scene/light_type.h; examples/plugins/spot_light.cpp is one).
+// registers its LightType (scene/light_type.h; lights/spot_light.cpp is one).
+#include "geometry/bounds.h"
 #include "geometry/surface_hit.h"
 #include "transport/path_event.h"
 #include "math/ray.h"
@@ -59,9 +60,24 @@ public:
     // How light from the light falls off over distance d, in place of 1/d^2: the lecture's
     // attenuation 1 / (c0 + c1 d + c2 d^2) for point lights, physical 1/d^2 for area lights.
     virtual float falloff(float distance) const { return 1.0f / (distance * distance); }
+    // The share of its axis' intensity a delta light sends along unit `leaving` (a spot's cone;
+    // 1 for a point light): `explain` prints it as a factor of its own beside I and attenuation.
+    virtual float intensityShare(const Vec3& /*leaving*/) const { return 1.0f; }
     // Emitted flux (W): lights are chosen in proportion to it.
     virtual Rgb power() const = 0;
     virtual bool isDelta() const = 0;
+    // A light at infinity (directional): its rays are parallel, a delta in direction. Its
+    // sampleEmission() then picks the ray's place on a disk across the scene with pdfDirection
+    // per unit area perpendicular to the rays (pdfPosition 1), and the density of a receiver per
+    // unit area is that times |cos| at the receiver, with no 1/d^2 (pbrt-v4's DistantLight).
+    virtual bool atInfinity() const { return false; }
+    // Whether sampleEmission()'s rays can reach `receiver` at all: a light at infinity's disk
+    // covers the scene's bounds, not an unbounded plane beyond them, where only light sampling
+    // finds its light (and bidirectional path tracing must weigh it so).
+    virtual bool emitsTowards(const Vec3& /*receiver*/) const { return true; }
+    // The box around the scene's bounded shapes and the camera, once before rendering: a light at
+    // infinity sizes its emission disk by it (pbrt-v4 DistantLight::Preprocess).
+    virtual void preprocess(const Bounds& /*sceneBounds*/) {}
     // Whether light sampling and light tracing may start on it; an emitter too small for its
     // densities to be floats is seen only where a ray hits it (LightSet chooses it never).
     virtual bool sampleable() const { return true; }

@@ -3,13 +3,19 @@
 #include <algorithm>
 
 #include "scene/emission.h"
+#include "scene/framing.h"
 
 namespace lightpath {
 
 LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
     : ofObject_(scene.objects.size(), nullptr), areaChoiceOfObject_(scene.objects.size(), 0.0f) {
-    for (std::uint32_t i = 0; i < scene.lights.size(); ++i)
+    // What a light at infinity must cover: the bounded shapes and the eye (planes have no bounds).
+    Bounds bounds = sceneBounds(scene);
+    bounds.grow(scene.camera.eye);
+    for (std::uint32_t i = 0; i < scene.lights.size(); ++i) {
         lights_.push_back(scene.lights[i]->makeSource(i));
+        lights_.back()->preprocess(bounds);
+    }
 
     // The emissive primitives of each object, by scene-wide id.
     std::vector<std::vector<std::uint32_t>> primitives(scene.objects.size());

@@ -135,6 +135,22 @@ CheckResult checkLightSamples(const Light& light, const LightWorld& world, const
 CheckResult checkDeltaLightIntensity(const Light& light) {
     CheckResult result;
     std::mt19937_64 rng(71);
+    if (light.atInfinity()) {
+        // Parallel rays: the irradiance at any receiver, across the emission disk's area (the
+        // inverse of its density), is the flux; every receiver sees the same along the rays.
+        const EmittedRay e = light.sampleEmission({0.5f, 0.5f}, {0.5f, 0.5f});
+        for (int i = 0; i < 10; ++i) {
+            const Vec3 receiver = e.ray.at(1.0f) + 0.1f * test::uniformSphereDirection(rng);
+            const LightSample s = light.sample(receiver, {0.5f, 0.5f});
+            const double flux = sum(s.weight) / e.pdfDirection;
+            if (!close(float(flux), float(sum(light.power())), 1e-3f))
+                result.fail("irradiance over the emission disk is ", flux, " W but power() says ", sum(light.power()));
+            if (!close(glm::dot(s.wi, -e.ray.direction), 1.0f, 1e-5f))
+                result.fail("a light at infinity's sample() comes from ", s.wi.x, ", ", s.wi.y, ", ", s.wi.z,
+                            ", not against its rays");
+        }
+        return result;
+    }
     const Vec3 position = light.sample(Vec3{0.0f}, {0.5f, 0.5f}).point;
     constexpr float kDistance = 2.0f;
     std::vector<double> flux;

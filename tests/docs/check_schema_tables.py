@@ -8,7 +8,8 @@ import sys
 
 # The types whose tables scenes/README.md shows.
 TABLES = [("material", "phong"), ("material", "modified-phong"), ("material", "microfacet"), ("medium", "homogeneous"),
-          ("light", "point"), ("light", "quad"), ("light", "sphere"), ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),
+          ("light", "point"), ("light", "quad"), ("light", "sphere"), ("light", "spot"), ("light", "directional"),
+          ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),
           ("shape", "triangle"), ("shape", "mesh"), ("shape", "gltf")]
 
 

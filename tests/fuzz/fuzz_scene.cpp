@@ -84,9 +84,19 @@ void checkScene(const Scene& scene) {
         if (!(exponent >= 0.0f && exponent <= kMaxMagnitude)) broken("material " + name + " accepted with a bad exponent n");
         if (!(ior > 0.0f && ior <= kMaxMagnitude)) broken("material " + name + " accepted with a bad ior");
     }
-    for (const LightSlot& slot : scene.lights) {
-        const PointLight& light = pointLightOf(slot);  // the only shapeless light a scene file can name today
-        if (!light.name.empty() && (!isName(light.name) || light.name == "ambient")) broken("light name \"" + light.name + "\" accepted");
+    for (std::uint32_t i = 0; i < scene.lights.size(); ++i) {
+        const SceneLight& any = *scene.lights[i];
+        if (!any.name.empty() && (!isName(any.name) || any.name == "ambient")) broken("light name \"" + any.name + "\" accepted");
+        const auto* point = dynamic_cast<const PointLight*>(&any);
+        if (point == nullptr) {
+            // A spot or directional light keeps its description in its own file: what integrators
+            // read of it is its source's power and samples.
+            const auto source = any.makeSource(i);
+            if (!finiteNonNegative(source->power()) || !finiteNonNegative(source->sample(Vec3{0.5f}, Vec2{0.5f}).weight))
+                broken("light accepted with a power or sample weight that is not finite");
+            continue;
+        }
+        const PointLight& light = *point;
         if (!within(light.location) || !colour(light.intensity)) broken("light accepted with a bad position or intensity");
         if (!colour(light.attenuation) || light.attenuation == Vec3(0.0f)) broken("light accepted with bad attenuation");
         for (int i = 0; i < 3; ++i)

@@ -1,6 +1,7 @@
 // glTF scenes (issue #26): each file in tests/render/data/gltf/ (made by make_gltf.py there) renders
 // as the TOML scene written beside it by hand, with the node transforms, the light's units and the
-// emissive strength worked out on paper: the same mean radiance per 4x4 block within 1%. The AOVs
+// emissive strength worked out on paper: the same mean radiance per 4x4 block within 1%, for point,
+// spot, directional and emissive lights. The AOVs
 // sum to the beauty on a glTF scene as on every other.
 #include <doctest/doctest.h>
 
@@ -68,6 +69,24 @@ TEST_CASE("a glTF point light, its nodes and camera render as the TOML scene wri
     }
 }
 
+TEST_CASE("a glTF spot light (cone angles, candela, its node's -z) renders as the TOML scene written by hand") {
+    for (const char* integrator : {"raycast", "path"}) {
+        CAPTURE(integrator);
+        const Film gltf = renderSmall(kData / "spot.gltf", integrator, 16);
+        const Film toml = renderSmall(kData / "spot.toml", integrator, 16);
+        CHECK(worstBlockDifference(gltf, toml) <= 0.01);
+    }
+}
+
+TEST_CASE("a glTF directional light (lux as W/m^2, its node's -z) renders as the TOML scene written by hand") {
+    for (const char* integrator : {"raycast", "path"}) {
+        CAPTURE(integrator);
+        const Film gltf = renderSmall(kData / "directional.gltf", integrator, 16);
+        const Film toml = renderSmall(kData / "directional.toml", integrator, 16);
+        CHECK(worstBlockDifference(gltf, toml) <= 0.01);
+    }
+}
+
 TEST_CASE("a glTF emissive material (emissiveFactor, KHR_materials_emissive_strength) renders as its TOML scene") {
     const Film gltf = renderSmall(kData / "emissive.gltf", "raycast", 256);
     const Film toml = renderSmall(kData / "emissive.toml", "raycast", 256);
@@ -75,7 +94,7 @@ TEST_CASE("a glTF emissive material (emissiveFactor, KHR_materials_emissive_stre
 }
 
 TEST_CASE("the AOVs sum to the beauty on glTF scenes") {
-    for (const char* file : {"point.gltf", "emissive.gltf"}) {
+    for (const char* file : {"point.gltf", "spot.gltf", "directional.gltf", "emissive.gltf"}) {
         for (const char* integrator : {"raycast", "whitted", "path", "bdpt"}) {
             CAPTURE(file);
             CAPTURE(integrator);

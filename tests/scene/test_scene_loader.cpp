@@ -539,12 +539,12 @@ TEST_CASE_FIXTURE(SceneFiles, "material parameters are range-checked") {
           "scene.toml:2:6: materials.red.ks: expected a number >= 0, got -1");
 }
 
-TEST_CASE_FIXTURE(SceneFiles, "only point lights exist so far") {
+TEST_CASE_FIXTURE(SceneFiles, "an unknown light type is refused, naming the known ones") {
     CHECK(errorOf("[[lights]]\ntype = \"area\"\nposition = [0, 1, 0]\n") ==
-          "scene.toml:2:8: lights[0].type: unknown light type \"area\" (known: point, quad, sphere)");
+          "scene.toml:2:8: lights[0].type: unknown light type \"area\" (known: point, quad, sphere, spot, directional)");
     CHECK(errorOf("[[lights]]\ntype = \"pont\"\nposition = [0, 1, 0]\n") ==
           "scene.toml:2:8: lights[0].type: unknown light type \"pont\"; did you mean "
-          "\"point\"? (known: point, quad, sphere)");
+          "\"point\"? (known: point, quad, sphere, spot, directional)");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "names must be usable as light path labels") {

@@ -7,6 +7,8 @@ point.gltf     a floor and a metal panel (placed through a two-node hierarchy: t
 emissive.gltf  the same without the lamp, lit by an emissive panel (emissiveFactor times
                KHR_materials_emissive_strength); emissive.toml by hand.
 point.glb      point.gltf as binary glTF: its buffer in the BIN chunk.
+spot.gltf      the same lit by a KHR_lights_punctual spot tilted by its node; spot.toml by hand.
+directional.gltf  the same lit by a directional light tilted by its node; directional.toml by hand.
 bad_index.gltf an index beyond the vertices (the located error).
 Run: python3 make_gltf.py
 """
@@ -120,6 +122,36 @@ def point():
     (HERE / "point.glb").write_bytes(b.glb(**rest))
 
 
+def punctual(name, light, node):
+    b = Builder()
+    nodes = scene_with_panel(b)
+    nodes.append(dict(node, extensions={"KHR_lights_punctual": {"light": 0}}))
+    write(name + ".gltf", b.document(
+        materials=MATERIALS, nodes=nodes, cameras=[CAMERA], scenes=[{"nodes": [0, 1, 3, 4]}], scene=0,
+        extensionsUsed=["KHR_lights_punctual"], extensions={"KHR_lights_punctual": {"lights": [light]}}))
+
+
+def spot():
+    # Turned -70 degrees about x: its -z points to (0, -sin 70, -cos 70), down and away from the camera.
+    punctual("spot", {"name": "Spot", "type": "spot", "intensity": 30, "color": [1, 0.9, 0.8],
+                      "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}},
+             {"name": "Spot", "translation": [-0.3, 2.5, 0.8], "rotation": quaternion((1, 0, 0), -70)})
+
+
+def directional():
+    # Turned -50 degrees about x, then 30 about y (the node's rotation is one quaternion: y after x).
+    q = quaternion_product(quaternion((0, 1, 0), 30), quaternion((1, 0, 0), -50))
+    punctual("directional", {"name": "Sun", "type": "directional", "intensity": 3, "color": [1, 1, 0.9]},
+             {"name": "Sun", "translation": [5, 5, 5], "rotation": q})
+
+
+def quaternion_product(a, b):
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return [aw * bx + ax * bw + ay * bz - az * by, aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw, aw * bw - ax * bx - ay * by - az * bz]
+
+
 def emissive():
     b = Builder()
     nodes = scene_with_panel(b)
@@ -141,5 +173,7 @@ def bad_index():
 
 
 point()
+spot()
+directional()
 emissive()
 bad_index()

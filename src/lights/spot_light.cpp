@@ -1,7 +1,7 @@
-// Example plugin (docs/extending.md): a spot light, a point light whose intensity falls off over a
-// cone around its axis with a smooth edge (pbrt-v4 12.2.2: smoothstep between the falloff start and
-// the cone's edge). One file: the scene's description, the source the integrators sample, its schema
-// and its registration.
+// A spot light: a point light whose intensity falls off between an inner and an outer cone around
+// its axis as glTF's KHR_lights_punctual spot does (the extension's "Inner and Outer Cone Angles"
+// appendix: the square of a ramp, linear in the cosine, from 0 at the outer cone to 1 at the inner),
+// so that a TOML spot and a glTF spot of the same angles are the same light.
 #include <algorithm>
 #include <cmath>
 
@@ -11,7 +11,7 @@
 #include "sampling/warp.h"
 #include "scene/light_type.h"
 
-namespace lightpath::examples {
+namespace lightpath {
 namespace {
 
 class SpotLight final : public SceneLight {
@@ -19,23 +19,24 @@ public:
     Vec3 location{0.0f};
     Vec3 axis{0.0f, -1.0f, 0.0f};  // unit, where the cone points
     Rgb intensity{1.0f};
-    float cosEdge = 0.0f;           // cos of the cone's half angle: nothing outside it
-    float cosFalloffStart = 0.0f;   // cos of the angle up to which the full intensity shines
+    float cosOuter = 0.0f;  // cos of the outer cone's half angle: nothing outside it
+    float cosInner = 1.0f;  // cos of the inner cone's half angle: full intensity inside it
 
-    SpotLight(std::string lightName) : SceneLight(std::move(lightName)) {}
+    explicit SpotLight(std::string lightName) : SceneLight(std::move(lightName)) {}
 
     std::unique_ptr<SceneLight> clone() const override { return std::make_unique<SpotLight>(*this); }
     Vec3 position() const override { return location; }
     std::unique_ptr<Light> makeSource(std::uint32_t index) const override;
 
-    // The share of the axis' intensity along unit `direction` leaving the light: 1 inside the
-    // falloff start, 0 outside the edge, smoothstep between.
+    // The share of the axis' intensity along unit `direction` leaving the light: glTF's
+    // t = (cos - cos outer) / (cos inner - cos outer) clamped to [0, 1], squared. Equal cones
+    // make a hard edge.
     float cone(const Vec3& direction) const {
         const float c = glm::dot(direction, axis);
-        if (c >= cosFalloffStart) return 1.0f;
-        if (c <= cosEdge) return 0.0f;
-        const float t = (c - cosEdge) / (cosFalloffStart - cosEdge);
-        return t * t * (3.0f - 2.0f * t);
+        if (c >= cosInner) return 1.0f;
+        if (c <= cosOuter) return 0.0f;
+        const float t = (c - cosOuter) / (cosInner - cosOuter);
+        return t * t;
     }
 };
 
@@ -46,7 +47,7 @@ public:
           spot_(description) {}
 
     // Radiant intensity pi I (W/sr) on the axis, as the point light's (lights/point_light.h), so
-    // that kd (N.L) I of the lecture's formula holds inside the cone; it falls off as 1/d^2.
+    // that kd (N.L) I of the lecture's formula holds inside the inner cone; it falls off as 1/d^2.
     LightSample sample(const Vec3& receiver, Vec2) const override {
         LightSample s;
         s.point = spot_.location;
@@ -58,9 +59,9 @@ public:
     }
     float pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0f; }
 
-    // Directions uniformly within the cone's edge (pbrt-v4 12.2.2).
+    // Directions uniformly within the outer cone (pbrt-v4 12.2.2): 1 / (2 pi (1 - cos outer)).
     EmittedRay sampleEmission(Vec2, Vec2 uDirection) const override {
-        const float cosTheta = 1.0f - uDirection.x * (1.0f - spot_.cosEdge);
+        const float cosTheta = 1.0f - uDirection.x * (1.0f - spot_.cosOuter);
         const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
         const float phi = 2.0f * kPi * uDirection.y;
         EmittedRay e;
@@ -73,20 +74,21 @@ public:
         return e;
     }
     float pdfEmissionDirection(const Vec3&, const Vec3& direction) const override {
-        return glm::dot(direction, spot_.axis) >= spot_.cosEdge ? coneDensity() : 0.0f;
+        return glm::dot(direction, spot_.axis) > spot_.cosOuter ? coneDensity() : 0.0f;
     }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
-    // Intensity times the cone's solid angle: the full 2 pi (1 - cos start) and, under the
-    // smoothstep, half of 2 pi (cos start - cos edge) (smoothstep integrates to 1/2 over [0, 1]).
+    float intensityShare(const Vec3& leaving) const override { return spot_.cone(leaving); }
+    // Intensity times the cone's solid angle: the full 2 pi (1 - cos inner) and, under the ramp
+    // squared, a third of 2 pi (cos inner - cos outer) (t^2 integrates to 1/3 over [0, 1]).
     Rgb power() const override {
         return axisIntensity() *
-               (2.0f * kPi * ((1.0f - spot_.cosFalloffStart) + 0.5f * (spot_.cosFalloffStart - spot_.cosEdge)));
+               (2.0f * kPi * ((1.0f - spot_.cosInner) + (spot_.cosInner - spot_.cosOuter) / 3.0f));
     }
     bool isDelta() const override { return true; }
 
 private:
     Rgb axisIntensity() const { return kPi * spot_.intensity; }
-    float coneDensity() const { return 1.0f / (2.0f * kPi * (1.0f - spot_.cosEdge)); }
+    float coneDensity() const { return 1.0f / (2.0f * kPi * (1.0f - spot_.cosOuter)); }
 
     SpotLight spot_;
 };
@@ -95,37 +97,38 @@ std::unique_ptr<Light> SpotLight::makeSource(std::uint32_t index) const {
     return std::make_unique<SpotLightSource>(*this, index);
 }
 
-float cosOfDegrees(float degrees) { return std::cos(degrees * kPi / 180.0f); }
+float cosOfDegrees(double degrees) { return float(std::cos(degrees * kPi / 180.0)); }
 
 void addSpotLight(const ParameterValues& values, SceneBuilder& scene) {
     checkLightName(values);
     SpotLight light(values.has("name") ? values.text("name") : std::string());
     light.location = values.vec3("position");
-    light.axis = glm::normalize(values.vec3("direction"));
+    light.axis = Vec3(glm::normalize(glm::dvec3(values.vec3("direction"))));  // in double: a tiny vector squared underflows floats
     light.intensity = values.colour("intensity");
-    const float coneAngle = values.number("cone_angle"), falloffStart = values.number("falloff_start");
-    if (falloffStart > coneAngle) {
-        values.fail("falloff_start", "expected at most cone_angle (" + formatNumber(coneAngle) + "°), got " +
-                                         formatNumber(falloffStart) + "°");
+    const double outer = values.number("cone_angle"), inner = values.number("falloff_start");
+    if (inner > outer) {
+        values.fail("falloff_start", "expected at most cone_angle (" + formatNumber(outer) + "°), got " +
+                                         formatNumber(inner) + "°");
     }
-    light.cosEdge = cosOfDegrees(coneAngle);
-    light.cosFalloffStart = cosOfDegrees(falloffStart);
+    light.cosOuter = cosOfDegrees(outer);
+    light.cosInner = cosOfDegrees(inner);
     scene.addLight(std::move(light));
 }
 
 }  // namespace
-}  // namespace lightpath::examples
+}  // namespace lightpath
 
 LIGHTPATH_REGISTER_LIGHT(lightpath::LightType{
-    {"light", "spot", "example plugin: a spot light, a point light shining into a cone with a smooth edge",
+    {"light", "spot", "a spot light: a point light shining into a cone, fading between an inner and an outer cone as glTF's",
      {lightpath::kLightNameParameter,
       {"position", lightpath::ParameterType::Point, "m", "", {}, "where the light is", true},
       {"direction", lightpath::ParameterType::Vector, "", "[0, -1, 0]", {}, "the cone's axis"},
       {"intensity", lightpath::ParameterType::Colour, "", "1", lightpath::kNonNegative,
        "as the point light's: radiant intensity π I (W/sr) on the axis, falling off as 1/d²"},
-      {"cone_angle", lightpath::ParameterType::Number, "°", "30", {0.0, 90.0, true, false},
-       "the cone's half angle: no light outside it"},
-      {"falloff_start", lightpath::ParameterType::Number, "°", "20", lightpath::kNonNegative,
-       "the half angle of full intensity, at most `cone_angle`; smoothstep between the two"}},
+      {"cone_angle", lightpath::ParameterType::Number, "°", "45", {0.0, 90.0, true, false},
+       "the outer cone's half angle (glTF `outerConeAngle`): no light outside it"},
+      {"falloff_start", lightpath::ParameterType::Number, "°", "0", lightpath::kNonNegative,
+       "the inner cone's half angle (glTF `innerConeAngle`), at most `cone_angle`: full intensity inside it, "
+       "between the two the intensity is t², t = (cos θ − cos outer) / (cos inner − cos outer)"}},
      "<L.>"},
-    100, lightpath::examples::addSpotLight})
+    3, lightpath::addSpotLight})
