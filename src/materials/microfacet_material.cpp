@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "materials/ggx.h"
 #include "materials/lambert_lobe.h"
@@ -19,9 +20,11 @@ constexpr int kAlbedoStrata = 64;
 
 }  // namespace
 
-MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roughness)
-    : f0_(glm::mix(Rgb{kDielectricF0}, baseColor, metallic)),
-      diffuseColor_((1.0f - metallic) * baseColor),
+MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, float metallic, float roughness)
+    : baseColor_(std::move(baseColor)),
+      metallic_(metallic),
+      f0_(glm::mix(Rgb{kDielectricF0}, baseColor_.constant(), metallic)),
+      diffuseColor_((1.0f - metallic) * baseColor_.constant()),
       roughness_(roughness) {
     for (int k = 0; k < kAlbedoNodes; ++k) {
         const float cosine = float(k) / float(kAlbedoNodes - 1);
@@ -55,34 +58,50 @@ MicrofacetMaterial::MicrofacetMaterial(Rgb baseColor, float metallic, float roug
     for (int k = 0; k < kAlbedoNodes; ++k) {
         const float mu = float(k) / float(kAlbedoNodes - 1);
         const float w = (k == 0 || k == kAlbedoNodes - 1) ? 0.5f : 1.0f;
-        averageAlbedo_ += specularAlbedo(mu) * (2.0f * mu * w / float(kAlbedoNodes - 1));
+        averageAlbedo_ += specularAlbedo(f0_, mu) * (2.0f * mu * w / float(kAlbedoNodes - 1));
+        averageScale_ += albedoScale_[k] * (2.0f * mu * w / float(kAlbedoNodes - 1));
+        averageBias_ += albedoBias_[k] * (2.0f * mu * w / float(kAlbedoNodes - 1));
     }
     averageAlbedo_ = glm::min(Rgb{1.0f}, averageAlbedo_);
 }
 
 float MicrofacetMaterial::alpha() const { return std::max(ggx::kMinAlpha, roughness_ * roughness_); }
 
-Rgb MicrofacetMaterial::fresnel(float cosine) const {
-    return f0_ + (Rgb{1.0f} - f0_) * schlickWeight(cosine);
+Rgb MicrofacetMaterial::fresnel(const Rgb& f0, float cosine) {
+    return f0 + (Rgb{1.0f} - f0) * schlickWeight(cosine);
 }
 
-Rgb MicrofacetMaterial::specularAlbedo(float cosine) const {
+MicrofacetMaterial::Colors MicrofacetMaterial::colorsAt(const SurfaceSide& side) const {
+    if (!baseColor_.textured()) return {f0_, diffuseColor_, averageAlbedo_};
+    return colorsOf(baseColor_.at(side));
+}
+
+MicrofacetMaterial::Colors MicrofacetMaterial::colorsOf(const Rgb& baseColor) const {
+    const Rgb f0 = glm::mix(Rgb{kDielectricF0}, baseColor, metallic_);
+    // E is linear in F0 (the table's scale and bias), so is its average.
+    return {f0, (1.0f - metallic_) * baseColor, glm::min(Rgb{1.0f}, f0 * averageScale_ + Rgb{averageBias_})};
+}
+
+Rgb MicrofacetMaterial::specularAlbedo(const Rgb& f0, float cosine) const {
     const float x = std::clamp(cosine, 0.0f, 1.0f) * float(kAlbedoNodes - 1);
     const int k = std::min(int(x), kAlbedoNodes - 2);
     const float t = x - float(k);
     const float scale = glm::mix(albedoScale_[k], albedoScale_[k + 1], t);
     const float bias = glm::mix(albedoBias_[k], albedoBias_[k + 1], t);
-    return glm::min(Rgb{1.0f}, f0_ * scale + Rgb{bias});
+    return glm::min(Rgb{1.0f}, f0 * scale + Rgb{bias});
 }
 
-Rgb MicrofacetMaterial::diffuseWeight(float cosOut, float cosIn) const {
-    return diffuseColor_ * (Rgb{1.0f} - specularAlbedo(cosOut)) * (Rgb{1.0f} - specularAlbedo(cosIn));
+Rgb MicrofacetMaterial::diffuseWeight(const Colors& colors, float cosOut, float cosIn) const {
+    return colors.diffuse * (Rgb{1.0f} - specularAlbedo(colors.f0, cosOut)) *
+           (Rgb{1.0f} - specularAlbedo(colors.f0, cosIn));
 }
 
 Rgb MicrofacetMaterial::diffuseReflectance() const {
     // The base's albedo from wo is c (1 - E(wo)) (1 - averageAlbedo_); averaged over wo as well:
-    const Rgb remaining = Rgb{1.0f} - averageAlbedo_;
-    return diffuseColor_ * remaining * remaining;
+    // (A textured base: read as its image's mean times the tint.)
+    const Colors colors = baseColor_.textured() ? colorsOf(baseColor_.mean()) : colorsAt(SurfaceSide{});
+    const Rgb remaining = Rgb{1.0f} - colors.averageAlbedo;
+    return colors.diffuse * remaining * remaining;
 }
 
 bool MicrofacetMaterial::has(int lobe) const {
@@ -96,12 +115,13 @@ Rgb MicrofacetMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, 
     if (!has(lobe) || !side.bothAbove(wo, wi)) return Rgb{0.0f};
     const Frame frame(side.normal);
     const Vec3 o = frame.toLocal(wo), i = frame.toLocal(wi);
-    if (lobe == kDiffuse) return lambert::eval(diffuseWeight(o.z, i.z), side, wi);
+    const Colors colors = colorsAt(side);
+    if (lobe == kDiffuse) return lambert::eval(diffuseWeight(colors, o.z, i.z), side, wi);
     if (lobe != kGlossy) return Rgb{0.0f};
     const Vec3 m = glm::normalize(o + i);
     const float a = alpha();
     // f cos theta_i = F D G2 / (4 cos theta_o)
-    return fresnel(glm::dot(o, m)) * (ggx::distribution(m, a) * ggx::maskingShadowing(o, i, a) / (4.0f * o.z));
+    return fresnel(colors.f0, glm::dot(o, m)) * (ggx::distribution(m, a) * ggx::maskingShadowing(o, i, a) / (4.0f * o.z));
 }
 
 float MicrofacetMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
@@ -117,7 +137,7 @@ std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide
     if (!has(lobe)) return std::nullopt;
     if (lobe == kDiffuse) {
         std::optional<LobeSample> s = lambert::sample(Rgb{1.0f}, side, wo, u);
-        if (s) s->weight = diffuseWeight(glm::dot(wo, side.normal), glm::dot(s->wi, side.normal));
+        if (s) s->weight = diffuseWeight(colorsAt(side), glm::dot(wo, side.normal), glm::dot(s->wi, side.normal));
         return s;
     }
     if (lobe != kGlossy) return std::nullopt;
@@ -133,24 +153,26 @@ std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide
     s.pdf = ggx::reflectionPdf(o, i, a);
     if (!(s.pdf > 0.0f)) return std::nullopt;
     // F D G2 / (4 cos_o) over G1(wo) D / (4 cos_o): F G2 / G1 (Heitz 2018, eq. 19).
-    s.weight = fresnel(glm::dot(o, m)) * (ggx::maskingShadowing(o, i, a) / ggx::masking(o, a));
+    s.weight = fresnel(colorsAt(side).f0, glm::dot(o, m)) * (ggx::maskingShadowing(o, i, a) / ggx::masking(o, a));
     return s;
 }
 
 float MicrofacetMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const {
     if (!has(lobe)) return 0.0f;
     const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
+    const Colors colors = colorsAt(side);
     // The base's albedo: c (1 - E(wo)) times the cosine-weighted mean of 1 - E(wi).
     if (lobe == kDiffuse)
-        return maxComponent(diffuseColor_ * (Rgb{1.0f} - specularAlbedo(cosOut)) * (Rgb{1.0f} - averageAlbedo_));
-    return maxComponent(specularAlbedo(cosOut));
+        return maxComponent(colors.diffuse * (Rgb{1.0f} - specularAlbedo(colors.f0, cosOut)) *
+                            (Rgb{1.0f} - colors.averageAlbedo));
+    return maxComponent(specularAlbedo(colors.f0, cosOut));
 }
 
 int MicrofacetMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
     if (!has(kMirror)) return 0;
     const float cosOut = glm::dot(wo, side.normal);
     if (cosOut <= 0.0f) return 0;
-    const Rgb weight = fresnel(cosOut);
+    const Rgb weight = fresnel(colorsAt(side).f0, cosOut);
     branches[0] = {reflectAbout(wo, side.normal), weight, kMirror, maxComponent(weight)};
     return 1;
 }
@@ -158,13 +180,14 @@ int MicrofacetMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo
 int MicrofacetMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                                 NamedFactors& factors) const {
     if (lobe == kDiffuse) {
-        factors = lambert::factors(diffuseWeight(glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
+        factors = lambert::factors(
+            diffuseWeight(colorsAt(side), glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
         factors[0].name = "(1-m) base (1-E(V)) (1-E(L))";
         return 2;
     }
     if (lobe != kGlossy) return 0;
     const Rgb value = eval(lobe, side, wo, wi);
-    const Rgb f = fresnel(std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi))));
+    const Rgb f = fresnel(colorsAt(side).f0, std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi))));
     // pi eval = F times pi D G2 / (4 N.V)
     Rgb rest{0.0f};
     for (int c = 0; c < 3; ++c) rest[c] = f[c] > 0.0f ? kPi * value[c] / f[c] : 0.0f;
@@ -180,7 +203,8 @@ namespace {
 constexpr Range kUnitInterval{0.0, 1.0, false, false};
 
 MaterialSlot makeMicrofacet(const ParameterValues& values) {
-    MicrofacetMaterial material(values.colour("base_color"), values.number("metallic"), values.number("roughness"));
+    MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
+                                values.number("roughness"));
     material.emission = values.colour("emission");
     return material;
 }
@@ -191,7 +215,7 @@ MaterialSlot makeMicrofacet(const ParameterValues& values) {
 LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
     {"material", "microfacet", "glTF's metallic-roughness: GGX microfacet specular over a diffuse base",
      {{"base_color", lightpath::ParameterType::Colour, "", "0.8", lightpath::kUnitInterval,
-       "the metal's reflectance at normal incidence F0, the dielectric's diffuse albedo"},
+       "the metal's reflectance at normal incidence F0, the dielectric's diffuse albedo; may be a texture"},
       {"metallic", lightpath::ParameterType::Number, "", "1", lightpath::kUnitInterval,
        "1 a conductor (F0 = base_color, no base), 0 a dielectric (F0 = 0.04 over a diffuse base_color)"},
       {"roughness", lightpath::ParameterType::Number, "", "0.5", lightpath::kUnitInterval,

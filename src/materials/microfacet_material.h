@@ -17,12 +17,16 @@
 #include <array>
 
 #include "materials/material.h"
+#include "materials/texture.h"
 
 namespace lightpath {
 
 class MicrofacetMaterial final : public Material {
 public:
-    MicrofacetMaterial(Rgb baseColor, float metallic, float roughness);
+    MicrofacetMaterial(Rgb baseColor, float metallic, float roughness)
+        : MicrofacetMaterial(ColorParameter(baseColor), metallic, roughness) {}
+    // base_color may be a texture: F0 and the base then vary over the surface (per shading point).
+    MicrofacetMaterial(ColorParameter baseColor, float metallic, float roughness);
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<MicrofacetMaterial>(*this); }
 
@@ -45,10 +49,11 @@ public:
     Rgb diffuseReflectance() const override;
 
     // Schlick's F(cos) = F0 + (1 - F0)(1 - cos)^5 (Schlick 1994).
-    Rgb fresnel(float cosine) const;
+    static Rgb fresnel(const Rgb& f0, float cosine);
     // E(w): the specular layer's directional albedo for cos theta = cosine (the table below).
-    Rgb specularAlbedo(float cosine) const;
+    Rgb specularAlbedo(const Rgb& f0, float cosine) const;
 
+    // F0 and the base of the untextured material (of a textured one: with its tint as base_color).
     const Rgb& f0() const { return f0_; }
     const Rgb& diffuseColor() const { return diffuseColor_; }
     float roughness() const { return roughness_; }
@@ -57,14 +62,24 @@ private:
     // GGX's alpha: roughness^2, kept above ggx::kMinAlpha for a rough lobe.
     float alpha() const;
     bool smooth() const { return roughness_ == 0.0f; }
-    Rgb diffuseWeight(float cosOut, float cosIn) const;
+    // F0 and the diffuse base at a shading point: the constants unless base_color is a texture.
+    struct Colors {
+        Rgb f0, diffuse, averageAlbedo;
+    };
+    Colors colorsAt(const SurfaceSide& side) const;
+    Colors colorsOf(const Rgb& baseColor) const;
+    Rgb diffuseWeight(const Colors& colors, float cosOut, float cosIn) const;
 
     // E = F0 a(cos) + b(cos), since Schlick's F = F0 (1 - (1 - c)^5) + (1 - c)^5: a and b at
     // kAlbedoNodes equally spaced cosines, integrated once per material over visible normals.
     static constexpr int kAlbedoNodes = 33;
     std::array<float, kAlbedoNodes> albedoScale_{}, albedoBias_{};
     Rgb averageAlbedo_{0.0f};  // E averaged over cosine-weighted directions: 2 integral E(mu) mu dmu
+    // The same average as F0 averageScale_ + averageBias_, for a textured F0.
+    float averageScale_ = 0.0f, averageBias_ = 0.0f;
 
+    ColorParameter baseColor_;
+    float metallic_ = 1.0f;
     Rgb f0_{0.04f};
     Rgb diffuseColor_{0.0f};
     float roughness_ = 0.5f;

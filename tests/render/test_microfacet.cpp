@@ -254,3 +254,55 @@ TEST_CASE("microfacet: the path tracer and bdpt agree on a box with a rough and 
 
 }  // namespace
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+// A texture of one colour everywhere (written here, not OpenImageIO's): a textured base_color must
+// act as the untextured material whose base_color is that colour times the tint.
+class UniformTexture final : public Texture {
+public:
+    explicit UniformTexture(Rgb colour) : colour_(colour) {}
+    Rgb lookup(const TextureFootprint&, bool) const override { return colour_; }
+    Rgb average() const override { return colour_; }
+
+private:
+    Rgb colour_;
+};
+
+}  // namespace
+
+TEST_CASE("microfacet: a textured base_color shades as the constant it reads (texel times tint)") {
+    const Rgb texel{0.7f, 0.3f, 0.1f}, tint{0.5f, 1.0f, 0.8f};
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    for (const float metallic : {0.0f, 0.4f, 1.0f}) {
+        for (const float roughness : {0.0f, 0.3f, 0.8f}) {
+            CAPTURE(metallic);
+            CAPTURE(roughness);
+            const MicrofacetMaterial textured(
+                ColorParameter(std::make_shared<UniformTexture>(texel), tint, 1.0f, true), metallic, roughness);
+            const MicrofacetMaterial constant(texel * tint, metallic, roughness);
+            const Vec3 wo = outgoing(0.6, 0.3), wi = outgoing(0.45, 2.9);
+            for (int lobe = 0; lobe < 3; ++lobe) {
+                CAPTURE(lobe);
+                REQUIRE(textured.has(lobe) == constant.has(lobe));
+                const Rgb a = textured.eval(lobe, side, wo, wi), b = constant.eval(lobe, side, wo, wi);
+                for (int c = 0; c < 3; ++c) CHECK(a[c] == doctest::Approx(b[c]).epsilon(1e-6));
+                CHECK(textured.albedo(lobe, side, wo) == doctest::Approx(constant.albedo(lobe, side, wo)).epsilon(1e-6));
+                const auto s = textured.sample(lobe, side, wo, {0.3f, 0.6f});
+                const auto t = constant.sample(lobe, side, wo, {0.3f, 0.6f});
+                REQUIRE(s.has_value() == t.has_value());
+                if (s)
+                    for (int c = 0; c < 3; ++c) CHECK(s->weight[c] == doctest::Approx(t->weight[c]).epsilon(1e-6));
+            }
+            SpecularBranches x, y;
+            REQUIRE(textured.specularBranches(side, wo, x) == constant.specularBranches(side, wo, y));
+            if (roughness == 0.0f)
+                for (int c = 0; c < 3; ++c) CHECK(x[0].weight[c] == doctest::Approx(y[0].weight[c]).epsilon(1e-6));
+            const Rgb ra = textured.diffuseReflectance(), rb = constant.diffuseReflectance();
+            for (int c = 0; c < 3; ++c) CHECK(ra[c] == doctest::Approx(rb[c]).epsilon(1e-6));
+        }
+    }
+}
+
+}  // namespace lightpath
