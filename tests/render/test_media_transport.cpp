@@ -10,6 +10,7 @@
 
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
+#include "materials/interface_material.h"
 #include "media/homogeneous_medium.h"
 #include "render/renderer.h"
 #include "scene_builder.h"
@@ -87,6 +88,39 @@ TEST_CASE("path: a floor seen through absorbing fog is dimmed by exp(-sigma_t d)
                 worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
             }
     CHECK(worst < 0.005);
+}
+
+// The same fog held by a large interface sphere around the camera, the light and the floor seen:
+// the camera starts in the sphere's medium (cameraMedium), no surface event is added, and the
+// closed form is the world-fog one. Its control: the same sphere with vacuum inside is undimmed.
+TEST_CASE("path, raycast: the camera inside an interface sphere of fog sees the floor dimmed by exp(-sigma_t d)") {
+    const Rgb sigmaA{0.05f, 0.2f, 0.4f};
+    Scene scene = fogFloor(sigmaA, Rgb{0.0f});
+    const std::uint32_t fog = scene.worldMedium;
+    scene.worldMedium = kNoMedium;
+    InterfaceMaterial boundary;
+    boundary.name = "boundary";
+    scene.materials.push_back(boundary);
+    scene.interfaces = true;
+    test::addSphere(scene, "box", static_cast<std::uint32_t>(scene.materials.size() - 1), {0.3f, 0.0f, 0.2f}, 20.0f);
+    scene.objects.back().enclosesVolume = true;
+    scene.objects.back().interior = fog;
+    for (const char* integrator : {"path", "raycast"}) {
+        CAPTURE(integrator);
+        RenderOptions options;
+        options.integrator = integrator;
+        options.samplesPerPixel = 1;
+        options.seed = 7;
+        const Film film = Renderer(scene, AovSet({}), options).render().film;
+        double worst = 0.0;
+        for (int j = 0; j < film.height(); ++j)
+            for (int i = 0; i < film.width(); ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const double expected = floorThroughFog(scene, i, j, sigmaA[c]);
+                    worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
+                }
+        CHECK(worst < 0.005);
+    }
 }
 
 TEST_CASE("path: through scattering fog the floor's direct light E<RD>L is exp(-sigma_t d) dimmer, unbiased (t-test)") {
