@@ -386,9 +386,12 @@ std::uint32_t cameraMedium(const RenderContext& ctx) {
     for (int crossing = 0; crossing < kMaxInterfaceCrossings; ++crossing) {
         const auto hit = ctx.geometry.intersect(ray);
         if (!hit) break;
-        if (scene.objects[hit->object].enclosesVolume) {
+        // Only a boundary of a medium decides: a closed room without one around the eye leaves it in
+        // [world]'s fog, as before there were interfaces.
+        const SceneObject& object = scene.objects[hit->object];
+        if (object.enclosesVolume && object.interior != kNoMedium) {
             const bool leaving = glm::dot(hit->normal, ray.direction) > 0.0f;
-            return leaving ? scene.objects[hit->object].interior : scene.worldMedium;
+            return leaving ? object.interior : scene.worldMedium;
         }
         ray = spawnRay(*hit, ray.direction, ctx.geometry.numerics());
     }

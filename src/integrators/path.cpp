@@ -19,7 +19,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     bool previousDelta = true;  // the camera, like a delta lobe, cannot be light-sampled
     const std::size_t pathStart = path.size();
     // The medium the ray travels in: the camera's (media do not nest).
-    std::uint32_t mediumIndex = cameraMedium(ctx);
+    std::uint32_t mediumIndex = ctx.eyeMedium;
     // The last scattering vertex (or the eye): an interface crossing moves the ray's origin, but
     // MIS weighs an emitter found by the sampled direction from the vertex that sampled it.
     Vec3 lastVertex = ray.origin;

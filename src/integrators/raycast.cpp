@@ -12,7 +12,7 @@ void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
     // Every term is seen through the media from the camera's on, across index-matched boundaries.
-    const BeyondInterfaces beyond = crossInterfaces(hit, ray, cameraMedium(ctx), Rgb{1.0f}, path);
+    const BeyondInterfaces beyond = crossInterfaces(hit, ray, ctx.eyeMedium, Rgb{1.0f}, path);
     const Rgb seen = throughMedium(beyond.hit, beyond.ray, beyond.medium, beyond.throughput, path);
     if (!beyond.hit) {
         addBackground(beyond.ray, seen, path);

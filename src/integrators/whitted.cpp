@@ -7,7 +7,7 @@
 namespace lightpath {
 
 void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
-    trace(ray, Rgb{1.0f}, 0, cameraMedium(path.context), path);
+    trace(ray, Rgb{1.0f}, 0, path.context.eyeMedium, path);
 }
 
 void WhittedIntegrator::trace(const Ray& firstRay, const Rgb& firstThroughput, int depth, std::uint32_t firstMedium,
