@@ -354,7 +354,15 @@ namespace {
 // A scene with media under an integrator that ignores them would render as in vacuum, silently
 // wrong: refused, naming the media and the integrators that render them.
 void refuseMedia(const IntegratorInfo& info, const Scene& scene) {
-    if (scene.media.empty() || info.rendersMedia) return;
+    if (info.rendersMedia) return;
+    if (scene.media.empty()) {
+        // An interface material is a medium boundary: an integrator that ignores media would shade
+        // it as a black surface.
+        if (!scene.interfaces) return;
+        throw ConfigError("integrator", std::string(info.name) + " does not cross index-matched boundaries, and " +
+                                            scene.source.filename().string() +
+                                            " has an `interface` material: render it with " + mediaRenderers());
+    }
     std::string media;
     for (const MediumSlot& medium : scene.media) media += (media.empty() ? "'" : ", '") + medium->name + "'";
     const std::string renderers = mediaRenderers();

@@ -108,7 +108,7 @@ std::string lobeName(const ScatterEvent& e) {
 std::string missingLobe(const ScatterEvent& e) {
     std::string types;
     for (const MaterialType* type : MaterialRegistry::instance().entries())
-        if (lpe::commonPath({"E" + tuple(e) + "L", "E(" + std::string(type->schema.events) + ")L"}))
+        if (!std::string_view(type->schema.events).empty() && lpe::commonPath({"E" + tuple(e) + "L", "E(" + std::string(type->schema.events) + ")L"}))
             types += (types.empty() ? "" : " or ") + std::string(type->schema.name);
     const std::string cause = "no material has a " + lobeName(e) + " lobe " + tuple(e);
     if (types.empty()) return cause + ", and no material type has one (lightpath types material lists their events)";

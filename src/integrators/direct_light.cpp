@@ -124,8 +124,14 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
 
     const Rgb incident = litSide ? sample.weight / choiceProbability : Rgb{0.0f};
+    // Through index-matched boundaries the shadow ray crosses media: its transmittance is traced
+    // segment by segment, and black means blocked.
+    const bool throughInterfaces = ctx.scene.interfaces && ctx.shadows;
     const Rgb transmittance =
-        medium != nullptr ? medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance) : Rgb{1.0f};
+        throughInterfaces ? shadowTransmittance(spawnShadowRay(origins, sample.point), sample.point,
+                                                ctx.scene.indexOf(medium), ctx)
+        : medium != nullptr ? medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance)
+                            : Rgb{1.0f};
     const Rgb seen = incident * transmittance;  // x * 1 is x: no cost to bit-identity without media
     const float lightPdf = sample.pdf * choiceProbability;
     Rgb value[kMaxLobes];
@@ -157,7 +163,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         ++counters.shadow;
         if (medium != nullptr) ++counters.mediumShadow;
         const Ray shadowRay = spawnShadowRay(origins, sample.point);
-        if (ctx.geometry.occluded(shadowRay)) {
+        if (throughInterfaces ? isBlack(transmittance) : ctx.geometry.occluded(shadowRay)) {
             if (path.explaining()) {
                 const auto blocker = ctx.geometry.intersect(shadowRay);
                 const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
@@ -239,12 +245,17 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
     if (ctx.shadows) {
         ++counters.shadow;
         ++counters.mediumShadow;
-        if (ctx.geometry.occluded(shadowRay)) {
+        const bool blocked = ctx.scene.interfaces ? isBlack(shadowTransmittance(shadowRay, sample.point, m.index, ctx))
+                                                  : ctx.geometry.occluded(shadowRay);
+        if (blocked) {
             if (path.explaining()) path.reject(scatter, lightEvent, "the shadow ray from the medium point is blocked");
             return;
         }
     }
-    const Rgb transmittance = m.medium.transmittance(shadowRay, 0.0f, sample.distance);
+    // Through interfaces, the media beyond them attenuate too (pbrt-v4's SampleLd crosses them).
+    const Rgb transmittance = ctx.scene.interfaces && ctx.shadows
+                                  ? shadowTransmittance(shadowRay, sample.point, m.index, ctx)
+                                  : m.medium.transmittance(shadowRay, 0.0f, sample.distance);
     const Rgb incident = sample.weight / choiceProbability;
     const Rgb value = throughput * phaseValue * incident * transmittance * weight;
     if (!path.explaining()) {
@@ -336,6 +347,58 @@ Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uin
     ++path.counters.mediumSegments;
     addSingleScattering(ray, tMax, *medium, mediumIndex, throughput, path);
     return throughput * medium->transmittance(ray, 0.0f, tMax);
+}
+
+BeyondInterfaces crossInterfaces(std::optional<SurfaceHit> hit, Ray ray, std::uint32_t mediumIndex,
+                                 Rgb throughput, PathState& path) {
+    const RenderContext& ctx = path.context;
+    for (int crossing = 0; crossing < kMaxInterfaceCrossings && hit && ctx.scene.crossedWithoutEvent(hit->object);
+         ++crossing) {
+        throughput = throughMedium(hit, ray, mediumIndex, throughput, path);
+        const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
+        mediumIndex = ctx.scene.mediumBeyond(hit->object, entering, mediumIndex);
+        ray = spawnRay(*hit, ray.direction, ctx.geometry.numerics());
+        hit = ctx.geometry.intersect(ray);
+    }
+    return {hit, ray, mediumIndex, throughput};
+}
+
+Rgb shadowTransmittance(Ray ray, const Vec3& target, std::uint32_t mediumIndex, const RenderContext& ctx) {
+    Rgb transmittance{1.0f};
+    Vec3 from = ray.origin;
+    for (int crossing = 0; crossing <= kMaxInterfaceCrossings; ++crossing) {
+        const auto hit = ctx.geometry.intersect(ray);
+        const Vec3 to = hit ? hit->point : target;
+        const float distance = glm::length(to - from);
+        if (const Medium* medium = ctx.scene.medium(mediumIndex); medium != nullptr && distance > 0.0f)
+            transmittance *= medium->transmittance(Ray{from, (to - from) / distance}, 0.0f, distance);
+        if (!hit) return transmittance;
+        if (!ctx.scene.crossedWithoutEvent(hit->object)) return Rgb{0.0f};
+        const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
+        mediumIndex = ctx.scene.mediumBeyond(hit->object, entering, mediumIndex);
+        from = hit->point;
+        ray = spawnShadowRay(*hit, target, ctx.geometry.numerics());
+    }
+    return Rgb{0.0f};
+}
+
+std::uint32_t cameraMedium(const RenderContext& ctx) {
+    const Scene& scene = ctx.scene;
+    if (scene.media.empty()) return scene.worldMedium;
+    Ray ray{ctx.camera.eye(), glm::normalize(Vec3{0.2897f, 0.8231f, 0.4883f})};
+    for (int crossing = 0; crossing < kMaxInterfaceCrossings; ++crossing) {
+        const auto hit = ctx.geometry.intersect(ray);
+        if (!hit) break;
+        // Only a boundary of a medium decides: a closed room without one around the eye leaves it in
+        // [world]'s fog, as before there were interfaces.
+        const SceneObject& object = scene.objects[hit->object];
+        if (object.enclosesVolume && object.interior != kNoMedium) {
+            const bool leaving = glm::dot(hit->normal, ray.direction) > 0.0f;
+            return leaving ? object.interior : scene.worldMedium;
+        }
+        ray = spawnRay(*hit, ray.direction, ctx.geometry.numerics());
+    }
+    return scene.worldMedium;
 }
 
 void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path, const Medium* medium) {

@@ -67,6 +67,30 @@ void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::
 Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
                   const Rgb& throughput, PathState& path);
 
+// Index-matched boundaries (`interface` materials, pbrt-v4): a ray crosses them without an event,
+// into the medium beyond. Crossings per ray are bounded so a degenerate mesh cannot loop forever.
+inline constexpr int kMaxInterfaceCrossings = 64;
+
+// The first hit that is not an interface, the ray segment that reaches it and its medium, and the
+// throughput the segments before it leave (the classic methods' single scattering added along them).
+struct BeyondInterfaces {
+    std::optional<SurfaceHit> hit;
+    Ray ray;
+    std::uint32_t medium;
+    Rgb throughput;
+};
+BeyondInterfaces crossInterfaces(std::optional<SurfaceHit> hit, Ray ray, std::uint32_t mediumIndex,
+                                 Rgb throughput, PathState& path);
+
+// A shadow ray's transmittance from its origin (in medium `mediumIndex`) to `target`, through
+// interfaces and the media between them; black when a scattering surface blocks it.
+Rgb shadowTransmittance(Ray ray, const Vec3& target, std::uint32_t mediumIndex, const RenderContext& ctx);
+
+// The medium the camera is in: the interior of the closed object around the eye, else the world's.
+// Found by the first closed boundary a ray from the eye meets (media do not nest): leaving it
+// through its back face means the eye is inside. Costs nothing in a scene without media.
+std::uint32_t cameraMedium(const RenderContext& ctx);
+
 // Light an emitter sends back along `ray`, which hit it at `hit`, weighted by `weight`.
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path);
 

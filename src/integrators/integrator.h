@@ -65,6 +65,9 @@ struct RenderContext {
     std::uint64_t seed = 0;
     // The samples each pixel takes (--spp): progressive photon mapping's passes by default.
     int samplesPerPixel = 1;
+    // The medium the eye is in (cameraMedium, direct_light.h), found once per render since every
+    // camera ray leaves the one pinhole.
+    std::uint32_t eyeMedium = kNoMedium;
 };
 
 class Integrator {

@@ -18,8 +18,12 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     float previousPdf = 0.0f;   // solid-angle density of the direction that led here
     bool previousDelta = true;  // the camera, like a delta lobe, cannot be light-sampled
     const std::size_t pathStart = path.size();
-    // The medium the ray travels in: the camera is in the world's (media do not nest).
-    std::uint32_t mediumIndex = ctx.scene.worldMedium;
+    // The medium the ray travels in: the camera's (media do not nest).
+    std::uint32_t mediumIndex = ctx.eyeMedium;
+    // The last scattering vertex (or the eye): an interface crossing moves the ray's origin, but
+    // MIS weighs an emitter found by the sampled direction from the vertex that sampled it.
+    Vec3 lastVertex = ray.origin;
+    int crossings = 0;
 
     for (int depth = 0;; ++depth) {
         const auto hit = ctx.geometry.intersect(ray);
@@ -50,8 +54,19 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
                 previousPdf = scattered.pdf;
                 previousDelta = false;
                 ray = Ray{point.point, scattered.wi};
+                lastVertex = ray.origin;
                 continue;
             }
+        }
+        // An index-matched boundary: the ray goes on into the medium beyond, with no event and no
+        // bounce (OSL: crossing a boundary is not a T).
+        if (hit && ctx.scene.crossedWithoutEvent(hit->object)) {
+            if (++crossings > kMaxInterfaceCrossings) break;
+            const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
+            mediumIndex = ctx.scene.mediumBeyond(hit->object, entering, mediumIndex);
+            ray = spawnRay(*hit, ray.direction, ctx.geometry.numerics());
+            --depth;
+            continue;
         }
         if (!hit) {
             addBackground(ray, throughput, path);
@@ -59,7 +74,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         }
         // An emitter found by the sampled direction: MIS-weighted against light sampling.
         const float emissionWeight =
-            previousDelta ? 1.0f : powerHeuristic(previousPdf, ctx.lights.pdf(ray.origin, *hit));
+            previousDelta ? 1.0f : powerHeuristic(previousPdf, ctx.lights.pdf(lastVertex, *hit));
         addEmission(*hit, ray, throughput, emissionWeight, path);
         if (depth >= ctx.maxDepth) break;
 
@@ -88,6 +103,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         previousPdf = sample->pdf;
         previousDelta = lobe.delta();
         ray = spawnRay(point.hit, sample->wi, ctx.geometry.numerics());
+        lastVertex = ray.origin;
     }
     while (path.size() > pathStart) path.pop();
 }

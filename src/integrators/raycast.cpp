@@ -11,15 +11,16 @@ void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
-    // The camera is in the world's medium (media do not nest): every term is seen through it.
-    const Rgb seen = throughMedium(hit, ray, ctx.scene.worldMedium, Rgb{1.0f}, path);
-    if (!hit) {
-        addBackground(ray, seen, path);
+    // Every term is seen through the media from the camera's on, across index-matched boundaries.
+    const BeyondInterfaces beyond = crossInterfaces(hit, ray, ctx.eyeMedium, Rgb{1.0f}, path);
+    const Rgb seen = throughMedium(beyond.hit, beyond.ray, beyond.medium, beyond.throughput, path);
+    if (!beyond.hit) {
+        addBackground(beyond.ray, seen, path);
         return;
     }
-    addEmission(*hit, ray, seen, 1.0f, path);
+    addEmission(*beyond.hit, beyond.ray, seen, 1.0f, path);
     if (ctx.maxDepth < 1) return;
-    addLocalIllumination(makeShadingPoint(*hit, ray, ctx), seen, path, ctx.scene.medium(ctx.scene.worldMedium));
+    addLocalIllumination(makeShadingPoint(*beyond.hit, beyond.ray, ctx), seen, path, ctx.scene.medium(beyond.medium));
 }
 
 }  // namespace lightpath

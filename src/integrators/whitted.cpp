@@ -7,15 +7,20 @@
 namespace lightpath {
 
 void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
-    trace(ray, Rgb{1.0f}, 0, path.context.scene.worldMedium, path);
+    trace(ray, Rgb{1.0f}, 0, path.context.eyeMedium, path);
 }
 
-void WhittedIntegrator::trace(const Ray& ray, const Rgb& throughput, int depth, std::uint32_t mediumIndex,
+void WhittedIntegrator::trace(const Ray& firstRay, const Rgb& firstThroughput, int depth, std::uint32_t firstMedium,
                               PathState& path) const {
     const RenderContext& ctx = path.context;
-    const auto hit = ctx.geometry.intersect(ray);
+    // Across index-matched boundaries without an event, into the media beyond.
+    const BeyondInterfaces beyond =
+        crossInterfaces(ctx.geometry.intersect(firstRay), firstRay, firstMedium, firstThroughput, path);
+    const auto& hit = beyond.hit;
+    const Ray& ray = beyond.ray;
+    const std::uint32_t mediumIndex = beyond.medium;
     // Single scattering along this ray (E S* V L), and its transmittance on all beyond.
-    const Rgb seen = throughMedium(hit, ray, mediumIndex, throughput, path);
+    const Rgb seen = throughMedium(hit, ray, mediumIndex, beyond.throughput, path);
     if (isBlack(seen) && ctx.skipEnabled) return;
     if (!hit) {
         addBackground(ray, seen, path);

@@ -58,6 +58,9 @@ public:
         (void)side;
         return ambientReflectance();
     }
+    // pbrt-v4's interface material (materials/interface_material.cpp): the surface only bounds a
+    // medium, and rays cross it without an event.
+    virtual bool isInterface() const { return false; }
 
 protected:
     Material() = default;

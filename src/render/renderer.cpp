@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "util/timing.h"
+#include "integrators/direct_light.h"
 #include "integrators/registry.h"
 #include "render/memory_limit.h"
 #include "util/progress.h"
@@ -70,6 +71,7 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     context_.filter = &filter_;
     context_.seed = options.seed;
     context_.samplesPerPixel = options.samplesPerPixel;
+    context_.eyeMedium = cameraMedium(context_);
     context_.preprocessSteps = options.preprocessSteps;
     if (options_.integratorParameters) context_.parameters = &*options_.integratorParameters;
     context_.shadows = info.shadowRays != ShadowRays::Never && options.shadows.value_or(true);

@@ -41,6 +41,9 @@ struct Scene {
     std::vector<MaterialSlot> materials;
     std::vector<MediumSlot> media;             // [media.NAME], in file order
     std::uint32_t worldMedium = kNoMedium;     // [world] medium: fills all space outside objects
+    // Some material is an `interface` (index-matched boundary): rays cross such surfaces without an
+    // event. False keeps every integrator on its path without the crossing loop (bit-identical).
+    bool interfaces = false;
     std::vector<LightSlot> lights;  // [[lights]] without a shape (point lights)
     std::vector<SceneObject> objects;
 
@@ -66,6 +69,18 @@ struct Scene {
         const SceneObject& o = objects[object];
         if (!o.enclosesVolume) return current;
         return entering ? o.interior : worldMedium;
+    }
+
+    // Whether rays cross the surface of `object` without scattering (an `interface` material).
+    bool crossedWithoutEvent(std::uint32_t object) const {
+        return interfaces && materials[objects[object].material]->isInterface();
+    }
+
+    // The index of `medium` in `media`; kNoMedium for null (vacuum).
+    std::uint32_t indexOf(const Medium* medium) const {
+        for (std::uint32_t i = 0; i < media.size(); ++i)
+            if (&*media[i] == medium) return i;
+        return kNoMedium;
     }
 
     const std::string& labelOf(std::uint32_t object) const {

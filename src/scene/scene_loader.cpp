@@ -505,6 +505,7 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
     if (auto world = root.find("world")) readWorld(world->table(), scene);
     if (auto materials = root.find("materials")) {
         scene.materials = readMaterials(materials->table());
+        for (const MaterialSlot& m : scene.materials) scene.interfaces = scene.interfaces || m->isInterface();
     }
     forEachSection(root, "lights", [&](const TomlTable& light) { readLight(light, scene); });
     // Objects are numbered by each registered shape kind's rank (spheres first, then planes, the

@@ -193,6 +193,11 @@ CheckResult checkLobeAlbedo(const Material& material, int lobe) {
 CheckResult checkDeclaredLobes(const Material& material, const std::string& events) {
     CheckResult result;
     const Lobes lobes = material.lobes();
+    // An interface (index-matched boundary) scatters nothing: no lobes, no events, and rays cross it.
+    if (material.isInterface()) {
+        if (!lobes.empty() || !events.empty()) result.fail("an interface declares lobes or events: ", events);
+        return result;
+    }
     if (lobes.empty() || lobes.size() > std::size_t(kMaxLobes))
         result.fail(lobes.size(), " lobes declared: a material has 1 to ", kMaxLobes);
     const lpe::Automaton automaton = lpe::Automaton::compile({{"events", events}});

@@ -5,6 +5,7 @@
 
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
+#include "integrators/direct_light.h"
 #include "integrators/integrator.h"
 #include "lights/light_set.h"
 #include "scene/camera.h"
@@ -24,7 +25,9 @@ struct RenderWorld {
           lights(scene, geometry),
           camera(scene.camera),
           context{scene, geometry, aovs.automaton(), symbols, analysis, lights, camera, maxDepth,
-                  aovs.automaton().allOutputs(), true, true, radiosity, threads} {}
+                  aovs.automaton().allOutputs(), true, true, radiosity, threads} {
+        context.eyeMedium = cameraMedium(context);
+    }
     RenderWorld(const RenderWorld&) = delete;
     RenderWorld& operator=(const RenderWorld&) = delete;
 

@@ -10,6 +10,7 @@
 
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
+#include "materials/interface_material.h"
 #include "media/homogeneous_medium.h"
 #include "render/renderer.h"
 #include "scene_builder.h"
@@ -87,6 +88,96 @@ TEST_CASE("path: a floor seen through absorbing fog is dimmed by exp(-sigma_t d)
                 worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
             }
     CHECK(worst < 0.005);
+}
+
+// The same fog held by a large interface sphere around the camera, the light and the floor seen:
+// the camera starts in the sphere's medium (cameraMedium), no surface event is added, and the
+// closed form is the world-fog one. Its control: the same sphere with vacuum inside is undimmed.
+TEST_CASE("path, raycast: the camera inside an interface sphere of fog sees the floor dimmed by exp(-sigma_t d)") {
+    const Rgb sigmaA{0.05f, 0.2f, 0.4f};
+    Scene scene = fogFloor(sigmaA, Rgb{0.0f});
+    const std::uint32_t fog = scene.worldMedium;
+    scene.worldMedium = kNoMedium;
+    InterfaceMaterial boundary;
+    boundary.name = "boundary";
+    scene.materials.push_back(boundary);
+    scene.interfaces = true;
+    test::addSphere(scene, "box", static_cast<std::uint32_t>(scene.materials.size() - 1), {0.3f, 0.0f, 0.2f}, 20.0f);
+    scene.objects.back().enclosesVolume = true;
+    scene.objects.back().interior = fog;
+    for (const char* integrator : {"path", "raycast"}) {
+        CAPTURE(integrator);
+        RenderOptions options;
+        options.integrator = integrator;
+        options.samplesPerPixel = 1;
+        options.seed = 7;
+        const Film film = Renderer(scene, AovSet({}), options).render().film;
+        double worst = 0.0;
+        for (int j = 0; j < film.height(); ++j)
+            for (int i = 0; i < film.width(); ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const double expected = floorThroughFog(scene, i, j, sigmaA[c]);
+                    worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
+                }
+        CHECK(worst < 0.005);
+    }
+}
+
+// An axis-aligned box of triangles wound outwards (normal = (b - a) x (c - a)), as a closed mesh.
+void addOutwardBox(Scene& scene, std::uint32_t object, Vec3 lo, Vec3 hi) {
+    const Vec3 centre = 0.5f * (lo + hi);
+    const auto corner = [&](int k) { return Vec3{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z}; };
+    const int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    for (const auto& f : faces) {
+        Vec3 q[4] = {corner(f[0]), corner(f[1]), corner(f[2]), corner(f[3])};
+        const Vec3 faceCentre = 0.25f * (q[0] + q[1] + q[2] + q[3]);
+        if (glm::dot(glm::cross(q[1] - q[0], q[2] - q[0]), faceCentre - centre) < 0.0f) std::swap(q[1], q[3]);
+        scene.triangles.push_back({q[0], q[1], q[2], object});
+        scene.triangles.push_back({q[0], q[2], q[3], object});
+    }
+}
+
+// A slab of fog between heights 0.5 and 1 held by an interface box, with the camera above it and
+// the floor and the light on either side: the eye ray and the shadow ray each cross it without an
+// event, so the floor is dimmed by exp(-sigma_t 0.5 (1/|d.y| + 1/cos theta_light)) (the slab's
+// thickness along each ray). Its control: the same box as a glass-free vacuum boundary is undimmed.
+TEST_CASE("path, raycast, whitted: a floor seen through an interface slab of fog is dimmed by exp(-sigma_t d) on the eye ray and the shadow ray") {
+    const Rgb sigmaA{0.3f, 0.8f, 1.5f};
+    Scene scene = fogFloor(sigmaA, Rgb{0.0f});
+    const std::uint32_t fog = scene.worldMedium;
+    scene.worldMedium = kNoMedium;
+    InterfaceMaterial boundary;
+    boundary.name = "boundary";
+    scene.materials.push_back(boundary);
+    scene.interfaces = true;
+    const std::uint32_t slab = test::addObject(scene, "slab", static_cast<std::uint32_t>(scene.materials.size() - 1));
+    addOutwardBox(scene, slab, {-40.0f, 0.5f, -40.0f}, {40.0f, 1.0f, 40.0f});
+    scene.objects[slab].enclosesVolume = true;
+    scene.objects[slab].interior = fog;
+    for (const char* integrator : {"path", "raycast", "whitted"}) {
+        CAPTURE(integrator);
+        RenderOptions options;
+        options.integrator = integrator;
+        options.samplesPerPixel = 1;
+        options.seed = 7;
+        const Film film = Renderer(scene, AovSet({}), options).render().film;
+        double worst = 0.0, worstUndimmed = 0.0;
+        for (int j = 0; j < film.height(); ++j)
+            for (int i = 0; i < film.width(); ++i) {
+                const glm::dvec3 d = test::pixelDirection(scene.camera, i, j);
+                const glm::dvec3 p = glm::dvec3(scene.camera.eye) - double(scene.camera.eye.y) / d.y * d;
+                const glm::dvec3 toLight = kLight - p;
+                const double thickness = 0.5 * (1.0 / std::fabs(d.y) + glm::length(toLight) / toLight.y);
+                for (int c = 0; c < 3; ++c) {
+                    const double undimmed = floorThroughFog(scene, i, j, 0.0);
+                    const double expected = undimmed * std::exp(-double(sigmaA[c]) * thickness);
+                    worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
+                    worstUndimmed = std::max(worstUndimmed, std::fabs(film.at(0, i, j)[c] - undimmed) / undimmed);
+                }
+            }
+        CHECK(worst < 0.005);
+        CHECK(worstUndimmed > 0.1);  // the slab is thick enough to tell the two apart
+    }
 }
 
 TEST_CASE("path: through scattering fog the floor's direct light E<RD>L is exp(-sigma_t d) dimmer, unbiased (t-test)") {
