@@ -76,6 +76,9 @@ void checkScene(const Scene& scene) {
             // F0 and the diffuse colour mix base_color by metallic: each within the base's bounds.
             colours.insert(colours.end(), {m->f0(), m->diffuseColor()});
             if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
+        } else if (slot->isInterface()) {
+            // An index-matched boundary: no keys, nothing to check but its emission (none).
+            if (!isBlack(slot->emission)) broken("interface material " + name + " accepted with an emission");
         } else {
             broken("material " + name + " has a type the fuzzer does not know");
         }
