@@ -24,8 +24,9 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
     // MIS weighs an emitter found by the sampled direction from the vertex that sampled it.
     Vec3 lastVertex = ray.origin;
     int crossings = 0;
+    int depth = 0;  // scattering vertices so far: an interface crossing is none
 
-    for (int depth = 0;; ++depth) {
+    while (true) {
         const auto hit = ctx.geometry.intersect(ray);
         // Free flight through the medium up to the surface (pbrt-v4 14.2, VolPathIntegrator): a
         // scattering there is a V vertex, else the throughput carries the segment's transmittance.
@@ -55,6 +56,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
                 previousDelta = false;
                 ray = Ray{point.point, scattered.wi};
                 lastVertex = ray.origin;
+                ++depth;
                 continue;
             }
         }
@@ -65,7 +67,6 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
             mediumIndex = ctx.scene.mediumBeyond(hit->object, entering, mediumIndex);
             ray = spawnRay(*hit, ray.direction, ctx.geometry.numerics());
-            --depth;
             continue;
         }
         if (!hit) {
@@ -104,6 +105,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         previousDelta = lobe.delta();
         ray = spawnRay(point.hit, sample->wi, ctx.geometry.numerics());
         lastVertex = ray.origin;
+        ++depth;
     }
     while (path.size() > pathStart) path.pop();
 }
