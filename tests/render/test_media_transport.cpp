@@ -75,19 +75,25 @@ double floorThroughFog(const Scene& scene, int i, int j, double sigmaT) {
     return unattenuated * std::exp(-sigmaT * (lightDistance + eyeDistance));
 }
 
+// The beauty's largest relative error over every pixel and channel against expected(i, j, channel).
+template <class Expected>
+double worstRelativeError(const Film& film, const Expected& expected) {
+    double worst = 0.0;
+    for (int j = 0; j < film.height(); ++j)
+        for (int i = 0; i < film.width(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                const double e = expected(i, j, c);
+                worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - e) / e);
+            }
+    return worst;
+}
+
 TEST_CASE("path: a floor seen through absorbing fog is dimmed by exp(-sigma_t d) on the eye ray and the shadow ray") {
     const Rgb sigmaA{0.05f, 0.2f, 0.4f};
     const Scene scene = fogFloor(sigmaA, Rgb{0.0f});
     // A medium that only absorbs makes the estimate exact: one sample per pixel, every pixel within 0.5%.
     const Film film = renderPath(scene, {}, 1);
-    double worst = 0.0;
-    for (int j = 0; j < film.height(); ++j)
-        for (int i = 0; i < film.width(); ++i)
-            for (int c = 0; c < 3; ++c) {
-                const double expected = floorThroughFog(scene, i, j, sigmaA[c]);
-                worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
-            }
-    CHECK(worst < 0.005);
+    CHECK(worstRelativeError(film, [&](int i, int j, int c) { return floorThroughFog(scene, i, j, sigmaA[c]); }) < 0.005);
 }
 
 // The same fog held by a large interface sphere around the camera, the light and the floor seen:
@@ -112,14 +118,7 @@ TEST_CASE("path, raycast: the camera inside an interface sphere of fog sees the 
         options.samplesPerPixel = 1;
         options.seed = 7;
         const Film film = Renderer(scene, AovSet({}), options).render().film;
-        double worst = 0.0;
-        for (int j = 0; j < film.height(); ++j)
-            for (int i = 0; i < film.width(); ++i)
-                for (int c = 0; c < 3; ++c) {
-                    const double expected = floorThroughFog(scene, i, j, sigmaA[c]);
-                    worst = std::max(worst, std::fabs(film.at(0, i, j)[c] - expected) / expected);
-                }
-        CHECK(worst < 0.005);
+        CHECK(worstRelativeError(film, [&](int i, int j, int c) { return floorThroughFog(scene, i, j, sigmaA[c]); }) < 0.005);
     }
 }
 
