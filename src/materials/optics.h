@@ -4,6 +4,7 @@
 // the surface; `n` is the unit normal on the side of wo.
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <optional>
 
 #include "math/types.h"
@@ -31,6 +32,21 @@ inline float fresnelDielectric(float cosIncident, float eta) {
     const float parallel = (cosIncident - eta * cosTransmitted) / (cosIncident + eta * cosTransmitted);
     const float perpendicular = (eta * cosIncident - cosTransmitted) / (eta * cosIncident + cosTransmitted);
     return 0.5f * (parallel * parallel + perpendicular * perpendicular);
+}
+
+// Fresnel reflectance of a conductor (a complex index of refraction eta + i k relative to the
+// outside) for unpolarised light, cosIncident in [0, 1]: Fresnel's equations with Snell's law in
+// complex numbers, sin^2 theta_t = sin^2 theta_i / (eta + i k)^2 (Born and Wolf, Principles of
+// Optics, 14.2; pbrt-v4 9.3.6). k = 0 is fresnelDielectric(cosIncident, 1 / eta).
+inline float fresnelConductor(float cosIncident, float eta, float k) {
+    using Complex = std::complex<float>;
+    const float cosI = std::clamp(cosIncident, 0.0f, 1.0f);
+    const Complex index{eta, k};
+    const Complex sin2Transmitted = (1.0f - cosI * cosI) / (index * index);
+    const Complex cosTransmitted = std::sqrt(1.0f - sin2Transmitted);
+    const Complex parallel = (index * cosI - cosTransmitted) / (index * cosI + cosTransmitted);
+    const Complex perpendicular = (cosI - index * cosTransmitted) / (cosI + index * cosTransmitted);
+    return 0.5f * (std::norm(parallel) + std::norm(perpendicular));
 }
 
 // Schlick's approximation F = F0 + (1 - F0) w with the weight w = (1 - cos)^5 (Schlick 1994);

@@ -186,6 +186,9 @@ void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit) 
     visit(handPicked("microfacet", {{"base_color", V{1.0f}}, {"metallic", 0.0}, {"roughness", 0.0}}));
     visit(handPicked("microfacet", {{"base_color", V{0.95f, 0.64f, 0.54f}}, {"roughness", 0.3}}));
     visit(handPicked("microfacet", {{"base_color", V{0.8f, 0.3f, 0.2f}}, {"metallic", 0.0}, {"roughness", 1.0}}));
+    visit(handPicked("conductor", {{"roughness", 0.0}}));
+    visit(handPicked("conductor", {{"eta", V{0.155f, 0.117f, 0.138f}}, {"k", V{4.828f, 3.122f, 2.147f}}, {"roughness", 0.3}}));
+    visit(handPicked("conductor", {{"eta", V{2.0f}}, {"k", V{0.0f}}, {"roughness", 1.0}}));
 
     // Drawn: every registered type, its defaults and kDrawsPerMaterialType sets within its schema.
     for (const MaterialType* type : MaterialRegistry::instance().entries()) {

@@ -16,6 +16,7 @@
 #include "film/aov_set.h"
 #include "fuzz_support.h"
 #include "lights/point_light.h"
+#include "materials/conductor_material.h"
 #include "materials/microfacet_material.h"
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
@@ -75,6 +76,13 @@ void checkScene(const Scene& scene) {
         } else if (const auto* m = dynamic_cast<const MicrofacetMaterial*>(&*slot)) {
             // F0 and the diffuse colour mix base_color by metallic: each within the base's bounds.
             colours.insert(colours.end(), {m->f0(), m->diffuseColor()});
+            if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
+        } else if (const auto* m = dynamic_cast<const ConductorMaterial*>(&*slot)) {
+            // eta and k: the schema's ranges, eta > 0 (Fresnel divides by it), k >= 0.
+            const Rgb eta = m->eta(), k = m->k();
+            for (int c = 0; c < 3; ++c)
+                if (!(eta[c] > 0.0f && eta[c] <= 10.0f && k[c] >= 0.0f && k[c] <= 20.0f))
+                    broken("conductor " + name + " accepted with eta or k outside its range");
             if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
         } else if (slot->isInterface()) {
             // An index-matched boundary: no keys, nothing to check but its emission (none).
