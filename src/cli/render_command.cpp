@@ -87,8 +87,8 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
 }
 
 void printRadiosityStats(const RadiosityStats& r) {
-    std::printf("radiosity     %zu patches (size %.4g), %llu form-factor rays, %llu shadow rays\n", r.patches,
-                double(r.patchSize), static_cast<unsigned long long>(r.formFactorRays),
+    std::printf("radiosity     %zu patches (size %.4g) in %zu clusters, %llu form-factor rays, %llu shadow rays\n",
+                r.patches, double(r.patchSize), r.clusters, static_cast<unsigned long long>(r.formFactorRays),
                 static_cast<unsigned long long>(r.shadowRays));
     std::printf("              %d iterations (%d light-bounces over %d lights solved), residual %.3g, solved in %.3f s\n",
                 r.iterations, r.lightBouncesSolved, r.lightsSolved, r.residual, r.seconds);

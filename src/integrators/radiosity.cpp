@@ -90,18 +90,20 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     stats_ = {};
     const float patchSize = options.patchSize > 0.0f
                                 ? options.patchSize
-                                : RadiosityMesh::patchSizeForBudget(context.scene, context.geometry, options.patchBudget);
-    const std::size_t count = RadiosityMesh::countPatches(context.scene, context.geometry, patchSize);
+                                : RadiosityMesh::patchSizeForBudget(context.scene, context.geometry, options.patchBudget,
+                                                                    options.planeRings);
+    const std::size_t count = RadiosityMesh::countClusters(context.scene, context.geometry, patchSize, options.planeRings);
     if (count > kMaxPatches)
         throw std::invalid_argument("radiosity: patch size " + std::to_string(patchSize) + " makes " +
-                                    std::to_string(count) + " patches, more than the " + std::to_string(kMaxPatches) +
+                                    std::to_string(count) + " elements, more than the " + std::to_string(kMaxPatches) +
                                     " radiosity can hold; choose a larger --patch-size or a smaller --patches");
-    mesh_.emplace(context.scene, context.geometry, patchSize);
+    mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings);
     stats_.patches = mesh_->patches().size();
+    stats_.clusters = mesh_->clusters().size();
     stats_.patchSize = patchSize;
     reflectance_.clear();
-    for (const RadiosityPatch& p : mesh_->patches())
-        reflectance_.push_back(context.scene.materials[context.scene.objects[p.object].material]->diffuseReflectance());
+    for (const RadiosityCluster& c : mesh_->clusters())
+        reflectance_.push_back(context.scene.materials[context.scene.objects[c.object].material]->diffuseReflectance());
 
     const std::vector<int> wanted = wantedBounces(context);
     bounces_ = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());
@@ -142,8 +144,8 @@ std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context
     if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, Vec3{0.0f}})) return wanted;
     // Objects with a patch that reflects: radiosity shows light only on those.
     std::vector<bool> reflects(context.scene.objects.size(), false);
-    for (std::size_t p = 0; p < mesh_->patches().size(); ++p)
-        if (!isBlack(reflectance_[p])) reflects[mesh_->patches()[p].object] = true;
+    for (std::size_t c = 0; c < mesh_->clusters().size(); ++c)
+        if (!isBlack(reflectance_[c])) reflects[mesh_->clusters()[c].object] = true;
     for (std::uint32_t object = 0; object < reflects.size(); ++object) {
         if (!reflects[object]) continue;
         if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, object, Vec3{0.0f}})) continue;
@@ -180,14 +182,15 @@ void RadiosityIntegrator::computeFormFactors(const RenderContext& context, Progr
                 Pcg32 rng(mixBits(e), 0xf0f0u);
                 shuffle(order, rng);
                 for (std::uint32_t k = 0; k < rays; ++k) {
-                    const PatchPoint point = mesh_->samplePoint(p, stratum(order[k], side, rng));
+                    const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(order[k], side, rng));
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
                     const Vec3 direction = Frame(normal).toWorld(sampleCosineHemisphere(stratum(k, side, rng)));
                     const auto hit = context.geometry.intersect(
-                        spawnRay(surfacePoint(patches[p], point), direction, context.geometry.numerics()));
+                        spawnRay(surfacePoint(patches[point.patch], point), direction, context.geometry.numerics()));
                     if (!hit) continue;
                     const auto found = mesh_->lookup(*hit);
-                    if (found) hits.push_back(2 * found->patch + std::uint32_t(sideFacing(hit->normal, direction)));
+                    if (found)
+                        hits.push_back(2 * patches[found->patch].cluster + std::uint32_t(sideFacing(hit->normal, direction)));
                 }
                 out.rays += rays;
             }
@@ -241,9 +244,9 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 // emitters make the patch noisy.
                 Rgb sum{0.0f};
                 for (std::uint32_t k = 0; k < samples; ++k) {
-                    const PatchPoint point = mesh_->samplePoint(p, stratum(k, side, rng));
+                    const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(k, side, rng));
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
-                    const SurfaceHit from = surfacePoint(patches[p], point);
+                    const SurfaceHit from = surfacePoint(patches[point.patch], point);
                     const LightSample s = light.sample(point.point, stratum(order[k], side, rng));
                     const float cosTheta = glm::dot(normal, s.wi);
                     if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
@@ -276,14 +279,14 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
 }
 
 void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress) {
-    const auto& patches = mesh_->patches();
+    const auto& clusters = mesh_->clusters();
     // Flux leaving all elements in one bounce, summed over lights (luminance, per unit pi).
     const auto flux = [&](int bounce) {
         double total = 0.0;
         for (std::size_t l = 0; l < wanted.size(); ++l) {
             if (wanted[l] < bounce) continue;
             for (std::uint32_t e = 0; e < elementCount(); ++e)
-                total += double(patches[e / 2].area) * luminance(values_[valueIndex(l, bounce, e)]);
+                total += double(clusters[e / 2].area) * luminance(values_[valueIndex(l, bounce, e)]);
         }
         return total;
     };
@@ -329,7 +332,7 @@ void RadiosityIntegrator::computeVertexValues() {
             for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
                 const RadiosityPatch& p = patches[patch];
                 for (int side = 0; side < 2; ++side) {
-                    const Rgb weighted = p.area * values_[valueIndex(l, k, 2 * patch + std::uint32_t(side))];
+                    const Rgb weighted = p.area * values_[valueIndex(l, k, 2 * p.cluster + std::uint32_t(side))];
                     for (int v = 0; v < p.vertexCount; ++v) vertexValues_[vertexValueIndex(l, k, p.vertices[v], side)] += weighted;
                 }
             }
@@ -342,11 +345,12 @@ void RadiosityIntegrator::computeVertexValues() {
 
 Rgb RadiosityIntegrator::patchRadiance(std::size_t light, int bounce, std::uint32_t patch, int side) const {
     if (light >= solvedBounces_.size() || bounce < 1 || bounce > solvedBounces_[light]) return Rgb{0.0f};
-    return values_[valueIndex(light, bounce, 2 * patch + std::uint32_t(side))];
+    return values_[valueIndex(light, bounce, 2 * mesh_->patches()[patch].cluster + std::uint32_t(side))];
 }
 
 RadiosityIntegrator::FormFactorRow RadiosityIntegrator::formFactors(std::uint32_t patch, int side) const {
-    const std::uint32_t e = 2 * patch + std::uint32_t(side);
+    if (patch >= mesh_->patches().size()) return {};
+    const std::uint32_t e = 2 * mesh_->patches()[patch].cluster + std::uint32_t(side);
     if (std::size_t(e) + 1 >= rowStart_.size()) return {};
     const std::size_t begin = rowStart_[e], length = rowStart_[e + 1] - begin;
     return {std::span(targets_).subspan(begin, length), std::span(factors_).subspan(begin, length)};
@@ -379,7 +383,7 @@ void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const 
             if (!path.wants(light)) continue;
             Rgb value{0.0f};
             if (display_ == RadiosityDisplay::Flat) {
-                value = values_[valueIndex(l, k, 2 * found->patch + std::uint32_t(side))];
+                value = values_[valueIndex(l, k, 2 * patch.cluster + std::uint32_t(side))];
             } else {
                 for (int v = 0; v < patch.vertexCount; ++v)
                     value += found->weights[v] * vertexValues_[vertexValueIndex(l, k, patch.vertices[v], side)];
@@ -408,7 +412,7 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
       .doc = "target patch edge (default: the finest size within --patches)", .excludes = "patches"},
      {.name = "patches", .type = lightpath::ParameterType::Integer, .defaultText = "4096",
       .range = {1.0, static_cast<double>(lightpath::kMaxPatches)},
-      .doc = "the most patches; the finest patch size within it"},
+      .doc = "the most solved elements (patches; triangles smaller than a patch clustered); the finest patch size within it"},
      {.name = "form-factor-rays", .type = lightpath::ParameterType::Integer, .defaultText = "256", .range = {1.0, 65536.0},
       .doc = "hemisphere rays per side of each patch (a square number, stratified)"},
      {.name = "light-samples", .type = lightpath::ParameterType::Integer, .defaultText = "64", .range = {1.0, 65536.0},

@@ -27,6 +27,7 @@ class ProgressBar;
 
 struct RadiosityStats {
     std::size_t patches = 0;
+    std::size_t clusters = 0;          // elements solved: patches, the small ones clustered (RadiosityMesh)
     float patchSize = 0.0f;
     std::uint64_t formFactorRays = 0;
     std::uint64_t shadowRays = 0;      // direct light: shadow rays and, for area lights, rays towards them
@@ -51,8 +52,8 @@ public:
     // The solved radiance leaving side `side` (0: front, along the patch's normal) of `patch` after
     // exactly `bounce` reflections of light `light` (LightSet::all() order); zero if not solved.
     Rgb patchRadiance(std::size_t light, int bounce, std::uint32_t patch, int side) const;
-    // The form factors from one side of a patch (the ray estimates): to element 2 * patch + side of
-    // each patch its rays reached.
+    // The form factors from one side of a patch's cluster (the ray estimates): to element
+    // 2 * cluster + side of each cluster its rays reached (cluster = patch where nothing is clustered).
     struct FormFactorRow {
         std::span<const std::uint32_t> targets;
         std::span<const float> factors;
@@ -60,8 +61,8 @@ public:
     FormFactorRow formFactors(std::uint32_t patch, int side) const;
 
 private:
-    // An element is one side of one patch: 2 * patch + side.
-    std::uint32_t elementCount() const { return static_cast<std::uint32_t>(2 * mesh_->patches().size()); }
+    // An element is one side of one cluster: 2 * cluster + side.
+    std::uint32_t elementCount() const { return static_cast<std::uint32_t>(2 * mesh_->clusters().size()); }
     // Bounces 1..bounces_ of each light, one after the other.
     std::size_t slot(std::size_t light, int bounce) const { return light * std::size_t(bounces_) + std::size_t(bounce - 1); }
     std::size_t valueIndex(std::size_t light, int bounce, std::size_t element) const {
@@ -80,7 +81,7 @@ private:
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied
     RadiosityDisplay display_ = RadiosityDisplay::Smooth;
-    std::vector<Rgb> reflectance_;  // per patch: the material's kd
+    std::vector<Rgb> reflectance_;  // per cluster: its object's material's kd
     // Form factors, one sparse row per element: targets_[rowStart_[e] .. rowStart_[e+1]).
     std::vector<std::uint64_t> rowStart_;
     std::vector<std::uint32_t> targets_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "math/random.h"
 #include "sampling/warp.h"
@@ -45,15 +46,92 @@ Bounds sceneRegion(const Scene& scene, const SceneGeometry& geometry) {
     return region;
 }
 
+// A triangle to mesh and the patch size to cut it at.
+struct Piece {
+    Triangle triangle;
+    float patchSize;
+};
+
+// An unbounded surface's light beyond the scene still reaches the scene (issue 27: a floor plane
+// clipped to the scene lost 8-25% of the second to fourth bounce). Its rectangle over the scene is
+// surrounded by rings (RadiosityOptions::planeRings, 3), each kRingGrowth times wider than the one inside and cut into
+// patches kRingCoarsening times coarser: each ring costs about a quarter of the patches inside it.
+// The light the plane sends back decays fast with distance d (a point light lights it as h/d^3 and
+// a receiver at height h sees an element at d under a form factor ~ h/d^3: the contribution from
+// beyond the radius R ~ 1/R^4, below 1e-6 of the inner rectangle's beyond 64 times its size), and a
+// uniform light (the sky) makes the far plane uniform: a hit beyond the last ring takes the value
+// of the ring's nearest patch (RadiosityMesh::lookup).
+constexpr float kRingGrowth = 4.0f;
+constexpr float kRingCoarsening = 8.0f;
+
+// The rings around a parallelogram tessellation (a, b, c), (a, c, d), each as four strips of two
+// triangles; nothing for a tessellation of another form.
+void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, std::vector<Piece>& out) {
+    if (inner.size() != 2 || inner[1].a != inner[0].a || inner[1].b != inner[0].c) return;
+    const Vec3 a = inner[0].a, b = inner[0].b, d = inner[1].c;
+    const Vec3 centre = 0.5f * (b + d), halfS = 0.5f * (b - a), halfT = 0.5f * (d - a);
+    const std::uint32_t object = inner[0].object;
+    const auto at = [&](float s, float t) { return centre + s * halfS + t * halfT; };
+    const auto rectangle = [&](float s0, float s1, float t0, float t1, float size) {
+        out.push_back({{at(s0, t0), at(s1, t0), at(s1, t1), object}, size});
+        out.push_back({{at(s0, t0), at(s1, t1), at(s0, t1), object}, size});
+    };
+    float in = 1.0f, size = patchSize;
+    for (int ring = 0; ring < rings; ++ring) {
+        const float outer = in * kRingGrowth;
+        size *= kRingCoarsening;
+        rectangle(-outer, outer, -outer, -in, size);  // the strips below and above the inner rectangle
+        rectangle(-outer, outer, in, outer, size);
+        rectangle(-outer, -in, -in, in, size);        // and left and right of it
+        rectangle(in, outer, -in, in, size);
+        in = outer;
+    }
+}
+
 // The triangles a record without a patch grid is meshed as (geometry/shape.h): its tessellation,
-// or an unbounded kind's over `region` (none if it has no tessellateRegion).
-void tessellateRecord(const ShapeRecord& shape, float patchSize, const Bounds& region, std::vector<Triangle>& out) {
+// or an unbounded kind's over `region` and the rings around it (none if it has no tessellateRegion).
+void tessellateRecord(const ShapeRecord& shape, float patchSize, int rings, const Bounds& region,
+                      std::vector<Triangle>& scratch, std::vector<Piece>& out) {
+    scratch.clear();
     out.clear();
     if (shape.ops->bounded) {
-        if (shape.ops->tessellate) shape.ops->tessellate(shape, patchSize, out);
+        if (shape.ops->tessellate) shape.ops->tessellate(shape, patchSize, scratch);
     } else if (shape.ops->tessellateRegion) {
-        shape.ops->tessellateRegion(shape, region, out);
+        shape.ops->tessellateRegion(shape, region, scratch);
     }
+    for (const Triangle& t : scratch) out.push_back({t, patchSize});
+    if (!shape.ops->bounded) addRings(scratch, patchSize, rings, out);
+}
+
+// Which cluster a triangle no larger than the patch size joins: its object, the cell of side
+// `patchSize` holding its centroid, and a bucket of normal directions (the dominant axis and its
+// sign, the other two components over it cut in thirds: cones of about 25 degrees).
+struct ClusterKey {
+    std::uint32_t object;
+    std::int64_t x, y, z;
+    std::uint32_t direction;
+    bool operator==(const ClusterKey&) const = default;
+};
+
+struct ClusterKeyHash {
+    std::size_t operator()(const ClusterKey& k) const {
+        std::uint64_t h = mixBits(k.object ^ (std::uint64_t(k.direction) << 32));
+        for (std::int64_t v : {k.x, k.y, k.z}) h = mixBits(h ^ static_cast<std::uint64_t>(v));
+        return static_cast<std::size_t>(h);
+    }
+};
+
+ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
+    const Vec3 centroid = (a + b + c) / 3.0f;
+    const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / patchSize)); };
+    const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
+    const Vec3 m = glm::abs(n);
+    const int axis = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    const float major = n[axis];
+    const auto third = [&](float v) { return static_cast<std::uint32_t>(std::clamp((v / std::abs(major) + 1.0f) * 1.5f, 0.0f, 2.0f)); };
+    const std::uint32_t direction =
+        ((std::uint32_t(axis) * 2 + (major < 0.0f ? 1u : 0u)) * 3 + third(n[(axis + 1) % 3])) * 3 + third(n[(axis + 2) % 3]);
+    return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction};
 }
 
 }  // namespace
@@ -89,41 +167,53 @@ struct RadiosityMesh::VertexWelder {
     }
 };
 
-std::size_t RadiosityMesh::countPatches(const Scene& scene, const SceneGeometry& geometry, float patchSize) {
+std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings) {
     std::size_t count = 0;
-    const auto addTriangle = [&](const Triangle& t) {
+    std::unordered_set<ClusterKey, ClusterKeyHash> keys;
+    std::uint32_t object = 0;
+    const auto addTriangle = [&](const Triangle& t, float size) {
         if (!hasArea(t.a, t.b, t.c)) return;
-        const std::size_t n = triangleSubdivisions(t.a, t.b, t.c, patchSize);
-        count += n * n;
+        const std::size_t n = triangleSubdivisions(t.a, t.b, t.c, size);
+        if (n == 1) {
+            if (keys.insert(clusterKey(object, t.a, t.b, t.c, patchSize)).second) ++count;
+        } else {
+            count += n * n;
+        }
     };
     const Bounds region = sceneRegion(scene, geometry);
-    std::vector<Triangle> pieces;
+    std::vector<Triangle> scratch;
+    std::vector<Piece> pieces;
     for (const ShapeRecord& shape : geometry.shapes()) {
         if (shape.ops->patchGrid) {
             const PatchGrid grid = shape.ops->patchGrid->cells(shape, patchSize);
             count += std::size_t{grid.rows} * grid.columns;
             continue;
         }
-        tessellateRecord(shape, patchSize, region, pieces);
-        for (const Triangle& t : pieces) addTriangle(t);
+        tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
+        object = shape.object;
+        for (const Piece& p : pieces) addTriangle(p.triangle, p.patchSize);
     }
-    for (const Triangle& t : geometry.triangles()) addTriangle(t);
+    for (const Triangle& t : geometry.triangles()) {
+        object = t.object;
+        addTriangle(t, patchSize);
+    }
     return count;
 }
 
-float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget) {
+float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
+                                        int planeRings) {
     // The count falls as the size grows: bisect log(size) between a size too fine and one coarse
     // enough to leave one patch per triangle (the least any mesh can have).
     double fine = 1e-6, coarse = 1e6;
     for (int i = 0; i < 60; ++i) {
         const double middle = std::sqrt(fine * coarse);
-        (countPatches(scene, geometry, static_cast<float>(middle)) <= budget ? coarse : fine) = middle;
+        (countClusters(scene, geometry, static_cast<float>(middle), planeRings) <= budget ? coarse : fine) = middle;
     }
     return static_cast<float>(coarse);
 }
 
-RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize)
-    : geometry_(geometry), patchSize_(patchSize) {
+RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings)
+    : geometry_(geometry), patchSize_(patchSize), planeRings_(planeRings) {
     VertexWelder welder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_};
     sourceStart_.assign(geometry.primitiveCount() + 1, 0);
     const auto begin = [&](std::uint32_t id) { sourceStart_[id] = static_cast<std::uint32_t>(sources_.size()); };
@@ -131,7 +221,8 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     // tessellation's triangles (over the scene's region, if unbounded), each subdivided as a
     // triangle.
     const Bounds region = sceneRegion(scene, geometry);
-    std::vector<Triangle> pieces;
+    std::vector<Triangle> scratch;
+    std::vector<Piece> pieces;
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
         begin(geometry.shapeId(i));
         const ShapeRecord& shape = geometry.shapes()[i];
@@ -139,21 +230,73 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
             addGrid(i);
             continue;
         }
-        tessellateRecord(shape, patchSize, region, pieces);
-        for (const Triangle& t : pieces) addTriangle(&shape, geometry.shapeId(i), shape.object, t.a, t.b, t.c, welder);
+        tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
+        for (const Piece& p : pieces)
+            addTriangle(&shape, geometry.shapeId(i), shape.object, p.triangle.a, p.triangle.b, p.triangle.c, p.patchSize,
+                        welder);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) {
         begin(geometry.triangleId(i));
         const Triangle& t = geometry.triangles()[i];
-        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, welder);
+        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, welder);
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
+    buildClusters();
+}
+
+void RadiosityMesh::buildClusters() {
+    // Cluster ids in the order of each cluster's first patch: a mesh with nothing to cluster has
+    // cluster i = patch i.
+    std::unordered_map<ClusterKey, std::uint32_t, ClusterKeyHash> ids;
+    std::vector<std::uint32_t> memberCount;
+    clusters_.clear();
+    for (std::uint32_t i = 0; i < patches_.size(); ++i) {
+        RadiosityPatch& p = patches_[i];
+        std::uint32_t id = static_cast<std::uint32_t>(clusters_.size());
+        if (clusterable_[i]) id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_), id).first->second;
+        if (id == clusters_.size()) {
+            clusters_.push_back({p.object, 0, 0, 0.0f});
+            memberCount.push_back(0);
+        }
+        p.cluster = id;
+        ++memberCount[id];
+        clusters_[id].area += p.area;
+    }
+    std::uint32_t first = 0;
+    for (std::uint32_t c = 0; c < clusters_.size(); ++c) {
+        clusters_[c].firstMember = first;
+        first += memberCount[c];
+    }
+    members_.assign(patches_.size(), 0);
+    memberCdf_.assign(patches_.size(), 0.0f);
+    std::vector<float> areaSoFar(clusters_.size(), 0.0f);
+    for (std::uint32_t i = 0; i < patches_.size(); ++i) {
+        RadiosityCluster& c = clusters_[patches_[i].cluster];
+        const std::uint32_t slot = c.firstMember + c.memberCount++;
+        members_[slot] = i;
+        areaSoFar[patches_[i].cluster] += patches_[i].area;
+        memberCdf_[slot] = areaSoFar[patches_[i].cluster] / c.area;
+    }
+    for (const RadiosityCluster& c : clusters_) memberCdf_[c.firstMember + c.memberCount - 1] = 1.0f;
+    clusterable_.clear();
+    clusterable_.shrink_to_fit();
+}
+
+PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) const {
+    const RadiosityCluster& c = clusters_[cluster];
+    if (c.memberCount == 1) return samplePoint(members_[c.firstMember], u);
+    const auto begin = memberCdf_.begin() + c.firstMember, end = begin + c.memberCount;
+    const auto it = std::min(std::upper_bound(begin, end, u.x), end - 1);
+    const float low = it == begin ? 0.0f : *(it - 1);
+    const float width = *it - low;
+    u.x = width > 0.0f ? std::clamp((u.x - low) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
+    return samplePoint(members_[c.firstMember + std::uint32_t(it - memberCdf_.begin() - c.firstMember)], u);
 }
 
 void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object,
-                                const Vec3& a, const Vec3& b, const Vec3& c, VertexWelder& welder) {
+                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder) {
     if (!hasArea(a, b, c)) return;
-    const std::uint32_t n = triangleSubdivisions(a, b, c, patchSize_);
+    const std::uint32_t n = triangleSubdivisions(a, b, c, patchSize);
     sources_.push_back({record, primitive, static_cast<std::uint32_t>(patches_.size()), n, PatchGrid{}, a, b, c});
     const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
     const Vec3 du = (b - a) / float(n), dv = (c - a) / float(n);
@@ -179,6 +322,7 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
             lower.area = area;
             lower.vertices = {vertexAt(i, j), vertexAt(i + 1, j), vertexAt(i, j + 1), 0};
             patches_.push_back(lower);
+            clusterable_.push_back(n == 1);
             if (i + j + 1 < n) {
                 RadiosityPatch upper = lower;
                 upper.a = gridPoint(i + 1, j + 1);
@@ -186,6 +330,7 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
                 upper.c = gridPoint(i + 1, j);
                 upper.vertices = {vertexAt(i + 1, j + 1), vertexAt(i, j + 1), vertexAt(i + 1, j), 0};
                 patches_.push_back(upper);
+                clusterable_.push_back(false);
             }
         }
     }
@@ -216,6 +361,7 @@ void RadiosityMesh::addGrid(std::uint32_t shapeIndex) {
                           vertexAt(row + 1, column + 1)};
             p.vertexCount = 4;
             patches_.push_back(p);
+            clusterable_.push_back(false);
         }
     }
 }
@@ -224,11 +370,11 @@ PatchPoint RadiosityMesh::samplePoint(std::uint32_t patch, Vec2 u) const {
     const RadiosityPatch& p = patches_[patch];
     if (p.vertexCount == 3) {
         const Vec3 b = sampleUniformTriangle(u);
-        return {b.x * p.a + b.y * p.b + b.z * p.c, p.normal};
+        return {b.x * p.a + b.y * p.b + b.z * p.c, p.normal, patch};
     }
     const Source& source = sources_[p.source];
     const AreaSample s = source.record->ops->patchGrid->sampleCell(*source.record, source.grid, p.row, p.column, u);
-    return {s.point, s.normal};
+    return {s.point, s.normal, patch};
 }
 
 std::optional<PatchLookup> RadiosityMesh::lookup(const SurfaceHit& hit) const {
@@ -245,18 +391,22 @@ std::optional<PatchLookup> RadiosityMesh::lookup(const SurfaceHit& hit) const {
     // arc): the nearest piece's patch, its coordinates clamped onto it. An unbounded shape's hit
     // outside the region its triangles cover has none.
     const ShapeRecord* record = sources_[first].record;
-    if (!several || (record && !record->ops->bounded)) return std::nullopt;
+    if (!several) return std::nullopt;
+    const bool unbounded = record && !record->ops->bounded;
+    if (unbounded && planeRings_ == 0) return std::nullopt;  // clipped: nothing beyond the rectangle
     std::uint32_t nearest = first;
     float nearestDistance = std::numeric_limits<float>::infinity();
     for (std::uint32_t s = first; s < last; ++s) {
         const Source& source = sources_[s];
-        const float distance = glm::length(hit.point - (source.a + source.b + source.c) / 3.0f);
+        // An unbounded shape's hit beyond its last ring: the ring's nearest point (addRings).
+        const float distance = unbounded ? glm::length(hit.point - closestPoint(source, hit.point))
+                                         : glm::length(hit.point - (source.a + source.b + source.c) / 3.0f);
         if (distance < nearestDistance) {
             nearestDistance = distance;
             nearest = s;
         }
     }
-    return lookupTriangle(sources_[nearest], hit.point, false);
+    return lookupTriangle(sources_[nearest], unbounded ? closestPoint(sources_[nearest], hit.point) : hit.point, false);
 }
 
 std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, const Vec3& point, bool strict) const {
@@ -294,6 +444,28 @@ std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, c
     const float sum = found.weights[0] + found.weights[1] + found.weights[2];
     for (float& w : found.weights) w /= sum;
     return found;
+}
+
+Vec3 RadiosityMesh::closestPoint(const Source& source, const Vec3& point) {
+    // Ericson, Real-Time Collision Detection (2005), 5.1.5: the point's Voronoi region of the triangle.
+    const Vec3 a = source.a, b = source.b, c = source.c;
+    const Vec3 ab = b - a, ac = c - a, ap = point - a;
+    const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0.0f && d2 <= 0.0f) return a;
+    const Vec3 bp = point - b;
+    const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0.0f && d4 <= d3) return b;
+    const float vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0f && d1 >= 0.0f && d3 <= 0.0f) return a + (d1 / (d1 - d3)) * ab;
+    const Vec3 cp = point - c;
+    const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0.0f && d5 <= d6) return c;
+    const float vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0f && d2 >= 0.0f && d6 <= 0.0f) return a + (d2 / (d2 - d6)) * ac;
+    const float va = d3 * d6 - d5 * d4;
+    if (va <= 0.0f && (d4 - d3) >= 0.0f && (d5 - d6) >= 0.0f) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+    const float denominator = 1.0f / (va + vb + vc);
+    return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
 PatchLookup RadiosityMesh::lookupCell(const Source& source, const Vec3& point) const {

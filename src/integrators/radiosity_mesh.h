@@ -4,8 +4,17 @@
 // (n = ceil(longest edge / size)). A record of the shape table (geometry/shape.h) is asked, never
 // named: a kind with a patch grid is cut into its cells (the sphere's equal-area latitude-longitude
 // cells); any other is first tessellated, a bounded kind whole (`tessellate`), an unbounded one over
-// the scene's bounds (`tessellateRegion`: the plane's rectangle), and its triangles subdivided.
-// Each patch has two sides, each its own unknown.
+// the scene's bounds (`tessellateRegion`: the plane's rectangle) and three coarser rings around it
+// reaching 64 times as far (what lies beyond takes the outermost ring's value), and its triangles
+// subdivided.
+// Triangles no larger than the patch size are not subdivided but clustered (in the spirit of
+// Smits, Arvo and Greenberg 1994, restricted to near-coplanar groups): the patches of one object
+// whose centroids share a cell of the patch size and whose normals share a direction bucket (a
+// cone of about 25 degrees) form one cluster, solved as one element, so a dense mesh costs about
+// (its area / patch size^2) elements rather than one per triangle. A cluster gathers the light
+// arriving over all its members (sample points by area, each with its member's normal), which is
+// exact for its area mean; what varies inside the cell and the cone is averaged away. Every other
+// patch is a cluster of one. Each cluster has two sides, each its own unknown.
 //
 // The mesh also answers the display's question: which patch, and which of its vertices with what
 // weights, lies under a hit point (Gouraud interpolation of vertex radiosities).
@@ -34,12 +43,22 @@ struct RadiosityPatch {
     // (row, column + 1), (row + 1, column), (row + 1, column + 1) for grid cells.
     std::array<std::uint32_t, 4> vertices{};
     int vertexCount = 3;
+    std::uint32_t cluster = 0;  // the cluster (solved element) it belongs to
+};
+
+// Patches solved as one: members_[firstMember .. firstMember + memberCount) of the mesh.
+struct RadiosityCluster {
+    std::uint32_t object = 0;
+    std::uint32_t firstMember = 0;
+    std::uint32_t memberCount = 0;
+    float area = 0.0f;
 };
 
 // A point on a patch: where it is and the patch's outward (front-side) normal there.
 struct PatchPoint {
     Vec3 point{0.0f};
     Vec3 normal{0.0f};
+    std::uint32_t patch = 0;  // the patch it lies on
 };
 
 // What lies under a hit point.
@@ -50,20 +69,25 @@ struct PatchLookup {
 
 class RadiosityMesh {
 public:
-    // Splits every surface into patches of about `patchSize` scene units.
-    RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize);
+    // Splits every surface into patches of about `patchSize` scene units and clusters the smaller ones.
+    RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings);
 
-    // How many patches `patchSize` would make (without building them): for a patch budget.
-    static std::size_t countPatches(const Scene& scene, const SceneGeometry& geometry, float patchSize);
-    // The patch size whose mesh has at most `budget` patches and is finest among such sizes.
-    static float patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget);
+    // How many clusters (solved elements) `patchSize` would make (without building them): for a budget.
+    static std::size_t countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings);
+    // The patch size whose mesh has at most `budget` clusters and is finest among such sizes.
+    static float patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
+                                    int planeRings);
 
     const std::vector<RadiosityPatch>& patches() const { return patches_; }
+    const std::vector<RadiosityCluster>& clusters() const { return clusters_; }
     std::size_t vertexCount() const { return vertexCount_; }
     float patchSize() const { return patchSize_; }
 
     // A point uniformly by area on patch `patch`, from u in [0,1)^2.
     PatchPoint samplePoint(std::uint32_t patch, Vec2 u) const;
+    // A point uniformly by area over the members of cluster `cluster` (u.x picks the member and is
+    // reused inside it, so a stratified pattern stays stratified).
+    PatchPoint sampleClusterPoint(std::uint32_t cluster, Vec2 u) const;
     // The patch under `hit`, or nullopt (an unbounded shape's hit outside its tessellated region).
     std::optional<PatchLookup> lookup(const SurfaceHit& hit) const;
 
@@ -81,15 +105,22 @@ private:
 
     struct VertexWelder;
     void addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object, const Vec3& a,
-                     const Vec3& b, const Vec3& c, VertexWelder& welder);
+                     const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder);
     void addGrid(std::uint32_t shapeIndex);
+    void buildClusters();
     // strict: nullopt for a point outside the source's triangle (when its primitive has several).
     std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict) const;
     PatchLookup lookupCell(const Source& source, const Vec3& point) const;
+    static Vec3 closestPoint(const Source& source, const Vec3& point);
 
     const SceneGeometry& geometry_;
     float patchSize_;
+    int planeRings_;
     std::vector<RadiosityPatch> patches_;
+    std::vector<bool> clusterable_;  // per patch: a whole triangle no larger than the patch size
+    std::vector<RadiosityCluster> clusters_;
+    std::vector<std::uint32_t> members_;   // patch ids, cluster by cluster
+    std::vector<float> memberCdf_;         // per member: its cluster's area up to and with it, over the cluster's
     std::vector<Source> sources_;
     // sources_[sourceStart_[id] .. sourceStart_[id + 1]) lie on scene-wide primitive id.
     std::vector<std::uint32_t> sourceStart_;

@@ -21,6 +21,10 @@ struct RadiosityOptions {
     // Jacobi stops once a bounce adds less than this fraction of the light so far (or at --max-depth).
     double tolerance = 1e-4;
     RadiosityDisplay display = RadiosityDisplay::Smooth;
+    // Coarser rings around an unbounded surface's rectangle over the scene (RadiosityMesh); 0 clips
+    // it to the rectangle, as before issue 27 (the light it bounces from beyond is lost: the tests'
+    // control). Not a command-line option.
+    int planeRings = 3;
 };
 
 }  // namespace lightpath
