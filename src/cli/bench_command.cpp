@@ -145,14 +145,15 @@ void runRays(const RaysOptions& options) {
     } catch (const SceneError& e) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
     }
-    std::printf("bench rays: million rays per second (build: million triangles per second), wall time,\n"
+    // The machine first: figures from two vendors must not be mistaken for one another (issue #27).
+    std::printf("machine: %s; our BVH traverses with %s\n"
+                "bench rays: million rays per second (build: million triangles per second), wall time,\n"
                 "median of %d interleaved runs; primary %dx%d pinhole, %d random rays, shadow rays from the\n"
                 "primary hits to the first light. Triangles only, the same rays for every accelerator.\n"
                 "Builds: ours on 1 thread and on %d (the same tree), Embree's on %d (its device creation not\n"
-                "counted).%s\nmachine: %s; our BVH traverses with %s\n\n",
-                r.repetitions, r.primarySide, r.primarySide, r.randomRays, r.allThreads, r.allThreads,
-                r.embree ? "" : " This build has no Embree (LIGHTPATH_EMBREE=OFF): no comparison.",
-                describeMachine().c_str(), r.simdPath.c_str());
+                "counted).%s\n\n",
+                describeMachine().c_str(), r.simdPath.c_str(), r.repetitions, r.primarySide, r.primarySide, r.randomRays, r.allThreads, r.allThreads,
+                r.embree ? "" : " This build has no Embree (LIGHTPATH_EMBREE=OFF): no comparison.");
     printRaysTable(r);
     std::printf("\n");
     for (const RenderThroughput& t : r.renders) {
