@@ -40,7 +40,8 @@ AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const Sce
         // area) cannot be either.
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
         area_ += area;
-        shapes_.push_back({primitive, area_});
+        const bool isTriangle = geometry.shapeOf(primitive) == nullptr;
+        shapes_.push_back({primitive, area_, isTriangle ? triangleNormal(geometry.triangleOf(primitive)) : Vec3(0.0f)});
         twoSidedCount += emitsTwoSided(geometry, primitive);
     }
     if (twoSidedCount != 0 && twoSidedCount != shapes_.size())
@@ -70,7 +71,7 @@ AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
     }
     const Triangle& t = geometry_.triangleOf(it->primitive);
     const Vec3 b = sampleUniformTriangle(u);
-    return {b.x * t.a + b.y * t.b + b.z * t.c, triangleNormal(t)};
+    return {b.x * t.a + b.y * t.b + b.z * t.c, it->triangleNormal};
 }
 
 LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # Runs a command and checks what a user would see:
-#   expect.sh EXIT_CODE OUTPUT_PATTERN [--absent FILE | --kept FILE | --lacks PATTERN]... -- COMMAND...
-# EXIT_CODE must match exactly, OUTPUT_PATTERN (grep -E) must occur in stdout+stderr and no
-# --lacks PATTERN may (a refusal made before rendering prints no render statistics), every
+#   expect.sh EXIT_CODE OUTPUT_PATTERN [--absent FILE | --kept FILE | --has PATTERN | --lacks PATTERN]... -- COMMAND...
+# EXIT_CODE must match exactly, OUTPUT_PATTERN and every --has PATTERN (grep -E) must occur in
+# stdout+stderr (one command run, several lines checked), no --lacks PATTERN may (a refusal made before rendering prints no render statistics), every
 # --absent FILE must not exist afterwards (no half-written output), and every --kept FILE, made
 # beforehand as "an older image", must be left byte for byte as it was.
 set -u
 expected_code=$1 pattern=$2
 shift 2
-absent=() kept=() lacks=()
+absent=() kept=() has=() lacks=()
 while [ "$1" != "--" ]; do
   [ "$1" = "--absent" ] && absent+=("$2") && shift 2 && continue
   [ "$1" = "--kept" ] && kept+=("$2") && shift 2 && continue
+  [ "$1" = "--has" ] && has+=("$2") && shift 2 && continue
   [ "$1" = "--lacks" ] && lacks+=("$2") && shift 2 && continue
   echo "expect.sh: unknown argument $1" >&2; exit 2
 done
@@ -25,6 +26,9 @@ status=0
 printf '%s\n' "$output"
 if [ "$code" != "$expected_code" ]; then echo "FAIL: exit code $code, expected $expected_code"; status=1; fi
 if ! grep -Eq -- "$pattern" <<<"$output"; then echo "FAIL: output lacks /$pattern/"; status=1; fi
+for p in "${has[@]}"; do
+  if ! grep -Eq -- "$p" <<<"$output"; then echo "FAIL: output lacks /$p/"; status=1; fi
+done
 for p in "${lacks[@]}"; do
   if grep -Eq -- "$p" <<<"$output"; then echo "FAIL: output has /$p/"; status=1; fi
 done
