@@ -44,11 +44,15 @@ class Run:
         self.spp_path = 4 if quick else 64       # path tracer and bdpt
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
         self.spp_caustic = 16 if quick else 256  # bdpt on the caustics slide: a converged focus
+        self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
         self.dirs = []                           # folders holding the figure's EXRs
         self.rendered = {}                       # argv -> EXR, so figures share renders
         self.seconds = defaultdict(float)        # wall seconds per tool ("lightpath render", ...)
         self.noise = {}                          # EXR -> its relative RMSE (measure_noise)
+        self.levels = {}                         # EXR -> (its level, why) (render's noise_level)
+        self.reference_seconds = 0.0             # wall seconds spent rendering noise references
+        self.references_made = self.references_cached = 0
 
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
@@ -89,11 +93,18 @@ def sh(run, argv, record=True, capture=False):
     return proc.stdout if capture else None
 
 
-def render(run, folder, name, scene, *options):
+def render(run, folder, name, scene, *options, noise_level=None, noise_why=""):
     """Render scene into out/folder/name.exr (seed 1, --quiet); return the EXR path.
 
     The same command is run once per generator run: a figure that needs a render another figure
-    made reuses its EXR and lists the same command in the gallery."""
+    made reuses its EXR and lists the same command in the gallery.
+
+    At the default quality a path, bdpt or radiosity render is held to NOISE_LEVEL
+    (measure_noise), or to noise_level when the recipe states another and says why (noise_why):
+    a level above NOISE_LEVEL for a panel whose lesson is its noise, or float("inf") for renders
+    that are measurements themselves (the run-time plot's budgets)."""
+    if noise_level is not None and not noise_why:
+        raise FigureError(f"render {folder}/{name}: a noise level of its own needs a reason")
     directory = run.out / folder
     directory.mkdir(parents=True, exist_ok=True)
     exr = directory / f"{name}.exr"
@@ -106,15 +117,18 @@ def render(run, folder, name, scene, *options):
         return exr
     sh(run, argv)
     run.rendered[key] = exr
-    if not run.quick:
+    run.levels[exr] = (NOISE_LEVEL if noise_level is None else noise_level, noise_why)
+    if not run.quick and run.levels[exr][0] != float("inf"):
         measure_noise(run, argv, exr)
     return exr
 
 
 # The quality level of the default figures: every path-traced, bdpt and radiosity render's
 # relative RMSE against a reference at NOISE_REFERENCE_FACTOR times its samples (another seed,
-# cached between runs in out/references/) is measured and printed; NOISE_LEVEL is the level the
-# slides aim at, and a render above it is named in the gallery and the run's summary.
+# cached between runs in out/references/) is measured and printed; NOISE_LEVEL is the level every
+# slide's render must meet unless its recipe states another (render's noise_level, with why). A
+# render above its level is flagged in the gallery and the run's summary, and the run fails
+# (noise_above; make_figures.py exits 1).
 NOISY_INTEGRATORS = ("path", "bdpt", "radiosity")
 NOISE_REFERENCE_FACTOR = 4
 NOISE_LEVEL = 0.1
@@ -144,11 +158,17 @@ def measure_noise(run, argv, exr):
     key = hashlib.sha256("\0".join([*ref_argv, Path(argv[2]).read_text()]).encode()).hexdigest()[:16]
     reference = run.out / "references" / f"{key}.exr"
     reference.parent.mkdir(parents=True, exist_ok=True)
-    if not reference.is_file():
+    if reference.is_file():
+        run.references_cached += 1
+    else:
+        t0 = time.monotonic()
         sh(run, ref_argv[:3] + ["-o", str(reference)] + ref_argv[3:], record=False)
+        run.reference_seconds += time.monotonic() - t0
+        run.references_made += 1
     noise = relative_rmse(exr, reference)
     run.noise[exr] = noise
-    verdict = "" if noise <= NOISE_LEVEL else f"  ABOVE the level {NOISE_LEVEL}"
+    level = run.levels[exr][0]
+    verdict = "" if noise <= level else f"  ABOVE its level {level}"
     print(f"  noise {run.rel(exr)}: relative RMSE {noise:.3f} against "
           f"{spp * NOISE_REFERENCE_FACTOR} spp{verdict}", flush=True)
 
@@ -172,3 +192,9 @@ def scene_variant(directory, template, name, **values):
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text)
     return path
+
+
+def noise_above(noise, levels):
+    """[(EXR, its relative RMSE, its level)] of every measured render above its level: the
+    renders that fail the default quality."""
+    return [(exr, n, levels[exr][0]) for exr, n in sorted(noise.items()) if not n <= levels[exr][0]]
