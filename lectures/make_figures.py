@@ -12,6 +12,7 @@ and a non-zero exit code.
 """
 
 import argparse
+import os
 import shutil
 import sys
 import time
@@ -84,10 +85,11 @@ class Figure:
     def make(self):
         self.dir.mkdir(parents=True, exist_ok=True)
         self.run.commands, self.run.dirs = [], []
-        t0 = time.monotonic()
+        t0, cpu0 = time.monotonic(), steps.children_cpu() + sum(os.times()[:2])
         self.notes = getattr(recipes, self.recipe)(self) or []
         self.notes.append(self.layout_note)
         self.seconds = time.monotonic() - t0
+        self.cpu = steps.children_cpu() + sum(os.times()[:2]) - cpu0
         if not self.png.is_file():
             raise FigureError(f"recipe {self.recipe} wrote no slide")
         self.commands = list(self.run.commands)
@@ -131,6 +133,7 @@ def main():
         sys.exit(f"make_figures: --only: no figure {', '.join(sorted(unknown))} in {FIGURES_TOML}")
     made = []
     start = time.monotonic()
+    cpu_start = steps.children_cpu() + sum(os.times()[:2])
     for number, entry in enumerate(entries, 1):
         if a.only and entry["id"] not in a.only:
             continue
@@ -140,7 +143,8 @@ def main():
         except FigureError as e:
             sys.exit(f"make_figures: figure {fig.id}: {e}")
         made.append(fig)
-        print(f"figure {number:2d} {fig.id:20s} {fig.seconds:6.1f} s  {fig.png}", flush=True)
+        print(f"figure {number:2d} {fig.id:20s} {fig.seconds:6.1f} s {fig.cpu:6.1f} CPU s  {fig.png}",
+              flush=True)
     pdf = run.out / PDF_NAME
     if a.only:
         pdf.unlink(missing_ok=True)  # a partial run: no PDF that would miss slides
@@ -153,9 +157,14 @@ def main():
                                  for e, n, level in above])
     print("time in tools: " + ", ".join(f"{tool} {s:.1f} s" for tool, s in
                                         sorted(run.seconds.items(), key=lambda kv: -kv[1])))
-    print(f"time in references: {run.reference_seconds:.1f} s ({run.references_made} made, "
-          f"{run.references_cached} cached in {run.out / 'references'})")
-    print("time per slide: " + ", ".join(f"{f.number} {f.seconds:.1f} s" for f in made))
+    print(f"time in references: {run.reference_seconds:.1f} s, {run.reference_cpu:.1f} CPU s "
+          f"({run.references_made} made, {run.references_cached} cached in "
+          f"{run.out / 'references'})")
+    print("time per slide: " + ", ".join(f"{f.number} {f.seconds:.1f} s ({f.cpu:.1f} CPU s)"
+                                         for f in made))
+    cpu = steps.children_cpu() + sum(os.times()[:2]) - cpu_start
+    print(f"CPU time {cpu:.1f} s, {cpu - run.reference_cpu:.1f} s of it outside references: "
+          f"{(cpu - run.reference_cpu) / 2:.0f} s on 2 idle cores with the references cached")
     if run.noise:
         print(f"noise: {len(run.noise)} path, bdpt and radiosity renders, relative RMSE "
               f"{min(run.noise.values()):.3f} to {max(run.noise.values()):.3f}; "

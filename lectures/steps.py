@@ -56,6 +56,8 @@ class Run:
         self.noise = {}                          # EXR -> its relative RMSE (measure_noise)
         self.levels = {}                         # EXR -> (its level, why) (render's noise_level)
         self.reference_seconds = 0.0             # wall seconds spent rendering noise references
+        self.reference_cpu = 0.0                 # and their CPU seconds
+        self.last_cpu = 0.0                      # CPU seconds of the last command sh ran
         self.references_made = self.references_cached = 0
 
     def res(self, w, h):
@@ -82,15 +84,24 @@ class Run:
         return " ".join(shell_word(self.rel(a) if a.startswith("/") else a) for a in argv)
 
 
+def children_cpu():
+    """CPU seconds (user + system) of every finished child process so far: a machine shared with
+    other work slows the wall clock, not this."""
+    import resource
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def sh(run, argv, record=True, capture=False):
     """Run one command; on failure raise FigureError with its output. Recorded for the gallery."""
     argv = [str(a) for a in argv]
     if record:
         run.commands.append(run.shown(argv))
-    t0 = time.monotonic()
+    t0, cpu0 = time.monotonic(), children_cpu()
     proc = subprocess.run(argv, capture_output=True, text=True)
     tool = Path(argv[0]).name + (" " + argv[1] if argv[0] == run.lightpath else "")
     run.seconds[tool] += time.monotonic() - t0
+    run.last_cpu = children_cpu() - cpu0
     if proc.returncode != 0:
         raise FigureError(f"command failed (exit {proc.returncode}): {shlex.join(argv)}\n"
                           f"{proc.stdout[-2000:]}{proc.stderr[-2000:]}")
@@ -177,6 +188,7 @@ def measure_noise(run, argv, exr):
         t0 = time.monotonic()
         sh(run, ref_argv[:3] + ["-o", str(reference)] + ref_argv[3:], record=False)
         run.reference_seconds += time.monotonic() - t0
+        run.reference_cpu += run.last_cpu
         run.references_made += 1
     noise = relative_rmse(exr, reference, noise_layer(options))
     run.noise[exr] = noise
