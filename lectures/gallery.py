@@ -51,7 +51,7 @@ ITEM = """
   <h2>{number}. {title}</h2>
   <a href="{png}"><img src="{png}" alt="{title}" width="960" height="540"></a>
   <p class="caption">{caption}</p>
-  <p class="scene">Scenes: {scenes}; {where}; made in {seconds:.1f} s.</p>
+  <p class="scene">Scenes: {scenes}; {where}; made in {seconds:.1f} s ({cpu:.1f} CPU s).</p>
   {alarms}{notes}
   <details><summary>Commands</summary><pre>{commands}</pre></details>
 </section>"""
@@ -70,7 +70,7 @@ def write_gallery(path, made, quick, pdf_name, alarm=()):
             caption=html.escape(fig.caption),
             scenes=", ".join(f"<code>{html.escape(s)}</code>" for s in fig.scenes) or "(none)",
             where=f"files in {links}" if links else "no files",
-            seconds=fig.seconds,
+            seconds=fig.seconds, cpu=fig.cpu,
             notes=f'<ul class="notes">{notes}</ul>' if notes else "",
             alarms="".join(f'<p class="alarm">{html.escape(a)}</p>' for a in fig.alarms),
             commands="\n".join(html.escape(c) for c in fig.commands)))
