@@ -13,6 +13,7 @@ body {{ font-family: "DejaVu Sans", sans-serif; max-width: 1000px; margin: 2em a
 img {{ max-width: 100%; height: auto; border: 1px solid #ccc; }}
 pre {{ background: #f4f4f4; padding: 0.6em; overflow-x: auto; font-size: 12px; }}
 .caption {{ font-size: 1.05em; }} .scene, .notes {{ color: #555; font-size: 0.9em; }}
+.alarm {{ color: #fff; background: #b00020; padding: 0.5em; font-weight: bold; }}
 </style>
 <script>
 // Errors the page sees (failed image loads, script errors, console.error) go into #status,
@@ -31,7 +32,7 @@ times). Each figure is a 1920x1080 PNG; the EXRs it came from are in its folder.
 the repository's root, as they are. All slides in
 order, for presenting: <a href="{pdf}"><code>{pdf}</code></a>.</p>
 <p id="status">checking images...</p>
-{items}
+{alarm}{items}
 <script>
 window.addEventListener("load", () => {{
   const imgs = Array.from(document.images);
@@ -50,15 +51,16 @@ ITEM = """
   <h2>{number}. {title}</h2>
   <a href="{png}"><img src="{png}" alt="{title}" width="960" height="540"></a>
   <p class="caption">{caption}</p>
-  <p class="scene">Scenes: {scenes}; {where}; made in {seconds:.1f} s.</p>
-  {notes}
+  <p class="scene">Scenes: {scenes}; {where}; made in {seconds:.1f} s ({cpu:.1f} CPU s).</p>
+  {alarms}{notes}
   <details><summary>Commands</summary><pre>{commands}</pre></details>
 </section>"""
 
 
-def write_gallery(path, made, quick, pdf_name):
+def write_gallery(path, made, quick, pdf_name, alarm=()):
     """Write index.html. made: one Figure per figure made, with .png, .commands, .notes,
-    .seconds and .dirs filled in by the generator."""
+    .alarms, .seconds and .dirs filled in by the generator. alarm: the renders above their noise
+    level, listed at the top of the page (the generator then exits non-zero)."""
     items = []
     for fig in made:
         links = ", ".join(f'<a href="{d}/"><code>{d}/</code></a>' for d in fig.dirs)
@@ -68,8 +70,12 @@ def write_gallery(path, made, quick, pdf_name):
             caption=html.escape(fig.caption),
             scenes=", ".join(f"<code>{html.escape(s)}</code>" for s in fig.scenes) or "(none)",
             where=f"files in {links}" if links else "no files",
-            seconds=fig.seconds,
+            seconds=fig.seconds, cpu=fig.cpu,
             notes=f'<ul class="notes">{notes}</ul>' if notes else "",
+            alarms="".join(f'<p class="alarm">{html.escape(a)}</p>' for a in fig.alarms),
             commands="\n".join(html.escape(c) for c in fig.commands)))
+    banner = ('<div class="alarm" id="noise-alarm">Above the noise level, these slides FAIL '
+              "the default quality:<ul>" + "".join(f"<li>{html.escape(a)}</li>" for a in alarm) +
+              "</ul></div>\n") if alarm else ""
     path.write_text(PAGE.format(mode="--quick" if quick else "default quality",
-                                pdf=pdf_name, items="".join(items)))
+                                pdf=pdf_name, alarm=banner, items="".join(items)))

@@ -12,6 +12,7 @@ and a non-zero exit code.
 """
 
 import argparse
+import os
 import shutil
 import sys
 import time
@@ -61,6 +62,7 @@ class Figure:
         self.png = run.out / f"{number:02d}-{self.id}.png"
         self.commands, self.notes, self.dirs, self.seconds = [], [], [], 0.0
         self.layout_note = ""
+        self.alarms = []  # renders above their noise level: flagged in the gallery, fail the run
 
     def scene(self, i):
         """The i-th scene of figures.toml, as a path."""
@@ -83,19 +85,27 @@ class Figure:
     def make(self):
         self.dir.mkdir(parents=True, exist_ok=True)
         self.run.commands, self.run.dirs = [], []
-        t0 = time.monotonic()
+        t0, cpu0 = time.monotonic(), steps.children_cpu() + sum(os.times()[:2])
         self.notes = getattr(recipes, self.recipe)(self) or []
         self.notes.append(self.layout_note)
         self.seconds = time.monotonic() - t0
+        self.cpu = steps.children_cpu() + sum(os.times()[:2]) - cpu0
         if not self.png.is_file():
             raise FigureError(f"recipe {self.recipe} wrote no slide")
         self.commands = list(self.run.commands)
         self.dirs = sorted(set(self.run.dirs))
         for exr, noise in sorted(self.run.noise.items()):
             if exr.parent.name in self.dirs:
+                level, why = self.run.levels[exr]
                 self.notes.append(f"noise: {exr.parent.name}/{exr.name} relative RMSE {noise:.3f} "
                                   f"against {steps.NOISE_REFERENCE_FACTOR}x its samples (level "
-                                  f"{steps.NOISE_LEVEL})")
+                                  f"{level}{': ' + why if why else ''})")
+                if not noise <= level:
+                    self.alarms.append(f"{exr.parent.name}/{exr.name}: relative RMSE {noise:.3f} "
+                                       f"is ABOVE its level {level}")
+        for exr, (level, why) in sorted(self.run.levels.items()):
+            if exr.parent.name in self.dirs and level == float("inf"):
+                self.notes.append(f"noise: {exr.parent.name}/{exr.name} not held to a level: {why}")
 
 
 def main():
@@ -123,6 +133,7 @@ def main():
         sys.exit(f"make_figures: --only: no figure {', '.join(sorted(unknown))} in {FIGURES_TOML}")
     made = []
     start = time.monotonic()
+    cpu_start = steps.children_cpu() + sum(os.times()[:2])
     for number, entry in enumerate(entries, 1):
         if a.only and entry["id"] not in a.only:
             continue
@@ -132,24 +143,39 @@ def main():
         except FigureError as e:
             sys.exit(f"make_figures: figure {fig.id}: {e}")
         made.append(fig)
-        print(f"figure {number:2d} {fig.id:20s} {fig.seconds:6.1f} s  {fig.png}", flush=True)
+        print(f"figure {number:2d} {fig.id:20s} {fig.seconds:6.1f} s {fig.cpu:6.1f} CPU s  {fig.png}",
+              flush=True)
     pdf = run.out / PDF_NAME
     if a.only:
         pdf.unlink(missing_ok=True)  # a partial run: no PDF that would miss slides
     else:
         slide.write_pdf([f.png for f in made], pdf)
         print(f"slides  {pdf}  ({len(made)} pages)")
-    gallery.write_gallery(run.out / "index.html", made, run.quick, PDF_NAME)
+    above = steps.noise_above(run.noise, run.levels)
+    gallery.write_gallery(run.out / "index.html", made, run.quick, PDF_NAME,
+                          alarm=[f"{run.rel(e)}: relative RMSE {n:.3f} above its level {level}"
+                                 for e, n, level in above])
     print("time in tools: " + ", ".join(f"{tool} {s:.1f} s" for tool, s in
                                         sorted(run.seconds.items(), key=lambda kv: -kv[1])))
+    print(f"time in references: {run.reference_seconds:.1f} s, {run.reference_cpu:.1f} CPU s "
+          f"({run.references_made} made, {run.references_cached} cached in "
+          f"{run.out / 'references'})")
+    print("time per slide: " + ", ".join(f"{f.number} {f.seconds:.1f} s ({f.cpu:.1f} CPU s)"
+                                         for f in made))
+    cpu = steps.children_cpu() + sum(os.times()[:2]) - cpu_start
+    print(f"CPU time {cpu:.1f} s, {cpu - run.reference_cpu:.1f} s of it outside references: "
+          f"{(cpu - run.reference_cpu) / 2:.0f} s on 2 idle cores with the references cached")
     if run.noise:
-        above = [run.rel(e) for e, n in sorted(run.noise.items()) if n > steps.NOISE_LEVEL]
         print(f"noise: {len(run.noise)} path, bdpt and radiosity renders, relative RMSE "
               f"{min(run.noise.values()):.3f} to {max(run.noise.values()):.3f}; "
-              + (f"above the level {steps.NOISE_LEVEL}: {', '.join(above)}" if above else
-                 f"all at or below the level {steps.NOISE_LEVEL}"))
-    print(f"gallery {run.out / 'index.html'}  ({time.monotonic() - start:.1f} s in all)")
+              + (f"ABOVE their level: " + ", ".join(f"{run.rel(e)} {n:.3f} > {level}"
+                                                     for e, n, level in above)
+                 if above else "each at or below its level"))
+    print(f"gallery {run.out / 'index.html'}")
     print(f"total time {time.monotonic() - start:.1f} s")
+    if above:
+        sys.exit(f"make_figures: FAILED: {len(above)} render(s) above their noise level "
+                 "(flagged in the gallery)")
 
 
 if __name__ == "__main__":

@@ -309,3 +309,51 @@ def automaton_with_states(png, automaton_png, rows, width_px, height_px):
                      fontsize=LPE_PT, va="top")
         fig.savefig(png, facecolor="white")
         plt.close(fig)
+
+
+REACH_PT = 26  # 36 px at 100 dpi: the slide's smallest text (slide.MIN_TEXT_PX)
+
+
+def reach_table(png, integrators, classes, cells, width_px, height_px, marked_class=None,
+                marked_integrators=()):
+    """`lightpath lpe reach` as a table: a row per integrator, a column per path class (rotated
+    headers), each cell split into point lights (left) and area lights (right), a tick on green
+    where the tool says yes, a cross on grey where it says no. cells[(integrator, class)] =
+    (point, area) as the tool printed them; marked_class's column and marked_integrators' rows
+    are framed in orange (the slide's AOV and the methods it renders)."""
+    from matplotlib.patches import Rectangle
+    with plt.rc_context(SLIDE_STYLE):
+        fig = plt.figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
+        ax = fig.add_axes((0, 0, 1, 1))
+        ax.set_xlim(0, width_px)
+        ax.set_ylim(height_px, 0)
+        ax.axis("off")
+        name_w, header_h = 190, 345
+        col_w = (width_px - name_w - 10) / len(classes)
+        row_h = (height_px - header_h - 10) / len(integrators)
+        for j, c in enumerate(classes):
+            x = name_w + (j + 0.5) * col_w
+            ax.text(x, header_h - 12, c, rotation=90, ha="center", va="bottom", fontsize=REACH_PT,
+                    color="#d95f02" if c == marked_class else "black")
+        for i, integ in enumerate(integrators):
+            y = header_h + i * row_h
+            ax.text(name_w - 12, y + row_h / 2, integ, ha="right", va="center", fontsize=REACH_PT,
+                    fontweight="bold" if integ in marked_integrators else "normal")
+            for j, c in enumerate(classes):
+                for k, yes in enumerate(cells[(integ, c)]):
+                    x = name_w + j * col_w + k * col_w / 2
+                    ax.add_patch(Rectangle((x + 2, y + 2), col_w / 2 - 4, row_h - 4,
+                                           color="#2ca02c" if yes else "#d9d9d9"))
+                    ax.text(x + col_w / 4, y + row_h / 2, "\u2713" if yes else "\u2717",
+                            ha="center", va="center", fontsize=REACH_PT,
+                            color="white" if yes else "#777777")
+        if marked_class in classes:
+            j = classes.index(marked_class)
+            ax.add_patch(Rectangle((name_w + j * col_w, 4), col_w, height_px - 8, fill=False,
+                                   edgecolor="#ff7f0e", linewidth=5))
+        for i, integ in enumerate(integrators):
+            if integ in marked_integrators:
+                ax.add_patch(Rectangle((4, header_h + i * row_h), width_px - 8, row_h, fill=False,
+                                       edgecolor="#ff7f0e", linewidth=3))
+        fig.savefig(png, facecolor="white")
+        plt.close(fig)

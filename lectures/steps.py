@@ -42,13 +42,23 @@ class Run:
         # shadows of the area light) for slides
         self.spp_direct = 1 if quick else 16
         self.spp_path = 4 if quick else 64       # path tracer and bdpt
+        # The taxonomy's path tracer (slides 2, 3, 11): the glass ball under the quad light makes
+        # caustic fireflies, 60% of its squared error in 1% of the pixels; at 64 spp its relative
+        # RMSE was 0.244, and error ~ 1/sqrt(spp) puts 512 at 0.086, under NOISE_LEVEL.
+        self.spp_path_taxonomy = 4 if quick else 512
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
         self.spp_caustic = 16 if quick else 256  # bdpt on the caustics slide: a converged focus
+        self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
         self.dirs = []                           # folders holding the figure's EXRs
         self.rendered = {}                       # argv -> EXR, so figures share renders
         self.seconds = defaultdict(float)        # wall seconds per tool ("lightpath render", ...)
         self.noise = {}                          # EXR -> its relative RMSE (measure_noise)
+        self.levels = {}                         # EXR -> (its level, why) (render's noise_level)
+        self.reference_seconds = 0.0             # wall seconds spent rendering noise references
+        self.reference_cpu = 0.0                 # and their CPU seconds
+        self.last_cpu = 0.0                      # CPU seconds of the last command sh ran
+        self.references_made = self.references_cached = 0
 
     def res(self, w, h):
         """A render resolution, halved in quick mode."""
@@ -74,26 +84,42 @@ class Run:
         return " ".join(shell_word(self.rel(a) if a.startswith("/") else a) for a in argv)
 
 
+def children_cpu():
+    """CPU seconds (user + system) of every finished child process so far: a machine shared with
+    other work slows the wall clock, not this."""
+    import resource
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
 def sh(run, argv, record=True, capture=False):
     """Run one command; on failure raise FigureError with its output. Recorded for the gallery."""
     argv = [str(a) for a in argv]
     if record:
         run.commands.append(run.shown(argv))
-    t0 = time.monotonic()
+    t0, cpu0 = time.monotonic(), children_cpu()
     proc = subprocess.run(argv, capture_output=True, text=True)
     tool = Path(argv[0]).name + (" " + argv[1] if argv[0] == run.lightpath else "")
     run.seconds[tool] += time.monotonic() - t0
+    run.last_cpu = children_cpu() - cpu0
     if proc.returncode != 0:
         raise FigureError(f"command failed (exit {proc.returncode}): {shlex.join(argv)}\n"
                           f"{proc.stdout[-2000:]}{proc.stderr[-2000:]}")
     return proc.stdout if capture else None
 
 
-def render(run, folder, name, scene, *options):
+def render(run, folder, name, scene, *options, noise_level=None, noise_why=""):
     """Render scene into out/folder/name.exr (seed 1, --quiet); return the EXR path.
 
     The same command is run once per generator run: a figure that needs a render another figure
-    made reuses its EXR and lists the same command in the gallery."""
+    made reuses its EXR and lists the same command in the gallery.
+
+    At the default quality a path, bdpt or radiosity render is held to NOISE_LEVEL
+    (measure_noise), or to noise_level when the recipe states another and says why (noise_why):
+    a level above NOISE_LEVEL for a panel whose lesson is its noise, or float("inf") for renders
+    that are measurements themselves (the run-time plot's budgets)."""
+    if noise_level is not None and not noise_why:
+        raise FigureError(f"render {folder}/{name}: a noise level of its own needs a reason")
     directory = run.out / folder
     directory.mkdir(parents=True, exist_ok=True)
     exr = directory / f"{name}.exr"
@@ -106,28 +132,40 @@ def render(run, folder, name, scene, *options):
         return exr
     sh(run, argv)
     run.rendered[key] = exr
-    if not run.quick:
+    run.levels[exr] = (NOISE_LEVEL if noise_level is None else noise_level, noise_why)
+    if not run.quick and run.levels[exr][0] != float("inf"):
         measure_noise(run, argv, exr)
     return exr
 
 
 # The quality level of the default figures: every path-traced, bdpt and radiosity render's
 # relative RMSE against a reference at NOISE_REFERENCE_FACTOR times its samples (another seed,
-# cached between runs in out/references/) is measured and printed; NOISE_LEVEL is the level the
-# slides aim at, and a render above it is named in the gallery and the run's summary.
+# cached between runs in out/references/) is measured and printed; NOISE_LEVEL is the level every
+# slide's render must meet unless its recipe states another (render's noise_level, with why). A
+# render above its level is flagged in the gallery and the run's summary, and the run fails
+# (noise_above; make_figures.py exits 1).
 NOISY_INTEGRATORS = ("path", "bdpt", "radiosity")
 NOISE_REFERENCE_FACTOR = 4
 NOISE_LEVEL = 0.1
 
 
-def relative_rmse(exr, reference):
-    """sqrt(mean((image - reference)^2)) / mean(reference), over the beauty's pixels and channels.
-    Against an independent reference with k times the samples the noise of both counts: this
-    overstates the image's own error by sqrt(1 + 1/k)."""
+def relative_rmse(exr, reference, name=""):
+    """sqrt(mean((image - reference)^2)) / mean(reference), over the pixels and channels of the
+    beauty (or of the layer name: a render without a beauty, --no-beauty, is measured on the
+    AOV its panel shows). Against an independent reference with k times the samples the noise
+    of both counts: this overstates the image's own error by sqrt(1 + 1/k)."""
     import numpy as np
     from checks import layer
-    a, b = layer(exr, ""), layer(reference, "")
+    a, b = layer(exr, name), layer(reference, name)
     return float(np.sqrt(((a - b) ** 2).mean()) / max(float(b.mean()), 1e-9))
+
+
+def noise_layer(options):
+    """The layer a render's noise is measured on: the beauty, or for a --no-beauty render its
+    first --lpe's AOV (the one its panel shows)."""
+    if "--no-beauty" not in options:
+        return ""
+    return options[options.index("--lpe") + 1].split("=", 1)[0]
 
 
 def measure_noise(run, argv, exr):
@@ -144,11 +182,18 @@ def measure_noise(run, argv, exr):
     key = hashlib.sha256("\0".join([*ref_argv, Path(argv[2]).read_text()]).encode()).hexdigest()[:16]
     reference = run.out / "references" / f"{key}.exr"
     reference.parent.mkdir(parents=True, exist_ok=True)
-    if not reference.is_file():
+    if reference.is_file():
+        run.references_cached += 1
+    else:
+        t0 = time.monotonic()
         sh(run, ref_argv[:3] + ["-o", str(reference)] + ref_argv[3:], record=False)
-    noise = relative_rmse(exr, reference)
+        run.reference_seconds += time.monotonic() - t0
+        run.reference_cpu += run.last_cpu
+        run.references_made += 1
+    noise = relative_rmse(exr, reference, noise_layer(options))
     run.noise[exr] = noise
-    verdict = "" if noise <= NOISE_LEVEL else f"  ABOVE the level {NOISE_LEVEL}"
+    level = run.levels[exr][0]
+    verdict = "" if noise <= level else f"  ABOVE its level {level}"
     print(f"  noise {run.rel(exr)}: relative RMSE {noise:.3f} against "
           f"{spp * NOISE_REFERENCE_FACTOR} spp{verdict}", flush=True)
 
@@ -172,3 +217,9 @@ def scene_variant(directory, template, name, **values):
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(text)
     return path
+
+
+def noise_above(noise, levels):
+    """[(EXR, its relative RMSE, its level)] of every measured render above its level: the
+    renders that fail the default quality."""
+    return [(exr, n, levels[exr][0]) for exr, n in sorted(noise.items()) if not n <= levels[exr][0]]

@@ -18,6 +18,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import checks  # noqa: E402  (the modules beside this script)
 import slide  # noqa: E402
+import steps  # noqa: E402
 from slide import (BELOW_H, CONTENT_H, CONTENT_W, GAP, LABEL_H, Cell, Panel,  # noqa: E402
                    compose, empty_fraction)
 from steps import FigureError  # noqa: E402
@@ -101,6 +102,37 @@ class Compose(unittest.TestCase):
         compose(self.dir / "dark.png", "Dark", panels + [Panel(dark, "dark", dark="why")], cols=3)
         black = exr(self.dir, "black", w, 360, 0.0)  # exactly black: a zero the slide shows
         compose(self.dir / "black.png", "Black", panels + [Panel(black, "zero")], cols=3)
+
+
+class NoiseLevel(unittest.TestCase):
+    """The default figures' quality gate (steps.py): the verdict that fails the run."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = Path(self.tmp.name)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_relative_rmse_against_a_hand_computed_value(self):
+        # half the pixels 1.3, half 0.7, against 1.0: RMSE 0.3 of a mean 1.0
+        img = np.full((4, 8, 3), 1.3)
+        img[:, 4:] = 0.7
+        a = checks.write_exr(img, self.dir / "a.exr")
+        ref = exr(self.dir, "ref", 8, 4, 1.0)
+        self.assertAlmostEqual(steps.relative_rmse(a, ref), 0.3, places=5)
+
+    def test_a_render_above_its_level_fails_and_a_stated_level_holds(self):
+        a, b, c, d = (Path(f"/x/{n}.exr") for n in "abcd")
+        noise = {a: 0.05, b: 0.244, c: 0.3, d: float("nan")}
+        levels = {a: (steps.NOISE_LEVEL, ""), b: (steps.NOISE_LEVEL, ""), c: (0.4, "why"),
+                  d: (steps.NOISE_LEVEL, "")}
+        self.assertEqual([e for e, _, _ in steps.noise_above(noise, levels)], [b, d])
+
+    def test_a_level_of_its_own_needs_a_reason(self):
+        run = steps.Run(sys.executable, self.dir, quick=False)
+        with self.assertRaisesRegex(FigureError, r"needs a reason"):
+            steps.render(run, "f", "n", self.dir / "s.toml", noise_level=0.5)
 
 
 if __name__ == "__main__":
