@@ -1,50 +1,40 @@
 #pragma once
-// The per-visible-point statistics of stochastic progressive photon mapping (Hachisuka and Jensen
-// 2009, "Stochastic Progressive Photon Mapping", sec. 4; the update pbrt-v3's SPPMIntegrator
-// makes): per point a photon count N, a radius R and an unnormalised flux tau, here one tau per
-// image layer (the beauty and each requested output), since each photon's contribution is
-// classified when it is found. After a pass that found M photons within R carrying flux Phi,
-//     N' = N + alpha M,   R' = R sqrt(N' / (N + M)),   tau' = (tau + Phi) R'^2 / R^2,
-// and the radiance after `passes` passes is tau / (passes pi R^2), the photons' power being already
-// divided by the paths shot per pass (photon_map.h).
-// Memory is O(points x layers) and independent of the passes: a pass's flux is folded in and
-// dropped. The integrator that traces the visible points and shoots the passes is not built on
-// this yet (sppm.h still keeps a photon map per pass).
+// The per-pixel statistics of stochastic progressive photon mapping (Hachisuka and Jensen 2009,
+// "Stochastic Progressive Photon Mapping", sec. 4; the update pbrt-v3's SPPMIntegrator makes): a
+// photon count N and a radius R per pixel, whose visible points are traced anew in every pass.
+// After a pass that found M photons within R,
+//     N' = N + alpha M,   R' = R sqrt(N' / (N + M)),
+// and Hachisuka and Jensen's flux tau' = (tau + Phi) R'^2 / R^2 makes the radiance after n passes
+//     tau_n / (n pi R_n^2) = (1/n) sum_i Phi_i / (pi R_i^2),
+// since the factors R'^2 / R^2 telescope: the mean of each pass's density estimate at that pass's
+// radius. So no flux is kept here: each photon's contribution is classified and added to the
+// pixel's image layers when it is found, as photon mapping's are, and memory is O(pixels),
+// independent of the passes.
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <vector>
-
-#include "math/types.h"
 
 namespace lightpath {
 
 class SppmStatistics {
 public:
-    SppmStatistics(std::size_t points, std::size_t layers, float initialRadius);
+    SppmStatistics(std::size_t points, float initialRadius);
 
     std::size_t points() const { return photonCount_.size(); }
-    std::size_t layers() const { return layers_; }
     float radius(std::size_t point) const { return radius_[point]; }
     double photonCount(std::size_t point) const { return photonCount_[point]; }
-    std::span<const Rgb> tau(std::size_t point) const { return {tau_.data() + point * layers_, layers_}; }
 
-    // Folds one pass into `point`: `found` photons within radius(point), whose classified flux per
-    // layer is `flux` (layers() values). A pass that found none changes nothing (N + M = 0 would
-    // divide by zero, and Phi is 0).
-    void update(std::size_t point, std::uint64_t found, std::span<const Rgb> flux, double alpha);
-
-    // The radiance of `layer` at `point` after `passes` passes.
-    Rgb radiance(std::size_t point, std::size_t layer, int passes) const;
+    // Folds one pass that found `found` photons within radius(point) into `point` (a mean over the
+    // pass's camera rays when it took several). A pass that found none changes nothing (N + M = 0
+    // would divide by zero).
+    void update(std::size_t point, double found, double alpha);
 
     // What the statistics keep: the same after any number of passes.
     std::size_t bytes() const;
 
 private:
-    std::size_t layers_;
     std::vector<double> photonCount_;  // N: fractional after the first pass (alpha M)
     std::vector<float> radius_;
-    std::vector<Rgb> tau_;  // points x layers, point-major
 };
 
 }  // namespace lightpath
