@@ -96,8 +96,8 @@ void printRadiosityStats(const RadiosityStats& r) {
 
 void printPhotonStats(const PhotonStats& p) {
     if (p.passes > 1) {
-        std::printf("photons       %llu shot in %d passes, %llu stored (%llu caustic, %llu global), radius %.4g to %.4g, "
-                    "%.1f MiB, shot in %.3f s\n",
+        std::printf("photons       %llu shot in %d passes, %llu stored (%llu caustic, %llu global), radius %.4g, "
+                    "after the last pass %.4g (pixels' mean), %.1f MiB, shot in %.3f s\n",
                     static_cast<unsigned long long>(p.shot), p.passes,
                     static_cast<unsigned long long>(p.causticStored + p.globalStored),
                     static_cast<unsigned long long>(p.causticStored), static_cast<unsigned long long>(p.globalStored),

@@ -24,6 +24,7 @@
 namespace lightpath {
 
 struct StepCounter;  // util/progress.h
+class ProgressiveRender;
 
 struct RenderContext {
     const Scene& scene;
@@ -86,6 +87,28 @@ public:
     // The bytes preprocess keeps in proportion to the image (the rasteriser's z-buffer), so a
     // render that cannot get them is refused before preprocess allocates them.
     virtual std::size_t preprocessBytes(int /*width*/, int /*height*/) const { return 0; }
+    // True when a render goes pass by pass over the whole image instead of pixel by pixel
+    // (progressive photon mapping: a pass's photons serve every pixel, then make way for the next
+    // pass's); startProgressive then starts one (`samplesPerPixel` is the render's --spp), a
+    // render or an explanation each its own.
+    virtual bool progressive() const { return false; }
+    virtual std::unique_ptr<ProgressiveRender> startProgressive(const RenderContext&, int /*samplesPerPixel*/) const {
+        return nullptr;
+    }
+};
+
+// The state of one progressive render: the renderer calls beginPass(k) for k = 0 .. passes() - 1,
+// and between two calls every pixel's samples of pass k (samplesPerPass() of them), on any worker;
+// traceCameraRay may keep state of pixel (x, y) alone, so the image is the same on any number of
+// threads.
+class ProgressiveRender {
+public:
+    virtual ~ProgressiveRender() = default;
+    virtual int passes() const = 0;
+    virtual int samplesPerPass() const = 0;
+    virtual void beginPass(int pass) = 0;
+    // Traces one camera ray of pixel (x, y) in the current pass. The camera event is already on `path`.
+    virtual void traceCameraRay(const Ray& ray, PathState& path, int x, int y) = 0;
 };
 
 // A name of the registry (registry.h); nullptr for an unknown name.

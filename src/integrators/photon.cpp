@@ -29,6 +29,12 @@ bool pushPhotonEvents(PathState& path, std::span<const PathEvent> history, int b
     return true;
 }
 
+// Whether `photon`, `distance2` from `point`, lies on the point's side of a surface facing as
+// its own (within `radius`): the merge's geometric test.
+bool mergeable(const Photon& photon, const ShadingPoint& point, float distance2, float radius) {
+    return distance2 < radius * radius && std::fabs(glm::dot(photon.normal, point.normal)) >= kNormalAgreement;
+}
+
 struct PhotonUse {
     const lpe::SuffixReader* reader;
     const EventSymbols* symbols;
@@ -62,7 +68,7 @@ float defaultPhotonRadius(const Scene& scene) {
 }
 
 void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeBounces, const PhotonMap& map,
-                      float radius, PathState& path) {
+                      float radius, PathState& path, int pass) {
     const RenderContext& ctx = path.context;
     const float kernel = 1.0f / (kPi * radius * radius);
     const std::span<const PathEvent> events = map.events();
@@ -72,9 +78,8 @@ void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeB
         if (!path.push(point.eventOf(lobe))) continue;
         const std::size_t withMerge = path.size();
         map.forEachWithin(point.hit.point, [&](const Photon& photon, std::uint32_t index, float distance2) {
-            if (distance2 >= radius * radius) return;
+            if (!mergeable(photon, point, distance2, radius)) return;
             if (eyeBounces + 1 + photon.bounces > ctx.maxDepth) return;
-            if (std::fabs(glm::dot(photon.normal, point.normal)) < kNormalAgreement) return;
             const float cosine = std::fabs(glm::dot(point.normal, photon.wi));
             if (!(cosine > 0.0f)) return;
             // eval is f |cos theta_i|; the photon's flux already holds the cosine of its arrival.
@@ -90,8 +95,9 @@ void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeB
                                                   {"photon power", photon.power},
                                                   {"kernel 1/(pi r^2)", Rgb(kernel)},
                                                   {"photon", Rgb(float(index)), false},
-                                                  {"distance", Rgb(std::sqrt(distance2)), false}};
-                    path.emit(light, value, factors);
+                                                  {"distance", Rgb(std::sqrt(distance2)), false},
+                                                  {"pass", Rgb(float(pass)), false}};
+                    path.emit(light, value, std::span(factors).first(pass >= 0 ? 7 : 6));
                 } else {
                     path.emit(light, value);
                 }
@@ -100,6 +106,14 @@ void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeB
         });
         while (path.size() > before) path.pop();
     }
+}
+
+std::uint64_t countPhotonsWithin(const ShadingPoint& point, const PhotonMap& map, float radius) {
+    std::uint64_t found = 0;
+    map.forEachWithin(point.hit.point, [&](const Photon& photon, std::uint32_t, float distance2) {
+        found += mergeable(photon, point, distance2, radius) ? 1 : 0;
+    });
+    return found;
 }
 
 std::optional<lpe::SuffixReader> requestedPhotonReader(const RenderContext& context) {

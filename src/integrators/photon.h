@@ -24,8 +24,8 @@ struct PhotonStats {
     std::uint64_t shot = 0, causticStored = 0, globalStored = 0;
     std::size_t bytes = 0;
     float radius = 0.0f, causticRadius = 0.0f;
-    // Progressive photon mapping's passes, each a map of `shot / passes` photons whose radius
-    // shrinks from `radius` to `lastRadius` (sppm.h); 1 for Jensen's.
+    // Progressive photon mapping's passes, each a map of `shot / passes` photons, and the pixels'
+    // mean radius after the last (sppm.h; `radius` is the first); 1 for Jensen's.
     int passes = 1;
     float lastRadius = 0.0f;
     double seconds = 0.0;
@@ -79,8 +79,14 @@ void traceEyeToPhotons(const Ray& cameraRay, PathState& path, const Gather& gath
 // The photons of `map` around `point`, reached with `throughput` after `eyeBounces` scattering
 // events, one contribution per photon and smooth lobe: throughput f(wo, wi_p) Phi_p / (pi r^2)
 // (Jensen 2001, eq. 7.6, with the constant kernel), classified with the photon's own events.
+// `explain` names the progressive pass when `pass` >= 0.
 void addPhotonDensity(const ShadingPoint& point, const Rgb& throughput, int eyeBounces, const PhotonMap& map,
-                      float radius, PathState& path);
+                      float radius, PathState& path, int pass = -1);
+
+// The photons of `map` that addPhotonDensity may merge at `point` by their place alone (within
+// `radius`, on a surface facing as the point's), whatever the outputs and the path's length:
+// progressive photon mapping's count M.
+std::uint64_t countPhotonsWithin(const ShadingPoint& point, const PhotonMap& map, float radius);
 
 // Photon paths shot when no --photons is given (the schema's default says the same), and the most
 // one render may shoot: about 100 bytes each are kept.

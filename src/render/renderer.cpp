@@ -84,6 +84,9 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     if (integrator_->splats() && options.targetError > 0.0)
         throw std::invalid_argument("adaptive sampling (--target-error) cannot be combined with the " + options.integrator +
                                     " integrator, whose light tracing adds to every pixel");
+    if (integrator_->progressive() && options.targetError > 0.0)
+        throw std::invalid_argument("adaptive sampling (--target-error) cannot be combined with the " + options.integrator +
+                                    " integrator, which renders every pixel pass by pass");
     if (const std::size_t bytes = integrator_->preprocessBytes(camera_.width(), camera_.height()); bytes > 0)
         refuseBeyondMemory(bytes, "the " + options.integrator + " integrator's preprocess for " +
                                       pixelMemory(scene, aovs, options).describe());
@@ -150,30 +153,36 @@ constexpr int kAdaptiveMinimum = 8;
 
 }  // namespace
 
+void Renderer::traceSample(int x, int y, std::uint64_t seed, int sample, int spp, PathState& path,
+                           ProgressiveRender* progressive) const {
+    Sampler sampler = Sampler::forPixel(options_.sampler, x, y, sample, spp, seed);
+    path.sampler = &sampler;
+    path.sampleIndex = sample;
+    // One sample goes through the pixel centre, as in the lecture; more are spread around it
+    // as the pixel filter weighs them. Under light tracing even one is spread: its splats
+    // estimate the filter's mean over the pixel, and so must the eye's strategies.
+    Vec2 offset{0.5f};
+    if (spp > 1 || integrator_->splats()) offset += filter_.sample(sampler.next2D());
+    else sampler.skip2D();
+    if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
+        ++path.counters.cameraDead;
+        return;
+    }
+    const Ray ray = camera_.generateRay(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
+    ++path.counters.camera;
+    if (progressive != nullptr) progressive->traceCameraRay(ray, path, x, y);
+    else integrator_->traceCameraRay(ray, path);
+    path.pop();
+}
+
 int Renderer::renderPixel(int x, int y, std::uint64_t seed, int spp, std::span<Rgb> layers, PathState& path) const {
     const bool adaptive = options_.targetError > 0.0;
     double sum = 0.0, sumOfSquares = 0.0;
     int taken = 0;
     while (taken < spp) {
         const Rgb beautyBefore = layers[0];
-        Sampler sampler = Sampler::forPixel(options_.sampler, x, y, taken, spp, seed);
-        path.sampler = &sampler;
-        path.sampleIndex = taken;
-        // One sample goes through the pixel centre, as in the lecture; more are spread around it
-        // as the pixel filter weighs them. Under light tracing even one is spread: its splats
-        // estimate the filter's mean over the pixel, and so must the eye's strategies.
-        Vec2 offset{0.5f};
-        if (spp > 1 || integrator_->splats()) offset += filter_.sample(sampler.next2D());
-        else sampler.skip2D();
+        traceSample(x, y, seed, taken, spp, path);
         ++taken;
-        if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
-            ++path.counters.cameraDead;
-            continue;
-        }
-        const Ray ray = camera_.generateRay(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
-        ++path.counters.camera;
-        integrator_->traceCameraRay(ray, path);
-        path.pop();
         if (!adaptive) continue;
         const double value = luminance(layers[0] - beautyBefore);
         sum += value;
@@ -224,33 +233,43 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
         const PixelMemory memory = pixelMemory(scene_, aovs_, options_);
         refuseBeyondMemory(memory.film + memory.splats, memory.describe());
     }
+    // A progressive integrator renders every pixel's sample k in its pass k, adding to the film;
+    // the others render each pixel's samples at once, in one pass.
+    const std::unique_ptr<ProgressiveRender> progressive = integrator_->startProgressive(context_, samplesPerPixel);
+    const int passes = progressive ? progressive->passes() : 1;
+    const int perPass = progressive ? progressive->samplesPerPass() : samplesPerPixel;
     // Unset: each worker writes the pixels of its tiles, so the film's pages (174 MB at 1080p with
     // the classes AOVs) are first touched by the workers in parallel, not zeroed by this thread
-    // before they start (which made the AOVs cost 36-64% on two threads and 1.4% on one).
-    Film film(width, height, layerNames(), Film::Unset{});
+    // before they start (which made the AOVs cost 36-64% on two threads and 1.4% on one). Passes
+    // add to it, so it starts at zero then.
+    Film film = progressive ? Film(width, height, layerNames()) : Film(width, height, layerNames(), Film::Unset{});
     const int tilesX = (width + kTileSize - 1) / kTileSize;
     const int tilesY = (height + kTileSize - 1) / kTileSize;
     const int tileCount = tilesX * tilesY;
     int threadCount = static_cast<int>(threadsOrAll(options_.threads));
     threadCount = std::clamp(threadCount, 1, std::max(1, tileCount));
 
-    ProgressBar progress(tileCount, options_.progress);
+    ProgressBar progress(tileCount * passes, options_.progress);
     CacheLinePadded<std::atomic<int>> nextTile;  // bumped per tile, away from the locals the workers read
     std::vector<RayCounters> counters(static_cast<std::size_t>(threadCount));
     std::vector<CacheLinePadded<double>> workerCpu(static_cast<std::size_t>(threadCount));
     std::optional<SplatFilm> splats;
     if (integrator_->splats()) splats.emplace(width, height, aovs_.layerCount());
     const auto clearTileFrom = [&](int tile, int x, int y) {  // the pixels of `tile` from (x, y) on
+        if (progressive) return;  // the film holds the passes before: it was set to zero
         const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
         for (; y < std::min(y0 + kTileSize, height); ++y, x = x0)
             for (; x < std::min(x0 + kTileSize, width); ++x) std::ranges::fill(film.pixel(x, y), Rgb{0.0f});
     };
     const double serialBeforeCpu = threadCpuSeconds() - startedCpu;
+    double passesCpu = 0.0;  // beginPass's, on the calling thread (a pass's photons)
+    int pass = 0;
     // A worker's exception stops the others and is rethrown here once all have joined: thrown out
     // of a std::jthread it would call std::terminate (and take `serve` down).
     WorkerErrors errors;
     auto work = [&](unsigned worker) {
         const double workerStarted = threadCpuSeconds();
+        double& cpu = workerCpu[static_cast<std::size_t>(worker)].value;
         // A cache line of padding on each side of the worker's accumulators: the heap may have put
         // another worker's data next to them.
         constexpr std::size_t kPad = (kCacheLine + sizeof(Rgb) - 1) / sizeof(Rgb);
@@ -271,25 +290,47 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
                     // the rest of the tile is cleared.
                     if (cancelled() || errors.failed()) {
                         clearTileFrom(tile, x, y);
-                        workerCpu[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - workerStarted;
+                        cpu += threadCpuSeconds() - workerStarted;
                         return;
                     }
                     std::fill(layers.begin(), layers.end(), Rgb{0.0f});
-                    renderPixel(x, y, seed, samplesPerPixel, layers, path);
-                    std::ranges::copy(written, film.pixel(x, y).begin());
+                    if (progressive) {
+                        for (int k = 0; k < perPass; ++k)
+                            traceSample(x, y, seed, pass * perPass + k, passes * perPass, path, progressive.get());
+                        const std::span<Rgb> pixel = film.pixel(x, y);
+                        for (std::size_t l = 0; l < written.size(); ++l) pixel[l] += written[l];
+                    } else {
+                        renderPixel(x, y, seed, samplesPerPixel, layers, path);
+                        std::ranges::copy(written, film.pixel(x, y).begin());
+                    }
                 }
             }
             progress.tileDone();
         }
-        workerCpu[static_cast<std::size_t>(worker)].value = threadCpuSeconds() - workerStarted;
+        cpu += threadCpuSeconds() - workerStarted;
     };
-    runWorkers(static_cast<unsigned>(threadCount), errors, work, [&] {
-        if (options_.onWorkersStarted) options_.onWorkersStarted();
-    });
+    for (; pass < passes && !cancelled(); ++pass) {
+        if (progressive) {
+            const double before = threadCpuSeconds();
+            progressive->beginPass(pass);
+            passesCpu += threadCpuSeconds() - before;
+            nextTile.value = 0;
+        }
+        runWorkers(static_cast<unsigned>(threadCount), errors, work, [&] {
+            if (pass == 0 && options_.onWorkersStarted) options_.onWorkersStarted();
+        });
+    }
     const double afterWorkersCpu = threadCpuSeconds();
     // Tiles no worker took (a cancelled render) are still unset.
     for (int tile = nextTile.value.load(); tile < tileCount; ++tile) clearTileFrom(tile, (tile % tilesX) * kTileSize, (tile / tilesX) * kTileSize);
     if (splats) addSplats(*splats, samplesPerPixel, film);
+    if (progressive && pass * perPass > 1) {
+        // The mean of the passes' samples (of those begun, when cancelled).
+        const float weight = 1.0f / static_cast<float>(pass * perPass);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                for (Rgb& value : film.pixel(x, y)) value *= weight;
+    }
 
     RenderStats stats;
     for (const RayCounters& c : counters) stats.rays += c;
@@ -299,9 +340,9 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
     stats.accelerator = geometry_->acceleratorStats();
     if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
     if (const auto* photon = dynamic_cast<const PhotonIntegrator*>(integrator_.get())) stats.photon = photon->stats();
-    if (const auto* sppm = dynamic_cast<const SppmIntegrator*>(integrator_.get())) stats.photon = sppm->stats();
+    if (const auto* sppm = dynamic_cast<const SppmRender*>(progressive.get())) stats.photon = sppm->stats();
     for (const auto& cpu : workerCpu) stats.workerCpuSeconds.push_back(cpu.value);
-    stats.serialCpuSeconds = serialBeforeCpu + (threadCpuSeconds() - afterWorkersCpu);
+    stats.serialCpuSeconds = serialBeforeCpu + passesCpu + (threadCpuSeconds() - afterWorkersCpu);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return {std::move(film), stats, cancelled()};
 }
@@ -321,6 +362,19 @@ std::vector<LoggedContribution> Renderer::explainPixel(int x, int y, std::vector
     RayCounters counters;
     PathState path(context_, sink, counters);
     sink.logSplatsAt(x, y);
+    if (const std::unique_ptr<ProgressiveRender> progressive = integrator_->startProgressive(context_, spp)) {
+        // The pixel's passes, each after its pass's preparation (photon mapping's photons): the
+        // pixel's own state evolves as in the render, so the logged terms sum to its value there.
+        const int passes = progressive->passes(), perPass = progressive->samplesPerPass();
+        for (int pass = 0; pass < passes; ++pass) {
+            if (cancelled()) throw ExplainCancelled();
+            progressive->beginPass(pass);
+            for (int k = 0; k < perPass; ++k)
+                traceSample(x, y, options_.seed, pass * perPass + k, passes * perPass, path, progressive.get());
+        }
+        for (LoggedContribution& c : log) c.value *= 1.0f / static_cast<float>(passes * perPass);
+        return log;
+    }
     renderPixel(x, y, options_.seed, spp, layers, path);
     if (integrator_->splats()) {
         // Light tracing lands on this pixel from any pixel's sample: trace every pixel's paths

@@ -165,6 +165,10 @@ public:
 private:
     // Samples one pixel into `layers` (their mean); returns the number of samples taken.
     int renderPixel(int x, int y, std::uint64_t seed, int samplesPerPixel, std::span<Rgb> layers, PathState& path) const;
+    // Traces sample `sample` of `samplesPerPixel` of pixel (x, y), adding to the path's sink; through
+    // `progressive` when the render goes pass by pass.
+    void traceSample(int x, int y, std::uint64_t seed, int sample, int samplesPerPixel, PathState& path,
+                     ProgressiveRender* progressive = nullptr) const;
     void checkSamplesPerPixel(int samplesPerPixel) const;
     bool cancelled() const;  // RenderOptions::cancel is set
     // Light tracing's contributions, added to the film once every tile is done.
