@@ -92,6 +92,7 @@ void printRadiosityStats(const RadiosityStats& r) {
                 static_cast<unsigned long long>(r.shadowRays));
     std::printf("              %d iterations (%d light-bounces over %d lights solved), residual %.3g, solved in %.3f s\n",
                 r.iterations, r.lightBouncesSolved, r.lightsSolved, r.residual, r.seconds);
+    if (!r.unresolved.empty()) std::printf("              not resolved: %s\n", r.unresolved.c_str());
 }
 
 void printPhotonStats(const PhotonStats& p) {
@@ -202,6 +203,8 @@ void run(const RenderCommand& command) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }
     config.warnEmptyAovs(result.film, aovs, judge);
+    if (result.stats.radiosity && !result.stats.radiosity->unresolved.empty())
+        Warnings(config.quiet)(result.stats.radiosity->unresolved);
     if (command.stats) {
         printStats(result.stats, write);
         printAcceleratorStats(config.accel, result.stats.accelerator);

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "integrators/integrator.h"
@@ -36,6 +37,9 @@ struct RadiosityStats {
     int lightBouncesSolved = 0;        // (light, bounce) solutions computed, summed over lights
     double residual = 0.0;             // the last iteration's flux over the solution's
     double seconds = 0.0;              // meshing, form factors, direct light and the solve
+    // What the element budget kept the solve from resolving, as one sentence (empty: nothing):
+    // printed as a warning and in --stats.
+    std::string unresolved;
 };
 
 // `base` with the parameters of radiosity's schema (its registry row: --patch-size, --patches,
@@ -77,6 +81,7 @@ private:
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void computeVertexValues();
+    void gatherVertexDirectLight(const RenderContext& context);
 
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied

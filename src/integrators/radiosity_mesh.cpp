@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -16,9 +17,16 @@ namespace {
 // otherwise overflow the counts (the integrator's patch limit refuses such meshes anyway).
 constexpr double kMaxSubdivisions = 1 << 15;
 
-std::uint32_t triangleSubdivisions(const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
-    const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+double longestEdge(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+}
+
+std::uint32_t subdivisions(double longest, float patchSize) {
     return static_cast<std::uint32_t>(std::clamp(std::ceil(longest / patchSize), 1.0, kMaxSubdivisions));
+}
+
+std::uint32_t triangleSubdivisions(const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
+    return subdivisions(longestEdge(a, b, c), patchSize);
 }
 
 bool hasArea(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -64,10 +72,15 @@ struct Piece {
 constexpr float kRingGrowth = 4.0f;
 constexpr float kRingCoarsening = 8.0f;
 
-// The rings around a parallelogram tessellation (a, b, c), (a, c, d), each as four strips of two
-// triangles; nothing for a tessellation of another form.
+// The rings around an unbounded kind's region, each as four strips of two triangles. The rings
+// are built around a parallelogram (a, b, c), (a, c, d), which is what the only unbounded kind's
+// tessellateRegion makes (shapes/plane.cpp); a kind meshing its region otherwise would lose the
+// light beyond it again, silently, so it is refused here until rings are built for its form.
 void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, std::vector<Piece>& out) {
-    if (inner.size() != 2 || inner[1].a != inner[0].a || inner[1].b != inner[0].c) return;
+    if (rings == 0 || inner.empty()) return;
+    if (inner.size() != 2 || inner[1].a != inner[0].a || inner[1].b != inner[0].c)
+        throw std::logic_error("radiosity: an unbounded shape's region is not meshed as a parallelogram of two "
+                               "triangles, the only form its rings are built around (RadiosityMesh, addRings)");
     const Vec3 a = inner[0].a, b = inner[0].b, d = inner[1].c;
     const Vec3 centre = 0.5f * (b + d), halfS = 0.5f * (b - a), halfT = 0.5f * (d - a);
     const std::uint32_t object = inner[0].object;
@@ -121,18 +134,87 @@ struct ClusterKeyHash {
     }
 };
 
-ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
-    const Vec3 centroid = (a + b + c) / 3.0f;
-    const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / patchSize)); };
+// The direction bucket of a triangle's normal (ClusterKey::direction).
+std::uint32_t directionBucket(const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 n = glm::normalize(glm::cross(b - a, c - a));
     const Vec3 m = glm::abs(n);
     const int axis = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
     const float major = n[axis];
     const auto third = [&](float v) { return static_cast<std::uint32_t>(std::clamp((v / std::abs(major) + 1.0f) * 1.5f, 0.0f, 2.0f)); };
-    const std::uint32_t direction =
-        ((std::uint32_t(axis) * 2 + (major < 0.0f ? 1u : 0u)) * 3 + third(n[(axis + 1) % 3])) * 3 + third(n[(axis + 2) % 3]);
+    return ((std::uint32_t(axis) * 2 + (major < 0.0f ? 1u : 0u)) * 3 + third(n[(axis + 1) % 3])) * 3 + third(n[(axis + 2) % 3]);
+}
+
+Vec3 centroidOf(const Vec3& a, const Vec3& b, const Vec3& c) { return (a + b + c) / 3.0f; }
+
+ClusterKey clusterKey(std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize) {
+    const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / patchSize)); };
     return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction};
 }
+
+ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
+    return clusterKey(object, centroidOf(a, b, c), directionBucket(a, b, c), patchSize);
+}
+
+// How many clusters a patch size makes, for the budget's bisection, which asks at some 60 sizes:
+// what does not depend on the size (the region, each triangle's longest edge, centroid and
+// normal bucket) is computed once, and the key set's buckets are kept from one size to the next.
+class ClusterCounter {
+public:
+    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings)
+        : geometry_(geometry), planeRings_(planeRings), region_(sceneRegion(scene, geometry)) {
+        for (const Triangle& t : geometry.triangles())
+            if (hasArea(t.a, t.b, t.c))
+                triangles_.push_back({longestEdge(t.a, t.b, t.c), centroidOf(t.a, t.b, t.c), t.object,
+                                      directionBucket(t.a, t.b, t.c)});
+    }
+
+    std::size_t count(float patchSize) {
+        count_ = 0;
+        keys_.clear();
+        for (const ShapeRecord& shape : geometry_.shapes()) {
+            if (shape.ops->patchGrid) {
+                const PatchGrid grid = shape.ops->patchGrid->cells(shape, patchSize);
+                count_ += std::size_t{grid.rows} * grid.columns;
+                continue;
+            }
+            tessellateRecord(shape, patchSize, planeRings_, region_, scratch_, pieces_);
+            for (const Piece& p : pieces_) {
+                const Triangle& t = p.triangle;
+                if (!hasArea(t.a, t.b, t.c)) continue;
+                add(subdivisions(longestEdge(t.a, t.b, t.c), p.patchSize), shape.object, centroidOf(t.a, t.b, t.c),
+                    directionBucket(t.a, t.b, t.c), patchSize);
+            }
+        }
+        for (const Counted& t : triangles_)
+            add(subdivisions(t.longest, patchSize), t.object, t.centroid, t.direction, patchSize);
+        return count_;
+    }
+
+private:
+    struct Counted {
+        double longest;
+        Vec3 centroid;
+        std::uint32_t object, direction;
+    };
+
+    // A triangle cut n x n makes n^2 patches; one not cut joins its cluster (or starts it).
+    void add(std::size_t n, std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize) {
+        if (n == 1) {
+            if (keys_.insert(clusterKey(object, centroid, direction, patchSize)).second) ++count_;
+        } else {
+            count_ += n * n;
+        }
+    }
+
+    const SceneGeometry& geometry_;
+    int planeRings_;
+    Bounds region_;
+    std::vector<Counted> triangles_;  // the triangle array's, those with area
+    std::unordered_set<ClusterKey, ClusterKeyHash> keys_;
+    std::vector<Triangle> scratch_;
+    std::vector<Piece> pieces_;
+    std::size_t count_ = 0;
+};
 
 }  // namespace
 
@@ -168,46 +250,18 @@ struct RadiosityMesh::VertexWelder {
 };
 
 std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings) {
-    std::size_t count = 0;
-    std::unordered_set<ClusterKey, ClusterKeyHash> keys;
-    std::uint32_t object = 0;
-    const auto addTriangle = [&](const Triangle& t, float size) {
-        if (!hasArea(t.a, t.b, t.c)) return;
-        const std::size_t n = triangleSubdivisions(t.a, t.b, t.c, size);
-        if (n == 1) {
-            if (keys.insert(clusterKey(object, t.a, t.b, t.c, patchSize)).second) ++count;
-        } else {
-            count += n * n;
-        }
-    };
-    const Bounds region = sceneRegion(scene, geometry);
-    std::vector<Triangle> scratch;
-    std::vector<Piece> pieces;
-    for (const ShapeRecord& shape : geometry.shapes()) {
-        if (shape.ops->patchGrid) {
-            const PatchGrid grid = shape.ops->patchGrid->cells(shape, patchSize);
-            count += std::size_t{grid.rows} * grid.columns;
-            continue;
-        }
-        tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
-        object = shape.object;
-        for (const Piece& p : pieces) addTriangle(p.triangle, p.patchSize);
-    }
-    for (const Triangle& t : geometry.triangles()) {
-        object = t.object;
-        addTriangle(t, patchSize);
-    }
-    return count;
+    return ClusterCounter(scene, geometry, planeRings).count(patchSize);
 }
 
 float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
                                         int planeRings) {
     // The count falls as the size grows: bisect log(size) between a size too fine and one coarse
     // enough to leave one patch per triangle (the least any mesh can have).
+    ClusterCounter counter(scene, geometry, planeRings);
     double fine = 1e-6, coarse = 1e6;
     for (int i = 0; i < 60; ++i) {
         const double middle = std::sqrt(fine * coarse);
-        (countClusters(scene, geometry, static_cast<float>(middle), planeRings) <= budget ? coarse : fine) = middle;
+        (counter.count(static_cast<float>(middle)) <= budget ? coarse : fine) = middle;
     }
     return static_cast<float>(coarse);
 }
@@ -223,28 +277,29 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     const Bounds region = sceneRegion(scene, geometry);
     std::vector<Triangle> scratch;
     std::vector<Piece> pieces;
+    std::vector<bool> clusterable;
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
         begin(geometry.shapeId(i));
         const ShapeRecord& shape = geometry.shapes()[i];
         if (shape.ops->patchGrid) {
-            addGrid(i);
+            addGrid(i, clusterable);
             continue;
         }
         tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
         for (const Piece& p : pieces)
             addTriangle(&shape, geometry.shapeId(i), shape.object, p.triangle.a, p.triangle.b, p.triangle.c, p.patchSize,
-                        welder);
+                        welder, clusterable);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) {
         begin(geometry.triangleId(i));
         const Triangle& t = geometry.triangles()[i];
-        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, welder);
+        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, welder, clusterable);
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
-    buildClusters();
+    buildClusters(clusterable);
 }
 
-void RadiosityMesh::buildClusters() {
+void RadiosityMesh::buildClusters(const std::vector<bool>& clusterable) {
     // Cluster ids in the order of each cluster's first patch: a mesh with nothing to cluster has
     // cluster i = patch i.
     std::unordered_map<ClusterKey, std::uint32_t, ClusterKeyHash> ids;
@@ -253,7 +308,7 @@ void RadiosityMesh::buildClusters() {
     for (std::uint32_t i = 0; i < patches_.size(); ++i) {
         RadiosityPatch& p = patches_[i];
         std::uint32_t id = static_cast<std::uint32_t>(clusters_.size());
-        if (clusterable_[i]) id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_), id).first->second;
+        if (clusterable[i]) id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_), id).first->second;
         if (id == clusters_.size()) {
             clusters_.push_back({p.object, 0, 0, 0.0f});
             memberCount.push_back(0);
@@ -278,8 +333,6 @@ void RadiosityMesh::buildClusters() {
         memberCdf_[slot] = areaSoFar[patches_[i].cluster] / c.area;
     }
     for (const RadiosityCluster& c : clusters_) memberCdf_[c.firstMember + c.memberCount - 1] = 1.0f;
-    clusterable_.clear();
-    clusterable_.shrink_to_fit();
 }
 
 PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) const {
@@ -294,7 +347,8 @@ PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) cons
 }
 
 void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object,
-                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder) {
+                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder,
+                                std::vector<bool>& clusterable) {
     if (!hasArea(a, b, c)) return;
     const std::uint32_t n = triangleSubdivisions(a, b, c, patchSize);
     sources_.push_back({record, primitive, static_cast<std::uint32_t>(patches_.size()), n, PatchGrid{}, a, b, c});
@@ -322,7 +376,7 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
             lower.area = area;
             lower.vertices = {vertexAt(i, j), vertexAt(i + 1, j), vertexAt(i, j + 1), 0};
             patches_.push_back(lower);
-            clusterable_.push_back(n == 1);
+            clusterable.push_back(n == 1);
             if (i + j + 1 < n) {
                 RadiosityPatch upper = lower;
                 upper.a = gridPoint(i + 1, j + 1);
@@ -330,13 +384,13 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
                 upper.c = gridPoint(i + 1, j);
                 upper.vertices = {vertexAt(i + 1, j + 1), vertexAt(i, j + 1), vertexAt(i + 1, j), 0};
                 patches_.push_back(upper);
-                clusterable_.push_back(false);
+                clusterable.push_back(false);
             }
         }
     }
 }
 
-void RadiosityMesh::addGrid(std::uint32_t shapeIndex) {
+void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<bool>& clusterable) {
     const ShapeRecord& shape = geometry_.shapes()[shapeIndex];
     const PatchGridOps& cells = *shape.ops->patchGrid;
     const PatchGrid grid = cells.cells(shape, patchSize_);
@@ -361,7 +415,7 @@ void RadiosityMesh::addGrid(std::uint32_t shapeIndex) {
                           vertexAt(row + 1, column + 1)};
             p.vertexCount = 4;
             patches_.push_back(p);
-            clusterable_.push_back(false);
+            clusterable.push_back(false);
         }
     }
 }

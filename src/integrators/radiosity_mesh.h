@@ -104,10 +104,12 @@ private:
     };
 
     struct VertexWelder;
+    // Each appends to `clusterable`, per patch: whether it is a whole triangle no larger than the
+    // patch size (what buildClusters may join).
     void addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object, const Vec3& a,
-                     const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder);
-    void addGrid(std::uint32_t shapeIndex);
-    void buildClusters();
+                     const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder, std::vector<bool>& clusterable);
+    void addGrid(std::uint32_t shapeIndex, std::vector<bool>& clusterable);
+    void buildClusters(const std::vector<bool>& clusterable);
     // strict: nullopt for a point outside the source's triangle (when its primitive has several).
     std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict) const;
     PatchLookup lookupCell(const Source& source, const Vec3& point) const;
@@ -117,7 +119,6 @@ private:
     float patchSize_;
     int planeRings_;
     std::vector<RadiosityPatch> patches_;
-    std::vector<bool> clusterable_;  // per patch: a whole triangle no larger than the patch size
     std::vector<RadiosityCluster> clusters_;
     std::vector<std::uint32_t> members_;   // patch ids, cluster by cluster
     std::vector<float> memberCdf_;         // per member: its cluster's area up to and with it, over the cluster's
