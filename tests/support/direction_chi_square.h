@@ -48,12 +48,13 @@ double directionChiSquarePValue(const DirectionHistogram& h, Sample&& sample, De
         observed[wi ? directionCell(h, *wi) : cells] += 1.0;
     }
 
-    // Expected: the density integrated over each cell (midpoint rule; dw = dcos dphi). The midpoint
-    // rule's error falls as the square of the step, so a grid of half the subdivisions estimates
-    // it as (coarse - fine) / 3: where that is above a fifth of the cell's Poisson noise (a peak
-    // narrower than a sub-cell, e.g. a nearly smooth GGX lobe or one that Snell's law squeezes),
-    // the cell is integrated again with twice the subdivisions, three times at most. Only the few
-    // cells at a peak pay for it.
+    // Expected: the density integrated over each cell (midpoint rule; dw = dcos dphi). A grid of
+    // half the subdivisions bounds the rule's error by |coarse - fine| (it falls as the step
+    // squared for a smooth density, only as the step where a density is steep at the horizon, as
+    // a refraction lobe from grazing incidence is): where that is above a fifth of the cell's
+    // Poisson noise (or a peak is narrower than a sub-cell, e.g. a nearly smooth GGX lobe or one
+    // that Snell's law squeezes), the cell is integrated again with twice the subdivisions, three
+    // times at most. Only the few cells at a peak or an edge pay for it.
     std::vector<double> expected(observed.size(), 0.0);
     double total = 0.0, integrationError = 0.0;  // the error in counts, summed over the cells
     const auto integrate = [&](int c, int p, int sub) {
@@ -74,7 +75,7 @@ double directionChiSquarePValue(const DirectionHistogram& h, Sample&& sample, De
             int sub = std::max(2, h.subdivisions);
             double coarse = integrate(c, p, sub / 2), fine = integrate(c, p, sub);
             for (int refinement = 0;
-                 refinement < 3 && std::fabs(coarse - fine) / 3.0 * cellCounts > 0.2 * std::sqrt(std::max(1.0, fine * cellCounts));
+                 refinement < 3 && std::fabs(coarse - fine) * cellCounts > 0.2 * std::sqrt(std::max(1.0, fine * cellCounts));
                  ++refinement) {
                 sub *= 2;
                 coarse = fine;
@@ -83,7 +84,7 @@ double directionChiSquarePValue(const DirectionHistogram& h, Sample&& sample, De
             const double cell = fine * cellCounts / h.samples;
             expected[c * h.phiBins + p] = cell * h.samples;
             total += cell;
-            integrationError += std::fabs(coarse - fine) / 3.0 * cellCounts;
+            integrationError += std::fabs(coarse - fine) * cellCounts;
         }
     }
     expected.back() = std::max(0.0, 1.0 - total) * h.samples;
