@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "materials/dielectric_material.h"
 #include "materials/microfacet_material.h"
 #include "materials/phong_material.h"
 #include "scene/scene_loader.h"
@@ -106,11 +107,16 @@ private:
                                       where + ".extensions.KHR_materials_ior.ior");
             MaterialSlot material = [&]() -> MaterialSlot {
                 if (transmission > 0.0) {
-                    // Smooth Fresnel glass of the lecture's material: the rough dielectric is not
-                    // there yet, so roughness is ignored for a transmitting material (a warning).
-                    if (roughness > 0.0f)
-                        warn(where + ": a transmitting material is rendered as smooth glass; its roughness " +
-                             formatNumber(roughness) + " is ignored");
+                    // Rough: the rough dielectric (Walter et al. 2007), whose tint is the transmitted
+                    // share of the base colour; it has no diffuse base for the rest (a warning).
+                    if (roughness > 0.0f) {
+                        if (transmission < 1.0 || metallic > 0.0f)
+                            warn(where + ": a rough transmitting material is rendered as rough glass tinted by " +
+                                 "transmission * baseColor; its diffuse and metallic share is dropped");
+                        return DielectricMaterial(float(ior), float(transmission) * baseColor, roughness);
+                    }
+                    // Smooth: Fresnel glass of the lecture's material (its kt tints the mirror ray
+                    // too, which the dielectric's tint does not), with the rest as its diffuse part.
                     PhongMaterial glass;
                     glass.kd = float(1.0 - transmission) * (1.0f - metallic) * baseColor;
                     glass.kt = float(transmission) * baseColor;

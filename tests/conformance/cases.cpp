@@ -189,6 +189,9 @@ void forEachMaterialCase(const std::function<void(const MaterialCase&)>& visit) 
     visit(handPicked("conductor", {{"roughness", 0.0}}));
     visit(handPicked("conductor", {{"eta", V{0.155f, 0.117f, 0.138f}}, {"k", V{4.828f, 3.122f, 2.147f}}, {"roughness", 0.3}}));
     visit(handPicked("conductor", {{"eta", V{2.0f}}, {"k", V{0.0f}}, {"roughness", 1.0}}));
+    visit(handPicked("dielectric", {{"roughness", 0.0}}));
+    visit(handPicked("dielectric", {{"ior", 1.33}, {"roughness", 0.2}, {"tint", V{0.9f, 0.95f, 1.0f}}}));
+    visit(handPicked("dielectric", {{"ior", 2.4}, {"roughness", 1.0}}));
 
     // Drawn: every registered type, its defaults and kDrawsPerMaterialType sets within its schema.
     for (const MaterialType* type : MaterialRegistry::instance().entries()) {

@@ -7,7 +7,7 @@ import subprocess
 import sys
 
 # The types whose tables scenes/README.md shows.
-TABLES = [("material", "phong"), ("material", "modified-phong"), ("material", "microfacet"), ("material", "conductor"),
+TABLES = [("material", "phong"), ("material", "modified-phong"), ("material", "microfacet"), ("material", "conductor"), ("material", "dielectric"),
           ("medium", "homogeneous"),
           ("light", "point"), ("light", "quad"), ("light", "sphere"), ("light", "spot"), ("light", "directional"),
           ("shape", "sphere"), ("shape", "plane"), ("shape", "disk"),

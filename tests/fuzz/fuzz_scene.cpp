@@ -17,6 +17,7 @@
 #include "fuzz_support.h"
 #include "lights/point_light.h"
 #include "materials/conductor_material.h"
+#include "materials/dielectric_material.h"
 #include "materials/microfacet_material.h"
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
@@ -83,6 +84,10 @@ void checkScene(const Scene& scene) {
             for (int c = 0; c < 3; ++c)
                 if (!(eta[c] > 0.0f && eta[c] <= 10.0f && k[c] >= 0.0f && k[c] <= 20.0f))
                     broken("conductor " + name + " accepted with eta or k outside its range");
+            if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
+        } else if (const auto* m = dynamic_cast<const DielectricMaterial*>(&*slot)) {
+            colours.push_back(m->tint().constant());
+            ior = m->ior();
             if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
         } else if (slot->isInterface()) {
             // An index-matched boundary: no keys, nothing to check but its emission (none).

@@ -15,6 +15,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "../support/direction_chi_square.h"
+#include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
 #include "../support/statistics.h"
 
@@ -63,11 +64,6 @@ TEST_CASE("conductor: exact Fresnel of eta + i k against Born and Wolf's closed 
         CHECK(fresnelConductor(cosI, 1.5f, 0.0f) == doctest::Approx(fresnelDielectric(cosI, 1.0f / 1.5f)).epsilon(1e-5));
 }
 
-Vec3 outgoing(double cosOut, double phi = 0.0) {
-    const double s = std::sqrt(std::max(0.0, 1.0 - cosOut * cosOut));
-    return Vec3{float(s * std::cos(phi)), float(s * std::sin(phi)), float(cosOut)};
-}
-
 // The single-scattering albedo of GGX with Born and Wolf's F and height-correlated Smith G2, in
 // double from Walter et al. 2007 and Heitz 2014 (eq. 99), integrated over microfacet normals m:
 // E(wo) = integral F(wo.m) D(m) G2(wo, wi) (wo.m) / cos theta_o dm, wi the mirror of wo about m,
@@ -103,7 +99,7 @@ TEST_CASE("conductor: white furnace, its albedo is the GGX single-scattering alb
         for (const float cosOut : {0.95f, 0.5f, 0.15f}) {
             CAPTURE(roughness);
             CAPTURE(cosOut);
-            const Vec3 wo = outgoing(cosOut);
+            const Vec3 wo = test::outgoing(cosOut);
             std::mt19937_64 rng(29);
             std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
             constexpr int kDraws = 50000;
@@ -138,8 +134,8 @@ TEST_CASE("conductor: eval is reciprocal, f(wo, wi) = f(wi, wo)") {
     for (const float roughness : {0.1f, 0.4f, 1.0f}) {
         const ConductorMaterial material({0.271f, 0.677f, 1.316f}, {3.609f, 2.625f, 2.292f}, roughness);
         for (int i = 0; i < 200; ++i) {
-            const Vec3 wo = outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
-            const Vec3 wi = outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
+            const Vec3 wo = test::outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
+            const Vec3 wi = test::outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
             const Rgb forward = material.eval(ConductorMaterial::kGlossy, side, wo, wi) / wi.z;
             const Rgb backward = material.eval(ConductorMaterial::kGlossy, side, wi, wo) / wo.z;
             for (int c = 0; c < 3; ++c) CHECK(forward[c] == doctest::Approx(backward[c]).epsilon(1e-4));
@@ -152,7 +148,7 @@ TEST_CASE("conductor: at roughness 0 it is one mirror branch of exact Fresnel, a
     const Bsdf bsdf(material, {0, 0, 1}, true);
     CHECK(!bsdf.hasSmoothLobe());
     SpecularBranches branches;
-    REQUIRE(bsdf.specularBranches(outgoing(0.5), branches) == 1);
+    REQUIRE(bsdf.specularBranches(test::outgoing(0.5), branches) == 1);
     CHECK(branches[0].wi.z == doctest::Approx(0.5));
     CHECK(branches[0].weight.r == doctest::Approx(bornWolfReflectance(0.5, 0.183, 3.424)).epsilon(1e-4));
     CHECK(branches[0].weight.b == doctest::Approx(bornWolfReflectance(0.5, 1.373, 1.770)).epsilon(1e-4));
@@ -169,7 +165,7 @@ TEST_CASE("conductor: chi-square, its visible-normal sampling follows its densit
         CAPTURE(c.cosOut);
         const ConductorMaterial material({0.271f, 0.677f, 1.316f}, {3.609f, 2.625f, 2.292f}, c.roughness);
         const Bsdf bsdf(material, {0, 0, 1}, true);
-        const Vec3 wo = outgoing(c.cosOut, 4.0);
+        const Vec3 wo = test::outgoing(c.cosOut, 4.0);
         test::DirectionHistogram histogram;
         histogram.subdivisions = 24;
         std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
@@ -184,21 +180,11 @@ TEST_CASE("conductor: chi-square, its visible-normal sampling follows its densit
     }
 }
 
-Film renderConductorFilm(const Scene& scene, const char* integrator, int spp, std::uint64_t seed) {
-    const AovSet aovs(classesSet());
-    RenderOptions options;
-    options.integrator = integrator;
-    options.samplesPerPixel = spp;
-    options.maxDepth = 5;
-    options.seed = seed;
-    return Renderer(scene, aovs, options).render().film;
-}
-
 TEST_CASE("conductor: the path tracer and bdpt agree on a box with a rough copper and a polished silver ball (t-test)" *
           doctest::test_suite("statistical")) {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-conductor.toml");
     scene.camera.width = scene.camera.height = 32;
-    const Film bdpt = renderConductorFilm(scene, "bdpt", 256, 11), path = renderConductorFilm(scene, "path", 256, 11);
+    const Film bdpt = test::renderClassesFilm(scene, "bdpt", 256, 11), path = test::renderClassesFilm(scene, "path", 256, 11);
     test::checkPairedAgreement(bdpt, path, 0.001);
 }
 

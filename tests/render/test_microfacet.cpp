@@ -16,6 +16,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "../support/direction_chi_square.h"
+#include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
 #include "../support/statistics.h"
 
@@ -24,11 +25,6 @@ namespace {
 
 // glTF's metallic = 1: a conductor whose F0 is the base colour.
 MicrofacetMaterial conductor(Rgb f0, float roughness) { return MicrofacetMaterial(f0, 1.0f, roughness); }
-
-Vec3 outgoing(double cosOut, double phi = 0.0) {
-    const double s = std::sqrt(std::max(0.0, 1.0 - cosOut * cosOut));
-    return Vec3{float(s * std::cos(phi)), float(s * std::sin(phi)), float(cosOut)};
-}
 
 // The single-scattering albedo of GGX with F = 1 and height-correlated Smith G2, written out in
 // double from Walter et al. 2007 and Heitz 2014 (eq. 99), integrated over microfacet normals m:
@@ -73,7 +69,7 @@ TEST_CASE("microfacet: white furnace, a conductor with F = 1 reflects the single
         for (const float cosOut : kCosSweep) {
             CAPTURE(roughness);
             CAPTURE(cosOut);
-            const Vec3 wo = outgoing(cosOut);
+            const Vec3 wo = test::outgoing(cosOut);
             std::mt19937_64 rng(17);
             std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
             constexpr int kDraws = 100000;
@@ -105,8 +101,8 @@ TEST_CASE("microfacet: eval is reciprocal, f(wo, wi) = f(wi, wo)") {
     for (const float roughness : kRoughnessSweep) {
         const MicrofacetMaterial material({0.95f, 0.64f, 0.54f}, 0.3f, roughness);
         for (int i = 0; i < 200; ++i) {
-            const Vec3 wo = outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
-            const Vec3 wi = outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
+            const Vec3 wo = test::outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
+            const Vec3 wi = test::outgoing(0.05 + 0.95 * uniform(rng), 2.0 * kPi * uniform(rng));
             for (const int lobe : {MicrofacetMaterial::kDiffuse, MicrofacetMaterial::kGlossy}) {
                 CAPTURE(lobe);
                 // eval is f |cos theta_i|
@@ -123,7 +119,7 @@ TEST_CASE("microfacet: eval is reciprocal, f(wo, wi) = f(wi, wo)") {
 // branch at roughness 0.
 Rgb blendAlbedo(const MicrofacetMaterial& material, float cosOut) {
     const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
-    const Vec3 wo = outgoing(cosOut);
+    const Vec3 wo = test::outgoing(cosOut);
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     constexpr int kDraws = 100000;
@@ -173,7 +169,7 @@ TEST_CASE("microfacet: F0 = mix(0.04, base_color, metallic) and the base is (1 -
     // A smooth base under a mirror layer: (1 - F(1))(1 - F(cos theta_i)) of 0.6/pi, with Schlick's F
     // written out for cos theta_i = 0.5: 0.04 + 0.96/32.
     const float cosIn = 0.5f;
-    const Vec3 wi = outgoing(cosIn);
+    const Vec3 wi = test::outgoing(cosIn);
     const double expected = 0.6 / 3.14159265358979 * (1.0 - 0.04) * (1.0 - (0.04 + 0.96 / 32.0)) * cosIn;
     CHECK(dielectric.eval(MicrofacetMaterial::kDiffuse, side, {0, 0, 1}, wi).r == doctest::Approx(expected).epsilon(1e-4));
     const MicrofacetMaterial metal(Rgb{0.6f}, 1.0f, 0.5f);
@@ -187,7 +183,7 @@ const double kSignificance = 1.0 - std::pow(1.0 - 0.01, 1.0 / kChiSquareTests);
 // the Bsdf, lobe choice included), as test_bsdf_sampling.cpp tests the Phong materials.
 double chiSquarePValue(const MicrofacetMaterial& material, float cosOut) {
     const Bsdf bsdf(material, {0, 0, 1}, true);
-    const Vec3 wo = outgoing(cosOut, 4.0);  // an azimuth off the frame's axes
+    const Vec3 wo = test::outgoing(cosOut, 4.0);  // an azimuth off the frame's axes
     test::DirectionHistogram histogram;
     histogram.subdivisions = 24;  // 12 misses narrow grazing lobes: the midpoint rule, not the sampling
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
@@ -225,22 +221,12 @@ TEST_CASE("microfacet: at roughness 0 the conductor is one mirror branch of Schl
     CHECK(bsdf.lobe(MicrofacetMaterial::kMirror).delta());
     SpecularBranches branches;
     const float cosOut = 0.5f;
-    REQUIRE(bsdf.specularBranches(outgoing(cosOut), branches) == 1);
+    REQUIRE(bsdf.specularBranches(test::outgoing(cosOut), branches) == 1);
     CHECK(branches[0].wi.z == doctest::Approx(cosOut));
-    CHECK(branches[0].wi.x == doctest::Approx(-outgoing(cosOut).x));
+    CHECK(branches[0].wi.x == doctest::Approx(-test::outgoing(cosOut).x));
     // Schlick 1994: F0 + (1 - F0)(1 - cos)^5, by hand for cos = 0.5: (0.5)^5 = 1/32.
     CHECK(branches[0].weight.r == doctest::Approx(0.9 + 0.1 / 32.0));
     CHECK(branches[0].weight.b == doctest::Approx(0.3 + 0.7 / 32.0));
-}
-
-Film renderFilm(const Scene& scene, const char* integrator, int spp, std::uint64_t seed) {
-    const AovSet aovs(classesSet());
-    RenderOptions options;
-    options.integrator = integrator;
-    options.samplesPerPixel = spp;
-    options.maxDepth = 5;
-    options.seed = seed;
-    return Renderer(scene, aovs, options).render().film;
 }
 
 TEST_CASE("microfacet: the path tracer and bdpt agree on a box with a rough and a polished ball (t-test)" *
@@ -248,7 +234,7 @@ TEST_CASE("microfacet: the path tracer and bdpt agree on a box with a rough and 
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-microfacet.toml");
     scene.camera.width = scene.camera.height = 32;
     // The same seed: common random numbers make the paired differences small (test_bdpt.cpp).
-    const Film bdpt = renderFilm(scene, "bdpt", 256, 11), path = renderFilm(scene, "path", 256, 11);
+    const Film bdpt = test::renderClassesFilm(scene, "bdpt", 256, 11), path = test::renderClassesFilm(scene, "path", 256, 11);
     test::checkPairedAgreement(bdpt, path, 0.001);
 }
 
@@ -282,7 +268,7 @@ TEST_CASE("microfacet: a textured base_color shades as the constant it reads (te
             const MicrofacetMaterial textured(
                 ColorParameter(std::make_shared<UniformTexture>(texel), tint, 1.0f, true), metallic, roughness);
             const MicrofacetMaterial constant(texel * tint, metallic, roughness);
-            const Vec3 wo = outgoing(0.6, 0.3), wi = outgoing(0.45, 2.9);
+            const Vec3 wo = test::outgoing(0.6, 0.3), wi = test::outgoing(0.45, 2.9);
             for (int lobe = 0; lobe < 3; ++lobe) {
                 CAPTURE(lobe);
                 REQUIRE(textured.has(lobe) == constant.has(lobe));

@@ -7,10 +7,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "lights/point_light.h"
+#include "materials/dielectric_material.h"
 #include "materials/microfacet_material.h"
+#include "materials/phong_material.h"
 #include "scene/scene_loader.h"
 
 #include "../support/temp_folder.h"
@@ -91,6 +94,41 @@ TEST_CASE("a glTF emissive material emits its emissiveFactor times its emissive 
     CHECK((*glow)->emission.r == doctest::Approx(5.0));
     CHECK((*glow)->emission.g == doctest::Approx(4.5));
     CHECK((*glow)->emission.b == doctest::Approx(4.0));
+}
+
+TEST_CASE("a rough glTF transmitting material is the rough dielectric, a smooth one the Fresnel glass") {
+    std::ifstream in(kData / "emissive.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string panel = "\"metallicFactor\": 1,\n    \"roughnessFactor\": 0.3\n   }";
+    REQUIRE(text.find(panel) != std::string::npos);
+    const test::TempFolder temp("lightpath-gltf-glass");
+    for (const char* roughness : {"0.3", "0"}) {
+        std::string glass = text;
+        glass.replace(glass.find(panel), panel.size(),
+                      std::string("\"metallicFactor\": 0, \"roughnessFactor\": ") + roughness +
+                          "}, \"extensions\": {\"KHR_materials_transmission\": {\"transmissionFactor\": 1}, "
+                          "\"KHR_materials_ior\": {\"ior\": 1.4}}");
+        const fs::path file = temp.path() / (std::string("glass-") + roughness + ".gltf");
+        std::ofstream(file) << glass;
+        const Scene scene = loadScene(file);
+        const auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                     [](const MaterialSlot& m) { return m->name == "Panel"; });
+        REQUIRE(it != scene.materials.end());
+        CAPTURE(roughness);
+        if (std::string(roughness) == "0") {
+            const auto* smooth = dynamic_cast<const PhongMaterial*>(&**it);
+            REQUIRE(smooth != nullptr);
+            CHECK(smooth->fresnel);
+            CHECK(smooth->ior == doctest::Approx(1.4));
+        } else {
+            const auto* rough = dynamic_cast<const DielectricMaterial*>(&**it);
+            REQUIRE(rough != nullptr);
+            CHECK(rough->roughness() == doctest::Approx(0.3));
+            CHECK(rough->ior() == doctest::Approx(1.4));
+            CHECK(rough->tint().constant().g == doctest::Approx(0.9));
+            CHECK(!warns(scene, "roughness"));
+        }
+    }
 }
 
 TEST_CASE("[[gltf]] in a TOML scene: placed, relabelled, in a scene material, its camera yielding to [camera]") {

@@ -522,7 +522,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a material's type picks its model and its keys") 
           "scene.toml:3:1: materials.m.kr: unknown key \"kr\"; did you mean \"kd\"?");
     CHECK(errorOf("[materials.m]\ntype = \"modified-phog\"\n") ==
           "scene.toml:2:8: materials.m.type: unknown material type \"modified-phog\"; did you mean "
-          "\"modified-phong\"? (known: phong, modified-phong, microfacet, interface, conductor)");
+          "\"modified-phong\"? (known: phong, modified-phong, microfacet, interface, conductor, dielectric)");
     CHECK(errorOf("[materials.m]\ntype = 3\n") == "scene.toml:2:8: materials.m.type: expected a string, got 3");
 }
 

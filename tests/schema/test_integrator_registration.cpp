@@ -18,7 +18,7 @@ TEST_CASE("every shipped type is registered in the render tests") {
     CHECK(findIntegrator("whitted")->shadowRays == ShadowRays::Optional);
     // Its path language, which leaves out the ambient term only ray casting and Whitted's formula add.
     CHECK(std::string(findIntegrator("radiosity")->schema.events) == "ED*[<L.[^'ambient']>OB]");
-    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet", "interface", "conductor"});
+    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet", "interface", "conductor", "dielectric"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere", "spot", "directional"});
     CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh", "gltf"});
 }

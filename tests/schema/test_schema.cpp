@@ -143,7 +143,7 @@ TEST_CASE("a registry lists by rank then name and refuses a duplicate") {
 }
 
 TEST_CASE("every shipped material, medium, light and shape type is registered in this binary") {
-    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet", "interface", "conductor"});
+    CHECK(MaterialRegistry::instance().names() == std::vector<std::string>{"phong", "modified-phong", "microfacet", "interface", "conductor", "dielectric"});
     CHECK(LightRegistry::instance().names() == std::vector<std::string>{"point", "quad", "sphere", "spot", "directional"});
     CHECK(MediumRegistry::instance().names() == std::vector<std::string>{"homogeneous"});
     CHECK(ShapeRegistry::instance().names() == std::vector<std::string>{"sphere", "plane", "disk", "triangle", "mesh", "gltf"});
