@@ -96,10 +96,10 @@ TEST_CASE("a glTF emissive material (emissiveFactor, KHR_materials_emissive_stre
     CHECK(worstBlockDifference(gltf, toml) <= 0.01);
 }
 
-TEST_CASE("a glTF baseColorTexture (a file beside it, or a data URI) renders as the TOML texture key") {
+TEST_CASE("a glTF baseColorTexture (a file beside it, a data URI, a .glb bufferView) renders as the TOML texture key") {
     // Both read the same 8-bit PNG as sRGB, through the same uvs (glTF's v is flipped on reading).
     const Film toml = renderSmall(kData / "textured.toml", "raycast", 4);
-    for (const char* file : {"textured.gltf", "textured-embedded.gltf"}) {
+    for (const char* file : {"textured.gltf", "textured-embedded.gltf", "textured.glb"}) {
         CAPTURE(file);
         const Film gltf = renderSmall(kData / file, "raycast", 4);
         CHECK(worstBlockDifference(gltf, toml) <= 0.01);

@@ -6,6 +6,7 @@ textured.gltf         a floor quad with TEXCOORD_0 whose baseColorTexture is che
                       beside it), lit by a point light, seen from above; textured.toml and
                       textured-floor.obj are the same scene written by hand (TOML texture key).
 textured-embedded.gltf  the same with the image embedded as a data URI.
+textured.glb          the same as binary glTF, the image in a bufferView of the BIN chunk.
 metal-rough.png       64x64, linear: the left half metal (B = 255) with roughness 0.2 (G = 51), the
                       right half dielectric (B = 0) with roughness 0.8 (G = 204).
 metal-rough.gltf      the floor with metallicRoughnessTexture metal-rough.png, base colour 0.9,
@@ -94,6 +95,20 @@ def main():
     for name, images in (("textured.gltf", [{"uri": "checker4.png"}]), ("textured-embedded.gltf", [{"uri": uri}])):
         # REPEAT, as the TOML texture key wraps (the filter blends the edges alike).
         (HERE / name).write_text(json.dumps(document(base, images, 10497), indent=1) + "\n")
+    glb = document(base, [], 10497)
+    data = base64.b64decode(glb["buffers"][0]["uri"].split(",", 1)[1])
+    while len(data) % 4:
+        data += b"\0"
+    glb["bufferViews"].append({"buffer": 0, "byteOffset": len(data), "byteLength": len(CHECKER)})
+    data += CHECKER
+    while len(data) % 4:
+        data += b"\0"
+    glb["images"] = [{"bufferView": len(glb["bufferViews"]) - 1, "mimeType": "image/png"}]
+    glb["buffers"] = [{"byteLength": len(data)}]
+    text = json.dumps(glb).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(data), b"BIN\0") + data
+    (HERE / "textured.glb").write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
     metal = {"name": "MetalRough", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.6, 0.3, 1],
                                                             "metallicRoughnessTexture": {"index": 0}}}
     # CLAMP_TO_EDGE: the metal's edge must not blend with the dielectric's across the wrap.
