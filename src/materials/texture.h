@@ -3,6 +3,7 @@
 // read through OpenImageIO's TextureSystem (filtered, MIP-mapped, cached) in the image module.
 // Materials hold ColorParameters and evaluate them at the shading point's texture coordinates and
 // footprint, which the Bsdf passes in SurfaceSide; an untextured parameter is its constant.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -112,6 +113,31 @@ private:
     std::shared_ptr<const Texture> texture_;
     int channel_ = 0;
     TextureSampling sampling_;
+};
+
+// A tangent-space normal map (glTF's normalTexture: linear RGB n = 2 texel - 1, +X along u, +Y
+// along v up, OpenGL style, +Z the surface normal; x and y times `scale`, glTF 2.0, 3.9.3).
+struct NormalMap {
+    std::shared_ptr<const Texture> texture;  // none: the mesh's shading normal alone
+    float scale = 1.0f;
+    TextureSampling sampling;
+
+    // The unit normal `normal` turned by the map at `footprint`, in the tangent frame of the
+    // surface's dp/du and dp/dv (Gram-Schmidt against the normal; the bitangent on dp/dv's side,
+    // so a mirrored uv mapping flips it). `normal` itself where the frame is degenerate.
+    Vec3 perturb(const Vec3& normal, const Vec3& dpdu, const Vec3& dpdv, const TextureFootprint& footprint) const {
+        const Vec3 along = dpdu - normal * glm::dot(normal, dpdu);
+        const float length = glm::length(along);
+        if (!(length > 0.0f) || !std::isfinite(length)) return normal;
+        const Vec3 tangent = along / length;
+        Vec3 bitangent = glm::cross(normal, tangent);
+        if (glm::dot(bitangent, dpdv) < 0.0f) bitangent = -bitangent;
+        const Rgb texel = texture->lookup(scaledFootprint(footprint, sampling.uvScale), sampling);
+        const Vec3 local{(2.0f * texel.r - 1.0f) * scale, (2.0f * texel.g - 1.0f) * scale, 2.0f * texel.b - 1.0f};
+        const Vec3 turned = local.x * tangent + local.y * bitangent + local.z * normal;
+        const float turnedLength = glm::length(turned);
+        return turnedLength > 0.0f && std::isfinite(turnedLength) ? turned / turnedLength : normal;
+    }
 };
 
 // Parameter `name` of `values` (a Colour) as a ColorParameter: its constant, or the texture it

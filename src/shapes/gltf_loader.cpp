@@ -148,8 +148,13 @@ private:
             }();
             material->emission = float(strength) * Rgb(float(emissive[0]), float(emissive[1]), float(emissive[2]));
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
-            if (m.normalTexture.index >= 0)
-                warn(where + ".normalTexture: normal maps are not read yet; the surface is shaded by its mesh normals");
+            if (auto texture = open(m.normalTexture.index, m.normalTexture.texCoord, TextureColorSpace::linear,
+                                    where + ".normalTexture")) {
+                material->normalMap = {texture->first, float(number(m.normalTexture.scale, -kMaxMagnitude, kMaxMagnitude,
+                                                                    where + ".normalTexture.scale")),
+                                       texture->second};
+                material->textured = true;
+            }
             if (m.emissiveTexture.index >= 0)
                 warn(where + ".emissiveTexture: emissive textures are not read yet; emissiveFactor alone is used");
             out_.materials.push_back(std::move(material));
@@ -423,6 +428,10 @@ private:
                     fail(at + ".attributes.NORMAL", "expected " + std::to_string(positions.size()) +
                                                         " normals, one per position, got " + std::to_string(normals.size()));
             }
+            if (usesTextures_ && primitive.attributes.count("TANGENT") != 0 && !tangentsWarned_) {
+                tangentsWarned_ = true;
+                warn(at + ".attributes.TANGENT: tangents are not read; normal maps use the tangent frame of the uvs (per triangle)");
+            }
             std::vector<Vec2> uvs;
             if (const auto uv = primitive.attributes.find("TEXCOORD_0"); usesTextures_ && uv != primitive.attributes.end()) {
                 uvs = textureCoordinates(uv->second, at + ".attributes.TEXCOORD_0");
@@ -546,6 +555,7 @@ private:
     const ImageBytes& imageBytes_;
     std::map<std::pair<int, TextureColorSpace>, std::shared_ptr<const Texture>> images_;
     bool usesTextures_ = false;  // some material is textured: triangles carry TEXCOORD_0
+    bool tangentsWarned_ = false;
 };
 
 // Images are not decoded here: their bytes are kept for the texture opener (OpenImageIO), and an

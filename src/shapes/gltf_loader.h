@@ -3,7 +3,7 @@
 // nodes, their transforms (matrix or translation-rotation-scale, composed down the hierarchy)
 // applied to triangles and normals; metallic-roughness materials as `microfacet`, transmission as
 // glass; emissive materials; perspective cameras; KHR_lights_punctual lights as plain data (the
-// scene loader adds them through the light registry). Base-colour and metallic-roughness textures
+// scene loader adds them through the light registry). Base-colour, metallic-roughness and normal textures
 // are opened through materials/texture.h (OpenImageIO): files beside the glTF, data URIs and .glb
 // bufferViews from memory; TEXCOORD_0 gives the uvs. Names become LPE labels (labelFromName),
 // collisions numbered.

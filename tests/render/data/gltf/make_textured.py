@@ -11,6 +11,12 @@ metal-rough.png       64x64, linear: the left half metal (B = 255) with roughnes
                       right half dielectric (B = 0) with roughness 0.8 (G = 204).
 metal-rough.gltf      the floor with metallicRoughnessTexture metal-rough.png, base colour 0.9,
                       0.6, 0.3; metal-rough.toml: the two halves as two materials.
+normal-map.png        4x4, linear: every texel the tangent-space normal (166, 179, 238) / 255 * 2 - 1,
+                      leaning towards +u and +v (image up).
+normal-map.gltf       the floor (metallic 0, roughness 0.5) with normalTexture normal-map.png, scale 0.5.
+normal-tilted.gltf    the same floor without the map, its NORMAL the normal the map makes (worked out
+                      here: x, y times the scale, in the frame tangent +x (u), bitangent -z (v up),
+                      normal +y), which tests/render/test_gltf.cpp renders as the reference.
 Run: python3 make_textured.py
 """
 import base64
@@ -43,7 +49,21 @@ UVS = [(0, 0), (1, 0), (1, 1), (0, 1)]
 ORDER = [0, 2, 1, 0, 3, 2]
 
 
-def document(material, images, wrap):
+NORMAL_TEXEL = (166, 179, 238)
+NORMAL_MAP = png(4, 4, [[NORMAL_TEXEL] * 4 for _ in range(4)])
+NORMAL_SCALE = 0.5
+
+
+def mapped_normal():
+    """The world normal normal-map.png makes on the floor (glTF 2.0, 3.9.3: x and y times scale)."""
+    x, y, z = (2 * c / 255 - 1 for c in NORMAL_TEXEL)
+    x, y = x * NORMAL_SCALE, y * NORMAL_SCALE
+    world = (x, z, -y)  # tangent +x, normal +y, bitangent -z (glTF's v grows along +z, image up is -z)
+    length = math.sqrt(sum(c * c for c in world))
+    return tuple(c / length for c in world)
+
+
+def document(material, images, wrap, normal=(0, 1, 0)):
     data = bytearray()
     views, accessors = [], []
 
@@ -57,7 +77,7 @@ def document(material, images, wrap):
 
     pos = add(b"".join(struct.pack("<3f", *p) for p in POSITIONS), 4, "VEC3", 5126,
               min=[-1, 0, -1], max=[1, 0, 1])
-    nrm = add(b"".join(struct.pack("<3f", 0, 1, 0) for _ in POSITIONS), 4, "VEC3", 5126)
+    nrm = add(b"".join(struct.pack("<3f", *normal) for _ in POSITIONS), 4, "VEC3", 5126)
     uv = add(b"".join(struct.pack("<2f", *t) for t in UVS), 4, "VEC2", 5126)
     idx = add(struct.pack("<6H", *ORDER), 6, "SCALAR", 5123)
     s = math.sqrt(0.5)
@@ -109,6 +129,15 @@ def main():
     text += b" " * (-len(text) % 4)
     chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(data), b"BIN\0") + data
     (HERE / "textured.glb").write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
+    (HERE / "normal-map.png").write_bytes(NORMAL_MAP)
+    plain = {"name": "Plastic", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0,
+                                                         "roughnessFactor": 0.5}}
+    mapped = dict(plain, normalTexture={"index": 0, "scale": NORMAL_SCALE})
+    (HERE / "normal-map.gltf").write_text(json.dumps(document(mapped, [{"uri": "normal-map.png"}], 10497), indent=1) + "\n")
+    tilted = document(plain, [], 10497, mapped_normal())
+    for unused in ("textures", "samplers", "images"):
+        del tilted[unused]
+    (HERE / "normal-tilted.gltf").write_text(json.dumps(tilted, indent=1) + "\n")
     metal = {"name": "MetalRough", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.6, 0.3, 1],
                                                             "metallicRoughnessTexture": {"index": 0}}}
     # CLAMP_TO_EDGE: the metal's edge must not blend with the dielectric's across the wrap.
