@@ -172,10 +172,10 @@ private:
         return OIIO::TextureOpt::WrapPeriodic;
     }
 
-    // The request's image decoded into memory as float, its colour channels linearised if sRGB,
-    // and registered with the ImageCache under a name of its own (MemoryImage); that name, or
-    // an empty one with `error` set. A linear file under Automatic is left to the cache ("" and
-    // no error would be ambiguous, so its own name comes back).
+    // The request's image decoded into memory as float, its colour channels (not alpha)
+    // linearised if sRGB, and registered with the ImageCache under a name of its own
+    // (MemoryImage); that name, or an empty one with `error` set. A file that turns out linear
+    // under Automatic (16-bit, float) is left to the cache: its own name comes back.
     static std::string decodedImage(const TextureRequest& request, std::string& error) {
         std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
         if (request.bytes != nullptr) memory = std::make_unique<OIIO::Filesystem::IOMemReader>(request.bytes->data(), request.bytes->size());
