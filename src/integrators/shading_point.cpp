@@ -24,8 +24,7 @@ Vec3 stepOnTangentPlane(const Vec3& eye, const Vec3& d, const Vec3& point, const
 // ray to that point, narrower than a ray cone along the path would give (no blur added by
 // mirrors or curvature), so it never blurs more than a camera ray would. Then dp = dpdu du + dpdv
 // dv solved in the least-squares sense (pbrt-v4 10.1.1, SurfaceInteraction::ComputeDifferentials).
-TextureFootprint footprintOf(const SurfaceHit& hit, const RenderContext& context) {
-    const SurfaceParameters surface = context.geometry.surfaceParameters(hit);
+TextureFootprint footprintOf(const SurfaceHit& hit, const SurfaceParameters& surface, const RenderContext& context) {
     const PinholeCamera& camera = context.camera;
     const Vec3 origin = camera.filmDirection(0.0f, 0.0f);
     const Vec3 dDdx = camera.filmDirection(1.0f, 0.0f) - origin, dDdy = camera.filmDirection(0.0f, 1.0f) - origin;
@@ -56,11 +55,17 @@ TextureFootprint footprintOf(const SurfaceHit& hit, const RenderContext& context
 
 ShadingPoint makeShadingPoint(const SurfaceHit& hit, const Ray& ray, const RenderContext& context, TransportMode mode) {
     const bool entering = glm::dot(hit.normal, ray.direction) < 0.0f;
-    const Vec3 normal = entering ? hit.shadingNormal : -hit.shadingNormal;
     const std::uint32_t material = context.scene.objects[hit.object].material;
     const Material& m = *context.scene.materials[material];
     // Only a textured material pays for its texture coordinates.
-    const TextureFootprint texture = m.textured ? footprintOf(hit, context) : TextureFootprint{};
+    TextureFootprint texture;
+    Vec3 shadingNormal = hit.shadingNormal;
+    if (m.textured) {
+        const SurfaceParameters surface = context.geometry.surfaceParameters(hit);
+        texture = footprintOf(hit, surface, context);
+        if (m.normalMap.texture) shadingNormal = m.normalMap.perturb(hit.shadingNormal, surface.dpdu, surface.dpdv, texture);
+    }
+    const Vec3 normal = entering ? shadingNormal : -shadingNormal;
     return {hit,    -ray.direction, normal, entering, m, context.analysis.materials[material],
             Bsdf(m, normal, entering, mode, texture)};
 }

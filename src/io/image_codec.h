@@ -14,7 +14,7 @@ namespace lightpath {
 // or nullptr when `interfaceVersion` is not the one it was built with (a stale module).
 inline constexpr const char* kImageCodecEntryPoint = "lightpathImageCodec";
 // Bumped whenever anything in this header changes.
-inline constexpr int kImageCodecInterfaceVersion = 3;
+inline constexpr int kImageCodecInterfaceVersion = 4;
 
 enum class PixelFormat { UInt8, Float32 };
 
@@ -42,6 +42,20 @@ struct TextureQuery {
     float s = 0.0f, t = 0.0f;
     float dsdx = 0.0f, dtdx = 0.0f, dsdy = 0.0f, dtdy = 0.0f;
     bool filtered = true;  // false: the finest level's nearest texels, bilinearly (point sampling)
+    // Outside [0, 1] in s and in t: repeat (glTF's REPEAT), the edge texel (CLAMP_TO_EDGE), or
+    // repeat mirrored (MIRRORED_REPEAT).
+    enum class Wrap { Periodic, Clamp, Mirror };
+    Wrap wrapS = Wrap::Periodic, wrapT = Wrap::Periodic;
+};
+
+// A texture to open: a file, or an encoded image (PNG, JPEG, ...) in memory, and how its values
+// are encoded. sRGB texels are decoded to linear (the sRGB EOTF, IEC 61966-2-1) before the MIP
+// levels are built, so the filter averages linear values.
+struct TextureRequest {
+    enum class ColorSpace { Automatic, Srgb, Linear };  // Automatic: sRGB for 8-bit images
+    std::string file;                                 // the file, or the in-memory image's name
+    const std::vector<unsigned char>* bytes = nullptr;  // the encoded image, else read `file`
+    ColorSpace colorSpace = ColorSpace::Automatic;
 };
 
 // A texture file opened in the module's one TextureSystem (shared, with its cache); opaque here.
@@ -60,10 +74,11 @@ public:
                                std::vector<unsigned char>& bytes) const = 0;
     // Reads `file` into `image`. Returns an empty string, or why it could not.
     virtual std::string read(const std::string& file, ImageData& image) const = 0;
-    // Opens `file` as a texture (MIP-mapped on first use if it has no levels, tiled, cached);
-    // nullptr with `error` set when it cannot be read. Handles live as long as the process.
-    virtual TextureFileHandle* openTexture(const std::string& file, std::string& error) const = 0;
-    // The filtered RGB of `texture` at `query`, wrapping periodically (a grey image is replicated
+    // Opens a texture (MIP-mapped on first use if it has no levels, tiled, cached); nullptr with
+    // `error` set when it cannot be read. Handles live as long as the process. An sRGB or an
+    // in-memory image is decoded once into memory (linearised), never written to disk.
+    virtual TextureFileHandle* openTexture(const TextureRequest& request, std::string& error) const = 0;
+    // The filtered RGB of `texture` at `query`, wrapped as it says (a grey image is replicated
     // into R, G and B). Safe to call from many threads at once: each uses its own per-thread
     // state of the TextureSystem.
     virtual void lookupTexture(TextureFileHandle* texture, const TextureQuery& query, float rgb[3]) const = 0;

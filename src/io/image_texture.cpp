@@ -19,9 +19,11 @@ public:
         average_ = {rgb[0], rgb[1], rgb[2]};
     }
 
-    Rgb lookup(const TextureFootprint& f, bool filtered) const override {
+    Rgb lookup(const TextureFootprint& f, const TextureSampling& sampling) const override {
         // Image rows run down from t = 0 while v runs up (OBJ's vt, OpenGL): t = 1 - v.
-        const TextureQuery query{f.uv.x, 1.0f - f.uv.y, f.dUVdx.x, -f.dUVdx.y, f.dUVdy.x, -f.dUVdy.y, filtered};
+        const TextureQuery query{f.uv.x,      1.0f - f.uv.y, f.dUVdx.x,
+                                 -f.dUVdx.y,  f.dUVdy.x,     -f.dUVdy.y,
+                                 sampling.filtered, wrap(sampling.wrapS), wrap(sampling.wrapT)};
         float rgb[3];
         codec_.lookupTexture(handle_, query, rgb);
         return {rgb[0], rgb[1], rgb[2]};
@@ -30,15 +32,27 @@ public:
     Rgb average() const override { return average_; }
 
 private:
+    static TextureQuery::Wrap wrap(TextureWrap wrap) {
+        switch (wrap) {
+            case TextureWrap::clamp: return TextureQuery::Wrap::Clamp;
+            case TextureWrap::mirror: return TextureQuery::Wrap::Mirror;
+            case TextureWrap::repeat: break;
+        }
+        return TextureQuery::Wrap::Periodic;
+    }
+
     const ImageCodec& codec_;
     TextureFileHandle* handle_;  // the TextureSystem's, alive for the process
     Rgb average_{0.0f};
 };
 
-std::shared_ptr<const Texture> openImageTexture(const std::string& file, std::string& error) {
+std::shared_ptr<const Texture> openImageTexture(const TextureSource& source, std::string& error) {
     try {
         const ImageCodec& codec = imageCodec();
-        TextureFileHandle* handle = codec.openTexture(file, error);
+        const TextureRequest::ColorSpace colorSpace = source.colorSpace == TextureColorSpace::srgb     ? TextureRequest::ColorSpace::Srgb
+                                                      : source.colorSpace == TextureColorSpace::linear ? TextureRequest::ColorSpace::Linear
+                                                                                                       : TextureRequest::ColorSpace::Automatic;
+        TextureFileHandle* handle = codec.openTexture({source.file, source.bytes, colorSpace}, error);
         if (handle == nullptr) return nullptr;
         return std::make_shared<const ImageTexture>(codec, handle);
     } catch (const ImageModuleError& e) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "materials/lobe.h"
+#include "materials/texture.h"
 #include "math/types.h"
 #include "util/polymorphic_value.h"
 
@@ -22,6 +23,8 @@ public:
     // Some parameter is a texture (materials/texture.h): shading points then find their texture
     // coordinates and footprint, which an untextured material never pays for.
     bool textured = false;
+    // A normal map (glTF's normalTexture) turning the shading normal; set with `textured`.
+    NormalMap normalMap;
 
     virtual std::unique_ptr<Material> clone() const = 0;
 

@@ -20,28 +20,25 @@ constexpr int kAlbedoStrata = 64;
 
 }  // namespace
 
-MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, float metallic, float roughness)
-    : baseColor_(std::move(baseColor)),
-      metallic_(metallic),
-      f0_(glm::mix(Rgb{kDielectricF0}, baseColor_.constant(), metallic)),
-      diffuseColor_((1.0f - metallic) * baseColor_.constant()),
-      roughness_(roughness) {
+MicrofacetMaterial::AlbedoTable MicrofacetMaterial::albedoTable(float roughness, int strata) {
+    AlbedoTable table;
+    const float a = std::max(ggx::kMinAlpha, roughness * roughness);
     for (int k = 0; k < kAlbedoNodes; ++k) {
         const float cosine = float(k) / float(kAlbedoNodes - 1);
-        if (smooth()) {  // the mirror reflects F(cos theta_o) exactly
-            albedoBias_[k] = schlickWeight(cosine);
-            albedoScale_[k] = 1.0f - albedoBias_[k];
+        if (roughness == 0.0f) {  // the mirror reflects F(cos theta_o) exactly
+            table.bias[k] = schlickWeight(cosine);
+            table.scale[k] = 1.0f - table.bias[k];
             continue;
         }
         // E = integral over visible normals m of F(wo.m) G2 / G1 (the sampling weight, Heitz 2018),
         // by the midpoint rule on a stratified grid of sampleVisibleNormal's inputs.
         const float c = std::max(cosine, 1e-3f);
         const Vec3 o{std::sqrt(1.0f - c * c), 0.0f, c};
-        const float a = alpha(), g1 = ggx::masking(o, a);
+        const float g1 = ggx::masking(o, a);
         double scale = 0.0, bias = 0.0;
-        for (int i = 0; i < kAlbedoStrata; ++i) {
-            for (int j = 0; j < kAlbedoStrata; ++j) {
-                const Vec2 u{(i + 0.5f) / kAlbedoStrata, (j + 0.5f) / kAlbedoStrata};
+        for (int i = 0; i < strata; ++i) {
+            for (int j = 0; j < strata; ++j) {
+                const Vec2 u{(i + 0.5f) / strata, (j + 0.5f) / strata};
                 const Vec3 m = ggx::sampleVisibleNormal(o, a, u);
                 const Vec3 in = reflectAbout(o, m);
                 if (in.z <= 0.0f) continue;
@@ -51,61 +48,110 @@ MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, float metallic,
                 bias += weight * grazing;
             }
         }
-        albedoScale_[k] = float(scale / (kAlbedoStrata * kAlbedoStrata));
-        albedoBias_[k] = float(bias / (kAlbedoStrata * kAlbedoStrata));
+        table.scale[k] = float(scale / (strata * strata));
+        table.bias[k] = float(bias / (strata * strata));
     }
     // 2 integral of E(mu) mu dmu by the trapezoid rule on the table's nodes.
     for (int k = 0; k < kAlbedoNodes; ++k) {
         const float mu = float(k) / float(kAlbedoNodes - 1);
         const float w = (k == 0 || k == kAlbedoNodes - 1) ? 0.5f : 1.0f;
-        averageAlbedo_ += specularAlbedo(f0_, mu) * (2.0f * mu * w / float(kAlbedoNodes - 1));
-        averageScale_ += albedoScale_[k] * (2.0f * mu * w / float(kAlbedoNodes - 1));
-        averageBias_ += albedoBias_[k] * (2.0f * mu * w / float(kAlbedoNodes - 1));
+        table.averageScale += table.scale[k] * (2.0f * mu * w / float(kAlbedoNodes - 1));
+        table.averageBias += table.bias[k] * (2.0f * mu * w / float(kAlbedoNodes - 1));
     }
-    averageAlbedo_ = glm::min(Rgb{1.0f}, averageAlbedo_);
+    return table;
 }
 
-float MicrofacetMaterial::alpha() const { return std::max(ggx::kMinAlpha, roughness_ * roughness_); }
+MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness)
+    : baseColor_(std::move(baseColor)), metallic_(std::move(metallic)), roughness_(std::move(roughness)) {
+    if (!roughness_.textured()) {
+        tables_.push_back(albedoTable(roughness_.constant(), kAlbedoStrata));
+    } else {
+        // Coarser strata: nine tables, and E varies smoothly with roughness.
+        for (int n = 0; n < kRoughnessNodes; ++n)
+            tables_.push_back(albedoTable(float(n) / float(kRoughnessNodes - 1), kAlbedoStrata / 2));
+    }
+    const float metal = metallic_.constant();
+    constant_.f0 = glm::mix(Rgb{kDielectricF0}, baseColor_.constant(), metal);
+    constant_.diffuse = (1.0f - metal) * baseColor_.constant();
+    constant_.alpha = std::max(ggx::kMinAlpha, roughness_.constant() * roughness_.constant());
+    if (roughness_.textured()) {
+        const float x = std::clamp(roughness_.constant(), 0.0f, 1.0f) * float(kRoughnessNodes - 1);
+        constant_.node = std::min(int(x), kRoughnessNodes - 2);
+        constant_.blend = x - float(constant_.node);
+    }
+    // 2 integral of E(mu) mu dmu by the trapezoid rule on the table's nodes.
+    for (int k = 0; k < kAlbedoNodes; ++k) {
+        const float mu = float(k) / float(kAlbedoNodes - 1);
+        const float w = (k == 0 || k == kAlbedoNodes - 1) ? 0.5f : 1.0f;
+        constant_.averageAlbedo += specularAlbedo(constant_.f0, mu, constant_) * (2.0f * mu * w / float(kAlbedoNodes - 1));
+    }
+    constant_.averageAlbedo = glm::min(Rgb{1.0f}, constant_.averageAlbedo);
+}
 
 Rgb MicrofacetMaterial::fresnel(const Rgb& f0, float cosine) {
     return f0 + (Rgb{1.0f} - f0) * schlickWeight(cosine);
 }
 
-MicrofacetMaterial::Colors MicrofacetMaterial::colorsAt(const SurfaceSide& side) const {
-    if (!baseColor_.textured()) return {f0_, diffuseColor_, averageAlbedo_};
-    return colorsOf(baseColor_.at(side));
+MicrofacetMaterial::Shading MicrofacetMaterial::shadingAt(const SurfaceSide& side) const {
+    if (!baseColor_.textured() && !metallic_.textured() && !roughness_.textured()) return constant_;
+    return shadingOf(baseColor_.at(side), metallic_.at(side), roughness_.at(side));
 }
 
-MicrofacetMaterial::Colors MicrofacetMaterial::colorsOf(const Rgb& baseColor) const {
-    const Rgb f0 = glm::mix(Rgb{kDielectricF0}, baseColor, metallic_);
+MicrofacetMaterial::Shading MicrofacetMaterial::shadingOf(const Rgb& baseColor, float metallic, float roughness) const {
+    Shading shading;
+    metallic = std::clamp(metallic, 0.0f, 1.0f);
+    roughness = std::clamp(roughness, 0.0f, 1.0f);
+    shading.f0 = glm::mix(Rgb{kDielectricF0}, baseColor, metallic);
+    shading.diffuse = (1.0f - metallic) * baseColor;
+    shading.alpha = std::max(ggx::kMinAlpha, roughness * roughness);
+    float averageScale = tables_[0].averageScale, averageBias = tables_[0].averageBias;
+    if (tables_.size() > 1) {
+        const float x = roughness * float(kRoughnessNodes - 1);
+        shading.node = std::min(int(x), kRoughnessNodes - 2);
+        shading.blend = x - float(shading.node);
+        const AlbedoTable &t0 = tables_[std::size_t(shading.node)], &t1 = tables_[std::size_t(shading.node) + 1];
+        averageScale = glm::mix(t0.averageScale, t1.averageScale, shading.blend);
+        averageBias = glm::mix(t0.averageBias, t1.averageBias, shading.blend);
+    }
     // E is linear in F0 (the table's scale and bias), so is its average.
-    return {f0, (1.0f - metallic_) * baseColor, glm::min(Rgb{1.0f}, f0 * averageScale_ + Rgb{averageBias_})};
+    shading.averageAlbedo = glm::min(Rgb{1.0f}, shading.f0 * averageScale + Rgb{averageBias});
+    return shading;
 }
 
-Rgb MicrofacetMaterial::specularAlbedo(const Rgb& f0, float cosine) const {
+Rgb MicrofacetMaterial::specularAlbedo(const Rgb& f0, float cosine) const { return specularAlbedo(f0, cosine, constant_); }
+
+Rgb MicrofacetMaterial::specularAlbedo(const Rgb& f0, float cosine, const Shading& shading) const {
     const float x = std::clamp(cosine, 0.0f, 1.0f) * float(kAlbedoNodes - 1);
     const int k = std::min(int(x), kAlbedoNodes - 2);
     const float t = x - float(k);
-    const float scale = glm::mix(albedoScale_[k], albedoScale_[k + 1], t);
-    const float bias = glm::mix(albedoBias_[k], albedoBias_[k + 1], t);
+    const AlbedoTable& table = tables_[std::size_t(shading.node)];
+    float scale = glm::mix(table.scale[k], table.scale[k + 1], t);
+    float bias = glm::mix(table.bias[k], table.bias[k + 1], t);
+    if (tables_.size() > 1) {
+        const AlbedoTable& next = tables_[std::size_t(shading.node) + 1];
+        scale = glm::mix(scale, glm::mix(next.scale[k], next.scale[k + 1], t), shading.blend);
+        bias = glm::mix(bias, glm::mix(next.bias[k], next.bias[k + 1], t), shading.blend);
+    }
     return glm::min(Rgb{1.0f}, f0 * scale + Rgb{bias});
 }
 
-Rgb MicrofacetMaterial::diffuseWeight(const Colors& colors, float cosOut, float cosIn) const {
-    return colors.diffuse * (Rgb{1.0f} - specularAlbedo(colors.f0, cosOut)) *
-           (Rgb{1.0f} - specularAlbedo(colors.f0, cosIn));
+Rgb MicrofacetMaterial::diffuseWeight(const Shading& shading, float cosOut, float cosIn) const {
+    return shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
+           (Rgb{1.0f} - specularAlbedo(shading.f0, cosIn, shading));
 }
 
 Rgb MicrofacetMaterial::diffuseReflectance() const {
     // The base's albedo from wo is c (1 - E(wo)) (1 - averageAlbedo_); averaged over wo as well:
     // (A textured base: read as its image's mean times the tint.)
-    const Colors colors = baseColor_.textured() ? colorsOf(baseColor_.mean()) : colorsAt(SurfaceSide{});
-    const Rgb remaining = Rgb{1.0f} - colors.averageAlbedo;
-    return colors.diffuse * remaining * remaining;
+    // (Textures: read as their images' means times their factors.)
+    const bool textured = baseColor_.textured() || metallic_.textured() || roughness_.textured();
+    const Shading shading = textured ? shadingOf(baseColor_.mean(), metallic_.mean(), roughness_.mean()) : constant_;
+    const Rgb remaining = Rgb{1.0f} - shading.averageAlbedo;
+    return shading.diffuse * remaining * remaining;
 }
 
 bool MicrofacetMaterial::has(int lobe) const {
-    if (lobe == kDiffuse) return !isBlack(diffuseColor_);
+    if (lobe == kDiffuse) return metallic_.textured() ? !baseColor_.black() : !isBlack(constant_.diffuse);
     if (lobe == kGlossy) return !smooth();
     if (lobe == kMirror) return smooth();
     return false;
@@ -115,13 +161,13 @@ Rgb MicrofacetMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, 
     if (!has(lobe) || !side.bothAbove(wo, wi)) return Rgb{0.0f};
     const Frame frame(side.normal);
     const Vec3 o = frame.toLocal(wo), i = frame.toLocal(wi);
-    const Colors colors = colorsAt(side);
-    if (lobe == kDiffuse) return lambert::eval(diffuseWeight(colors, o.z, i.z), side, wi);
+    const Shading shading = shadingAt(side);
+    if (lobe == kDiffuse) return lambert::eval(diffuseWeight(shading, o.z, i.z), side, wi);
     if (lobe != kGlossy) return Rgb{0.0f};
     const Vec3 m = glm::normalize(o + i);
-    const float a = alpha();
+    const float a = shading.alpha;
     // f cos theta_i = F D G2 / (4 cos theta_o)
-    return fresnel(colors.f0, glm::dot(o, m)) * (ggx::distribution(m, a) * ggx::maskingShadowing(o, i, a) / (4.0f * o.z));
+    return fresnel(shading.f0, glm::dot(o, m)) * (ggx::distribution(m, a) * ggx::maskingShadowing(o, i, a) / (4.0f * o.z));
 }
 
 float MicrofacetMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
@@ -129,7 +175,8 @@ float MicrofacetMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo,
     if (lobe == kDiffuse) return lambert::pdf(side, wi);
     if (lobe != kGlossy) return 0.0f;
     const Frame frame(side.normal);
-    return ggx::reflectionPdf(frame.toLocal(wo), frame.toLocal(wi), alpha());
+    const float a = roughness_.textured() ? shadingAt(side).alpha : constant_.alpha;
+    return ggx::reflectionPdf(frame.toLocal(wo), frame.toLocal(wi), a);
 }
 
 std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo,
@@ -137,14 +184,15 @@ std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide
     if (!has(lobe)) return std::nullopt;
     if (lobe == kDiffuse) {
         std::optional<LobeSample> s = lambert::sample(Rgb{1.0f}, side, wo, u);
-        if (s) s->weight = diffuseWeight(colorsAt(side), glm::dot(wo, side.normal), glm::dot(s->wi, side.normal));
+        if (s) s->weight = diffuseWeight(shadingAt(side), glm::dot(wo, side.normal), glm::dot(s->wi, side.normal));
         return s;
     }
     if (lobe != kGlossy) return std::nullopt;
     const Frame frame(side.normal);
     const Vec3 o = frame.toLocal(wo);
     if (!(o.z > 0.0f)) return std::nullopt;  // eval() is 0 there
-    const float a = alpha();
+    const Shading shading = shadingAt(side);
+    const float a = shading.alpha;
     const Vec3 m = ggx::sampleVisibleNormal(o, a, u);
     const Vec3 i = reflectAbout(o, m);
     if (i.z <= 0.0f) return std::nullopt;
@@ -153,26 +201,26 @@ std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide
     s.pdf = ggx::reflectionPdf(o, i, a);
     if (!(s.pdf > 0.0f)) return std::nullopt;
     // F D G2 / (4 cos_o) over G1(wo) D / (4 cos_o): F G2 / G1 (Heitz 2018, eq. 19).
-    s.weight = fresnel(colorsAt(side).f0, glm::dot(o, m)) * (ggx::maskingShadowing(o, i, a) / ggx::masking(o, a));
+    s.weight = fresnel(shading.f0, glm::dot(o, m)) * (ggx::maskingShadowing(o, i, a) / ggx::masking(o, a));
     return s;
 }
 
 float MicrofacetMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const {
     if (!has(lobe)) return 0.0f;
     const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
-    const Colors colors = colorsAt(side);
+    const Shading shading = shadingAt(side);
     // The base's albedo: c (1 - E(wo)) times the cosine-weighted mean of 1 - E(wi).
     if (lobe == kDiffuse)
-        return maxComponent(colors.diffuse * (Rgb{1.0f} - specularAlbedo(colors.f0, cosOut)) *
-                            (Rgb{1.0f} - colors.averageAlbedo));
-    return maxComponent(specularAlbedo(colors.f0, cosOut));
+        return maxComponent(shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
+                            (Rgb{1.0f} - shading.averageAlbedo));
+    return maxComponent(specularAlbedo(shading.f0, cosOut, shading));
 }
 
 int MicrofacetMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
     if (!has(kMirror)) return 0;
     const float cosOut = glm::dot(wo, side.normal);
     if (cosOut <= 0.0f) return 0;
-    const Rgb weight = fresnel(colorsAt(side).f0, cosOut);
+    const Rgb weight = fresnel(shadingAt(side).f0, cosOut);
     branches[0] = {reflectAbout(wo, side.normal), weight, kMirror, maxComponent(weight)};
     return 1;
 }
@@ -181,13 +229,13 @@ int MicrofacetMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& w
                                 NamedFactors& factors) const {
     if (lobe == kDiffuse) {
         factors = lambert::factors(
-            diffuseWeight(colorsAt(side), glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
+            diffuseWeight(shadingAt(side), glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
         factors[0].name = "(1-m) base (1-E(V)) (1-E(L))";
         return 2;
     }
     if (lobe != kGlossy) return 0;
     const Rgb value = eval(lobe, side, wo, wi);
-    const Rgb f = fresnel(colorsAt(side).f0, std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi))));
+    const Rgb f = fresnel(shadingAt(side).f0, std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi))));
     // pi eval = F times pi D G2 / (4 N.V)
     Rgb rest{0.0f};
     for (int c = 0; c < 3; ++c) rest[c] = f[c] > 0.0f ? kPi * value[c] / f[c] : 0.0f;

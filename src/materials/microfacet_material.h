@@ -13,8 +13,12 @@
 // the appendix's (1 - F(wo.h)) weighting reflects more than 1 at grazing angles.
 // alpha = roughness^2 is glTF's (and Burley's) remapping: perceptually even steps.
 // metallic = 1 is a conductor whose F0 is base_color. Lobes: Diffuse (<RD>), Glossy (<RG>) and,
-// at roughness 0, Mirror (<RS>), a delta, so every LPE keeps its meaning.
+// at roughness 0, Mirror (<RS>), a delta, so every LPE keeps its meaning. base_color, metallic and
+// roughness may be textures (glTF's baseColorTexture and metallicRoughnessTexture); a textured
+// roughness is glossy everywhere (a texel of 0 is the sharpest glossy lobe, ggx::kMinAlpha), and
+// E is then interpolated between tables at kRoughnessNodes roughnesses.
 #include <array>
+#include <vector>
 
 #include "materials/material.h"
 #include "materials/texture.h"
@@ -24,9 +28,9 @@ namespace lightpath {
 class MicrofacetMaterial final : public Material {
 public:
     MicrofacetMaterial(Rgb baseColor, float metallic, float roughness)
-        : MicrofacetMaterial(ColorParameter(baseColor), metallic, roughness) {}
-    // base_color may be a texture: F0 and the base then vary over the surface (per shading point).
-    MicrofacetMaterial(ColorParameter baseColor, float metallic, float roughness);
+        : MicrofacetMaterial(ColorParameter(baseColor), ScalarParameter(metallic), ScalarParameter(roughness)) {}
+    // Any of the three may be a texture: F0, the base and the lobe then vary over the surface.
+    MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness);
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<MicrofacetMaterial>(*this); }
 
@@ -50,39 +54,46 @@ public:
 
     // Schlick's F(cos) = F0 + (1 - F0)(1 - cos)^5 (Schlick 1994).
     static Rgb fresnel(const Rgb& f0, float cosine);
-    // E(w): the specular layer's directional albedo for cos theta = cosine (the table below).
+    // E(w): the specular layer's directional albedo for cos theta = cosine, at the untextured
+    // roughness (a textured one: its factor).
     Rgb specularAlbedo(const Rgb& f0, float cosine) const;
 
-    // F0 and the base of the untextured material (of a textured one: with its tint as base_color).
-    const Rgb& f0() const { return f0_; }
-    const Rgb& diffuseColor() const { return diffuseColor_; }
-    float roughness() const { return roughness_; }
+    // F0, the base and the lobe at a shading point (`side`): what eval, sample, albedo and
+    // radiosity read, textures looked up (the constants when nothing is textured).
+    struct Shading {
+        Rgb f0{0.0f}, diffuse{0.0f}, averageAlbedo{0.0f};
+        float alpha = 0.0f;  // GGX's alpha: roughness^2, kept above ggx::kMinAlpha
+        int node = 0;        // E between tables_[node] and tables_[node + 1] (one table: node 0)
+        float blend = 0.0f;
+    };
+    Shading shadingAt(const SurfaceSide& side) const;
+    // The roughness, or a textured one's factor.
+    float roughness() const { return roughness_.constant(); }
 
 private:
-    // GGX's alpha: roughness^2, kept above ggx::kMinAlpha for a rough lobe.
-    float alpha() const;
-    bool smooth() const { return roughness_ == 0.0f; }
-    // F0 and the diffuse base at a shading point: the constants unless base_color is a texture.
-    struct Colors {
-        Rgb f0, diffuse, averageAlbedo;
-    };
-    Colors colorsAt(const SurfaceSide& side) const;
-    Colors colorsOf(const Rgb& baseColor) const;
-    Rgb diffuseWeight(const Colors& colors, float cosOut, float cosIn) const;
-
     // E = F0 a(cos) + b(cos), since Schlick's F = F0 (1 - (1 - c)^5) + (1 - c)^5: a and b at
-    // kAlbedoNodes equally spaced cosines, integrated once per material over visible normals.
+    // kAlbedoNodes equally spaced cosines, integrated over visible normals for one roughness.
     static constexpr int kAlbedoNodes = 33;
-    std::array<float, kAlbedoNodes> albedoScale_{}, albedoBias_{};
-    Rgb averageAlbedo_{0.0f};  // E averaged over cosine-weighted directions: 2 integral E(mu) mu dmu
-    // The same average as F0 averageScale_ + averageBias_, for a textured F0.
-    float averageScale_ = 0.0f, averageBias_ = 0.0f;
+    struct AlbedoTable {
+        std::array<float, kAlbedoNodes> scale{}, bias{};
+        // E averaged over cosine-weighted directions as F0 averageScale + averageBias.
+        float averageScale = 0.0f, averageBias = 0.0f;
+    };
+    static AlbedoTable albedoTable(float roughness, int strata);
+    // Tables at these roughnesses (0 to 1, equally spaced) for a textured roughness.
+    static constexpr int kRoughnessNodes = 9;
+
+    bool smooth() const { return !roughness_.textured() && roughness_.constant() == 0.0f; }
+    Shading shadingOf(const Rgb& baseColor, float metallic, float roughness) const;
+    Rgb specularAlbedo(const Rgb& f0, float cosine, const Shading& shading) const;
+    Rgb diffuseWeight(const Shading& shading, float cosOut, float cosIn) const;
+
+    std::vector<AlbedoTable> tables_;  // one (constant roughness) or kRoughnessNodes
+    Shading constant_;                 // the shading of the untextured material
 
     ColorParameter baseColor_;
-    float metallic_ = 1.0f;
-    Rgb f0_{0.04f};
-    Rgb diffuseColor_{0.0f};
-    float roughness_ = 0.5f;
+    ScalarParameter metallic_{1.0f};
+    ScalarParameter roughness_{0.5f};
 };
 
 }  // namespace lightpath

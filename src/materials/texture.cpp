@@ -16,20 +16,20 @@ std::atomic<TextureOpener>& opener() {
 
 void registerTextureOpener(TextureOpener textureOpener) { opener().store(textureOpener); }
 
-std::shared_ptr<const Texture> openTexture(const std::string& file, std::string& error) {
+std::shared_ptr<const Texture> openTexture(const TextureSource& source, std::string& error) {
     const TextureOpener open = opener().load();
     if (open == nullptr) {
         error = "this program reads no textures (the image module's texture opener is not linked in)";
         return nullptr;
     }
-    return open(file, error);
+    return open(source, error);
 }
 
 ColorParameter colorParameter(const ParameterValues& values, std::string_view name) {
     const TextureReference* reference = values.texture(name);
     if (reference == nullptr) return values.colour(name);
     std::string error;
-    std::shared_ptr<const Texture> texture = openTexture(reference->file, error);
+    std::shared_ptr<const Texture> texture = openTexture({reference->file, nullptr, reference->colorSpace}, error);
     if (!texture) values.fail(name, "cannot read the texture \"" + reference->file + "\": " + error);
     return ColorParameter(std::move(texture), reference->tint, reference->uvScale, reference->filtered);
 }

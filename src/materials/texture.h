@@ -3,47 +3,75 @@
 // read through OpenImageIO's TextureSystem (filtered, MIP-mapped, cached) in the image module.
 // Materials hold ColorParameters and evaluate them at the shading point's texture coordinates and
 // footprint, which the Bsdf passes in SurfaceSide; an untextured parameter is its constant.
+#include <cmath>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "materials/lobe.h"
 #include "math/types.h"
+#include "schema/parameter_values.h"
 
 namespace lightpath {
 
-class ParameterValues;
+// Texture coordinates outside [0, 1]: repeat, the edge texel, or repeat mirrored (glTF's samplers).
+enum class TextureWrap { repeat, clamp, mirror };
+
+// An image to open: a file, or an encoded image in memory (a glTF data URI or bufferView).
+struct TextureSource {
+    std::string file;                                   // the file, or the in-memory image's name
+    const std::vector<unsigned char>* bytes = nullptr;  // read while opening only; null: read `file`
+    TextureColorSpace colorSpace = TextureColorSpace::automatic;
+};
+
+// How a parameter reads its texture.
+struct TextureSampling {
+    float uvScale = 1.0f;  // texture coordinates are multiplied by it
+    bool filtered = true;  // false: point sampled (the finest level's texels, bilinearly)
+    TextureWrap wrapS = TextureWrap::repeat, wrapT = TextureWrap::repeat;
+};
 
 // An image texture (OpenImageIO caches its file once for all who open it). Immutable; thread-safe.
 class Texture {
 public:
     virtual ~Texture() = default;
-    // The filtered RGB over the footprint (uv and its change across a pixel, uv scaled already);
-    // point sampled (the finest level's texels, bilinearly) when `filtered` is false.
-    virtual Rgb lookup(const TextureFootprint& footprint, bool filtered) const = 0;
+    // The RGB over the footprint (uv and its change across a pixel, uv scaled already), filtered
+    // and wrapped as `sampling` says.
+    virtual Rgb lookup(const TextureFootprint& footprint, const TextureSampling& sampling) const = 0;
     // The mean RGB over the whole image (radiosity's constant reflectance of a textured kd).
     virtual Rgb average() const = 0;
 };
 
-// What opens a texture file: the image module's (io/image_texture.cpp registers it; src/ layers
-// keep OpenImageIO above the materials). Returns nullptr and sets `error` when it cannot.
-using TextureOpener = std::shared_ptr<const Texture> (*)(const std::string& file, std::string& error);
+// What opens a texture: the image module's (io/image_texture.cpp registers it; src/ layers keep
+// OpenImageIO above the materials). Returns nullptr and sets `error` when it cannot.
+using TextureOpener = std::shared_ptr<const Texture> (*)(const TextureSource& source, std::string& error);
 void registerTextureOpener(TextureOpener opener);
-std::shared_ptr<const Texture> openTexture(const std::string& file, std::string& error);
+std::shared_ptr<const Texture> openTexture(const TextureSource& source, std::string& error);
 
-// One RGB parameter: a constant, or a texture times a tint, with its uv scale.
+// A footprint with a parameter's uv scale applied.
+inline TextureFootprint scaledFootprint(TextureFootprint f, float uvScale) {
+    f.uv *= uvScale;
+    f.dUVdx *= uvScale;
+    f.dUVdy *= uvScale;
+    return f;
+}
+
+// One RGB parameter: a constant, or a texture times a tint, with its sampling.
 class ColorParameter {
 public:
     ColorParameter() = default;
     ColorParameter(const Rgb& constant) : value_(constant) {}  // NOLINT: a constant is a parameter
     ColorParameter& operator=(const Rgb& constant) { return *this = ColorParameter(constant); }
     ColorParameter(std::shared_ptr<const Texture> texture, const Rgb& tint, float uvScale, bool filtered)
-        : value_(tint), texture_(std::move(texture)), uvScale_(uvScale), filtered_(filtered) {}
+        : ColorParameter(std::move(texture), tint, TextureSampling{uvScale, filtered}) {}
+    ColorParameter(std::shared_ptr<const Texture> texture, const Rgb& tint, const TextureSampling& sampling)
+        : value_(tint), texture_(std::move(texture)), sampling_(sampling) {}
 
     // Its value at the surface point `side` describes. The untextured case is one branch.
     Rgb at(const SurfaceSide& side) const {
         if (!texture_) return value_;
-        return value_ * texture_->lookup(scaled(side.texture), filtered_);
+        return value_ * texture_->lookup(scaledFootprint(side.texture, sampling_.uvScale), sampling_);
     }
     bool textured() const { return texture_ != nullptr; }
     // The constant, or a texture's tint.
@@ -56,16 +84,60 @@ public:
     float maxAt(const SurfaceSide& side) const { return maxComponent(at(side)); }
 
 private:
-    TextureFootprint scaled(TextureFootprint f) const {
-        f.uv *= uvScale_;
-        f.dUVdx *= uvScale_;
-        f.dUVdy *= uvScale_;
-        return f;
-    }
     Rgb value_{0.0f};
     std::shared_ptr<const Texture> texture_;
-    float uvScale_ = 1.0f;
-    bool filtered_ = true;
+    TextureSampling sampling_;
+};
+
+// One scalar parameter: a constant, or one channel of a texture times a factor (glTF's metallic
+// and roughness: the B and G channels of metallicRoughnessTexture times their factors).
+class ScalarParameter {
+public:
+    ScalarParameter() = default;
+    ScalarParameter(float constant) : value_(constant) {}  // NOLINT: a constant is a parameter
+    ScalarParameter(std::shared_ptr<const Texture> texture, int channel, float factor, const TextureSampling& sampling)
+        : value_(factor), texture_(std::move(texture)), channel_(channel), sampling_(sampling) {}
+
+    float at(const SurfaceSide& side) const {
+        if (!texture_) return value_;
+        return value_ * texture_->lookup(scaledFootprint(side.texture, sampling_.uvScale), sampling_)[channel_];
+    }
+    bool textured() const { return texture_ != nullptr; }
+    // The constant, or a texture's factor.
+    float constant() const { return value_; }
+    // The mean over the surface: the constant, or the factor times the channel's image mean.
+    float mean() const { return texture_ ? value_ * texture_->average()[channel_] : value_; }
+
+private:
+    float value_ = 0.0f;
+    std::shared_ptr<const Texture> texture_;
+    int channel_ = 0;
+    TextureSampling sampling_;
+};
+
+// A tangent-space normal map (glTF's normalTexture: linear RGB n = 2 texel - 1, +X along u, +Y
+// along v up, OpenGL style, +Z the surface normal; x and y times `scale`, glTF 2.0, 3.9.3).
+struct NormalMap {
+    std::shared_ptr<const Texture> texture;  // none: the mesh's shading normal alone
+    float scale = 1.0f;
+    TextureSampling sampling;
+
+    // The unit normal `normal` turned by the map at `footprint`, in the tangent frame of the
+    // surface's dp/du and dp/dv (Gram-Schmidt against the normal; the bitangent on dp/dv's side,
+    // so a mirrored uv mapping flips it). `normal` itself where the frame is degenerate.
+    Vec3 perturb(const Vec3& normal, const Vec3& dpdu, const Vec3& dpdv, const TextureFootprint& footprint) const {
+        const Vec3 along = dpdu - normal * glm::dot(normal, dpdu);
+        const float length = glm::length(along);
+        if (!(length > 0.0f) || !std::isfinite(length)) return normal;
+        const Vec3 tangent = along / length;
+        Vec3 bitangent = glm::cross(normal, tangent);
+        if (glm::dot(bitangent, dpdv) < 0.0f) bitangent = -bitangent;
+        const Rgb texel = texture->lookup(scaledFootprint(footprint, sampling.uvScale), sampling);
+        const Vec3 local{(2.0f * texel.r - 1.0f) * scale, (2.0f * texel.g - 1.0f) * scale, 2.0f * texel.b - 1.0f};
+        const Vec3 turned = local.x * tangent + local.y * bitangent + local.z * normal;
+        const float turnedLength = glm::length(turned);
+        return turnedLength > 0.0f && std::isfinite(turnedLength) ? turned / turnedLength : normal;
+    }
 };
 
 // Parameter `name` of `values` (a Colour) as a ColorParameter: its constant, or the texture it

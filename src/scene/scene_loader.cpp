@@ -95,17 +95,24 @@ std::string expectedNumber(const Range& range) {
     return "a number " + range.describe();
 }
 
-// A Colour given as a texture: `{ texture = "FILE", tint = RGB, uv_scale = N, filter = BOOL }`,
-// FILE relative to the scene file's folder (materials/texture.h opens it).
+// A Colour given as a texture: `{ texture = "FILE", tint = RGB, uv_scale = N, filter = BOOL,
+// colorspace = "srgb" | "linear" }`, FILE relative to the scene file's folder (materials/texture.h
+// opens it).
 TextureReference readTexture(const TomlValue& value, const NumberRule& rule) {
     const TomlTable table = value.table();
-    table.allowOnly({"texture", "tint", "uv_scale", "filter"});
+    table.allowOnly({"texture", "tint", "uv_scale", "filter", "colorspace"});
     TextureReference texture;
     const std::filesystem::path file = table.required("texture").string();
     texture.file = (file.is_absolute() ? file : value.folder() / file).string();
     if (auto tint = table.find("tint")) texture.tint = tint->numberOrVec3(rule);
     if (auto scale = table.find("uv_scale")) texture.uvScale = scale->number(positive);
     if (auto filter = table.find("filter")) texture.filtered = filter->boolean();
+    if (auto space = table.find("colorspace")) {
+        const std::string name = space->string();
+        if (name == "srgb") texture.colorSpace = TextureColorSpace::srgb;
+        else if (name == "linear") texture.colorSpace = TextureColorSpace::linear;
+        else space->expected("\"srgb\" or \"linear\"");
+    }
     return texture;
 }
 

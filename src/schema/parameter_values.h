@@ -15,6 +15,11 @@
 
 namespace lightpath {
 
+// How a texture's texels encode values: sRGB (colour images: decoded by sRGB's EOTF before they
+// are filtered) or linear (data: roughness, normals; float images). Automatic: sRGB for 8-bit
+// images, linear otherwise. (Here, below the materials, since a TextureReference carries it.)
+enum class TextureColorSpace { automatic, srgb, linear };
+
 // A Colour given as an image, `{ texture = "FILE", tint = ..., uv_scale = ..., filter = ... }`:
 // the file (resolved against the scene's folder) and how to read it. Materials open it
 // (materials/texture.h, colorParameter); the schema only carries it.
@@ -23,6 +28,7 @@ struct TextureReference {
     Rgb tint{1.0f};        // multiplies the texels
     float uvScale = 1.0f;  // texture coordinates are multiplied by it: repeats per unit of uv
     bool filtered = true;  // false: point sampled (the finest level's texels), to show aliasing
+    TextureColorSpace colorSpace = TextureColorSpace::automatic;  // `colorspace`: "srgb", "linear"
 };
 
 class ParameterValues {

@@ -114,6 +114,7 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
         } else {
             scene.addTriangle(placed, placement.normals(model.normals[i]));
         }
+        if (!model.uvs.empty() && model.uvs[i].given) scene.setTriangleUvs(model.uvs[i]);
     }
     if (values.boolean("lights"))
         for (const GltfLight& light : model.lights) addLight(light, placement, values, scene);

@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstring>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
+#include <utility>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,6 +19,7 @@
 #include "materials/dielectric_material.h"
 #include "materials/microfacet_material.h"
 #include "materials/phong_material.h"
+#include "materials/texture.h"
 #include "scene/scene_loader.h"
 #include "schema/format.h"
 #include "schema/parameter.h"
@@ -26,9 +31,15 @@ namespace {
 // glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
 constexpr const char* kDefaultMaterialLabel = "gltf-default";
 
+// The encoded bytes of each image given by a URI (a data URI or a file beside the glTF, which
+// tinygltf percent-decodes and reads), filled by the image loader; images in bufferViews are read
+// by the Reader, bounds-checked.
+using ImageBytes = std::vector<std::vector<unsigned char>>;
+
 class Reader {
 public:
-    Reader(const tinygltf::Model& model, const std::filesystem::path& file) : model_(model), file_(file) {}
+    Reader(const tinygltf::Model& model, const std::filesystem::path& file, const ImageBytes& images)
+        : model_(model), file_(file), imageBytes_(images) {}
 
     GltfModel read() {
         readMaterials();
@@ -124,17 +135,112 @@ private:
                     glass.fresnel = true;
                     return glass;
                 }
-                return MicrofacetMaterial(baseColor, metallic, roughness);
+                const std::string at = where + ".pbrMetallicRoughness";
+                ColorParameter base(baseColor);
+                ScalarParameter metal(metallic), rough(roughness);
+                if (auto texture = open(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, TextureColorSpace::srgb,
+                                        at + ".baseColorTexture"))
+                    base = ColorParameter(texture->first, baseColor, texture->second);
+                // glTF 2.0, 3.9.2: metalness in B, roughness in G, linear, times the factors.
+                if (auto texture = open(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                        TextureColorSpace::linear, at + ".metallicRoughnessTexture")) {
+                    metal = ScalarParameter(texture->first, 2, metallic, texture->second);
+                    rough = ScalarParameter(texture->first, 1, roughness, texture->second);
+                }
+                const bool textured = base.textured() || metal.textured();
+                MaterialSlot slot = MicrofacetMaterial(std::move(base), std::move(metal), std::move(rough));
+                slot->textured = textured;  // shading points then carry their uv and footprint
+                return slot;
             }();
             material->emission = float(strength) * Rgb(float(emissive[0]), float(emissive[1]), float(emissive[2]));
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
-            if (pbr.baseColorTexture.index >= 0 || m.normalTexture.index >= 0 ||
-                m.emissiveTexture.index >= 0 || pbr.metallicRoughnessTexture.index >= 0)
-                texturesIgnored_ = true;
+            if (auto texture = open(m.normalTexture.index, m.normalTexture.texCoord, TextureColorSpace::linear,
+                                    where + ".normalTexture")) {
+                material->normalMap = {texture->first, float(number(m.normalTexture.scale, -kMaxMagnitude, kMaxMagnitude,
+                                                                    where + ".normalTexture.scale")),
+                                       texture->second};
+                material->textured = true;
+            }
+            if (m.emissiveTexture.index >= 0)
+                warn(where + ".emissiveTexture: emissive textures are not read yet; emissiveFactor alone is used");
             out_.materials.push_back(std::move(material));
         }
-        if (texturesIgnored_) warn("textures are not read yet: materials use their factors alone");
         materialLabels_ = std::move(taken);
+    }
+
+    // ---- textures
+
+    using OpenedTexture = std::pair<std::shared_ptr<const Texture>, TextureSampling>;
+
+    // Texture `index` (a material's textureInfo) opened with its sampler's wrap modes; nothing
+    // (and a warning: the material keeps its factor) when there is none or it cannot be read.
+    std::optional<OpenedTexture> open(int index, int texCoord, TextureColorSpace colorSpace, const std::string& where) {
+        if (index < 0) return std::nullopt;
+        if (std::size_t(index) >= model_.textures.size())
+            fail(where + ".index", "expected a texture index below " + std::to_string(model_.textures.size()) + ", got " +
+                                       std::to_string(index));
+        if (texCoord != 0) warn(where + ": texCoord " + std::to_string(texCoord) + " is read as TEXCOORD_0 (only the first set is read)");
+        const tinygltf::Texture& t = model_.textures[std::size_t(index)];
+        const std::string at = "textures[" + std::to_string(index) + "]";
+        if (t.source < 0 || std::size_t(t.source) >= model_.images.size()) {
+            warn(at + ": no image (source " + std::to_string(t.source) + "); the material's factor alone is used");
+            return std::nullopt;
+        }
+        TextureSampling sampling;
+        if (t.sampler >= 0) {
+            if (std::size_t(t.sampler) >= model_.samplers.size())
+                fail(at + ".sampler", "expected a sampler index below " + std::to_string(model_.samplers.size()) + ", got " +
+                                          std::to_string(t.sampler));
+            const tinygltf::Sampler& sampler = model_.samplers[std::size_t(t.sampler)];
+            sampling.wrapS = wrap(sampler.wrapS);
+            sampling.wrapT = wrap(sampler.wrapT);
+        }
+        std::shared_ptr<const Texture> texture = image(t.source, colorSpace);
+        if (!texture) return std::nullopt;
+        usesTextures_ = true;
+        return OpenedTexture{std::move(texture), sampling};
+    }
+
+    static TextureWrap wrap(int mode) {
+        if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::clamp;
+        if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::mirror;
+        return TextureWrap::repeat;  // REPEAT, glTF's default
+    }
+
+    // Image `index` opened once per colour space: its URI's bytes, or its bufferView's.
+    std::shared_ptr<const Texture> image(int index, TextureColorSpace colorSpace) {
+        const auto key = std::make_pair(index, colorSpace);
+        if (const auto found = images_.find(key); found != images_.end()) return found->second;
+        const tinygltf::Image& img = model_.images[std::size_t(index)];
+        const std::string at = "images[" + std::to_string(index) + "]";
+        std::vector<unsigned char> bufferViewBytes;
+        const std::vector<unsigned char>* bytes = nullptr;
+        if (img.bufferView >= 0) {
+            if (std::size_t(img.bufferView) >= model_.bufferViews.size())
+                fail(at + ".bufferView", "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
+            const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(img.bufferView)];
+            if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size()) fail(at, "its bufferView names no buffer");
+            const std::vector<unsigned char>& buffer = model_.buffers[std::size_t(bv.buffer)].data;
+            if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
+                fail(at, "its bufferView reaches beyond its buffer of " + std::to_string(buffer.size()) + " bytes");
+            bufferViewBytes.assign(buffer.begin() + std::ptrdiff_t(bv.byteOffset),
+                                   buffer.begin() + std::ptrdiff_t(bv.byteOffset + bv.byteLength));
+            bytes = &bufferViewBytes;
+        } else if (std::size_t(index) < imageBytes_.size() && !imageBytes_[std::size_t(index)].empty()) {
+            bytes = &imageBytes_[std::size_t(index)];
+        }
+        std::shared_ptr<const Texture> texture;
+        if (bytes == nullptr) {
+            warn(at + ": cannot read \"" + printableName(img.uri) + "\"; the material's factor alone is used");
+        } else {
+            // Named in the cache by the glTF file and the image, so messages say where it came from.
+            const std::string name = file_.string() + ":" + at;
+            std::string error;
+            texture = openTexture({name, bytes, colorSpace}, error);
+            if (!texture) warn(at + ": cannot decode the image (" + error + "); the material's factor alone is used");
+        }
+        images_.emplace(key, texture);
+        return texture;
     }
 
     std::uint32_t defaultMaterial() {
@@ -214,7 +320,9 @@ private:
                             std::to_string(index));
         const std::string at = where + ": accessor " + std::to_string(index);
         const tinygltf::Accessor& a = model_.accessors[std::size_t(index)];
-        if (a.type != type) fail(at, std::string("expected type ") + (type == TINYGLTF_TYPE_VEC3 ? "VEC3" : "SCALAR"));
+        if (a.type != type)
+            fail(at, std::string("expected type ") +
+                         (type == TINYGLTF_TYPE_VEC3 ? "VEC3" : type == TINYGLTF_TYPE_VEC2 ? "VEC2" : "SCALAR"));
         if (a.sparse.isSparse) fail(at, "expected a dense accessor; sparse accessors are not read");
         if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
             fail(at, "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
@@ -251,6 +359,22 @@ private:
             if (!finite(xyz[0]) || !finite(xyz[1]) || !finite(xyz[2]))
                 fail(where, "element " + std::to_string(i) + " is " + formatVec3(out[i]) + "; expected numbers " +
                                 std::string(kMagnitudeRange));
+        }
+        return out;
+    }
+
+    // TEXCOORD_0 as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
+    // where lightpath's runs up (OBJ's vt; io/image_texture.cpp reads t = 1 - v), so v' = 1 - v.
+    std::vector<Vec2> textureCoordinates(int index, const std::string& where) const {
+        const View v = view(index, TINYGLTF_TYPE_VEC2, where);
+        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components (normalised integers are not read)");
+        std::vector<Vec2> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            float uv[2];
+            std::memcpy(uv, v.data + i * v.stride, sizeof uv);
+            if (!finite(uv[0]) || !finite(uv[1]))
+                fail(where, "element " + std::to_string(i) + " is not a pair of numbers " + std::string(kMagnitudeRange));
+            out[i] = Vec2(uv[0], 1.0f - uv[1]);
         }
         return out;
     }
@@ -310,6 +434,18 @@ private:
                     fail(at + ".attributes.NORMAL", "expected " + std::to_string(positions.size()) +
                                                         " normals, one per position, got " + std::to_string(normals.size()));
             }
+            if (usesTextures_ && primitive.attributes.count("TANGENT") != 0 && !tangentsWarned_) {
+                tangentsWarned_ = true;
+                warn(at + ".attributes.TANGENT: tangents are not read; normal maps use the tangent frame of the uvs (per triangle)");
+            }
+            std::vector<Vec2> uvs;
+            if (const auto uv = primitive.attributes.find("TEXCOORD_0"); usesTextures_ && uv != primitive.attributes.end()) {
+                uvs = textureCoordinates(uv->second, at + ".attributes.TEXCOORD_0");
+                if (uvs.size() != positions.size())
+                    fail(at + ".attributes.TEXCOORD_0", "expected " + std::to_string(positions.size()) +
+                                                            " texture coordinates, one per position, got " +
+                                                            std::to_string(uvs.size()));
+            }
             std::vector<std::uint32_t> order;
             if (primitive.indices >= 0) {
                 order = indices(primitive.indices, positions.size(), at + ".indices");
@@ -342,6 +478,8 @@ private:
                 // Normals for every triangle once any has them, zero (flat) for the others.
                 if (!normals.empty() && out_.normals.size() < out_.triangles.size()) out_.normals.resize(out_.triangles.size());
                 out_.triangles.push_back(t);
+                if (usesTextures_)
+                    out_.uvs.push_back(uvs.empty() ? TriangleUvs{} : TriangleUvs{uvs[i], uvs[j], uvs[k], true});
                 if (!normals.empty()) out_.normals.push_back({orient(i), orient(j), orient(k)});
                 else if (!out_.normals.empty()) out_.normals.push_back({});
             };
@@ -420,12 +558,21 @@ private:
     std::vector<std::string> materialLabels_, objectLabels_, cameraLabels_;
     std::vector<std::string> lightLabels_{"ambient"};  // the ambient term's label (scene/light_type.h)
     std::uint32_t defaultMaterial_ = kNoMeshMaterial;
-    bool texturesIgnored_ = false;
+    const ImageBytes& imageBytes_;
+    std::map<std::pair<int, TextureColorSpace>, std::shared_ptr<const Texture>> images_;
+    bool usesTextures_ = false;  // some material is textured: triangles carry TEXCOORD_0
+    bool tangentsWarned_ = false;
 };
 
-// Images are not decoded: textures are not read yet, and an image the file names need not exist
-// for its geometry to load.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are not decoded here: their bytes are kept for the texture opener (OpenImageIO), and an
+// image that cannot be read is a warning when a material uses it. A bufferView image's pointer is
+// not bounds-checked by tinygltf, so its bytes are not touched here (Reader::image checks them).
+bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int, const unsigned char* bytes,
+                    int size, void* userData) {
+    auto& images = *static_cast<ImageBytes*>(userData);
+    if (index < 0 || image->bufferView >= 0 || bytes == nullptr || size <= 0) return true;
+    if (images.size() <= std::size_t(index)) images.resize(std::size_t(index) + 1);
+    images[std::size_t(index)].assign(bytes, bytes + size);
     return true;
 }
 
@@ -436,7 +583,8 @@ std::string firstLine(std::string text) {
 
 GltfModel parse(const std::string& bytes, const std::filesystem::path& file) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skipImage, nullptr);
+    ImageBytes images;
+    loader.SetImageLoader(keepImageBytes, &images);
     tinygltf::Model model;
     std::string error, warning;
     const std::string base = file.parent_path().string();
@@ -447,7 +595,7 @@ GltfModel parse(const std::string& bytes, const std::filesystem::path& file) {
                                                       unsigned(bytes.size()), base)
                         : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), base);
     if (!ok) throw SceneError(file.string() + ": cannot read glTF file: " + firstLine(error.empty() ? warning : error));
-    return Reader(model, file).read();
+    return Reader(model, file, images).read();
 }
 
 }  // namespace

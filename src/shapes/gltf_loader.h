@@ -3,8 +3,10 @@
 // nodes, their transforms (matrix or translation-rotation-scale, composed down the hierarchy)
 // applied to triangles and normals; metallic-roughness materials as `microfacet`, transmission as
 // glass; emissive materials; perspective cameras; KHR_lights_punctual lights as plain data (the
-// scene loader adds them through the light registry). Textures are not read (their images are
-// skipped undecoded). Names become LPE labels (labelFromName), collisions numbered.
+// scene loader adds them through the light registry). Base-colour, metallic-roughness and normal textures
+// are opened through materials/texture.h (OpenImageIO): files beside the glTF, data URIs and .glb
+// bufferViews from memory; TEXCOORD_0 gives the uvs. Names become LPE labels (labelFromName),
+// collisions numbered.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -53,6 +55,7 @@ struct GltfModel {
     std::vector<GltfObject> objects;
     std::vector<Triangle> triangles;      // `object` indexes `objects`
     std::vector<TriangleNormals> normals; // empty, or one per triangle (zero: shade flat)
+    std::vector<TriangleUvs> uvs;         // empty (no material is textured), or one per triangle
     std::vector<GltfLight> lights;
     std::vector<GltfCamera> cameras;
     std::vector<GltfRenaming> renamed;

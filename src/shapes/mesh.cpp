@@ -56,7 +56,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         if (image.empty()) return material;
         const std::filesystem::path path = file.parent_path() / image;
         std::string error;
-        std::shared_ptr<const Texture> texture = openTexture(path.string(), error);
+        std::shared_ptr<const Texture> texture = openTexture({path.string()}, error);
         if (!texture) {
             scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" + mtl.name +
                                                   "\": cannot read its map_Kd \"" + printableName(image) + "\" (" + error +

@@ -75,8 +75,10 @@ void checkScene(const Scene& scene) {
             colours.insert(colours.end(), {m->kd.constant(), m->ks.constant()});
             exponent = m->n;
         } else if (const auto* m = dynamic_cast<const MicrofacetMaterial*>(&*slot)) {
-            // F0 and the diffuse colour mix base_color by metallic: each within the base's bounds.
-            colours.insert(colours.end(), {m->f0(), m->diffuseColor()});
+            // F0 and the diffuse colour mix base_color by metallic: each within the base's bounds
+            // (at a shading point, so a textured base colour is what is checked).
+            const MicrofacetMaterial::Shading shading = m->shadingAt(SurfaceSide{});
+            colours.insert(colours.end(), {shading.f0, shading.diffuse});
             if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
         } else if (const auto* m = dynamic_cast<const ConductorMaterial*>(&*slot)) {
             // eta and k: the schema's ranges, eta > 0 (Fresnel divides by it), k >= 0.

@@ -249,7 +249,7 @@ namespace {
 class UniformTexture final : public Texture {
 public:
     explicit UniformTexture(Rgb colour) : colour_(colour) {}
-    Rgb lookup(const TextureFootprint&, bool) const override { return colour_; }
+    Rgb lookup(const TextureFootprint&, const TextureSampling&) const override { return colour_; }
     Rgb average() const override { return colour_; }
 
 private:

@@ -2,7 +2,8 @@
 // module), lit by the ambient term alone so that a pixel is ka exactly (ka Ia, Ia = 1). Far away
 // the filtered texture renders the checks' average like a supersampled render, where point
 // sampling aliases; up close each pixel is its texel; an OBJ's map_Kd shows its checks; a file
-// that cannot be read is an error located at its key; the AOVs still sum.
+// that cannot be read is an error located at its key; the AOVs still sum. An 8-bit texel reads
+// through sRGB's EOTF unless it is said to be linear; wrap modes pick the texels outside [0, 1].
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -234,6 +235,72 @@ TEST_CASE("textures: the AOVs of a textured scene sum to the beauty") {
     options.samplesPerPixel = 4;
     const Film film = Renderer(scene, aovs, options).render().film;
     CHECK(test::worstSumError(film) <= 1.0);
+}
+
+namespace {
+
+// An 8-bit RGB PNG of one row of `values` (0..255 each, grey), written into `folder`.
+std::string writeRow(const test::TempFolder& folder, const std::string& name, const std::vector<unsigned char>& values) {
+    std::vector<unsigned char> pixels;
+    for (unsigned char v : values) pixels.insert(pixels.end(), {v, v, v});
+    ImageFileSpec spec;
+    spec.width = int(values.size());
+    spec.height = 1;
+    spec.channelNames = {"R", "G", "B"};
+    const std::string file = (folder.path() / name).string();
+    REQUIRE(imageCodec().write("png", file, spec, pixels.data()).empty());
+    return file;
+}
+
+// The red channel of `file` opened as `colorSpace`, point sampled at (s, 0.5) with `wrap`.
+float texelAt(const std::string& file, TextureColorSpace colorSpace, float s, TextureWrap wrap = TextureWrap::repeat) {
+    std::string error;
+    const std::shared_ptr<const Texture> texture = openTexture({file, nullptr, colorSpace}, error);
+    REQUIRE_MESSAGE(texture, error);
+    TextureFootprint footprint;
+    footprint.uv = {s, 0.5f};
+    TextureSampling sampling;
+    sampling.filtered = false;
+    sampling.wrapS = sampling.wrapT = wrap;
+    return texture->lookup(footprint, sampling).r;
+}
+
+}  // namespace
+
+TEST_CASE("textures: an 8-bit texel of 128 reads 0.2159 as sRGB (its EOTF) and 0.502 as linear") {
+    const test::TempFolder folder("lightpath-srgb-texture");
+    const std::string file = writeRow(folder, "grey128.png", {128, 128});
+    // IEC 61966-2-1: ((128/255 + 0.055) / 1.055)^2.4, evaluated here in double.
+    const double srgb = std::pow((128.0 / 255.0 + 0.055) / 1.055, 2.4);
+    CHECK(srgb == doctest::Approx(0.2159).epsilon(1e-3));
+    CHECK(texelAt(file, TextureColorSpace::srgb, 0.5f) == doctest::Approx(srgb).epsilon(1e-5));
+    CHECK(texelAt(file, TextureColorSpace::automatic, 0.5f) == doctest::Approx(srgb).epsilon(1e-5));  // 8-bit: sRGB
+    CHECK(texelAt(file, TextureColorSpace::linear, 0.5f) == doctest::Approx(128.0 / 255.0).epsilon(1e-5));
+    // The TOML key says which: `colorspace = "linear"` (and a wrong word is a located error).
+    const auto kdOf = [&](const std::string& space) {
+        const Scene scene = loadSceneFromText("[materials.grey]\nkd = { texture = \"" + file + "\", colorspace = \"" +
+                                                  space + "\" }\n",
+                                              "grey.toml");
+        return scene.materials.back()->diffuseReflectance();
+    };
+    CHECK(kdOf("linear").r == doctest::Approx(128.0 / 255.0).epsilon(1e-4));
+    CHECK(kdOf("srgb").r == doctest::Approx(srgb).epsilon(1e-4));
+    CHECK_THROWS_WITH_AS(kdOf("rec709"), doctest::Contains("grey.toml:2:85: materials.grey.kd.colorspace: expected \"srgb\" or \"linear\""), SceneError);
+}
+
+TEST_CASE("textures: outside [0, 1] repeat, clamp and mirror read the texels they should") {
+    // Four texels 0, 85, 170, 255 (linear): centres at s = 0.125, 0.375, 0.625, 0.875.
+    const test::TempFolder folder("lightpath-wrap-texture");
+    const std::string file = writeRow(folder, "ramp.png", {0, 85, 170, 255});
+    const auto at = [&](float s, TextureWrap wrap) { return texelAt(file, TextureColorSpace::linear, s, wrap) * 255.0f; };
+    // s = -0.375: repeat lands on 0.625 (texel 2), clamp on the edge (texel 0), mirror on 0.375 (texel 1).
+    CHECK(at(-0.375f, TextureWrap::repeat) == doctest::Approx(170.0f).epsilon(1e-4));
+    CHECK(at(-0.375f, TextureWrap::clamp) == doctest::Approx(0.0f));
+    CHECK(at(-0.375f, TextureWrap::mirror) == doctest::Approx(85.0f).epsilon(1e-4));
+    // s = 1.125: repeat lands on 0.125 (texel 0), clamp and mirror on the last texel.
+    CHECK(at(1.125f, TextureWrap::repeat) == doctest::Approx(0.0f));
+    CHECK(at(1.125f, TextureWrap::clamp) == doctest::Approx(255.0f).epsilon(1e-4));
+    CHECK(at(1.125f, TextureWrap::mirror) == doctest::Approx(255.0f).epsilon(1e-4));
 }
 
 }  // namespace lightpath
