@@ -72,34 +72,6 @@ PathEvent unlabelledDiffuse(const Vec3& position) {
     return {lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::None, 0, position};
 }
 
-// One sample of the radiance a Lambertian surface at `from` (facing `normal`) reflects from
-// `light`, over kd: (1/pi) cos(theta) times the light sample's weight, plus, for an area light, the
-// emitter's radiance met by a cosine-distributed ray (f cos / pdf = 1): two techniques weighed by
-// Veach's power heuristic, so neither the 1/d^2 of points near the emitter nor small bright
-// emitters make the estimate noisy. Added to `sum`; `cast` counts the rays traced.
-void addDirectSample(const RenderContext& context, const Light& light, const SurfaceHit& from, const Vec3& normal,
-                     Vec2 lightU, Pcg32& rng, Rgb& sum, std::uint64_t& cast) {
-    const LightSample s = light.sample(from.point, lightU);
-    const float cosTheta = glm::dot(normal, s.wi);
-    if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
-        ++cast;
-        if (!context.geometry.occluded(spawnShadowRay(from, s.point, context.geometry.numerics()))) {
-            const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
-            sum += (weight * cosTheta / kPi) * s.weight;
-        }
-    }
-    if (light.isDelta()) return;
-    const Vec3 local = sampleCosineHemisphere(Vec2{rng.nextFloat(), rng.nextFloat()});
-    const Vec3 direction = Frame(normal).toWorld(local);
-    ++cast;
-    const auto hit = context.geometry.intersect(spawnRay(from, direction, context.geometry.numerics()));
-    if (!hit || context.lights.lightOfObject(hit->object) != &light) return;
-    const Rgb emitted = light.radiance(*hit, -direction);
-    if (isBlack(emitted)) return;
-    const float lightPdf = light.pdf(from.point, hit->point, hit->normal);
-    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
-}
-
 // What the mesh could not resolve, as one sentence (empty: nothing). Issue 27: a mesh over the
 // budget left every wall as 2 patches, 10-18% off, without a word. Now the budget's patch size
 // merges the triangles smaller than it into clusters, whose shading inside is averaged away (a
@@ -195,7 +167,6 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
         gatherDirectLight(context, wanted, progress);
         solve(context, wanted, progress);
         computeVertexValues();
-        if (options_.vertexDirectLight) gatherVertexDirectLight(context);
     }
     stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
@@ -306,13 +277,35 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 if (isBlack(reflectance_[p])) continue;
                 Pcg32 rng(mixBits(e ^ (std::uint64_t(l) << 40)), 0x1165u);
                 shuffle(order, rng);
-                // Radiance reflected by the cluster, over kd, at points spread over it by area.
+                // Radiance reflected by a Lambertian patch, over kd: (1/pi) cos(theta) times each
+                // light sample's weight, plus, for an area light, the emitter's radiance met by a
+                // cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
+                // heuristic, so neither the 1/d^2 of points near the emitter nor small bright
+                // emitters make the patch noisy.
                 Rgb sum{0.0f};
                 for (std::uint32_t k = 0; k < samples; ++k) {
                     const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(k, side, rng));
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
-                    addDirectSample(context, light, surfacePoint(patches[point.patch], point), normal,
-                                    stratum(order[k], side, rng), rng, sum, cast);
+                    const SurfaceHit from = surfacePoint(patches[point.patch], point);
+                    const LightSample s = light.sample(point.point, stratum(order[k], side, rng));
+                    const float cosTheta = glm::dot(normal, s.wi);
+                    if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
+                        ++cast;
+                        if (!context.geometry.occluded(spawnShadowRay(from, s.point, context.geometry.numerics()))) {
+                            const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
+                            sum += (weight * cosTheta / kPi) * s.weight;
+                        }
+                    }
+                    if (light.isDelta()) continue;
+                    const Vec3 local = sampleCosineHemisphere(Vec2{rng.nextFloat(), rng.nextFloat()});
+                    const Vec3 direction = Frame(normal).toWorld(local);
+                    ++cast;
+                    const auto hit = context.geometry.intersect(spawnRay(from, direction, context.geometry.numerics()));
+                    if (!hit || context.lights.lightOfObject(hit->object) != &light) continue;
+                    const Rgb emitted = light.radiance(*hit, -direction);
+                    if (isBlack(emitted)) continue;
+                    const float lightPdf = light.pdf(point.point, hit->point, hit->normal);
+                    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
                 }
                 values_[valueIndex(l, 1, e)] = reflectance_[p] * sum / float(samples);
             }
@@ -388,70 +381,6 @@ void RadiosityIntegrator::computeVertexValues() {
                     if (vertexArea[v] > 0.0f) vertexValues_[vertexValueIndex(l, k, v, side)] /= vertexArea[v];
         }
     }
-}
-
-void RadiosityIntegrator::gatherVertexDirectLight(const RenderContext& context) {
-    // Gouraud shading interpolates vertex values, and the area mean of the patches around a vertex
-    // is the radiosity near their centres, not at the vertex: where direct light changes fast (the
-    // top of a wall, grazed by a ceiling lamp) the interpolation is off by the change across a
-    // patch (issue 27: the bunny box's top region 29% high smooth, 9% flat, at 4096 elements).
-    // So the direct light (bounce 1) at each vertex of the unclustered triangles is gathered at
-    // the vertex itself, as the patches' is (Cohen and Wallace 1993, 9.3, point evaluation at the
-    // nodes): linear interpolation between point values is exact where the light varies linearly.
-    // A vertex of a cluster or of a grid cell keeps the area mean; so does an unlit one.
-    const auto& patches = mesh_->patches();
-    const auto& clusters = mesh_->clusters();
-    constexpr std::uint32_t kUnused = ~0u, kMean = ~0u - 1;
-    std::vector<std::uint32_t> vertexPatch(mesh_->vertexCount(), kUnused);
-    std::vector<std::uint8_t> vertexCorner(mesh_->vertexCount(), 0);
-    for (std::uint32_t i = 0; i < patches.size(); ++i) {
-        const RadiosityPatch& p = patches[i];
-        const bool single = p.vertexCount == 3 && clusters[p.cluster].memberCount == 1;
-        for (int v = 0; v < p.vertexCount; ++v) {
-            std::uint32_t& patch = vertexPatch[p.vertices[v]];
-            if (!single) {
-                patch = kMean;
-            } else if (patch == kUnused) {
-                patch = i;
-                vertexCorner[p.vertices[v]] = static_cast<std::uint8_t>(v);
-            }
-        }
-    }
-    const std::uint32_t strata = strataPerSide(options_.lightSamples);
-    const std::uint32_t samples = strata * strata;
-    const auto lights = context.lights.all();
-    std::atomic<std::uint64_t> shadowRays{0};
-    for (std::size_t l = 0; l < solvedBounces_.size(); ++l) {
-        if (solvedBounces_[l] < 1) continue;
-        const Light& light = *lights[l];
-        parallelChunks(mesh_->vertexCount(), kChunk, threadsOrAll(context.threads), [&](std::size_t begin, std::size_t end) {
-            if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) return;
-            std::vector<std::uint32_t> order(samples);
-            std::uint64_t cast = 0;
-            for (std::size_t v = begin; v < end; ++v) {
-                if (vertexPatch[v] >= kMean) continue;
-                const RadiosityPatch& patch = patches[vertexPatch[v]];
-                const Rgb& kd = reflectance_[patch.cluster];
-                if (isBlack(kd)) continue;
-                const Vec3 corners[3] = {patch.a, patch.b, patch.c};
-                const PatchPoint point{corners[vertexCorner[v]], patch.normal, vertexPatch[v]};
-                const SurfaceHit from = surfacePoint(patch, point);
-                for (int side = 0; side < 2; ++side) {
-                    Rgb& value = vertexValues_[vertexValueIndex(l, 1, v, side)];
-                    if (isBlack(value)) continue;
-                    Pcg32 rng(mixBits(std::uint64_t(v) ^ (std::uint64_t(l) << 40) ^ (std::uint64_t(side) << 39)), 0x7e47u);
-                    shuffle(order, rng);
-                    const Vec3 normal = side == 0 ? patch.normal : -patch.normal;
-                    Rgb sum{0.0f};
-                    for (std::uint32_t k = 0; k < samples; ++k)
-                        addDirectSample(context, light, from, normal, stratum(order[k], strata, rng), rng, sum, cast);
-                    value = kd * sum / float(samples);
-                }
-            }
-            shadowRays += cast;
-        });
-    }
-    stats_.shadowRays += shadowRays.load();
 }
 
 Rgb RadiosityIntegrator::patchRadiance(std::size_t light, int bounce, std::uint32_t patch, int side) const {

@@ -81,7 +81,6 @@ private:
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void computeVertexValues();
-    void gatherVertexDirectLight(const RenderContext& context);
 
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied

@@ -25,10 +25,6 @@ struct RadiosityOptions {
     // it to the rectangle, as before issue 27 (the light it bounces from beyond is lost: the tests'
     // control). Not a command-line option.
     int planeRings = 3;
-    // Gouraud's vertex values of direct light gathered at the vertices themselves (RadiosityIntegrator::
-    // gatherVertexDirectLight); false: the area mean of the patches around each, as before issue 27
-    // (the tests' control). Not a command-line option.
-    bool vertexDirectLight = true;
 };
 
 }  // namespace lightpath
