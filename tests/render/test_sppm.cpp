@@ -106,6 +106,24 @@ TEST_CASE("sppm: a caustic seen in a mirror, E S+ D S+ <L.>, shows, and the clas
     CHECK(layerSum(sds, layerOf(sds, "sds")) > 1.0);
 }
 
+// The issue's scene: under its point lights the lecture room's specular-diffuse-specular light (the
+// glass ball's caustic in the mirror ball, the mirror's light seen through the glass) is found by
+// photon mapping alone; the path tracer's and bdpt's AOV of it is exactly zero.
+TEST_CASE("sppm and photon: the lecture room's E S+ (D|G) S+ <L.> shows, and is exactly 0 under path and bdpt") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/lecture-room.toml");
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    const std::vector<lpe::NamedExpression> set{{"sds", "E S+ (D|G) S+ <L.>"}};
+    for (const std::string integrator : {"sppm", "photon", "path", "bdpt"}) {
+        CAPTURE(integrator);
+        const Film film = render(scene, set, integrator.c_str(), 4);
+        const double sds = layerSum(film, layerOf(film, "sds"));
+        if (integrator == "sppm" || integrator == "photon") CHECK(sds > 0.0);
+        else CHECK(sds == 0.0);
+        CHECK(test::worstSumError(film) <= 1.0);
+    }
+}
+
 TEST_CASE("sppm: the same image, bit for bit, on one thread and on four") {
     Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/caustic-in-mirror.toml");
     scene.camera.width = 48;
