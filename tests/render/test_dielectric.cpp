@@ -15,6 +15,7 @@
 #include "../support/direction_chi_square.h"
 #include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
+#include "../support/pinhole_reference.h"
 
 namespace lightpath {
 namespace dielectric_test {
@@ -279,6 +280,72 @@ TEST_CASE("dielectric: at roughness 0 it is the smooth Fresnel glass, the same d
     const auto refracted = nearlySmooth.sample(DielectricMaterial::kGlossyTransmission, side, wo, {0.5f, 0.5f});
     REQUIRE(refracted);
     CHECK(glm::length(refracted->wi - branches[1].wi) < 0.02f);
+}
+
+// A rough glass ball filled with an absorbing medium, against a uniform sky: what passes straight
+// through (E <TG> <TG> L) is dimmed by Beer-Lambert's exp(-sigma_a chord), the chord 2 R cos(theta_t)
+// of the ray refracted by Snell's law at its impact parameter b (sin theta_t = b / (R ior)); a
+// roughness of 0.05 bends rays by well under a degree. Its control: without the switch into the
+// interior, nothing is dimmed.
+// The scene's beauty and `set` under the path tracer.
+Film renderPath(const Scene& scene, const std::vector<lpe::NamedExpression>& set, int spp) {
+    const AovSet aovs(set);
+    RenderOptions options;
+    options.integrator = "path";
+    options.samplesPerPixel = spp;
+    options.seed = 5;
+    return Renderer(scene, aovs, options).render().film;
+}
+
+TEST_CASE("dielectric: rough glass switches media, light through an absorbing interior is dimmed by exp(-sigma_a chord)") {
+    constexpr double kRadius = 0.5, kIor = 1.5;
+    const Rgb sigmaA{0.2f, 0.6f, 1.2f};
+    const auto ballScene = [&](bool absorbing) {
+        std::string text = R"(
+            [camera]
+            eye = [0, 0, 6]
+            look_at = [0, 0, 0]
+            fov = 4
+            resolution = [8, 8]
+            [world]
+            background = 1
+            [media.ink]
+            sigma_a = [0.2, 0.6, 1.2]
+            [materials.frosted]
+            type = "dielectric"
+            ior = 1.5
+            roughness = 0.05
+            [[spheres]]
+            center = [0, 0, 0]
+            radius = 0.5
+            material = "frosted"
+        )";
+        if (absorbing) text += "interior = \"ink\"\n";
+        return loadSceneFromText(text, "ink-ball.toml");
+    };
+    const std::vector<lpe::NamedExpression> through{{"through", "E<TG><TG>L"}};
+    const Scene clear = ballScene(false), inked = ballScene(true);
+    const Film clearFilm = renderPath(clear, through, 128), inkedFilm = renderPath(inked, through, 128);
+
+    const CameraDescription& camera = clear.camera;
+    for (int c = 0; c < 3; ++c) {
+        CAPTURE(c);
+        double expected = 0.0, seen = 0.0, undimmed = 0.0;
+        for (int j = 0; j < camera.height; ++j)
+            for (int i = 0; i < camera.width; ++i) {
+                const glm::dvec3 d = test::pixelDirection(camera, i, j);
+                const glm::dvec3 eye(camera.eye);
+                const double b = glm::length(glm::cross(-eye, d));  // the ray's distance from the centre
+                const double sinT = b / (kRadius * kIor);
+                const double chord = 2.0 * kRadius * std::sqrt(1.0 - sinT * sinT);
+                expected += clearFilm.at(1, i, j)[c] * std::exp(-double(sigmaA[c]) * chord);
+                seen += inkedFilm.at(1, i, j)[c];
+                undimmed += clearFilm.at(1, i, j)[c];
+            }
+        REQUIRE(undimmed > 0.0);
+        CHECK(seen / expected == doctest::Approx(1.0).epsilon(0.005));
+        CHECK(seen / undimmed < 0.9);  // the control: the interior is dense enough to tell
+    }
 }
 
 TEST_CASE("dielectric: the path tracer and bdpt agree on a rough glass ball over a diffuse floor (t-test)" *
