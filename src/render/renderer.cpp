@@ -224,7 +224,11 @@ RenderResult Renderer::render() const { return render(options_.seed, options_.sa
 
 RenderResult Renderer::render(std::uint64_t seed) const { return render(seed, options_.samplesPerPixel); }
 
-RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
+RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const { return render(seed, samplesPerPixel, {}); }
+
+bool Renderer::progressive() const { return integrator_->progressive(); }
+
+RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel, const PassObserver& observer) const {
     checkSamplesPerPixel(samplesPerPixel);
     const auto started = std::chrono::steady_clock::now();
     const double startedCpu = threadCpuSeconds();
@@ -319,6 +323,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel) const {
         runWorkers(static_cast<unsigned>(threadCount), errors, work, [&] {
             if (pass == 0 && options_.onWorkersStarted) options_.onWorkersStarted();
         });
+        if (observer && progressive && pass + 1 < passes && !cancelled() && !errors.failed()) observer(film, (pass + 1) * perPass);
     }
     const double afterWorkersCpu = threadCpuSeconds();
     // Tiles no worker took (a cancelled render) are still unset.

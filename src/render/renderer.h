@@ -151,6 +151,15 @@ public:
     // preprocess, e.g. one radiosity solve) serves a pass at the pixel centres and jittered passes.
     // Throws std::invalid_argument for a count the integrator cannot take.
     RenderResult render(std::uint64_t seed, int samplesPerPixel) const;
+    // Whether the integrator renders pass by pass (sppm): its passes refine one state (each
+    // pixel's shrinking radius), so a caller that refines an image continues one render rather
+    // than averaging independent ones.
+    bool progressive() const;
+    // Shown the film between the passes of a progressive render: the sum of the passes so far
+    // and the samples a pixel it holds (their mean is sum / samples). Not called after the last.
+    using PassObserver = std::function<void(const Film& sum, int samples)>;
+    // render(seed, samplesPerPixel) calling `observer` between passes (serve's refining image).
+    RenderResult render(std::uint64_t seed, int samplesPerPixel, const PassObserver& observer) const;
     // How many renderers have run their integrator's preprocess in this process: what a caller
     // that must build one renderer, not two, is checked by.
     static std::uint64_t preprocessesRun();

@@ -277,6 +277,10 @@ void Session::renderJob(const std::shared_ptr<Job>& job) {
     progress.sumError = maxSumError(first.film);
     publish(progress);
 
+    if (job->renderer().progressive()) {
+        continueProgressive(job, progress);
+        return;
+    }
     // The mean of the jittered passes: each is an independent estimate (its own seed).
     const int perPass = job->samplesPerPass();
     const int passes = (job->settings.samplesPerPixel + perPass - 1) / perPass;
@@ -306,6 +310,42 @@ void Session::renderJob(const std::shared_ptr<Job>& job) {
         progress.sumError = maxSumError(*progress.image);
         publish(progress);
     }
+}
+
+// A progressive integrator's passes share one state (sppm: each pixel's radius shrinks with the
+// photons it has found), so averaging independent short renders would keep the first passes'
+// blur: one render of the whole target runs instead, its running mean shown every samplesPerPass
+// samples.
+void Session::continueProgressive(const std::shared_ptr<Job>& job, Progress& progress) {
+    const int perPass = job->samplesPerPass();
+    const int target = job->settings.samplesPerPixel;
+    const auto started = std::chrono::steady_clock::now();
+    const double before = progress.seconds;
+    const auto show = [&](std::shared_ptr<Film> image, int samples, bool done) {
+        progress.image = std::move(image);
+        progress.passes = 1 + (samples + perPass - 1) / perPass;
+        progress.samples = samples;
+        progress.seconds = before + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        progress.done = done;
+        progress.sumError = maxSumError(*progress.image);
+        publish(progress);
+    };
+    int shown = 0;
+    RenderResult result = job->renderer().render(1, target, [&](const Film& sum, int samples) {
+        if (samples - shown < perPass) return;
+        shown = samples;
+        auto mean = std::make_shared<Film>(sum);
+        const float weight = 1.0f / static_cast<float>(samples);
+        for (int y = 0; y < mean->height(); ++y)
+            for (int x = 0; x < mean->width(); ++x)
+                for (Rgb& value : mean->pixel(x, y)) value *= weight;
+        show(std::move(mean), samples, false);
+    });
+    if (result.cancelled) return;
+    // The integrator's passes may hold fewer samples than asked (sppm's --passes not dividing --spp).
+    const auto pixels = static_cast<std::uint64_t>(result.film.width()) * static_cast<std::uint64_t>(result.film.height());
+    const int samples = static_cast<int>(result.stats.samples / std::max<std::uint64_t>(1, pixels));
+    show(std::make_shared<Film>(std::move(result.film)), samples, true);
 }
 
 }  // namespace lightpath::serve

@@ -130,6 +130,7 @@ private:
     std::shared_ptr<Job> prepare(const Settings& settings, std::uint64_t generation) const;
     void work();
     void renderJob(const std::shared_ptr<Job>& job);
+    void continueProgressive(const std::shared_ptr<Job>& job, Progress& progress);
     void publish(const Progress& progress);
 
     const Scene scene_;

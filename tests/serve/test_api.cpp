@@ -206,6 +206,37 @@ TEST_CASE("serve: passes refine: the image is the mean of independent jittered p
     CHECK(differing > mean.width() * mean.height() / 4);
 }
 
+// sppm's passes refine one state (each pixel's radius shrinks with the photons it finds): serve
+// continues one render of the whole target, so its image is the command line's sppm render of
+// that many samples, not a mean of short renders each starting at the first radius.
+TEST_CASE("serve: under sppm the passes continue one progressive render, the image is sppm's render of the whole target") {
+    ServerFixture fixture("glass-sphere.toml");
+    json settings = settingsFor(32, 24, 8, "sppm");
+    settings["parameters"] = {{"photons", 2000}};
+    const auto put = fixture.put(settings);
+    REQUIRE(put);
+    REQUIRE(put->status == 200);
+    const json done = fixture.waitUntilDone(json::parse(put->body)["generation"].get<std::uint64_t>());
+    CHECK(done["passes"] == 3);
+    CHECK(done["samples"] == 8);
+    CHECK(done["sumError"].get<double>() < 1e-4);
+    const auto exr = fixture.client()->Get("/api/render.exr");
+    REQUIRE(exr);
+    const Decoded image = decode(exr->body, "render.exr");
+
+    // The same configuration given to the renderer directly.
+    RenderConfig config;
+    config.scenePath = scenePath("glass-sphere.toml");
+    config.integrator = "sppm";
+    config.resolution = "32x24";
+    config.samplesPerPixel = 8;
+    config.aovs = "classes";
+    config.set("photons", "2000");
+    config.validate();
+    const Scene scene = config.loadScene();
+    checkSameAsFilm(image, Renderer(scene, AovSet(config.expressions(&scene)), config.renderOptions()).render(1, 8).film);
+}
+
 TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton states") {
     ServerFixture fixture("mirror-sphere.toml");
     const auto put = fixture.put(settingsFor(64, 48, 1));
