@@ -21,11 +21,17 @@ const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) cons
 
 float Bsdf::pdf(int lobe, const Vec3& wo, const Vec3& wi) const {
     if (this->lobe(lobe).delta()) return 0.0f;
+    if (material_.choosesLobe()) return material_.chosenLobePdf(lobe, side_, wo, wi);
     const float probability = lobeProbabilities(wo)[lobe];
     return probability == 0.0f ? 0.0f : probability * material_.pdf(lobe, side_, wo, wi);
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, Vec2 u) const {
+    if (material_.choosesLobe()) {
+        const std::optional<ChosenLobeSample> s = material_.sampleChosenLobe(side_, wo, uLobe, u);
+        if (!s) return std::nullopt;
+        return BsdfSample{s->sample.wi, s->sample.weight, s->sample.pdf, s->lobe};
+    }
     const auto& probabilities = lobeProbabilities(wo);
     // Over every slot, not only the material's lobes: a uLobe past the rounded total lands on an
     // empty slot and scatters nothing, as it always has.

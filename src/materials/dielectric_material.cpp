@@ -156,6 +156,51 @@ std::optional<LobeSample> DielectricMaterial::sample(int lobe, const SurfaceSide
     return s;
 }
 
+float DielectricMaterial::reflectionChoice(const View& view, const SurfaceSide& side, float c) const {
+    const float f = view.fresnel(c);
+    const float transmitted = has(kGlossyTransmission) ? (1.0f - f) * tint_.maxAt(side) : 0.0f;
+    return f + transmitted > 0.0f ? f / (f + transmitted) : 1.0f;
+}
+
+std::optional<ChosenLobeSample> DielectricMaterial::sampleChosenLobe(const SurfaceSide& side, const Vec3& wo, float uLobe,
+                                                                     Vec2 u) const {
+    const View view = viewFrom(side, wo);
+    const Vec3 o = view.frame.toLocal(wo);
+    if (!(o.z > 0.0f)) return std::nullopt;
+    const Vec3 m = ggx::sampleVisibleNormal(o, alpha(), u);
+    Vec3 i;
+    int lobe;
+    if (uLobe < reflectionChoice(view, side, glm::dot(o, m))) {
+        i = reflectAbout(o, m);
+        lobe = kGlossyReflection;
+        if (i.z <= 0.0f) return std::nullopt;
+    } else {
+        const std::optional<Vec3> through = refractThrough(o, m, 1.0f / view.eta);
+        lobe = kGlossyTransmission;
+        if (!through || through->z >= 0.0f) return std::nullopt;
+        i = *through;
+    }
+    ChosenLobeSample s{lobe, {}};
+    s.sample.wi = glm::normalize(view.frame.toWorld(i));
+    // As in sample(): the quotient of eval and the density, from the same floats.
+    s.sample.pdf = chosenLobePdf(lobe, side, wo, s.sample.wi);
+    if (!(s.sample.pdf > 0.0f)) return std::nullopt;
+    s.sample.weight = eval(lobe, side, wo, s.sample.wi) / s.sample.pdf;
+    return s;
+}
+
+float DielectricMaterial::chosenLobePdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    const float within = pdf(lobe, side, wo, wi);
+    if (!(within > 0.0f)) return 0.0f;
+    const View view = viewFrom(side, wo);
+    const Vec3 o = view.frame.toLocal(wo), i = view.frame.toLocal(wi);
+    const std::optional<Vec3> m = lobe == kGlossyReflection ? std::optional<Vec3>(glm::normalize(o + i))
+                                                            : refractionHalfVector(o, i, view.eta);
+    if (!m) return 0.0f;
+    const float reflecting = reflectionChoice(view, side, glm::dot(o, *m));
+    return within * (lobe == kGlossyReflection ? reflecting : 1.0f - reflecting);
+}
+
 float DielectricMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const {
     if (!has(lobe) || lobes()[lobe].delta()) return 0.0f;  // the deltas' shares are their branches'
     const View view = viewFrom(side, wo);

@@ -41,6 +41,14 @@ public:
     float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
     std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
     float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    // Rough: reflection or transmission is chosen at the sampled visible normal m, with probability
+    // F(o.m) / (F + (1 - F) t) of reflecting, t the tint's largest channel (Walter et al. 2007,
+    // section 5.3): F's variation over m then leaves the weights, and a facet that totally
+    // reflects always reflects.
+    bool choosesLobe() const override { return !smooth(); }
+    std::optional<ChosenLobeSample> sampleChosenLobe(const SurfaceSide& side, const Vec3& wo, float uLobe,
+                                                     Vec2 u) const override;
+    float chosenLobePdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
     int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const override;
     int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
@@ -57,14 +65,16 @@ private:
     struct View;
     View viewFrom(const SurfaceSide& side, const Vec3& wo) const;
 
+    // The probability of reflecting at a facet of cosine c with o.
+    float reflectionChoice(const View& view, const SurfaceSide& side, float c) const;
+
     // GGX's alpha: roughness^2, kept above ggx::kMinAlpha for a rough lobe.
     float alpha() const;
     bool smooth() const { return roughness_ == 0.0f; }
 
     // The glossy lobes' directional albedos (importance form, tint 1) at kAlbedoNodes equally spaced
     // cosines, from outside [0] and from inside [1], integrated once per material over visible
-    // normals: albedo() weighs the lobes by them, so reflection or transmission is chosen in
-    // proportion to what each carries.
+    // normals, for albedo().
     static constexpr int kAlbedoNodes = 17;
     std::array<std::array<float, kAlbedoNodes>, 2> reflectionAlbedo_{}, transmissionAlbedo_{};
 

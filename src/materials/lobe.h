@@ -82,6 +82,13 @@ struct LobeSample {
     float pdf = 0.0f;  // solid-angle density within the lobe
 };
 
+// A sample of a material that chooses its own lobe (Material::choosesLobe): the lobe, and the
+// direction with the choice folded into its weight and density.
+struct ChosenLobeSample {
+    int lobe = 0;
+    LobeSample sample;
+};
+
 // One deterministic branch of a delta lobe, with its exact weight: Whitted traces every branch,
 // the path tracer picks one in proportion to its weight.
 struct SpecularBranch {

@@ -42,6 +42,21 @@ public:
     virtual std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const = 0;
     // A smooth lobe's (estimated) albedo from wo: lobes are chosen in proportion to it.
     virtual float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const = 0;
+    // Whether the material chooses among its lobes itself, after sampling what the choice depends
+    // on (Walter et al. 2007 choose reflection or refraction by the Fresnel factor at the sampled
+    // microfacet): the Bsdf then asks it for every sample and density, and not albedo().
+    virtual bool choosesLobe() const { return false; }
+    // One direction through a lobe it chose; weight and pdf include the choice. Only when choosesLobe().
+    virtual std::optional<ChosenLobeSample> sampleChosenLobe(const SurfaceSide& side, const Vec3& wo, float uLobe,
+                                                             Vec2 u) const {
+        (void)side, (void)wo, (void)uLobe, (void)u;
+        return std::nullopt;
+    }
+    // The density of sampleChosenLobe returning wi through `lobe`, the choice included.
+    virtual float chosenLobePdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+        (void)lobe, (void)side, (void)wo, (void)wi;
+        return 0.0f;
+    }
     // The delta lobes' branches from wo, mirror ray first. Returns how many were written.
     virtual int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
         (void)side, (void)wo, (void)branches;

@@ -231,6 +231,40 @@ TEST_CASE("dielectric: chi-square, reflection and transmission sampling follow t
     CHECK(chiSquareP(Bsdf(glass, {0, 0, 1}, true), Bsdf(denser, {0, 0, 1}, true), test::outgoing(0.9, 4.0)) < significance);
 }
 
+// Walter et al. 2007's choice (section 5.3): reflect with probability F at the sampled visible
+// normal, so with a white tint every sample's weight is Heitz 2018's G2(o, i) / G1(o), in [0, 1],
+// whatever F does over the facets (in the importance form, which has no (n_o/n_i)^2). A choice made
+// before the facet, in proportion to the lobes' albedos, weighs F(m) / P(reflect): above 1 at grazing.
+TEST_CASE("dielectric: reflection or transmission is chosen by F at the sampled facet, each weight G2 / G1") {
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (const float roughness : {0.3f, 0.7f})
+        for (const double cosOut : {0.15, 0.8})
+            for (const bool entering : {true, false}) {
+                CAPTURE(roughness);
+                CAPTURE(cosOut);
+                CAPTURE(entering);
+                const DielectricMaterial material(1.5f, Rgb{1.0f}, roughness);
+                const Bsdf bsdf(material, {0, 0, 1}, entering, TransportMode::Importance);
+                const Vec3 wo = test::outgoing(cosOut, 1.0);
+                const double alpha = double(roughness) * double(roughness);
+                int worst = 0, reflected = 0, sampled = 0;
+                for (int n = 0; n < 4096; ++n) {
+                    const auto s = bsdf.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
+                    if (!s) continue;
+                    ++sampled;
+                    reflected += s->lobe == DielectricMaterial::kGlossyReflection;
+                    const V3 o = toV3(wo), i = toV3(s->wi);
+                    const double expected = smithG2(o, V3{i.x, i.y, std::fabs(i.z)}, alpha) * (1.0 + ggxLambda(o, alpha));
+                    worst += std::fabs(double(s->weight.g) - expected) > 2e-3 * std::max(1.0, expected);
+                }
+                CHECK(worst == 0);
+                CHECK(sampled > 3000);
+                CHECK(reflected > 0);
+                CHECK(reflected < sampled);
+            }
+}
+
 TEST_CASE("dielectric: at roughness 0 it is the smooth Fresnel glass, the same directions and weights, deltas <RS> and <TS>") {
     const DielectricMaterial smooth(1.5f, Rgb{1.0f}, 0.0f), tinted(1.5f, Rgb{0.9f, 0.5f, 0.2f}, 0.0f);
     PhongMaterial glass;
