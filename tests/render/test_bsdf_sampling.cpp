@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "materials/bsdf.h"
+#include "materials/dielectric_material.h"
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
 #include "sampling/warp.h"
@@ -220,6 +221,36 @@ TEST_CASE("sampling agrees with eval / pdf, also for wo below the shading normal
     checkSamplingMatchesEval(makeMaterial({0.8f, 0.5f, 0.2f}, Rgb{0}, 1), "Lambert");
     checkSamplingMatchesEval(makeMaterial(Rgb{0}, Rgb{0.2f}, 10), "Blinn highlight");
     checkSamplingMatchesEval(makeMaterial<ModifiedPhongMaterial>({0.5f, 0.3f, 0.1f}, Rgb{0.4f}, 10), "modified Phong");
+}
+
+// Bsdf keeps the lobe choice of the first wo asked and of the last other one (bdpt alternates a
+// hit's wo with its reverse densities' wo): a kept answer must be the one for the wo asked. Rough
+// glass chooses reflection by Fresnel, so its lobe probabilities change with wo.
+TEST_CASE("Bsdf::pdf answers as a fresh Bsdf does, whatever wo was asked before") {
+    const DielectricMaterial glass(1.5f, Rgb{1.0f}, 0.3f);
+    const Bsdf kept(glass, {0, 0, 1}, true);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<float> cosine(0.05f, 1.0f), azimuth(0.0f, 6.2831853f);
+    auto direction = [&] {
+        const float c = cosine(rng), s = std::sqrt(1.0f - c * c), phi = azimuth(rng);
+        return Vec3{s * std::cos(phi), s * std::sin(phi), c};
+    };
+    const Vec3 own = direction();
+    for (int i = 0; i < 200; ++i) {
+        // The hit's own wo, then two others, then the own again: every slot is hit and replaced.
+        const Vec3 wos[] = {own, direction(), direction(), own, direction()};
+        const Vec3 wi = direction();
+        for (const Vec3& wo : wos) {
+            for (int lobe : {int(DielectricMaterial::kGlossyReflection), int(DielectricMaterial::kGlossyTransmission)}) {
+                const Bsdf fresh(glass, {0, 0, 1}, true);
+                const Vec3 reflected{-wi.x, -wi.y, wi.z};
+                const Vec3 w = lobe == DielectricMaterial::kGlossyTransmission ? -reflected : wi;
+                CAPTURE(i);
+                CAPTURE(lobe);
+                CHECK(kept.pdf(lobe, wo, w) == fresh.pdf(lobe, wo, w));
+            }
+        }
+    }
 }
 
 }  // namespace
