@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "materials/bsdf.h"
-#include "materials/dielectric_material.h"
 #include "materials/modified_phong_material.h"
 #include "materials/phong_material.h"
 #include "sampling/warp.h"
@@ -224,11 +223,15 @@ TEST_CASE("sampling agrees with eval / pdf, also for wo below the shading normal
 }
 
 // Bsdf keeps the lobe choice of the first wo asked and of the last other one (bdpt alternates a
-// hit's wo with its reverse densities' wo): a kept answer must be the one for the wo asked. Rough
-// glass chooses reflection by Fresnel, so its lobe probabilities change with wo.
+// hit's wo with its reverse densities' wo): a kept answer must be the one for the wo asked. With
+// Fresnel and a red mirror beside blue glass, the delta branches' share, and so the diffuse and
+// highlight lobes' probabilities, change with wo.
 TEST_CASE("Bsdf::pdf answers as a fresh Bsdf does, whatever wo was asked before") {
-    const DielectricMaterial glass(1.5f, Rgb{1.0f}, 0.3f);
-    const Bsdf kept(glass, {0, 0, 1}, true);
+    PhongMaterial material = makeMaterial(Rgb{0.5f}, Rgb{0.3f}, 20);
+    material.kr = Rgb{0.5f, 0.0f, 0.0f};
+    material.kt = Rgb{0.0f, 0.0f, 0.5f};
+    material.fresnel = true;
+    const Bsdf kept(material, {0, 0, 1}, true);
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<float> cosine(0.05f, 1.0f), azimuth(0.0f, 6.2831853f);
     auto direction = [&] {
@@ -236,22 +239,25 @@ TEST_CASE("Bsdf::pdf answers as a fresh Bsdf does, whatever wo was asked before"
         return Vec3{s * std::cos(phi), s * std::sin(phi), c};
     };
     const Vec3 own = direction();
+    int changed = 0;  // the control: pairs of wo whose lobe choice differs, or the test shows nothing
     for (int i = 0; i < 200; ++i) {
         // The hit's own wo, then two others, then the own again: every slot is hit and replaced.
         const Vec3 wos[] = {own, direction(), direction(), own, direction()};
         const Vec3 wi = direction();
         for (const Vec3& wo : wos) {
-            for (int lobe : {int(DielectricMaterial::kGlossyReflection), int(DielectricMaterial::kGlossyTransmission)}) {
-                const Bsdf fresh(glass, {0, 0, 1}, true);
-                const Vec3 reflected{-wi.x, -wi.y, wi.z};
-                const Vec3 w = lobe == DielectricMaterial::kGlossyTransmission ? -reflected : wi;
+            for (int lobe : {int(PhongMaterial::kDiffuse), int(PhongMaterial::kHighlight)}) {
+                const Bsdf fresh(material, {0, 0, 1}, true);
                 CAPTURE(i);
                 CAPTURE(lobe);
-                CHECK(kept.pdf(lobe, wo, w) == fresh.pdf(lobe, wo, w));
+                CHECK(kept.pdf(lobe, wo, wi) == fresh.pdf(lobe, wo, wi));
             }
         }
+        // The diffuse density is the lobe's choice times cos(wi) / pi: it differs with wo by the choice.
+        const Bsdf fresh(material, {0, 0, 1}, true);
+        const float atOwn = fresh.pdf(PhongMaterial::kDiffuse, own, wi);
+        changed += std::fabs(atOwn - fresh.pdf(PhongMaterial::kDiffuse, wos[1], wi)) > 1e-3f * atOwn;
     }
+    CHECK(changed > 100);
 }
-
 }  // namespace
 }  // namespace lightpath
