@@ -160,7 +160,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[i];
     const ShadingPoint& sp = *y.surface;
-    if (!sp.bsdf.hasSmoothLobe()) return;
+    if (y.smoothLobes == 0) return;
     const auto raster = ctx.camera.project(y.point);
     if (!raster) return;
     const Vec3 toEye = ctx.camera.eye() - y.point;
@@ -175,7 +175,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
     Visibility visible(sp.hit, ctx.camera.eye());
     const std::size_t before = path.size();
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
-        if (sp.bsdf.lobe(lobe).delta() || !sp.bsdf.has(lobe)) continue;
+        if (!y.scattersSmoothly(lobe)) continue;
         if (!path.push(sp.eventOf(lobe))) continue;
         if (pushLightEvents(path, light, i - 1) && path.wants(lightEvent)) {
             const Rgb f = sp.bsdf.eval(lobe, sp.wo, w);
@@ -214,7 +214,7 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
     const PathEvent lightEvent = eventOfLight(y[0]);
     Visibility visible(sp.hit, sample.point);
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
-        if (sp.bsdf.lobe(lobe).delta() || !sp.bsdf.has(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
+        if (!z.scattersSmoothly(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
         const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
         if (isBlack(f)) continue;
         const float weight = misWeight(joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1, lightWalks);
@@ -231,7 +231,7 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     const BdptVertex& z = eye[t - 1];
     const ShadingPoint& ly = *y.surface;
     const ShadingPoint& ez = *z.surface;
-    if (!ly.bsdf.hasSmoothLobe()) return;
+    if (y.smoothLobes == 0) return;
     const Vec3 d = y.point - z.point;
     const float distance2 = glm::dot(d, d);
     if (!(distance2 > 0.0f)) return;
@@ -240,12 +240,12 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     Visibility visible(ez.hit, y.point);
     const std::size_t before = path.size();
     for (int eyeLobe = 0; eyeLobe < int(ez.bsdf.lobes().size()); ++eyeLobe) {
-        if (ez.bsdf.lobe(eyeLobe).delta() || !ez.bsdf.has(eyeLobe)) continue;
+        if (!z.scattersSmoothly(eyeLobe)) continue;
         const Rgb fz = ez.bsdf.eval(eyeLobe, ez.wo, w);
         if (isBlack(fz) || !path.push(ez.eventOf(eyeLobe))) continue;
         const std::size_t withEye = path.size();
         for (int lightLobe = 0; lightLobe < int(ly.bsdf.lobes().size()); ++lightLobe) {
-            if (ly.bsdf.lobe(lightLobe).delta() || !ly.bsdf.has(lightLobe) || !path.push(ly.eventOf(lightLobe))) continue;
+            if (!y.scattersSmoothly(lightLobe) || !path.push(ly.eventOf(lightLobe))) continue;
             if (pushLightEvents(path, light, s - 2) && path.wants(lightEvent)) {
                 const Rgb fy = ly.bsdf.eval(lightLobe, ly.wo, -w);
                 if (!isBlack(fy)) {
@@ -347,7 +347,7 @@ void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         // Joins at z scatter once more; the path may have at most maxDepth scattering events.
         if (t - 1 > ctx.maxDepth) break;
         const ShadingPoint& sp = *z.surface;
-        if (sp.bsdf.hasSmoothLobe()) {
+        if (z.smoothLobes != 0) {
             const float uChoice = sampler.next1D();
             const Vec2 uPoint = sampler.next2D();
             for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, uPoint, path, lightWalks_);

@@ -6,22 +6,6 @@
 
 namespace lightpath {
 
-float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVertex& to) {
-    const Vec3 d = to.point - from.point;
-    const float distance2 = glm::dot(d, d);
-    if (!(distance2 > 0.0f)) return 0.0f;
-    // Parallel rays: the density is per unit area across them already (lights/light.h).
-    if (from.kind == VertexKind::Light && from.light != nullptr && from.light->atInfinity())
-        return !from.light->emitsTowards(to.point) ? 0.0f
-               : glm::dot(to.normal, to.normal) > 0.0f ? pdfSolidAngle * std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2)
-                                                     : pdfSolidAngle;
-    float pdf = pdfSolidAngle / distance2;
-    // A point light and the pinhole have no surface: their density stays per unit solid angle
-    // times 1/d^2, and no strategy's weight reads it (neither can be hit by chance).
-    if (glm::dot(to.normal, to.normal) > 0.0f) pdf *= std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2);
-    return pdf;
-}
-
 ScatterStep prescribedStep(const ShadingPoint& vertex, int lobe, const Vec3& wi) {
     ScatterStep step;
     step.wi = wi;
@@ -90,6 +74,9 @@ BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta,
     v.normal = hit.normal;
     v.beta = beta;
     v.surface.emplace(makeShadingPoint(hit, ray, context, mode));
+    const Bsdf& bsdf = v.surface->bsdf;
+    for (int l = 0; l < int(bsdf.lobes().size()); ++l)
+        if (!bsdf.lobe(l).delta() && bsdf.has(l)) v.smoothLobes |= 1u << l;
     v.pdfFwd = delta ? 1.0f : toAreaDensity(pdfSolidAngle, previous, v);
     return v;
 }

@@ -6,6 +6,8 @@
 // and as the other walk would have (pdfRev), so every strategy's density of the same path is a
 // product of these, and the power heuristic compares them.
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 
@@ -66,12 +68,31 @@ struct BdptVertex {
     float pdfPosition = 0.0f;
     float pdfEmission = 0.0f;
     ShadingSlot surface;
+    // Surface: bit l set when lobe l is smooth (not a delta) and the material has it, asked once
+    // here rather than per lobe at every join (which also asked the material at each).
+    std::uint32_t smoothLobes = 0;
 
     bool onSurface() const { return kind == VertexKind::Surface; }
+    bool scattersSmoothly(int lobe) const { return (smoothLobes >> lobe & 1u) != 0; }
 };
 
-// Solid-angle density at `from` converted to area density at `to` (Veach 1997, eq. 8.10).
-float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVertex& to);
+// Solid-angle density at `from` converted to area density at `to` (Veach 1997, eq. 8.10). Inline:
+// each join converts six densities.
+inline float toAreaDensity(float pdfSolidAngle, const BdptVertex& from, const BdptVertex& to) {
+    const Vec3 d = to.point - from.point;
+    const float distance2 = glm::dot(d, d);
+    if (!(distance2 > 0.0f)) return 0.0f;
+    // Parallel rays: the density is per unit area across them already (lights/light.h).
+    if (from.kind == VertexKind::Light && from.light != nullptr && from.light->atInfinity())
+        return !from.light->emitsTowards(to.point) ? 0.0f
+               : glm::dot(to.normal, to.normal) > 0.0f ? pdfSolidAngle * std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2)
+                                                     : pdfSolidAngle;
+    float pdf = pdfSolidAngle / distance2;
+    // A point light and the pinhole have no surface: their density stays per unit solid angle
+    // times 1/d^2, and no strategy's weight reads it (neither can be hit by chance).
+    if (glm::dot(to.normal, to.normal) > 0.0f) pdf *= std::fabs(glm::dot(to.normal, d)) / std::sqrt(distance2);
+    return pdf;
+}
 
 // Where one scattering step left a vertex, as the walk sampled it or as a test prescribes it.
 struct ScatterStep {

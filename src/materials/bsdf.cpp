@@ -3,20 +3,26 @@
 namespace lightpath {
 
 const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) const {
-    if (wo == probabilitiesWo_) return probabilities_;  // a zero wo never reaches here twice: it is not unit
-    probabilitiesWo_ = wo;
-    std::array<float, kMaxLobes>& weights = probabilities_;
+    if (wo == first_.wo) return first_.probabilities;
+    if (wo == last_.wo) return last_.probabilities;
+    LobeChoice& choice = first_.wo == Vec3{0.0f} ? first_ : last_;
+    choice.wo = wo;
+    computeLobeProbabilities(choice);
+    return choice.probabilities;
+}
+
+void Bsdf::computeLobeProbabilities(LobeChoice& choice) const {
+    std::array<float, kMaxLobes>& weights = choice.probabilities;
     weights.fill(0.0f);
     for (int l = 0; l < int(lobes_.size()); ++l)
-        if (!lobes_[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, wo);
+        if (!lobes_[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, choice.wo);
     SpecularBranches branches;
-    const int count = material_.specularBranches(side_, wo, branches);
+    const int count = material_.specularBranches(side_, choice.wo, branches);
     for (int b = 0; b < count; ++b) weights[branches[b].lobe] = branches[b].albedo;
     float total = 0.0f;
     for (float w : weights) total += w;
     if (total > 0.0f)
         for (float& w : weights) w /= total;
-    return weights;
 }
 
 float Bsdf::pdf(int lobe, const Vec3& wo, const Vec3& wi) const {

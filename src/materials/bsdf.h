@@ -61,14 +61,21 @@ public:
 private:
     // Probability of choosing each lobe for wo, in proportion to its albedo. Integrators ask
     // for the same wo again and again (pdf per lobe in next-event estimation, then sample), so
-    // the last answer is kept: for Fresnel glass it costs a Fresnel evaluation.
+    // answers are kept: for Fresnel glass it costs a Fresnel evaluation. Two of them: the first
+    // wo asked (the hit's own) and the last other one, so bdpt's joins, which alternate the
+    // hit's wo with the reverse density's wo (wo and wi swapped), keep the first.
     const std::array<float, kMaxLobes>& lobeProbabilities(const Vec3& wo) const;
+
+    struct LobeChoice {
+        Vec3 wo{0.0f};  // zero: not yet asked (a wo is unit)
+        std::array<float, kMaxLobes> probabilities{};
+    };
+    void computeLobeProbabilities(LobeChoice& choice) const;
 
     const Material& material_;
     Lobes lobes_;  // asked once per hit: integrators read a lobe's event at every step
     SurfaceSide side_;
-    mutable Vec3 probabilitiesWo_{0.0f};
-    mutable std::array<float, kMaxLobes> probabilities_{};
+    mutable LobeChoice first_, last_;
 };
 
 }  // namespace lightpath

@@ -222,5 +222,42 @@ TEST_CASE("sampling agrees with eval / pdf, also for wo below the shading normal
     checkSamplingMatchesEval(makeMaterial<ModifiedPhongMaterial>({0.5f, 0.3f, 0.1f}, Rgb{0.4f}, 10), "modified Phong");
 }
 
+// Bsdf keeps the lobe choice of the first wo asked and of the last other one (bdpt alternates a
+// hit's wo with its reverse densities' wo): a kept answer must be the one for the wo asked. With
+// Fresnel and a red mirror beside blue glass, the delta branches' share, and so the diffuse and
+// highlight lobes' probabilities, change with wo.
+TEST_CASE("Bsdf::pdf answers as a fresh Bsdf does, whatever wo was asked before") {
+    PhongMaterial material = makeMaterial(Rgb{0.5f}, Rgb{0.3f}, 20);
+    material.kr = Rgb{0.5f, 0.0f, 0.0f};
+    material.kt = Rgb{0.0f, 0.0f, 0.5f};
+    material.fresnel = true;
+    const Bsdf kept(material, {0, 0, 1}, true);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<float> cosine(0.05f, 1.0f), azimuth(0.0f, 6.2831853f);
+    auto direction = [&] {
+        const float c = cosine(rng), s = std::sqrt(1.0f - c * c), phi = azimuth(rng);
+        return Vec3{s * std::cos(phi), s * std::sin(phi), c};
+    };
+    const Vec3 own = direction();
+    int changed = 0;  // the control: pairs of wo whose lobe choice differs, or the test shows nothing
+    for (int i = 0; i < 200; ++i) {
+        // The hit's own wo, then two others, then the own again: every slot is hit and replaced.
+        const Vec3 wos[] = {own, direction(), direction(), own, direction()};
+        const Vec3 wi = direction();
+        for (const Vec3& wo : wos) {
+            for (int lobe : {int(PhongMaterial::kDiffuse), int(PhongMaterial::kHighlight)}) {
+                const Bsdf fresh(material, {0, 0, 1}, true);
+                CAPTURE(i);
+                CAPTURE(lobe);
+                CHECK(kept.pdf(lobe, wo, wi) == fresh.pdf(lobe, wo, wi));
+            }
+        }
+        // The diffuse density is the lobe's choice times cos(wi) / pi: it differs with wo by the choice.
+        const Bsdf fresh(material, {0, 0, 1}, true);
+        const float atOwn = fresh.pdf(PhongMaterial::kDiffuse, own, wi);
+        changed += std::fabs(atOwn - fresh.pdf(PhongMaterial::kDiffuse, wos[1], wi)) > 1e-3f * atOwn;
+    }
+    CHECK(changed > 100);
+}
 }  // namespace
 }  // namespace lightpath
