@@ -384,7 +384,8 @@ private:
         return out;
     }
 
-    // TANGENT: xyz a unit tangent, w the bitangent's sign, +1 or -1 (glTF 2.0, 3.7.2.1).
+    // TANGENT: xyz a unit tangent, w the bitangent's sign, +1 or -1 (glTF 2.0, 3.7.2.1); any other
+    // finite w is read by its sign (0 as +1), as viewers do.
     std::vector<Vec4> tangents(int index, const std::string& where) const {
         const View v = view(index, TINYGLTF_TYPE_VEC4, where);
         if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components");
@@ -392,10 +393,9 @@ private:
         for (std::size_t i = 0; i < v.count; ++i) {
             float xyzw[4];
             std::memcpy(xyzw, v.data + i * v.stride, sizeof xyzw);
-            if (!finite(xyzw[0]) || !finite(xyzw[1]) || !finite(xyzw[2]) || (xyzw[3] != 1.0f && xyzw[3] != -1.0f))
-                fail(where, "element " + std::to_string(i) + " is no tangent: expected x, y, z " +
-                                std::string(kMagnitudeRange) + " and w 1 or -1");
-            out[i] = Vec4(xyzw[0], xyzw[1], xyzw[2], xyzw[3]);
+            if (!finite(xyzw[0]) || !finite(xyzw[1]) || !finite(xyzw[2]) || !finite(xyzw[3]))
+                fail(where, "element " + std::to_string(i) + " is not 4 numbers " + std::string(kMagnitudeRange));
+            out[i] = Vec4(xyzw[0], xyzw[1], xyzw[2], xyzw[3] < 0.0f ? -1.0f : 1.0f);
         }
         return out;
     }
