@@ -50,14 +50,18 @@ bool embreeAvailable() {
 SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes,
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
                              std::vector<TriangleNormals> vertexNormals, unsigned buildThreads,
-                             std::vector<ShapeRecord> shapes, std::vector<TriangleUvs> triangleUvs)
+                             std::vector<ShapeRecord> shapes, std::vector<TriangleUvs> triangleUvs,
+                             std::vector<TriangleTangents> triangleTangents)
     : triangles_(std::move(triangles)), vertexNormals_(std::move(vertexNormals)), triangleUvs_(std::move(triangleUvs)),
+      triangleTangents_(std::move(triangleTangents)),
       numerics_(numerics),
       accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
         throw std::invalid_argument("vertex normals: expected one entry per triangle");
     if (!triangleUvs_.empty() && triangleUvs_.size() != triangles_.size())
         throw std::invalid_argument("texture coordinates: expected one entry per triangle");
+    if (!triangleTangents_.empty() && triangleTangents_.size() != triangles_.size())
+        throw std::invalid_argument("tangents: expected one entry per triangle");
     shapes_.reserve(spheres.size() + planes.size() + shapes.size());
     for (const Sphere& sphere : spheres) shapes_.push_back(sphereRecord(sphere));
     for (const Plane& plane : planes) shapes_.push_back(planeRecord(plane));
@@ -343,6 +347,10 @@ SurfaceParameters SceneGeometry::surfaceParameters(const SurfaceHit& hit) const 
     const Vec3 w = barycentricsOf(tri, hit.point);
     SurfaceParameters result;
     result.uv = w.x * uvs.a + w.y * uvs.b + w.z * uvs.c;
+    if (!triangleTangents_.empty()) {
+        const TriangleTangents& t = triangleTangents_[index];
+        result.tangent = w.x * t.a + w.y * t.b + w.z * t.c;
+    }
     // dp/du and dp/dv from the corners (pbrt-v4 6.5.3): solve [duv02 duv12] [dpdu dpdv]^T = [dp02 dp12].
     const Vec2 duv02 = uvs.a - uvs.c, duv12 = uvs.b - uvs.c;
     const Vec3 dp02 = tri.a - tri.c, dp12 = tri.b - tri.c;
@@ -356,6 +364,20 @@ SurfaceParameters SceneGeometry::surfaceParameters(const SurfaceHit& hit) const 
     result.dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
     result.dpdv = (duv02.x * dp12 - duv12.x * dp02) / det;
     return result;
+}
+
+Vec2 SceneGeometry::uvAt(std::uint32_t id, const Vec3& point, const Vec3& normal, const Vec3* barycentrics) const {
+    if (id >= shapes_.size() && !triangleUvs_.empty() && triangleUvs_[id - firstTriangle()].given) {
+        const std::uint32_t index = id - firstTriangle();
+        const TriangleUvs& uvs = triangleUvs_[index];
+        const Vec3 w = barycentrics != nullptr ? *barycentrics : barycentricsOf(triangles_[index], point);
+        return w.x * uvs.a + w.y * uvs.b + w.z * uvs.c;
+    }
+    SurfaceHit hit;
+    hit.point = point;
+    hit.normal = normal;
+    hit.primitive = id;
+    return surfaceParameters(hit).uv;
 }
 
 }  // namespace lightpath

@@ -49,7 +49,8 @@ public:
     SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> planes, std::vector<Triangle> triangles,
                   NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
                   std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0,
-                  std::vector<ShapeRecord> shapes = {}, std::vector<TriangleUvs> triangleUvs = {});
+                  std::vector<ShapeRecord> shapes = {}, std::vector<TriangleUvs> triangleUvs = {},
+                  std::vector<TriangleTangents> triangleTangents = {});
     // `spheres` and `planes` become the table's first records (geometry/builtin_shapes.h), in
     // that order, before `shapes`.
     // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
@@ -78,8 +79,13 @@ public:
 
     // The texture coordinates of a hit and dpdu, dpdv there: a kind's `parametrise`, a triangle's
     // corner uvs interpolated, else (a triangle without uvs, a kind without one) metres along the
-    // tangent frame of its normal (sampling/warp.h's Frame), from the world's origin.
+    // tangent frame of its normal (sampling/warp.h's Frame), from the world's origin; a triangle's
+    // corner tangents interpolated where its mesh gives them.
     SurfaceParameters surfaceParameters(const SurfaceHit& hit) const;
+    // The texture coordinates surfaceParameters gives a point on primitive `id` (geometric normal
+    // `normal`); a triangle's from `barycentrics` (weights of a, b, c) when given, as a point
+    // sampled on it has them, else from the point.
+    Vec2 uvAt(std::uint32_t id, const Vec3& point, const Vec3& normal, const Vec3* barycentrics = nullptr) const;
 
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }
@@ -122,6 +128,7 @@ private:
     bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     std::vector<TriangleUvs> triangleUvs_;        // empty, or one per triangle
+    std::vector<TriangleTangents> triangleTangents_;  // empty, or one per triangle
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // bounded shapes and triangles (Bvh); no triangles (Embree)

@@ -40,12 +40,21 @@ struct TriangleUvs {
     bool given = false;
 };
 
+// The tangents at a triangle's corners as a mesh gives them (glTF's TANGENT, 3.7.2.1): xyz the
+// unit tangent, w the bitangent's sign (bitangent = w cross(normal, tangent)); all zero: none.
+struct TriangleTangents {
+    Vec4 a{0.0f}, b{0.0f}, c{0.0f};
+};
+
 // A surface point's texture coordinates and the surface's derivatives along them (pbrt-v4's
 // dpdu, dpdv): what turns a footprint on the surface into one in texture space.
 struct SurfaceParameters {
     Vec2 uv{0.0f};
     Vec3 dpdu{0.0f};
     Vec3 dpdv{0.0f};
+    // A mesh's tangent there (TriangleTangents interpolated), the normal map's frame in place of
+    // dpdu and dpdv; zero where the mesh gives none.
+    Vec4 tangent{0.0f};
 };
 
 // The smallest emitting area a light samples: below the smallest normal float, the density 1/A

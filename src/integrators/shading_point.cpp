@@ -63,7 +63,15 @@ ShadingPoint makeShadingPoint(const SurfaceHit& hit, const Ray& ray, const Rende
     if (m.textured) {
         const SurfaceParameters surface = context.geometry.surfaceParameters(hit);
         texture = footprintOf(hit, surface, context);
-        if (m.normalMap.texture) shadingNormal = m.normalMap.perturb(hit.shadingNormal, surface.dpdu, surface.dpdv, texture);
+        if (m.normalMap.texture) {
+            // The mesh's tangent when it gives one (glTF 2.0, 3.7.2.1: bitangent = w cross(normal,
+            // tangent)), else the uvs' dp/du and dp/dv.
+            const Vec3 tangent(surface.tangent);
+            const bool given = surface.tangent.w != 0.0f;
+            shadingNormal = m.normalMap.perturb(
+                hit.shadingNormal, given ? tangent : surface.dpdu,
+                given ? surface.tangent.w * glm::cross(hit.shadingNormal, tangent) : surface.dpdv, texture);
+        }
     }
     const Vec3 normal = entering ? shadingNormal : -shadingNormal;
     return {hit,    -ray.direction, normal, entering, m, context.analysis.materials[material],

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "geometry/intersect.h"
 #include "sampling/warp.h"
@@ -30,9 +31,9 @@ bool emitsTwoSided(const SceneGeometry& geometry, std::uint32_t primitive) {
 
 }  // namespace
 
-AreaLightSource::AreaLightSource(const PathEvent& event, Rgb emission, const SceneGeometry& geometry,
+AreaLightSource::AreaLightSource(const PathEvent& event, ColorParameter emission, const SceneGeometry& geometry,
                                  const std::vector<std::uint32_t>& primitives)
-    : Light(event), emission_(emission), geometry_(geometry) {
+    : Light(event), emission_(std::move(emission)), geometry_(geometry) {
     std::size_t twoSidedCount = 0;
     for (std::uint32_t primitive : primitives) {
         const float area = shapeArea(geometry, primitive);
@@ -67,27 +68,40 @@ AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
 
     if (const ShapeRecord* shape = geometry_.shapeOf(it->primitive)) {
         const AreaSample p = shape->ops->sampleArea(*shape, u);
-        return {p.point, p.normal};
+        if (!emission_.textured()) return {p.point, p.normal};
+        return {p.point, p.normal, geometry_.uvAt(it->primitive, p.point, p.normal)};
     }
     const Triangle& t = geometry_.triangleOf(it->primitive);
     const Vec3 b = sampleUniformTriangle(u);
-    return {b.x * t.a + b.y * t.b + b.z * t.c, it->triangleNormal};
+    const Vec3 point = b.x * t.a + b.y * t.b + b.z * t.c;
+    if (!emission_.textured()) return {point, it->triangleNormal};
+    // The sampled barycentrics interpolate the corners' uvs: the same uv a ray hitting `point` finds.
+    return {point, it->triangleNormal, geometry_.uvAt(it->primitive, point, it->triangleNormal, &b)};
+}
+
+Rgb AreaLightSource::emissionAt(Vec2 uv) const {
+    SurfaceSide side;
+    side.texture.uv = uv;
+    return emission_.at(side);
 }
 
 LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     LightSample s;
     if (!sampleable_) return s;
     SolidAngleSample byAngle;
+    Vec2 uv{0.0f};
     if (solidAngle_ && solidAngle_->ops->sampleSolidAngle(*solidAngle_, receiver, u, byAngle)) {
         if (!(byAngle.pdf > 0.0f)) return s;
         s.point = byAngle.point;
         s.normal = byAngle.normal;
         s.pdf = byAngle.pdf;
+        if (emission_.textured()) uv = geometry_.uvAt(shapes_[0].primitive, s.point, s.normal);
     } else {
         const SurfacePoint p = samplePoint(u);
         s.point = p.point;
         s.normal = p.normal;
         s.pdf = areaToSolidAngle(1.0f / area_, receiver, p.point, p.normal);
+        uv = p.uv;
     }
     const Vec3 toLight = s.point - receiver;
     s.distance = std::sqrt(glm::dot(toLight, toLight));
@@ -98,7 +112,7 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     s.wi = toLight / s.distance;
     // The receiver behind a one-sided emitter sees nothing of it (spheres emit on both sides).
     if (!spheres_ && -glm::dot(s.normal, s.wi) <= 0.0f) s.pdf = 0.0f;
-    if (s.pdf > 0.0f) s.weight = emission_ / s.pdf;
+    if (s.pdf > 0.0f) s.weight = emissionAt(uv) / s.pdf;
     return s;
 }
 
@@ -129,7 +143,7 @@ EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     e.ray.origin = p.point;
     e.ray.direction = Frame(normal).toWorld(local);
     e.normal = normal;
-    e.radiance = emission_;
+    e.radiance = emissionAt(p.uv);
     e.pdfPosition = 1.0f / area_;
     e.pdfDirection = cosineHemispherePdf(local.z) * (spheres_ ? 0.5f : 1.0f);
     return e;
@@ -144,12 +158,15 @@ float AreaLightSource::pdfEmissionDirection(const Vec3& normal, const Vec3& dire
 
 Rgb AreaLightSource::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
     if (!spheres_ && glm::dot(hit.normal, towardViewer) <= 0.0f) return Rgb{0.0f};
-    return emission_;
+    if (!emission_.textured()) return emission_.constant();
+    return emissionAt(geometry_.uvAt(hit.primitive, hit.point, hit.normal));
 }
 
 Rgb AreaLightSource::power() const {
-    // Le pi A for a one-sided Lambertian emitter; a sphere emits from both sides of its surface.
-    return emission_ * (kPi * area_ * (spheres_ ? 2.0f : 1.0f));
+    // Le pi A for a one-sided Lambertian emitter; a sphere emits from both sides of its surface. A
+    // texture's mean over its image stands for its mean over the surface: any positive power keeps
+    // light choice unbiased; a closer one only lowers the noise.
+    return emission_.mean() * (kPi * area_ * (spheres_ ? 2.0f : 1.0f));
 }
 
 float areaToSolidAngle(float pdfArea, const Vec3& receiver, const Vec3& point, const Vec3& normal) {

@@ -4,13 +4,16 @@
 // sides, so a closed emissive sphere also lights its inside. Light sampling picks points
 // uniformly by area, except on a sphere seen from outside, where it samples the cone of
 // directions the sphere subtends (pbrt-v4 6.2.4): its density then stays finite and noiseless
-// for a sphere of any size at any distance.
+// for a sphere of any size at any distance. A textured emission (materials/texture.h) is read at
+// the texture coordinates of the point a ray hits or a sample picks (SceneGeometry::uvAt); the
+// light's power, which only steers the choice of lights, takes the texture's mean.
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "accel/scene_geometry.h"
 #include "lights/light.h"
+#include "materials/texture.h"
 
 namespace lightpath {
 
@@ -20,7 +23,7 @@ public:
     // left out. Throws std::invalid_argument when they mix spheres and triangles: the two emit on
     // different sides, and pdfEmissionDirection, given only a normal, could not tell which applies
     // (one scene object is one sphere or a mesh).
-    AreaLightSource(const PathEvent& event, Rgb emission, const SceneGeometry& geometry,
+    AreaLightSource(const PathEvent& event, ColorParameter emission, const SceneGeometry& geometry,
                     const std::vector<std::uint32_t>& primitives);
 
     LightSample sample(const Vec3& receiver, Vec2 u) const override;
@@ -48,11 +51,14 @@ private:
     };
     struct SurfacePoint {
         Vec3 point, normal;
+        Vec2 uv{0.0f};  // its texture coordinates, found only when the emission is textured
     };
     // A point uniformly by area: a shape in proportion to its area, then a point on it.
     SurfacePoint samplePoint(Vec2 u) const;
+    // Le at texture coordinates `uv` (the constant when untextured).
+    Rgb emissionAt(Vec2 uv) const;
 
-    Rgb emission_;
+    ColorParameter emission_;
     const SceneGeometry& geometry_;
     std::vector<Shape> shapes_;
     float area_ = 0.0f;

@@ -128,7 +128,7 @@ constexpr Range kExtinctionRange{0.0, 20.0, false, false};
 
 MaterialSlot makeConductor(const ParameterValues& values) {
     ConductorMaterial material(values.colour("eta"), values.colour("k"), values.number("roughness"));
-    material.emission = values.colour("emission");
+    material.emission = colorParameter(values, "emission");
     return material;
 }
 

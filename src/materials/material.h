@@ -19,7 +19,9 @@ public:
     virtual ~Material() = default;
 
     std::string name;
-    Rgb emission{0.0f};  // emitted radiance: makes the surface an emitter (`O`, or `L` when declared a light)
+    // Emitted radiance: makes the surface an emitter (`O`, or `L` when declared a light). Its light
+    // (lights/area_light.h) reads a texture at the emitting point's uv; `textured` is not needed for it.
+    ColorParameter emission;
     // Some parameter is a texture (materials/texture.h): shading points then find their texture
     // coordinates and footprint, which an untextured material never pays for.
     bool textured = false;

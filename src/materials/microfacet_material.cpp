@@ -253,7 +253,7 @@ constexpr Range kUnitInterval{0.0, 1.0, false, false};
 MaterialSlot makeMicrofacet(const ParameterValues& values) {
     MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
                                 values.number("roughness"));
-    material.emission = values.colour("emission");
+    material.emission = colorParameter(values, "emission");
     return material;
 }
 

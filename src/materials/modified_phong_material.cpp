@@ -88,7 +88,7 @@ MaterialSlot makeModifiedPhong(const ParameterValues& values) {
     material.kd = colorParameter(values, "kd");
     material.ks = colorParameter(values, "ks");
     material.n = values.number("n");
-    material.emission = values.colour("emission");
+    material.emission = colorParameter(values, "emission");
     return material;
 }
 

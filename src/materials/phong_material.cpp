@@ -142,7 +142,7 @@ MaterialSlot makePhong(const ParameterValues& values) {
     material.kt = colorParameter(values, "kt");
     material.ior = values.number("ior");
     material.fresnel = values.boolean("fresnel");
-    material.emission = values.colour("emission");
+    material.emission = colorParameter(values, "emission");
     return material;
 }
 

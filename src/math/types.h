@@ -7,6 +7,7 @@ namespace lightpath {
 
 using Vec3 = glm::vec3;
 using Vec2 = glm::vec2;
+using Vec4 = glm::vec4;
 // Linear RGB radiance or reflectance, one float per channel.
 using Rgb = glm::vec3;
 

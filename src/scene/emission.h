@@ -14,7 +14,7 @@ namespace lightpath {
 // emits; none when `object` emits nothing.
 inline std::optional<lpe::EventType> emissionEventOf(const Scene& scene, std::uint32_t object) {
     const SceneObject& o = scene.objects[object];
-    if (isBlack(scene.materials[o.material]->emission)) return std::nullopt;
+    if (scene.materials[o.material]->emission.black()) return std::nullopt;
     return o.declaredLight ? lpe::EventType::Emitter : lpe::EventType::ObjectEmission;
 }
 

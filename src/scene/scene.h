@@ -55,6 +55,8 @@ struct Scene {
     std::vector<TriangleNormals> triangleNormals;
     // Empty when no triangle has texture coordinates, else one entry per triangle (meshes' `vt`).
     std::vector<TriangleUvs> triangleUvs;
+    // Empty when no triangle has tangents, else one entry per triangle (glTF's TANGENT).
+    std::vector<TriangleTangents> triangleTangents;
 
     // Legal but probably unintended, located like errors ("FILE:LINE:COL: KEY: ..."), e.g. a
     // triangle without area. The command line prints them.

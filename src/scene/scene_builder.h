@@ -27,7 +27,7 @@ public:
     virtual void addLight(LightSlot light) = 0;
     // An area light's object: a material of its own that only emits `radiance`, labelled `name` or,
     // unnamed, by that material's name "area-light-K". Returns the object index shapes store.
-    virtual std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) = 0;
+    virtual std::uint32_t addEmitterObject(std::string name, const ColorParameter& radiance) = 0;
     virtual void addSphere(const Sphere& sphere) = 0;
     virtual void addPlane(const Plane& plane) = 0;
     // A triangle shaded flat (its geometric normal).
@@ -37,6 +37,8 @@ public:
     virtual void addTriangle(const Triangle& triangle, const TriangleNormals& normals) = 0;
     // The texture coordinates at the corners of the triangle added last (a mesh's `vt`).
     virtual void setTriangleUvs(const TriangleUvs& uvs) { (void)uvs; }
+    // The tangents at the corners of the triangle added last (glTF's TANGENT).
+    virtual void setTriangleTangents(const TriangleTangents& tangents) { (void)tangents; }
     // A shape declaration's object, from its `name` (optional) and `material` (a material of the
     // scene, else a located error at `material`). Returns the object index its shapes store.
     virtual std::uint32_t addShapeObject(const ParameterValues& values) = 0;
@@ -49,7 +51,7 @@ public:
     virtual std::uint32_t sceneMaterial(MaterialSlot material) = 0;
     // The folder of the scene file: the files it names (a mesh's OBJ) are relative to it.
     virtual std::filesystem::path folder() const = 0;
-    // The emission of object `object`'s material (for tooSmallToSampleWarning).
+    // The emission of object `object`'s material, its mean where textured (for tooSmallToSampleWarning).
     virtual Rgb emissionOf(std::uint32_t object) const = 0;
     virtual void addShape(const ShapeRecord& shape) = 0;
     // A camera a model file brings (a glTF camera): the scene's camera unless it has one already

@@ -290,7 +290,7 @@ public:
     explicit LoadingScene(Scene& scene) : scene_(scene) {}
 
     void addLight(LightSlot light) override { scene_.lights.push_back(std::move(light)); }
-    std::uint32_t addEmitterObject(std::string name, const Rgb& radiance) override {
+    std::uint32_t addEmitterObject(std::string name, const ColorParameter& radiance) override {
         PhongMaterial material;
         material.name = "area-light-" + std::to_string(scene_.materials.size());
         material.emission = radiance;
@@ -313,6 +313,10 @@ public:
         scene_.triangleUvs.resize(scene_.triangles.size());
         scene_.triangleUvs.back() = uvs;
     }
+    void setTriangleTangents(const TriangleTangents& tangents) override {
+        scene_.triangleTangents.resize(scene_.triangles.size());
+        scene_.triangleTangents.back() = tangents;
+    }
     std::uint32_t addShapeObject(const ParameterValues& values) override;
     std::uint32_t addObject(std::string name, std::uint32_t material) override {
         scene_.objects.push_back({std::move(name), material});
@@ -326,7 +330,7 @@ public:
     }
     std::filesystem::path folder() const override { return scene_.source.parent_path(); }
     Rgb emissionOf(std::uint32_t object) const override {
-        return scene_.materials[scene_.objects[object].material]->emission;
+        return scene_.materials[scene_.objects[object].material]->emission.mean();
     }
     void addShape(const ShapeRecord& shape) override { scene_.shapes.push_back(shape); }
     void warn(std::string located) override { scene_.warnings.push_back(std::move(located)); }
@@ -522,6 +526,7 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
     // Flat triangles after the last one with normals have none yet.
     if (!scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
     if (!scene.triangleUvs.empty()) scene.triangleUvs.resize(scene.triangles.size());
+    if (!scene.triangleTangents.empty()) scene.triangleTangents.resize(scene.triangles.size());
     return scene;
 }
 

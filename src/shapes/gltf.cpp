@@ -115,6 +115,7 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
             scene.addTriangle(placed, placement.normals(model.normals[i]));
         }
         if (!model.uvs.empty() && model.uvs[i].given) scene.setTriangleUvs(model.uvs[i]);
+        if (!model.tangents.empty()) scene.setTriangleTangents(placement.tangents(model.tangents[i]));
     }
     if (values.boolean("lights"))
         for (const GltfLight& light : model.lights) addLight(light, placement, values, scene);

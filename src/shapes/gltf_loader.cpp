@@ -103,6 +103,7 @@ private:
         for (std::size_t i = 0; i < model_.materials.size(); ++i) {
             const tinygltf::Material& m = model_.materials[i];
             const std::string where = "materials[" + std::to_string(i) + "]";
+            uvSet_ = kNoUvSet;
             const auto& pbr = m.pbrMetallicRoughness;
             const std::vector<double> base =
                 factor(pbr.baseColorFactor, 4, 0.0, 1.0, {1, 1, 1, 1}, where + ".pbrMetallicRoughness.baseColorFactor");
@@ -152,7 +153,16 @@ private:
                 slot->textured = textured;  // shading points then carry their uv and footprint
                 return slot;
             }();
-            material->emission = float(strength) * Rgb(float(emissive[0]), float(emissive[1]), float(emissive[2]));
+            // glTF 2.0, 3.9.3: the sRGB emissiveTexture times emissiveFactor (times the strength).
+            const Rgb emission = float(strength) * Rgb(float(emissive[0]), float(emissive[1]), float(emissive[2]));
+            material->emission = emission;
+            if (auto texture = open(m.emissiveTexture.index, m.emissiveTexture.texCoord, TextureColorSpace::srgb,
+                                    where + ".emissiveTexture")) {
+                if (isBlack(emission))
+                    warn(where + ".emissiveTexture: its emissiveFactor (default [0, 0, 0]) is black: it emits nothing");
+                else
+                    material->emission = ColorParameter(texture->first, emission, texture->second);
+            }
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
             if (auto texture = open(m.normalTexture.index, m.normalTexture.texCoord, TextureColorSpace::linear,
                                     where + ".normalTexture")) {
@@ -161,9 +171,8 @@ private:
                                        texture->second};
                 material->textured = true;
             }
-            if (m.emissiveTexture.index >= 0)
-                warn(where + ".emissiveTexture: emissive textures are not read yet; emissiveFactor alone is used");
             out_.materials.push_back(std::move(material));
+            uvSetOfMaterial_.push_back(uvSet_);
         }
         materialLabels_ = std::move(taken);
     }
@@ -173,13 +182,16 @@ private:
     using OpenedTexture = std::pair<std::shared_ptr<const Texture>, TextureSampling>;
 
     // Texture `index` (a material's textureInfo) opened with its sampler's wrap modes; nothing
-    // (and a warning: the material keeps its factor) when there is none or it cannot be read.
+    // (and a warning: the material keeps its factor) when there is none or it cannot be read. Its
+    // texCoord becomes the material's uv set (uvSet_): a triangle carries one set, its material's.
     std::optional<OpenedTexture> open(int index, int texCoord, TextureColorSpace colorSpace, const std::string& where) {
         if (index < 0) return std::nullopt;
         if (std::size_t(index) >= model_.textures.size())
             fail(where + ".index", "expected a texture index below " + std::to_string(model_.textures.size()) + ", got " +
                                        std::to_string(index));
-        if (texCoord != 0) warn(where + ": texCoord " + std::to_string(texCoord) + " is read as TEXCOORD_0 (only the first set is read)");
+        if (texCoord < 0 || texCoord > kMaxUvSet)
+            fail(where + ".texCoord", "expected a set from 0 to " + std::to_string(kMaxUvSet) + ", got " +
+                                          std::to_string(texCoord));
         const tinygltf::Texture& t = model_.textures[std::size_t(index)];
         const std::string at = "textures[" + std::to_string(index) + "]";
         if (t.source < 0 || std::size_t(t.source) >= model_.images.size()) {
@@ -198,6 +210,12 @@ private:
         std::shared_ptr<const Texture> texture = image(t.source, colorSpace);
         if (!texture) return std::nullopt;
         usesTextures_ = true;
+        if (uvSet_ == kNoUvSet) {
+            uvSet_ = texCoord;
+        } else if (texCoord != uvSet_) {
+            warn(where + ": texCoord " + std::to_string(texCoord) + " is read as TEXCOORD_" + std::to_string(uvSet_) +
+                 ", the set of the material's other textures (a material's textures share one set)");
+        }
         return OpenedTexture{std::move(texture), sampling};
     }
 
@@ -322,7 +340,10 @@ private:
         const tinygltf::Accessor& a = model_.accessors[std::size_t(index)];
         if (a.type != type)
             fail(at, std::string("expected type ") +
-                         (type == TINYGLTF_TYPE_VEC3 ? "VEC3" : type == TINYGLTF_TYPE_VEC2 ? "VEC2" : "SCALAR"));
+                         (type == TINYGLTF_TYPE_VEC4   ? "VEC4"
+                          : type == TINYGLTF_TYPE_VEC3 ? "VEC3"
+                          : type == TINYGLTF_TYPE_VEC2 ? "VEC2"
+                                                       : "SCALAR"));
         if (a.sparse.isSparse) fail(at, "expected a dense accessor; sparse accessors are not read");
         if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
             fail(at, "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
@@ -363,7 +384,23 @@ private:
         return out;
     }
 
-    // TEXCOORD_0 as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
+    // TANGENT: xyz a unit tangent, w the bitangent's sign, +1 or -1 (glTF 2.0, 3.7.2.1); any other
+    // finite w is read by its sign (0 as +1), as viewers do.
+    std::vector<Vec4> tangents(int index, const std::string& where) const {
+        const View v = view(index, TINYGLTF_TYPE_VEC4, where);
+        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components");
+        std::vector<Vec4> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            float xyzw[4];
+            std::memcpy(xyzw, v.data + i * v.stride, sizeof xyzw);
+            if (!finite(xyzw[0]) || !finite(xyzw[1]) || !finite(xyzw[2]) || !finite(xyzw[3]))
+                fail(where, "element " + std::to_string(i) + " is not 4 numbers " + std::string(kMagnitudeRange));
+            out[i] = Vec4(xyzw[0], xyzw[1], xyzw[2], xyzw[3] < 0.0f ? -1.0f : 1.0f);
+        }
+        return out;
+    }
+
+    // A TEXCOORD_n as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
     // where lightpath's runs up (OBJ's vt; io/image_texture.cpp reads t = 1 - v), so v' = 1 - v.
     std::vector<Vec2> textureCoordinates(int index, const std::string& where) const {
         const View v = view(index, TINYGLTF_TYPE_VEC2, where);
@@ -434,17 +471,33 @@ private:
                     fail(at + ".attributes.NORMAL", "expected " + std::to_string(positions.size()) +
                                                         " normals, one per position, got " + std::to_string(normals.size()));
             }
-            if (usesTextures_ && primitive.attributes.count("TANGENT") != 0 && !tangentsWarned_) {
-                tangentsWarned_ = true;
-                warn(at + ".attributes.TANGENT: tangents are not read; normal maps use the tangent frame of the uvs (per triangle)");
-            }
+            if (primitive.material >= 0 && std::size_t(primitive.material) >= model_.materials.size())
+                fail(at + ".material", "expected a material index below " + std::to_string(model_.materials.size()) +
+                                           ", got " + std::to_string(primitive.material));
+            // The set its material's textures name; TEXCOORD_0, when there, for an untextured one
+            // (a [[gltf]] `material` may put a textured material on it).
+            const int uvSet = primitive.material >= 0 ? uvSetOfMaterial_[std::size_t(primitive.material)] : kNoUvSet;
+            const std::string uvName = "TEXCOORD_" + std::to_string(uvSet == kNoUvSet ? 0 : uvSet);
             std::vector<Vec2> uvs;
-            if (const auto uv = primitive.attributes.find("TEXCOORD_0"); usesTextures_ && uv != primitive.attributes.end()) {
-                uvs = textureCoordinates(uv->second, at + ".attributes.TEXCOORD_0");
+            const auto uv = primitive.attributes.find(uvName);
+            if (usesTextures_ && uv == primitive.attributes.end() && uvSet != kNoUvSet)
+                fail(at + ".attributes", "expected a " + uvName + " accessor: material " +
+                                             std::to_string(primitive.material) + "'s textures name texCoord " +
+                                             std::to_string(uvSet));
+            if (usesTextures_ && uv != primitive.attributes.end()) {
+                uvs = textureCoordinates(uv->second, at + ".attributes." + uvName);
                 if (uvs.size() != positions.size())
-                    fail(at + ".attributes.TEXCOORD_0", "expected " + std::to_string(positions.size()) +
-                                                            " texture coordinates, one per position, got " +
-                                                            std::to_string(uvs.size()));
+                    fail(at + ".attributes." + uvName, "expected " + std::to_string(positions.size()) +
+                                                           " texture coordinates, one per position, got " +
+                                                           std::to_string(uvs.size()));
+            }
+            // Tangents for a normal map's frame; only a textured material reads them.
+            std::vector<Vec4> tangentsOf;
+            if (const auto tangent = primitive.attributes.find("TANGENT"); usesTextures_ && tangent != primitive.attributes.end()) {
+                tangentsOf = tangents(tangent->second, at + ".attributes.TANGENT");
+                if (tangentsOf.size() != positions.size())
+                    fail(at + ".attributes.TANGENT", "expected " + std::to_string(positions.size()) +
+                                                         " tangents, one per position, got " + std::to_string(tangentsOf.size()));
             }
             std::vector<std::uint32_t> order;
             if (primitive.indices >= 0) {
@@ -453,9 +506,6 @@ private:
                 order.resize(positions.size());
                 for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
             }
-            if (primitive.material >= 0 && std::size_t(primitive.material) >= model_.materials.size())
-                fail(at + ".material", "expected a material index below " + std::to_string(model_.materials.size()) +
-                                           ", got " + std::to_string(primitive.material));
             const std::uint32_t material = primitive.material >= 0 ? std::uint32_t(primitive.material) : defaultMaterial();
             const std::size_t slot = primitive.material >= 0 ? material : model_.materials.size();
             if (objectOfMaterial[slot] == kNoMeshMaterial) {
@@ -469,6 +519,16 @@ private:
                 const double length = glm::length(n);
                 return length > 0.0 && std::isfinite(length) ? Vec3(n / length) : Vec3(0.0f);
             };
+            // A tangent turns as the surface does; a mirroring transform flips the bitangent's sign,
+            // since cross(normal, tangent) flips while the mirrored bitangent does not.
+            const glm::dmat3 linear(world);
+            const double handedness = glm::determinant(linear) < 0.0 ? -1.0 : 1.0;
+            const auto turn = [&](std::uint32_t i) {
+                const glm::dvec3 t = linear * glm::dvec3(Vec3(tangentsOf[i]));
+                const double length = glm::length(t);
+                if (!(length > 0.0) || !std::isfinite(length)) return Vec4(0.0f);
+                return Vec4(Vec3(t / length), float(handedness * double(tangentsOf[i].w)));
+            };
             const auto addTriangle = [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
                 const Triangle t{place(i), place(j), place(k), object};
                 if (glm::cross(t.b - t.a, t.c - t.a) == Vec3(0.0f)) {
@@ -480,6 +540,11 @@ private:
                 out_.triangles.push_back(t);
                 if (usesTextures_)
                     out_.uvs.push_back(uvs.empty() ? TriangleUvs{} : TriangleUvs{uvs[i], uvs[j], uvs[k], true});
+                // Tangents for every triangle once any has them, zero (the uvs' frame) for the others.
+                if (!tangentsOf.empty() && out_.tangents.size() + 1 < out_.triangles.size())
+                    out_.tangents.resize(out_.triangles.size() - 1);
+                if (!tangentsOf.empty()) out_.tangents.push_back({turn(i), turn(j), turn(k)});
+                else if (!out_.tangents.empty()) out_.tangents.push_back({});
                 if (!normals.empty()) out_.normals.push_back({orient(i), orient(j), orient(k)});
                 else if (!out_.normals.empty()) out_.normals.push_back({});
             };
@@ -560,8 +625,12 @@ private:
     std::uint32_t defaultMaterial_ = kNoMeshMaterial;
     const ImageBytes& imageBytes_;
     std::map<std::pair<int, TextureColorSpace>, std::shared_ptr<const Texture>> images_;
-    bool usesTextures_ = false;  // some material is textured: triangles carry TEXCOORD_0
-    bool tangentsWarned_ = false;
+    bool usesTextures_ = false;  // some material is textured: triangles carry their material's uv set
+    // The TEXCOORD set each material's textures name (kNoUvSet: none), and the material's being read.
+    static constexpr int kNoUvSet = -1;
+    static constexpr int kMaxUvSet = 31;  // far above any exporter's; keeps the attribute's name short
+    std::vector<int> uvSetOfMaterial_;
+    int uvSet_ = kNoUvSet;
 };
 
 // Images are not decoded here: their bytes are kept for the texture opener (OpenImageIO), and an

@@ -3,9 +3,10 @@
 // nodes, their transforms (matrix or translation-rotation-scale, composed down the hierarchy)
 // applied to triangles and normals; metallic-roughness materials as `microfacet`, transmission as
 // glass; emissive materials; perspective cameras; KHR_lights_punctual lights as plain data (the
-// scene loader adds them through the light registry). Base-colour, metallic-roughness and normal textures
-// are opened through materials/texture.h (OpenImageIO): files beside the glTF, data URIs and .glb
-// bufferViews from memory; TEXCOORD_0 gives the uvs. Names become LPE labels (labelFromName),
+// scene loader adds them through the light registry). Base-colour, metallic-roughness, normal and
+// emissive textures are opened through materials/texture.h (OpenImageIO): files beside the glTF,
+// data URIs and .glb bufferViews from memory; a triangle's uvs are the TEXCOORD_n its material's
+// textures name (one set per material). Names become LPE labels (labelFromName),
 // collisions numbered.
 #include <cstdint>
 #include <filesystem>
@@ -56,6 +57,7 @@ struct GltfModel {
     std::vector<Triangle> triangles;      // `object` indexes `objects`
     std::vector<TriangleNormals> normals; // empty, or one per triangle (zero: shade flat)
     std::vector<TriangleUvs> uvs;         // empty (no material is textured), or one per triangle
+    std::vector<TriangleTangents> tangents;  // empty, or one per triangle (zero: none; TANGENT)
     std::vector<GltfLight> lights;
     std::vector<GltfCamera> cameras;
     std::vector<GltfRenaming> renamed;

@@ -47,25 +47,36 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         scene.warn(values.located("file", at(unknown.line) + "usemtl \"" + printableName(unknown.text) +
                                               "\" names no material of its material libraries; " + instead));
 
-    // `map_Kd` makes the material's kd a texture, relative to the OBJ's folder, times Kd (the MTL
-    // spec; a black Kd, which some tools write beside a map, counts as white). One that cannot be
-    // read is a warning, as everything else other tools forgive: Kd alone is used.
-    const auto withDiffuseTexture = [&](const PhongMaterial& mtl, std::uint32_t mtlIndex) {
-        PhongMaterial material = mtl;
-        const std::string& image = mesh.diffuseTextures[mtlIndex];
-        if (image.empty()) return material;
+    // `map_Kd` (`map_Ke`) makes the material's kd (emission) a texture, relative to the OBJ's
+    // folder, times Kd (Ke) (the MTL spec; a black Kd or Ke, which some tools write beside a map,
+    // counts as white). One that cannot be read is a warning, as everything else other tools
+    // forgive: Kd (Ke) alone is used.
+    const auto textured = [&](const ColorParameter& constant, const std::string& image, std::uint32_t mtlIndex,
+                              const char* statement, const char* colour) -> std::optional<ColorParameter> {
+        if (image.empty()) return std::nullopt;
         const std::filesystem::path path = file.parent_path() / image;
         std::string error;
         std::shared_ptr<const Texture> texture = openTexture({path.string()}, error);
         if (!texture) {
-            scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" + mtl.name +
-                                                  "\": cannot read its map_Kd \"" + printableName(image) + "\" (" + error +
-                                                  "); Kd is used"));
-            return material;
+            scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" +
+                                                  mesh.materials[mtlIndex].name + "\": cannot read its " + statement +
+                                                  " \"" + printableName(image) + "\" (" + error + "); " + colour +
+                                                  " is used"));
+            return std::nullopt;
         }
-        const Rgb tint = mtl.kd.black() ? Rgb{1.0f} : mtl.kd.constant();
-        material.kd = ColorParameter(std::move(texture), tint, 1.0f, true);
-        material.textured = true;
+        const Rgb tint = constant.black() ? Rgb{1.0f} : constant.constant();
+        return ColorParameter(std::move(texture), tint, 1.0f, true);
+    };
+    const auto withTextures = [&](const PhongMaterial& mtl, std::uint32_t mtlIndex) {
+        PhongMaterial material = mtl;
+        if (auto kd = textured(mtl.kd, mesh.diffuseTextures[mtlIndex], mtlIndex, "map_Kd", "Kd")) {
+            material.kd = std::move(*kd);
+            material.textured = true;  // shading points then carry their uv
+        }
+        // The emission's light finds its own uvs (lights/area_light.h): no shading point reads
+        // it, so `textured` stays as kd left it.
+        if (auto ke = textured(mtl.emission, mesh.emissionTextures[mtlIndex], mtlIndex, "map_Ke", "Ke"))
+            material.emission = std::move(*ke);
         return material;
     };
 
@@ -85,7 +96,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
                 scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" +
                                                       printableName(*original) + "\" is no label of " +
                                                       std::string(kNameCharacters) + "; it is labelled \"" + mtl.name + "\""));
-            objectOf[slot] = scene.addObject(name, scene.sceneMaterial(withDiffuseTexture(mtl, mtlIndex)));
+            objectOf[slot] = scene.addObject(name, scene.sceneMaterial(withTextures(mtl, mtlIndex)));
         }
         return objectOf[slot];
     };
@@ -93,7 +104,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
     if (mesh.degenerateDropped > 0)
         scene.warn(values.located("file", std::to_string(mesh.degenerateDropped) + " faces without area were left out"));
     const bool smooth = !mesh.normals.empty();
-    const bool textured = !mesh.uvs.empty();
+    const bool hasUvs = !mesh.uvs.empty();
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
         const Triangle& t = mesh.triangles[i];
         const Triangle placed = placeTriangle(placement, t, objectFor(t.object), values, file, i);
@@ -102,7 +113,7 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         } else {
             scene.addTriangle(placed);
         }
-        if (textured && mesh.uvs[i].given) scene.setTriangleUvs(mesh.uvs[i]);
+        if (hasUvs && mesh.uvs[i].given) scene.setTriangleUvs(mesh.uvs[i]);
     }
 }
 

@@ -39,6 +39,9 @@ struct MeshPlacement {
         return glm::normalize(Vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z));
     }
     TriangleNormals normals(const TriangleNormals& n) const { return {normal(n.a), normal(n.b), normal(n.c)}; }
+    // Tangents are directions along the surface: they turn as points do; the sign w stays.
+    Vec4 tangent(const Vec4& t) const { return t == Vec4(0.0f) ? t : Vec4(direction(Vec3(t)), t.w); }
+    TriangleTangents tangents(const TriangleTangents& t) const { return {tangent(t.a), tangent(t.b), tangent(t.c)}; }
 };
 
 inline MeshPlacement placementOf(const ParameterValues& values) {

@@ -245,6 +245,7 @@ ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& 
         mesh.materials.push_back(phongFromMtl(m.name, m.ambient, m.diffuse, m.specular, m.transmittance, m.emission,
                                               m.shininess, m.ior, m.dissolve, m.illum));
         mesh.diffuseTextures.push_back(m.diffuse_texname);
+        mesh.emissionTextures.push_back(m.emissive_texname);
     }
 
     const auto position = [&](const tinyobj::index_t& i) {

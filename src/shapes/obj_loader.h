@@ -33,6 +33,8 @@ struct ObjMesh {
     // Per material: its `map_Kd` image as the MTL names it (empty: none); the mesh's reader opens
     // it relative to the OBJ file's folder and makes it the material's kd texture.
     std::vector<std::string> diffuseTextures;
+    // Per material: its `map_Ke` image likewise (empty: none), the material's emission texture.
+    std::vector<std::string> emissionTextures;
     std::size_t degenerateDropped = 0;  // faces without area: they have no normal to shade with
     // Material libraries named by `mtllib` lines that could not be opened (paths as looked for),
     // and `usemtl` names that no library read defines, each with the OBJ line naming it. Faces of

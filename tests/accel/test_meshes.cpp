@@ -95,7 +95,7 @@ TEST_CASE("MTL materials map to the Phong material") {
     CHECK(glass.kr.constant() == Rgb(0.3f));
     const PhongMaterial& light = find("light");  // illum 2 with Tf 1: no transmission; Ke 10
     CHECK(light.kt.constant() == Rgb(0.0f));
-    CHECK(light.emission == Rgb(10.0f));
+    CHECK(light.emission.constant() == Rgb(10.0f));
     const PhongMaterial& wall = find("leftWall");
     CHECK(wall.kd.constant() == Rgb(0.63f, 0.065f, 0.05f));
     CHECK(wall.kr.constant() == Rgb(0.0f));

@@ -97,7 +97,7 @@ CheckResult checkSkipIdentity(const IntegratorInfo& integrator, const Scene& sce
 Scene brighter(Scene scene, float factor) {
     for (LightSlot& light : scene.lights)
         if (auto* point = dynamic_cast<PointLight*>(&*light)) point->intensity *= factor;
-    for (MaterialSlot& material : scene.materials) material->emission *= factor;
+    for (MaterialSlot& material : scene.materials) material->emission = material->emission.constant() * factor;
     scene.background *= factor;
     scene.ambient *= factor;
     return scene;

@@ -27,7 +27,7 @@ bool unitOrZero(const Vec3& n) { return finite(n) && (n == Vec3(0.0f) || std::ab
 void checkModel(const GltfModel& model) {
     for (const MaterialSlot& m : model.materials) {
         if (!isValidName(m->name)) broken("material labelled \"" + m->name + "\", no label");
-        if (!finiteNonNegative(m->emission))
+        if (!finiteNonNegative(m->emission.constant()))
             broken("material \"" + m->name + "\" emits a negative or non-finite radiance");
     }
     for (const GltfObject& o : model.objects) {

@@ -30,7 +30,7 @@ bool unitOrZero(const Vec3& n) {
 }
 
 void checkMaterial(const PhongMaterial& m) {
-    for (const Rgb& c : {m.ka.constant(), m.kd.constant(), m.ks.constant(), m.kr.constant(), m.kt.constant(), m.emission})
+    for (const Rgb& c : {m.ka.constant(), m.kd.constant(), m.ks.constant(), m.kr.constant(), m.kt.constant(), m.emission.constant()})
         if (!colour(c)) broken("MTL material \"" + m.name + "\" loaded with a colour outside 0..1e6");
     if (!withinLimit(m.n, 0.0)) broken("MTL material \"" + m.name + "\" loaded with an exponent n outside 0..1e6");
     if (!withinLimit(m.ior, 0.0) || m.ior == 0.0f) broken("MTL material \"" + m.name + "\" loaded with an ior outside (0, 1e6]");

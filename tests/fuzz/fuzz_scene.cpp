@@ -65,7 +65,7 @@ void checkScene(const Scene& scene) {
     for (const MaterialSlot& slot : scene.materials) {
         const std::string& name = slot->name;
         if (!isName(name)) broken("material name \"" + name + "\" is not a label");
-        std::vector<Rgb> colours{slot->emission};
+        std::vector<Rgb> colours{slot->emission.constant()};
         float exponent = 0.0f, ior = 1.0f;
         if (const auto* m = dynamic_cast<const PhongMaterial*>(&*slot)) {
             colours.insert(colours.end(), {m->ka.constant(), m->kd.constant(), m->ks.constant(), m->kr.constant(), m->kt.constant()});
@@ -93,7 +93,7 @@ void checkScene(const Scene& scene) {
             if (!(m->roughness() >= 0.0f && m->roughness() <= 1.0f)) broken("material " + name + " accepted with roughness outside [0, 1]");
         } else if (slot->isInterface()) {
             // An index-matched boundary: no keys, nothing to check but its emission (none).
-            if (!isBlack(slot->emission)) broken("interface material " + name + " accepted with an emission");
+            if (!slot->emission.black()) broken("interface material " + name + " accepted with an emission");
         } else {
             broken("material " + name + " has a type the fuzzer does not know");
         }

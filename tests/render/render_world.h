@@ -19,7 +19,7 @@ struct RenderWorld {
         : scene(std::move(s)),
           aovs(std::move(set)),
           geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh, scene.triangleNormals, 0,
-                   scene.shapes, scene.triangleUvs),
+                   scene.shapes, scene.triangleUvs, scene.triangleTangents),
           symbols(scene, aovs.automaton()),
           analysis(scene),
           lights(scene, geometry),

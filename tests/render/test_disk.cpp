@@ -25,7 +25,7 @@ class KeepShape final : public SceneBuilder {
 public:
     ShapeRecord shape;
     void addLight(LightSlot) override {}
-    std::uint32_t addEmitterObject(std::string, const Rgb&) override { return 0; }
+    std::uint32_t addEmitterObject(std::string, const ColorParameter&) override { return 0; }
     void addSphere(const Sphere&) override {}
     void addPlane(const Plane&) override {}
     void addTriangle(const Triangle&) override {}

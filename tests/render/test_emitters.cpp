@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -192,6 +194,45 @@ TEST_CASE("light set: a shapeless light that is not a delta is indexed as a ligh
     const test::RenderWorld world(scene);
     REQUIRE(world.lights.all().size() == 1);
     CHECK(world.lights.nextEventProbability(*world.lights.all()[0]) == 1.0f);
+}
+
+TEST_CASE("area light: a textured emission is read at the uv of the point hit or sampled, its power from the mean") {
+    // emissive-texture.toml: a unit quad light x in [-0.5, 0.5], y in [0.3, 1.3] at z = 0 facing
+    // +z, radiance 4 times a linear texture of quadrants 64 | 128 (below), 191 | 255 (above) / 255.
+    const Scene scene = loadScene(std::filesystem::path(LIGHTPATH_SOURCE_DIR) / "tests/render/data/gltf/emissive-texture.toml");
+    const test::RenderWorld world(scene);
+    const Light* light = nullptr;
+    for (std::uint32_t object = 0; object < scene.objects.size(); ++object)
+        if (world.lights.lightOfObject(object) != nullptr) light = world.lights.lightOfObject(object);
+    REQUIRE(light != nullptr);
+    const auto quadrant = [](const Vec3& p) {
+        const int level = p.y < 0.8f ? (p.x < 0.0f ? 64 : 128) : (p.x < 0.0f ? 191 : 255);
+        return 4.0f * float(level) / 255.0f;
+    };
+    // Light sampling: Le = weight pdf at each sampled point, the texel of its quadrant (points near
+    // the seams, which the bilinear filter blends, are left out).
+    const Vec3 receiver{0.1f, 0.8f, 1.0f};
+    int checked = 0;
+    for (int i = 0; i < 16; ++i)
+        for (int j = 0; j < 16; ++j) {
+            const LightSample s = light->sample(receiver, Vec2{(float(i) + 0.5f) / 16.0f, (float(j) + 0.5f) / 16.0f});
+            REQUIRE(s.pdf > 0.0f);
+            if (std::fabs(s.point.x) < 0.02f || std::fabs(s.point.y - 0.8f) < 0.02f) continue;
+            CAPTURE(s.point);
+            CHECK(s.weight.r * s.pdf == doctest::Approx(quadrant(s.point)).epsilon(1e-4));
+            ++checked;
+        }
+    CHECK(checked > 200);
+    // A ray hitting it: the same texel.
+    for (const Vec3 target : {Vec3{-0.25f, 0.55f, 0.0f}, Vec3{0.25f, 0.55f, 0.0f}, Vec3{-0.25f, 1.05f, 0.0f}, Vec3{0.25f, 1.05f, 0.0f}}) {
+        const Ray ray{receiver, glm::normalize(target - receiver)};
+        const std::optional<SurfaceHit> hit = world.geometry.intersect(ray);
+        REQUIRE(hit.has_value());
+        CHECK(world.lights.radiance(*hit, -ray.direction).g == doctest::Approx(quadrant(target)).epsilon(1e-4));
+    }
+    // Its power: pi A times the texture's mean, 4 (64 + 128 + 191 + 255) / (4 255), not the tint 4
+    // (OpenImageIO's mean of an 8-bit image is itself 8-bit: 160 / 255, 0.3% off).
+    CHECK(light->power().b == doctest::Approx(kPi * 4.0 * 638.0 / 1020.0).epsilon(0.01));
 }
 
 TEST_CASE("area light: one light is spheres or triangles, never both (#30)") {

@@ -199,15 +199,45 @@ TEST_CASE("textures: an OBJ's map_Kd is its kd, at its vt") {
     CHECK(white > 200);
 }
 
+TEST_CASE("textures: an OBJ's map_Ke is its emission, at its vt (a black Ke counting as white)") {
+    const std::filesystem::path folder = checkerboard().parent_path();
+    // The square of map_Kd's test, emitting upwards, seen from above with no light: a pixel is Le.
+    std::ofstream(folder / "glow.mtl") << "newmtl glow\nKd 0 0 0\nKe 0 0 0\nmap_Ke checker.png\n";
+    std::ofstream(folder / "glow.obj") << "mtllib glow.mtl\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\n"
+                                          "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl glow\nf 1/1 2/2 3/3 4/4\n";
+    const std::string text = "[camera]\neye = [0, 3, 0]\nlook_at = [0, 0, 0]\nup = [0, 0, -1]\nfov = 40\n"
+                             "resolution = [96, 72]\n[[meshes]]\nfile = \"" + (folder / "glow.obj").string() + "\"\n";
+    const Scene scene = loadSceneFromText(text, "obj.toml");
+    const Film film = renderBeauty(scene, 1);
+    const PinholeCamera camera(scene.camera);
+    int black = 0, white = 0;
+    for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) {
+            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+            const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
+            if (std::abs(p.x) >= 1.0f || std::abs(p.z) >= 1.0f) continue;
+            const float i = (p.x + 1.0f) / 2.0f * kTexels, j = (1.0f - (1.0f - p.z) / 2.0f) * kTexels;
+            const float wi = std::fmod(i, float(kCheck)), wj = std::fmod(j, float(kCheck));
+            if (wi < 2.0f || wi > kCheck - 2.0f || wj < 2.0f || wj > kCheck - 2.0f) continue;
+            CAPTURE(x);
+            CAPTURE(y);
+            const float expected = checkAt(int(i), int(j));
+            (expected == 0.0f ? black : white) += 1;
+            CHECK(film.at(0, x, y).g == doctest::Approx(expected).epsilon(1e-4));
+        }
+    CHECK(black > 200);
+    CHECK(white > 200);
+}
+
 TEST_CASE("textures: a texture file that cannot be read is an error at its key") {
     const std::string text = "[materials.wood]\nkd = { texture = \"/nonexistent/wood.png\" }\n";
     CHECK_THROWS_WITH_AS(loadSceneFromText(text, "wood.toml"),
                          doctest::Contains("wood.toml:2:6: materials.wood.kd: cannot read the texture \"/nonexistent/wood.png\""),
                          SceneError);
     // A parameter read as a constant refuses one, located too.
-    const std::string emission = "[materials.lamp]\nemission = { texture = \"" + checkerboard().string() + "\" }\n";
-    CHECK_THROWS_WITH_AS(loadSceneFromText(emission, "lamp.toml"),
-                         doctest::Contains("lamp.toml:2:12: materials.lamp.emission: expected a number or an array of 3 numbers (this parameter takes no texture)"),
+    const std::string eta = "[materials.gold]\ntype = \"conductor\"\neta = { texture = \"" + checkerboard().string() + "\" }\n";
+    CHECK_THROWS_WITH_AS(loadSceneFromText(eta, "gold.toml"),
+                         doctest::Contains("gold.toml:3:7: materials.gold.eta: expected a number or an array of 3 numbers (this parameter takes no texture)"),
                          SceneError);
 }
 

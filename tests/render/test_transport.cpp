@@ -102,7 +102,7 @@ Scene smallScene(const std::filesystem::path& file, int width = 16) {
 // Every light and the background 5% brighter: the control that must be rejected.
 Scene brighter(Scene scene) {
     for (LightSlot& light : scene.lights) pointLightOf(light).intensity *= 1.05f;
-    for (MaterialSlot& material : scene.materials) material->emission *= 1.05f;
+    for (MaterialSlot& material : scene.materials) material->emission = material->emission.constant() * 1.05f;
     scene.background *= 1.05f;
     return scene;
 }

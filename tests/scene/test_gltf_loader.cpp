@@ -91,9 +91,9 @@ TEST_CASE("a glTF emissive material emits its emissiveFactor times its emissive 
     const auto glow = std::find_if(scene.materials.begin(), scene.materials.end(),
                                    [](const MaterialSlot& m) { return m->name == "Glow"; });
     REQUIRE(glow != scene.materials.end());
-    CHECK((*glow)->emission.r == doctest::Approx(5.0));
-    CHECK((*glow)->emission.g == doctest::Approx(4.5));
-    CHECK((*glow)->emission.b == doctest::Approx(4.0));
+    CHECK((*glow)->emission.constant().r == doctest::Approx(5.0));
+    CHECK((*glow)->emission.constant().g == doctest::Approx(4.5));
+    CHECK((*glow)->emission.constant().b == doctest::Approx(4.0));
 }
 
 TEST_CASE("a rough glTF transmitting material is the rough dielectric, a smooth one the Fresnel glass") {
@@ -156,6 +156,33 @@ TEST_CASE("a malformed glTF file is refused naming the file, the element and wha
     const fs::path& folder = temp.path();
     std::ofstream(folder / "syntax.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [";
     CHECK(errorOf(folder / "syntax.gltf").rfind((folder / "syntax.gltf").string() + ": cannot read glTF file: ", 0) == 0);
+}
+
+TEST_CASE("a glTF texture's texCoord names a TEXCOORD_n every primitive of its material has, as VEC2, one per position") {
+    // textured-texcoord1.gltf's baseColorTexture names texCoord 1; its image beside the copies.
+    const test::TempFolder temp("lightpath-gltf-texcoord");
+    const fs::path& folder = temp.path();
+    fs::copy_file(kData / "checker4.png", folder / "checker4.png");
+    std::ifstream in(kData / "textured-texcoord1.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
+        std::string changed = text;
+        const std::size_t at = changed.find(from);
+        REQUIRE(at != std::string::npos);
+        changed.replace(at, from.size(), to);
+        std::ofstream(folder / name) << changed;
+        return folder / name;
+    };
+    const fs::path missing = variant("missing.gltf", "\"TEXCOORD_1\"", "\"TEXCOORD_7\"");
+    CHECK(errorOf(missing) == missing.string() + ": meshes[0].primitives[0].attributes: expected a TEXCOORD_1 "
+                                                 "accessor: material 0's textures name texCoord 1");
+    const fs::path vec3 = variant("vec3.gltf", "\"TEXCOORD_1\": 3", "\"TEXCOORD_1\": 1");
+    CHECK(errorOf(vec3) == vec3.string() + ": meshes[0].primitives[0].attributes.TEXCOORD_1: accessor 1: expected type VEC2");
+    const fs::path negative = variant("negative.gltf", "\"texCoord\": 1", "\"texCoord\": -1");
+    CHECK(errorOf(negative) == negative.string() + ": materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: "
+                                                   "expected a set from 0 to 31, got -1");
+    const fs::path tangent = variant("tangent.gltf", "\"TEXCOORD_1\": 3", "\"TEXCOORD_1\": 3, \"TANGENT\": 2");
+    CHECK(errorOf(tangent) == tangent.string() + ": meshes[0].primitives[0].attributes.TANGENT: accessor 2: expected type VEC4");
 }
 
 }  // namespace

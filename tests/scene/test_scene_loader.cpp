@@ -104,7 +104,7 @@ TEST_CASE("every shipped scene loads and names its lights, point or area") {
         // Area lights are emissive objects; a shipped scene has some light, and names it.
         bool hasAreaLight = false;
         for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-            if (lightpath::isBlack(scene.materials[scene.objects[i].material]->emission)) continue;
+            if (scene.materials[scene.objects[i].material]->emission.black()) continue;
             hasAreaLight = true;
             CHECK_FALSE(scene.labelOf(i).rfind("area-light-", 0) == 0);
         }
@@ -516,7 +516,7 @@ TEST_CASE_FIXTURE(SceneFiles, "a material's type picks its model and its keys") 
     CHECK(plastic->kd.constant() == Rgb(0.4f));
     CHECK(plastic->ks.constant() == Rgb(0.5f, 0.4f, 0.3f));
     CHECK(plastic->n == 50.0f);
-    CHECK(plastic->emission == Rgb(2.0f));
+    CHECK(plastic->emission.constant() == Rgb(2.0f));
 
     CHECK(errorOf("[materials.m]\ntype = \"modified-phong\"\nkr = 0.5\n") ==
           "scene.toml:3:1: materials.m.kr: unknown key \"kr\"; did you mean \"kd\"?");
@@ -769,7 +769,7 @@ TEST_CASE("area lights become emissive objects labelled by the light's name") {
     REQUIRE(scene.spheres.size() == 1);
     CHECK(scene.lights.empty());
     CHECK(scene.labelOf(scene.triangles[0].object) == "panel");
-    CHECK(scene.materials[scene.objects[scene.triangles[0].object].material]->emission == Rgb{4, 3, 2});
+    CHECK(scene.materials[scene.objects[scene.triangles[0].object].material]->emission.constant() == Rgb{4, 3, 2});
     // The quad emits on the side of edge1 x edge2 = (0, 0, 1) x ... : here (1,0,0) x (0,0,1) = (0,-1,0).
     const Triangle& t = scene.triangles[0];
     CHECK(glm::cross(t.b - t.a, t.c - t.a).y < 0.0f);
@@ -777,7 +777,7 @@ TEST_CASE("area lights become emissive objects labelled by the light's name") {
     CHECK(t.c == Vec3{1, 2, 1});
     // An unnamed area light is labelled by its generated material name.
     CHECK(scene.labelOf(scene.spheres[0].object).rfind("area-light-", 0) == 0);
-    CHECK(scene.materials[scene.objects[scene.spheres[0].object].material]->emission == Rgb{10.0f});
+    CHECK(scene.materials[scene.objects[scene.spheres[0].object].material]->emission.constant() == Rgb{10.0f});
 }
 
 }  // namespace

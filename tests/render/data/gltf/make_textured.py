@@ -17,6 +17,17 @@ normal-map.gltf       the floor (metallic 0, roughness 0.5) with normalTexture n
 normal-tilted.gltf    the same floor without the map, its NORMAL the normal the map makes (worked out
                       here: x, y times the scale, in the frame tangent +x (u), bitangent -z (v up),
                       normal +y), which tests/render/test_gltf.cpp renders as the reference.
+normal-map-tangent.gltf  normal-map.gltf with its uvs turned a quarter (u along +z), and TANGENT
+                      (1, 0, 0, 1): the frame normal-tilted.gltf was worked out in, not the uvs'.
+textured-texcoord1.gltf  textured.gltf with the floor's uvs as TEXCOORD_1, which its baseColorTexture
+                      names (texCoord 1), and TEXCOORD_0 mirrored: it renders as textured.toml.
+texcoord-missing.gltf a baseColorTexture naming texCoord 1 on a primitive without TEXCOORD_1 (the
+                      located error).
+emissive-quadrants.png  256x256, linear greys 64 | 128 (bottom left, right) and 191 | 255 (top).
+emissive-texture.gltf a quad x in [-0.5, 0.5], y in [0.3, 1.3] at z = 0 facing +z, emitting
+                      emissive-quadrants.png (sRGB, as glTF's emissiveTexture is) times emissiveFactor
+                      1 times strength 4; emissive-texture-gltf.toml places it, emissive-texture-srgb.toml
+                      is the same as a TOML quad light.
 Run: python3 make_textured.py
 """
 import base64
@@ -63,7 +74,7 @@ def mapped_normal():
     return tuple(c / length for c in world)
 
 
-def document(material, images, wrap, normal=(0, 1, 0)):
+def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=None):
     data = bytearray()
     views, accessors = [], []
 
@@ -78,7 +89,11 @@ def document(material, images, wrap, normal=(0, 1, 0)):
     pos = add(b"".join(struct.pack("<3f", *p) for p in POSITIONS), 4, "VEC3", 5126,
               min=[-1, 0, -1], max=[1, 0, 1])
     nrm = add(b"".join(struct.pack("<3f", *normal) for _ in POSITIONS), 4, "VEC3", 5126)
-    uv = add(b"".join(struct.pack("<2f", *t) for t in UVS), 4, "VEC2", 5126)
+    attributes = {"POSITION": pos, "NORMAL": nrm}
+    for n, uvs in enumerate(uv_sets):
+        attributes["TEXCOORD_%d" % n] = add(b"".join(struct.pack("<2f", *t) for t in uvs), 4, "VEC2", 5126)
+    if tangent is not None:
+        attributes["TANGENT"] = add(b"".join(struct.pack("<4f", *tangent) for _ in POSITIONS), 4, "VEC4", 5126)
     idx = add(struct.pack("<6H", *ORDER), 6, "SCALAR", 5123)
     s = math.sqrt(0.5)
     return {
@@ -93,8 +108,7 @@ def document(material, images, wrap, normal=(0, 1, 0)):
             {"name": "Lamp", "translation": [0.3, 2, 0.2], "extensions": {"KHR_lights_punctual": {"light": 0}}},
         ],
         "cameras": [{"type": "perspective", "perspective": {"yfov": 0.9, "aspectRatio": 4 / 3, "znear": 0.1}}],
-        "meshes": [{"name": "Floor", "primitives": [{"attributes": {"POSITION": pos, "NORMAL": nrm, "TEXCOORD_0": uv},
-                                                     "indices": idx, "material": 0}]}],
+        "meshes": [{"name": "Floor", "primitives": [{"attributes": attributes, "indices": idx, "material": 0}]}],
         "materials": [material],
         "textures": [{"source": 0, "sampler": 0}],
         "samplers": [{"wrapS": wrap, "wrapT": wrap}],
@@ -142,6 +156,58 @@ def main():
                                                             "metallicRoughnessTexture": {"index": 0}}}
     # CLAMP_TO_EDGE: the metal's edge must not blend with the dielectric's across the wrap.
     (HERE / "metal-rough.gltf").write_text(json.dumps(document(metal, [{"uri": "metal-rough.png"}], 33071), indent=1) + "\n")
+    # A quarter turn of the uvs: u = (z + 1) / 2, v = (1 - x) / 2.
+    turned = [((z + 1) / 2, (1 - x) / 2) for x, _, z in POSITIONS]
+    (HERE / "normal-map-tangent.gltf").write_text(json.dumps(
+        document(mapped, [{"uri": "normal-map.png"}], 10497, uv_sets=(turned,), tangent=(1, 0, 0, 1)), indent=1) + "\n")
+    second = {"name": "Checker", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1},
+                                                          "metallicFactor": 0, "roughnessFactor": 1}}
+    mirrored = [(1 - u, v) for u, v in UVS]
+    (HERE / "textured-texcoord1.gltf").write_text(json.dumps(
+        document(second, [{"uri": "checker4.png"}], 10497, uv_sets=(mirrored, UVS)), indent=1) + "\n")
+    (HERE / "texcoord-missing.gltf").write_text(json.dumps(
+        document(second, [{"uri": "checker4.png"}], 10497), indent=1) + "\n")
+    emissive()
+
+
+QUADRANTS = png(256, 256, [[(191,) * 3] * 128 + [(255,) * 3] * 128 for _ in range(128)] +
+                [[(64,) * 3] * 128 + [(128,) * 3] * 128 for _ in range(128)])
+
+
+def emissive():
+    """The emitting quad alone (no camera, no light): a TOML scene places it with [[gltf]]."""
+    (HERE / "emissive-quadrants.png").write_bytes(QUADRANTS)
+    data = bytearray()
+    # Counter-clockwise seen from +z; glTF's uv (0, 0) is the image's top left, at the top left corner.
+    positions = [(-0.5, 0.3, 0), (0.5, 0.3, 0), (0.5, 1.3, 0), (-0.5, 1.3, 0)]
+    uvs = [(0, 1), (1, 1), (1, 0), (0, 0)]
+    views, accessors = [], []
+    for raw, kind, component, count in ((b"".join(struct.pack("<3f", *p) for p in positions), "VEC3", 5126, 4),
+                                        (b"".join(struct.pack("<2f", *t) for t in uvs), "VEC2", 5126, 4),
+                                        (struct.pack("<6H", 0, 1, 2, 0, 2, 3), "SCALAR", 5123, 6)):
+        while len(data) % 4:
+            data.append(0)
+        views.append({"buffer": 0, "byteOffset": len(data), "byteLength": len(raw)})
+        data.extend(raw)
+        accessors.append({"bufferView": len(views) - 1, "componentType": component, "count": count, "type": kind})
+    accessors[0].update(min=[-0.5, 0.3, 0], max=[0.5, 1.3, 0])
+    glow = {"name": "Glow", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1]},
+            "emissiveFactor": [1, 1, 1], "emissiveTexture": {"index": 0},
+            "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 4}}}
+    doc = {
+        "asset": {"version": "2.0", "generator": "make_textured.py"},
+        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"name": "Panel", "mesh": 0}],
+        "meshes": [{"name": "Panel", "primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2,
+                                                     "material": 0}]}],
+        "materials": [glow],
+        "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 10497, "wrapT": 10497}],
+        "images": [{"uri": "emissive-quadrants.png"}],
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(data)).decode()}],
+        "bufferViews": views, "accessors": accessors,
+    }
+    (HERE / "emissive-texture.gltf").write_text(json.dumps(doc, indent=1) + "\n")
 
 
 main()
