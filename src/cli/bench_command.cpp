@@ -228,7 +228,8 @@ void addBenchCommand(CLI::App& app) {
     CLI::App* raysCommand =
         bench->add_subcommand("rays", "Ray throughput of our BVH and of Embree on the same rays, 1 thread and all");
     raysCommand->add_option("--json", rays->json,
-                            "Also write the rows [{\"scene\", \"rays\", \"accel\", \"threads\", \"mrays_per_s\"}, ...]");
+                            "Also write the rows [{\"scene\", \"rays\", \"accel\", \"threads\", \"mrays_per_s\"}, ...]; the renders'\n"
+                            "rows add \"integrator\", \"shading_overhead\" and \"shading_overhead_cpu\"");
     raysCommand->add_flag("--quick", rays->benchmark.quick,
                           "256x256 primary rays, 65536 random rays, a 100k-triangle height field, 1 run: for CI");
     raysCommand->add_option("--scenes", rays->benchmark.scenes, "Only these scenes (no render line)")
