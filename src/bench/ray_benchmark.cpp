@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <thread>
 
@@ -29,21 +30,29 @@ struct BenchScene {
     std::string file;  // a shipped scene, or empty for the generated height field
 };
 
+struct Timed {
+    double wall = 0.0;
+    double busiestCpu = 0.0;  // CPU seconds of the thread that worked longest
+};
+
 // Rays handed out in chunks from an atomic counter: the same dynamic scheme as the renderer.
-double timeParallel(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& work) {
+Timed timeParallel(std::size_t count, int threads, const std::function<void(std::size_t, std::size_t)>& work) {
     constexpr std::size_t kChunk = 4096;
     std::atomic<std::size_t> next{0};
-    const auto loop = [&] {
+    std::vector<double> cpu(static_cast<std::size_t>(threads), 0.0);
+    const auto loop = [&](int thread) {
+        const double started = threadCpuSeconds();
         for (std::size_t begin = next.fetch_add(kChunk); begin < count; begin = next.fetch_add(kChunk))
             work(begin, std::min(begin + kChunk, count));
+        cpu[static_cast<std::size_t>(thread)] = threadCpuSeconds() - started;
     };
     const auto started = Clock::now();
     {
         std::vector<std::jthread> workers;
-        for (int t = 1; t < threads; ++t) workers.emplace_back(loop);
-        loop();
+        for (int t = 1; t < threads; ++t) workers.emplace_back(loop, t);
+        loop(0);
     }
-    return std::chrono::duration<double>(Clock::now() - started).count();
+    return {std::chrono::duration<double>(Clock::now() - started).count(), *std::max_element(cpu.begin(), cpu.end())};
 }
 
 struct Measured {
@@ -51,6 +60,7 @@ struct Measured {
     std::string accel;
     int threads;
     std::vector<double> rates;
+    std::vector<double> cpuRates;
 };
 
 }  // namespace
@@ -152,65 +162,87 @@ RayBenchmarkResult runRayBenchmark(const std::filesystem::path& directory, const
                 const std::vector<Ray>& rays = m.rays == "primary" ? primary : m.rays == "random" ? random : shadow;
                 std::atomic<std::size_t> hits{0};  // keeps the queries from being optimised away
                 const bool closest = m.rays != "shadow";
-                const double seconds = timeParallel(rays.size(), m.threads, [&](std::size_t begin, std::size_t end) {
+                const Timed timed = timeParallel(rays.size(), m.threads, [&](std::size_t begin, std::size_t end) {
                     std::size_t found = 0;
                     for (std::size_t i = begin; i < end; ++i)
                         found += closest ? geometry.closestPrimitive(rays[i]).has_value() : geometry.occluded(rays[i]);
                     hits += found;
                 });
-                m.rates.push_back(static_cast<double>(rays.size()) / seconds * 1e-6);
+                m.rates.push_back(static_cast<double>(rays.size()) / timed.wall * 1e-6);
+                m.cpuRates.push_back(static_cast<double>(rays.size()) / timed.busiestCpu * 1e-6);
             }
         }
         for (const Measured& m : measured) {
-            RayBenchmarkRow row{benchScene.name, m.rays, m.accel, m.threads, median(m.rates)};
+            RayBenchmarkRow row{benchScene.name, m.rays, m.accel, m.threads, median(m.rates), median(m.cpuRates)};
             (renderSceneOnly ? renderSceneRows : result.rows).push_back(row);
         }
         log(benchScene.name + " done");
     }
 
-    // End to end: the Whitted render of CornellBox-Mirror, every ray it casts per second.
+    // End to end: renders of CornellBox-Mirror by ray casting, Whitted and path tracing, every ray
+    // they cast per second; the configurations interleaved, as the ray sets are.
     if (!all) return result;
     Scene scene = loadScene(directory / "cornell-mirror.toml");
     scene.camera.width = scene.camera.height = quick ? 256 : 1024;
     const AovSet aovs(classesSet());
-    for (const std::string& accel : accels) {
-        for (int threads : threadCounts) {
-            RenderOptions options;
-            options.integrator = "whitted";
-            options.threads = threads;
-            options.accelerator = accel == "bvh" ? Accelerator::Bvh : Accelerator::Embree;
-            const Renderer renderer(scene, aovs, options);
-            std::vector<double> seconds, cpuEstimates;
-            RenderStats stats;
-            for (int r = 0; r < result.repetitions; ++r) {
-                stats = renderer.render().stats;
-                seconds.push_back(stats.seconds);
-                cpuEstimates.push_back(stats.serialCpuSeconds +
-                                       *std::max_element(stats.workerCpuSeconds.begin(), stats.workerCpuSeconds.end()));
+    struct RenderRun {
+        std::string integrator;
+        std::string accel;
+        int threads;
+        std::unique_ptr<Renderer> renderer;
+        std::vector<double> seconds, cpuEstimates;
+        RenderStats stats;
+    };
+    std::vector<RenderRun> runs;
+    for (const char* integrator : {"raycast", "whitted", "path"}) {
+        for (const std::string& accel : accels) {
+            for (int threads : threadCounts) {
+                RenderOptions options;
+                options.integrator = integrator;
+                options.threads = threads;
+                options.accelerator = accel == "bvh" ? Accelerator::Bvh : Accelerator::Embree;
+                runs.push_back({integrator, accel, threads, std::make_unique<Renderer>(scene, aovs, options), {}, {}, {}});
             }
-            RenderThroughput t;
-            t.accel = accel;
-            t.threads = threads;
-            t.seconds = median(seconds);
-            t.cpuEstimateSeconds = median(cpuEstimates);
-            t.rays = stats.rays.total();
-            t.millionRaysPerSecond = static_cast<double>(t.rays) / t.seconds * 1e-6;
-            const auto rate = [&](const char* kind) {
-                for (const RayBenchmarkRow& row : renderSceneRows)
-                    if (row.rays == kind && row.accel == accel && row.threads == threads) return row.millionsPerSecond * 1e6;
-                return 0.0;
-            };
-            const RayCounters& c = stats.rays;
-            // Camera rays are coherent like the primary set, mirror and glass rays incoherent like
-            // the random set, shadow rays like the shadow set.
-            t.traversalSeconds = static_cast<double>(c.camera) / rate("primary") +
-                                 static_cast<double>(c.reflection + c.refraction) / rate("random") +
-                                 static_cast<double>(c.shadow) / rate("shadow");
-            t.shadingOverhead = (t.seconds - t.traversalSeconds) / t.traversalSeconds;
-            result.renders.push_back(t);
-            log("render with " + accel + " on " + std::to_string(threads) + " thread(s) done");
         }
     }
+    for (int r = 0; r < result.repetitions; ++r) {
+        for (RenderRun& run : runs) {
+            run.stats = run.renderer->render().stats;
+            run.seconds.push_back(run.stats.seconds);
+            run.cpuEstimates.push_back(run.stats.serialCpuSeconds + *std::max_element(run.stats.workerCpuSeconds.begin(),
+                                                                                      run.stats.workerCpuSeconds.end()));
+        }
+    }
+    for (const RenderRun& run : runs) {
+        RenderThroughput t;
+        t.integrator = run.integrator;
+        t.accel = run.accel;
+        t.threads = run.threads;
+        t.seconds = median(run.seconds);
+        t.cpuEstimateSeconds = median(run.cpuEstimates);
+        t.rays = run.stats.rays.total();
+        t.millionRaysPerSecond = static_cast<double>(t.rays) / t.seconds * 1e-6;
+        const auto rate = [&](const char* kind, bool cpu) {
+            for (const RayBenchmarkRow& row : renderSceneRows)
+                if (row.rays == kind && row.accel == run.accel && row.threads == run.threads)
+                    return (cpu ? row.cpuMillionsPerSecond : row.millionsPerSecond) * 1e6;
+            return 0.0;
+        };
+        const RayCounters& c = run.stats.rays;
+        // Camera rays are coherent like the primary set, mirror, glass and the path tracer's bounce
+        // rays incoherent like the random set, shadow rays like the shadow set.
+        const auto traversal = [&](bool cpu) {
+            return static_cast<double>(c.camera) / rate("primary", cpu) +
+                   static_cast<double>(c.reflection + c.refraction) / rate("random", cpu) +
+                   static_cast<double>(c.shadow) / rate("shadow", cpu);
+        };
+        t.traversalSeconds = traversal(false);
+        t.shadingOverhead = (t.seconds - t.traversalSeconds) / t.traversalSeconds;
+        t.traversalCpuSeconds = traversal(true);
+        t.shadingOverheadCpu = (t.cpuEstimateSeconds - t.traversalCpuSeconds) / t.traversalCpuSeconds;
+        result.renders.push_back(t);
+    }
+    log("renders done");
     return result;
 }
 

@@ -15,10 +15,15 @@ struct RayBenchmarkRow {
     std::string accel;   // bvh, embree
     int threads = 1;
     double millionsPerSecond = 0.0;  // rays, or triangles for build
+    // Rays per second of the busiest thread's CPU time: what an idle machine would give, as the
+    // renders' CPU estimate (load from other processes stretches wall time, barely this).
+    double cpuMillionsPerSecond = 0.0;
 };
 
-// The Whitted render of CornellBox-Mirror, and how much of its time is not ray traversal.
+// A render of CornellBox-Mirror (ray casting, Whitted or path tracing), and how much of its time
+// is not ray traversal.
 struct RenderThroughput {
+    std::string integrator;  // raycast, whitted, path
     std::string accel;
     int threads = 1;
     double seconds = 0.0;
@@ -27,6 +32,9 @@ struct RenderThroughput {
     double millionRaysPerSecond = 0.0;
     double traversalSeconds = 0.0;  // its rays at the throughputs measured for that scene
     double shadingOverhead = 0.0;   // (seconds - traversalSeconds) / traversalSeconds
+    // The same by CPU time: the render's CPU estimate against its rays at the CPU-time throughputs.
+    double traversalCpuSeconds = 0.0;
+    double shadingOverheadCpu = 0.0;
 };
 
 struct RayBenchmarkResult {

@@ -2,7 +2,9 @@
 // counts are the stable figure on a loaded machine (wall time is not). Only castRays() (or, for
 // `build`, buildGeometry() on one thread) is meant to be collected:
 //   valgrind --tool=callgrind --toggle-collect='*castRays*' build/ray_cost bunny shadow bvh
-// then instructions per ray = the collected total / the ray count this prints. A fourth
+// then instructions per ray = the collected total / the ray count this prints. cornell-mirror is
+// `bench rays`' render scene: its sets against the traversal counted inside a render say whether
+// the render line's traversal estimate is fair (docs/performance.md, Shading). A fourth
 // argument, `baseline`, traverses our BVH on the SSE2 path even where AVX2 is available.
 #include <cstdio>
 #include <cstdlib>
@@ -76,10 +78,10 @@ int main(int argc, char** argv) {
             if (word == choice) return true;
         return false;
     };
-    if (argc < 4 || argc > 5 || !oneOf(argv[1], {"bunny", "dragon", "grid"}) ||
+    if (argc < 4 || argc > 5 || !oneOf(argv[1], {"bunny", "dragon", "grid", "cornell-mirror"}) ||
         !oneOf(argv[2], {"primary", "shadow", "random", "build"}) || !oneOf(argv[3], {"bvh", "embree"}) ||
         (argc == 5 && std::string(argv[4]) != "baseline")) {
-        std::fprintf(stderr, "ray_cost: expected bunny|dragon|grid primary|shadow|random|build bvh|embree [baseline]\n");
+        std::fprintf(stderr, "ray_cost: expected bunny|dragon|grid|cornell-mirror primary|shadow|random|build bvh|embree [baseline]\n");
         return 2;
     }
     if (argc == 5) lightpath::simd::setPath(lightpath::simd::Path::Baseline);

@@ -113,8 +113,9 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     lpe::OutputMask accepted[kMaxLobes];
     bool wanted[kMaxLobes];
     bool anyWanted = false;
+    const lpe::Automaton::Symbol lightSymbol = path.symbolOf(lightEvent);
     for (int l = 0; l < lobes.count; ++l) {
-        accepted[l] = path.acceptsAfter(lobes.after[l], lightEvent);
+        accepted[l] = path.acceptsAfter(lobes.after[l], lightSymbol);
         wanted[l] = path.wanted(accepted[l]);
         anyWanted = anyWanted || wanted[l];
     }

@@ -32,12 +32,6 @@ bool PathState::push(const PathEvent& event) {
 
 void PathState::pop() { events_.pop(); }
 
-bool PathState::finite(const Rgb& value) {
-    if (std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b)) return true;
-    ++counters.nonFinite;
-    return false;
-}
-
 void PathState::emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors) {
     if (!finite(value)) return;
     const lpe::OutputMask accepted = acceptsAfter(state(), light);
@@ -55,14 +49,8 @@ void PathState::emit(const PathEvent& surface, const PathEvent& light, const Rgb
     emitAccepted(surface, light, value, acceptsAfter(step(state(), surface), light), factors);
 }
 
-void PathState::emitAccepted(const PathEvent& surface, const PathEvent& light, const Rgb& value,
-                             lpe::OutputMask accepted, std::span<const TermFactor> factors) {
-    if (!finite(value)) return;
-    // Only `explain`'s log reads the finished path: the events are recorded for it alone.
-    if (!sink_.explaining()) {
-        sink_.add(value, accepted, events_);
-        return;
-    }
+void PathState::emitExplained(const PathEvent& surface, const PathEvent& light, const Rgb& value,
+                              lpe::OutputMask accepted, std::span<const TermFactor> factors) {
     events_.push(surface);
     events_.push(light);
     sink_.add(value, accepted, events_, factors);

@@ -1,5 +1,7 @@
 #include "integrators/raycast.h"
 
+#include <optional>
+
 #include "integrators/registry.h"
 #include "integrators/direct_light.h"
 
@@ -11,16 +13,21 @@ void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
-    // Every term is seen through the media from the camera's on, across index-matched boundaries.
-    const BeyondInterfaces beyond = crossInterfaces(hit, ray, ctx.eyeMedium, Rgb{1.0f}, path);
-    const Rgb seen = throughMedium(beyond.hit, beyond.ray, beyond.medium, beyond.throughput, path);
-    if (!beyond.hit) {
-        addBackground(beyond.ray, seen, path);
+    // Every term is seen through the media from the camera's on, across index-matched boundaries
+    // (a scene without them crosses none: the hit is not copied through crossInterfaces).
+    std::optional<BeyondInterfaces> beyond;
+    if (ctx.scene.interfaces) beyond = crossInterfaces(hit, ray, ctx.eyeMedium, Rgb{1.0f}, path);
+    const std::optional<SurfaceHit>& seenHit = beyond ? beyond->hit : hit;
+    const Ray& seenRay = beyond ? beyond->ray : ray;
+    const std::uint32_t medium = beyond ? beyond->medium : ctx.eyeMedium;
+    const Rgb seen = throughMedium(seenHit, seenRay, medium, beyond ? beyond->throughput : Rgb{1.0f}, path);
+    if (!seenHit) {
+        addBackground(seenRay, seen, path);
         return;
     }
-    addEmission(*beyond.hit, beyond.ray, seen, 1.0f, path);
+    addEmission(*seenHit, seenRay, seen, 1.0f, path);
     if (ctx.maxDepth < 1) return;
-    addLocalIllumination(makeShadingPoint(*beyond.hit, beyond.ray, ctx), seen, path, ctx.scene.medium(beyond.medium));
+    addLocalIllumination(makeShadingPoint(*seenHit, seenRay, ctx), seen, path, ctx.scene.medium(medium));
 }
 
 }  // namespace lightpath

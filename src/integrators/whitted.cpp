@@ -1,5 +1,7 @@
 #include "integrators/whitted.h"
 
+#include <optional>
+
 #include "integrators/registry.h"
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
@@ -13,14 +15,17 @@ void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
 void WhittedIntegrator::trace(const Ray& firstRay, const Rgb& firstThroughput, int depth, std::uint32_t firstMedium,
                               PathState& path) const {
     const RenderContext& ctx = path.context;
-    // Across index-matched boundaries without an event, into the media beyond.
-    const BeyondInterfaces beyond =
-        crossInterfaces(ctx.geometry.intersect(firstRay), firstRay, firstMedium, firstThroughput, path);
-    const auto& hit = beyond.hit;
-    const Ray& ray = beyond.ray;
-    const std::uint32_t mediumIndex = beyond.medium;
+    // Across index-matched boundaries without an event, into the media beyond. A scene without
+    // such boundaries crosses none: its hit is not copied through crossInterfaces (about 50
+    // instructions a ray).
+    const std::optional<SurfaceHit> first = ctx.geometry.intersect(firstRay);
+    std::optional<BeyondInterfaces> beyond;
+    if (ctx.scene.interfaces) beyond = crossInterfaces(first, firstRay, firstMedium, firstThroughput, path);
+    const std::optional<SurfaceHit>& hit = beyond ? beyond->hit : first;
+    const Ray& ray = beyond ? beyond->ray : firstRay;
+    const std::uint32_t mediumIndex = beyond ? beyond->medium : firstMedium;
     // Single scattering along this ray (E S* V L), and its transmittance on all beyond.
-    const Rgb seen = throughMedium(hit, ray, mediumIndex, beyond.throughput, path);
+    const Rgb seen = throughMedium(hit, ray, mediumIndex, beyond ? beyond->throughput : firstThroughput, path);
     if (isBlack(seen) && ctx.skipEnabled) return;
     if (!hit) {
         addBackground(ray, seen, path);
