@@ -50,4 +50,4 @@ std::string aovPresetHelp();
 }  // namespace lightpath
 
 #define LIGHTPATH_REGISTER_PRESET(...) \
-    namespace { const ::lightpath::Registrar<::lightpath::AovPreset> LIGHTPATH_SCHEMA_CONCAT(kPresetRegistrar, __LINE__){__VA_ARGS__}; }
+    namespace { const ::lightpath::Registrar<::lightpath::AovPreset> LIGHTPATH_SCHEMA_CONCAT(kPresetRegistrar, __COUNTER__){__VA_ARGS__}; }

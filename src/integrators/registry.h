@@ -90,4 +90,4 @@ inline constexpr const char* kRenderedPaths = "E<[RT][DGSs]>*[LOB]";
 }  // namespace lightpath
 
 #define LIGHTPATH_REGISTER_INTEGRATOR(...) \
-    namespace { const ::lightpath::Registrar<::lightpath::IntegratorInfo> LIGHTPATH_SCHEMA_CONCAT(kIntegratorRegistrar, __LINE__){__VA_ARGS__}; }
+    namespace { const ::lightpath::Registrar<::lightpath::IntegratorInfo> LIGHTPATH_SCHEMA_CONCAT(kIntegratorRegistrar, __COUNTER__){__VA_ARGS__}; }

@@ -32,4 +32,4 @@ using MaterialRegistry = TypeRegistry<MaterialType>;
 }  // namespace lightpath
 
 #define LIGHTPATH_REGISTER_MATERIAL(...) \
-    namespace { const ::lightpath::Registrar<::lightpath::MaterialType> LIGHTPATH_SCHEMA_CONCAT(kMaterialRegistrar, __LINE__){__VA_ARGS__}; }
+    namespace { const ::lightpath::Registrar<::lightpath::MaterialType> LIGHTPATH_SCHEMA_CONCAT(kMaterialRegistrar, __COUNTER__){__VA_ARGS__}; }

@@ -20,4 +20,4 @@ using MediumRegistry = TypeRegistry<MediumType>;
 }  // namespace lightpath
 
 #define LIGHTPATH_REGISTER_MEDIUM(...) \
-    namespace { const ::lightpath::Registrar<::lightpath::MediumType> LIGHTPATH_SCHEMA_CONCAT(kMediumRegistrar, __LINE__){__VA_ARGS__}; }
+    namespace { const ::lightpath::Registrar<::lightpath::MediumType> LIGHTPATH_SCHEMA_CONCAT(kMediumRegistrar, __COUNTER__){__VA_ARGS__}; }

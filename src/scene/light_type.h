@@ -31,4 +31,4 @@ inline constexpr Parameter kLightNameParameter{
 }  // namespace lightpath
 
 #define LIGHTPATH_REGISTER_LIGHT(...) \
-    namespace { const ::lightpath::Registrar<::lightpath::LightType> LIGHTPATH_SCHEMA_CONCAT(kLightRegistrar, __LINE__){__VA_ARGS__}; }
+    namespace { const ::lightpath::Registrar<::lightpath::LightType> LIGHTPATH_SCHEMA_CONCAT(kLightRegistrar, __COUNTER__){__VA_ARGS__}; }

@@ -42,4 +42,4 @@ inline constexpr Parameter kShapeInteriorParameter{
 }  // namespace lightpath
 
 #define LIGHTPATH_REGISTER_SHAPE(...) \
-    namespace { const ::lightpath::Registrar<::lightpath::ShapeType> LIGHTPATH_SCHEMA_CONCAT(kShapeRegistrar, __LINE__){__VA_ARGS__}; }
+    namespace { const ::lightpath::Registrar<::lightpath::ShapeType> LIGHTPATH_SCHEMA_CONCAT(kShapeRegistrar, __COUNTER__){__VA_ARGS__}; }

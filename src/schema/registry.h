@@ -62,6 +62,7 @@ struct Registrar {
 
 }  // namespace lightpath
 
-// A unique name per registrar, so one file may register several types.
+// A unique name per registrar (with __COUNTER__, not __LINE__: a unity build puts several
+// registering files in one translation unit, where two registrations on the same line collided).
 #define LIGHTPATH_SCHEMA_CONCAT_(a, b) a##b
 #define LIGHTPATH_SCHEMA_CONCAT(a, b) LIGHTPATH_SCHEMA_CONCAT_(a, b)
