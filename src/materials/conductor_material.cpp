@@ -121,7 +121,6 @@ int ConductorMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo
 namespace lightpath {
 namespace {
 
-constexpr Range kRoughnessRange{0.0, 1.0, false, false};
 // Measured metals lie well inside these (silver's k is about 4, aluminium's about 8).
 constexpr Range kEtaRange{0.0, 10.0, true, false};
 constexpr Range kExtinctionRange{0.0, 20.0, false, false};
@@ -142,10 +141,8 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "real part of the metal's index of refraction relative to the outside, per channel"},
       {"k", lightpath::ParameterType::Colour, "", "[3.424, 2.346, 1.770]", lightpath::kExtinctionRange,
        "imaginary part (extinction coefficient) of the index, per channel"},
-      {"roughness", lightpath::ParameterType::Number, "", "0.5", lightpath::kRoughnessRange,
-       "GGX alpha = roughness²; 0 is a perfect mirror (`<RS>`), above 0 a glossy lobe (`<RG>`)"},
-      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
-       "emitted radiance: the surface is an area light"}},
+      lightpath::kGgxRoughnessParameter,
+      lightpath::kEmissionParameter},
      "<R[GS]>|O"},
     4, lightpath::makeConductor,
     // F, D and G2 are symmetric in wo and wi: reciprocal; F <= 1 and G2 <= G1: at most 1.

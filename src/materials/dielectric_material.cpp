@@ -281,8 +281,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "GGX alpha = roughness²; 0 is smooth glass (`<RS>`, `<TS>`), above 0 glossy lobes (`<RG>`, `<TG>`)"},
       {"tint", lightpath::ParameterType::Colour, "", "1", lightpath::kNonNegative,
        "transmittance colour: multiplies the refracted light, not the reflected"},
-      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
-       "emitted radiance: the surface is an area light"}},
+      lightpath::kEmissionParameter},
      "<[RT][GS]>|O"},
     5, lightpath::makeDielectric,
     // Reflection: F, D and G2 are symmetric in wo and wi. Transmission: reciprocal only with the

@@ -19,6 +19,14 @@ struct MaterialPromises {
     bool (*conservesEnergy)(const ParameterValues& values) = nullptr;
 };
 
+// Rows several material types share, so their meaning is written once: any material may emit
+// (an area light), and the GGX materials read roughness alike.
+inline constexpr Parameter kEmissionParameter{"emission", ParameterType::Colour, "W/(m² sr)", "0", kNonNegative,
+                                              "emitted radiance: the surface is an area light"};
+inline constexpr Parameter kGgxRoughnessParameter{
+    "roughness", ParameterType::Number, "", "0.5", Range{0.0, 1.0, false, false},
+    "GGX alpha = roughness²; 0 is a perfect mirror (`<RS>`), above 0 a glossy lobe (`<RG>`)"};
+
 struct MaterialType {
     TypeSchema schema;
     int rank = 0;  // listing order (lecture order); rank 0 is the default type

@@ -102,8 +102,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "specular albedo at normal incidence: `ks (n+2)/(2π) cos^n α`"},
       {"n", lightpath::ParameterType::Number, "", "20", lightpath::kNonNegative,
        "specular exponent: larger is a tighter highlight"},
-      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
-       "emitted radiance: the surface is an area light"}},
+      lightpath::kEmissionParameter},
      "<R[DG]>|O"},
     1, lightpath::makeModifiedPhong,
     // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.

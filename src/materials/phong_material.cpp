@@ -165,8 +165,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "index of refraction of the inside (glass 1.5, water 1.33)"},
       {"fresnel", lightpath::ParameterType::Boolean, "", "false", {},
        "clear glass: the mirror and refracted rays split `kt` by Fresnel's equations"},
-      {"emission", lightpath::ParameterType::Colour, "W/(m² sr)", "0", lightpath::kNonNegative,
-       "emitted radiance: the surface is an area light"}},
+      lightpath::kEmissionParameter},
      "<R[DGS]>|<TS>|O"},
     0, lightpath::makePhong,
     // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so f
