@@ -25,6 +25,8 @@ constexpr std::size_t kMaxPatches = std::size_t{1} << 18;
 // kRefineFloor of a bounce's mean radiosity, a patch's error is measured against that fraction
 // instead (patchesToRefine).
 constexpr std::size_t kRefineGrowth = 4;
+// Bounces the refinement passes solve (of every light) to decide where to cut.
+constexpr int kRefineBounces = 4;
 constexpr float kRefineFloor = 0.1f;
 // Elements handed to a worker at a time, and one progress step.
 constexpr std::uint32_t kChunk = 256;
@@ -153,37 +155,51 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     computeReflectance(context);
 
     const std::vector<int> wanted = wantedBounces(context);
-    bounces_ = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());
-    const int lightsWanted = static_cast<int>(std::count_if(wanted.begin(), wanted.end(), [](int b) { return b > 0; }));
+    const int wantedMost = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());
+    // Refinement decides on every light and its first kRefineBounces bounces, whatever the outputs
+    // request, so the mesh (and an AOV's image) is the same whichever AOVs are rendered; the last
+    // solve, on the refined mesh, solves only what is requested.
+    const bool refining = rounds > 0 && wantedMost > 0;
+    const std::vector<int> everything(wanted.size(), std::min(context.maxDepth, kRefineBounces));
+    const auto passesFor = [](const std::vector<int>& w) {
+        const int most = w.empty() ? 0 : *std::max_element(w.begin(), w.end());
+        int passes = most > 1 ? 1 : 0;
+        for (int b : w) passes += b > 0 ? 1 + (b - 1) : 0;
+        return passes;
+    };
 
     // Progress steps: chunks of form factors, of each light's direct light, and of each later
     // (light, bounce), per solve; a solve's elements are taken as growing 4x a round up to the
     // cap (the tolerance or the error estimate may stop sooner: the bar then ends early).
-    int passes = (bounces_ > 1 ? 1 : 0) + lightsWanted;
-    for (int b : wanted) passes += std::max(b - 1, 0);
     int steps = 0;
     std::size_t elementsGuess = mesh_->clusters().size();
-    for (int round = 0; round <= (bounces_ > 0 ? rounds : 0); ++round, elementsGuess = std::min(elementCap, 4 * elementsGuess))
-        steps += static_cast<int>(chunkCount(static_cast<std::uint32_t>(2 * elementsGuess))) * passes;
+    for (int round = 0; round < (refining ? rounds : 0); ++round, elementsGuess = std::min(elementCap, 4 * elementsGuess))
+        steps += static_cast<int>(chunkCount(static_cast<std::uint32_t>(2 * elementsGuess))) * passesFor(everything);
+    steps += static_cast<int>(chunkCount(static_cast<std::uint32_t>(2 * elementsGuess))) * passesFor(wanted);
     ProgressBar progress(steps, context.progress, "radiosity steps", context.preprocessSteps);
-    std::size_t capped = 0;  // patches the last refinement pass asked to cut beyond the cap
-    for (int round = 0;; ++round) {
-        solvedBounces_.assign(wanted.size(), 0);
-        stats_.lightsSolved = lightsWanted;
+    const auto solveFor = [&](const std::vector<int>& w) {
+        bounces_ = w.empty() ? 0 : *std::max_element(w.begin(), w.end());
+        solvedBounces_.assign(w.size(), 0);
+        stats_.lightsSolved = static_cast<int>(std::count_if(w.begin(), w.end(), [](int b) { return b > 0; }));
         stats_.formFactorRays = 0;
-        values_.assign(wanted.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
+        values_.assign(w.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
         rowStart_.assign(std::size_t(elementCount()) + 1, 0);
         targets_.clear();
         factors_.clear();
-        if (bounces_ == 0) break;
+        if (bounces_ == 0) return;
         // Direct light alone (every wanted path is E D L) needs no form factors.
         if (bounces_ > 1) computeFormFactors(context, progress);
-        gatherDirectLight(context, wanted, progress);
-        solve(context, wanted, progress);
+        gatherDirectLight(context, w, progress);
+        solve(context, w, progress);
         computeVertexValues();
-        if (round == rounds || (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed))) break;
+    };
+    std::size_t capped = 0;  // patches the last refinement pass asked to cut beyond the cap
+    for (int round = 0; refining && round < rounds; ++round) {
+        solveFor(everything);
+        if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) break;
         std::vector<std::uint32_t> cut = patchesToRefine();
         const std::size_t room = elementCap > mesh_->clusters().size() ? (elementCap - mesh_->clusters().size()) / 3 : 0;
+        capped = 0;
         if (cut.size() > room) {
             capped = cut.size() - room;
             cut.resize(room);
@@ -194,6 +210,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
         stats_.refined += cut.size();
         stats_.refineRounds = round + 1;
     }
+    solveFor(wanted);
     if (capped > 0) {
         char text[300];
         std::snprintf(text, sizeof text,
