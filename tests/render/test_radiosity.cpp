@@ -282,9 +282,8 @@ Rendered renderCornell(std::vector<lpe::NamedExpression> expressions, bool beaut
     options.threads = 2;
     options.radiosity.patchBudget = 1024;
     options.radiosity.tolerance = 0.0;
-    // Uniform patches: refinement follows the light the requested outputs solve, so a render of
-    // fewer lights or bounces may cut other patches (radiosity.h), and the layers compared below
-    // would differ by that mesh.
+    // Uniform patches: the refinement passes solve every light and bounce (radiosity.cpp), which
+    // the counts checked below (lights, bounces, form-factor rays of the requested solve) leave out.
     options.radiosity.refineRounds = 0;
     RenderResult result = Renderer(cornellBox(32), aovs, options).render();
     REQUIRE(result.stats.radiosity);
