@@ -20,6 +20,14 @@ namespace {
 
 // More patches than this would need gigabytes of form factors: refused with a clear message.
 constexpr std::size_t kMaxPatches = std::size_t{1} << 18;
+// Refinement (preprocess): the first mesh is the budget's (or the size the user set); refining
+// may grow it to kRefineGrowth times its elements where the error estimate asks. Below
+// kRefineFloor of a bounce's mean radiosity, a patch's error is measured against that fraction
+// instead (patchesToRefine).
+constexpr std::size_t kRefineGrowth = 4;
+// Bounces the refinement passes solve (of every light) to decide where to cut.
+constexpr int kRefineBounces = 4;
+constexpr float kRefineFloor = 0.1f;
 // Elements handed to a worker at a time, and one progress step.
 constexpr std::uint32_t kChunk = 256;
 
@@ -116,6 +124,7 @@ RadiosityOptions radiosityOptions(const ParameterValues& parameters, RadiosityOp
     base.patchBudget = static_cast<std::size_t>(parameters.integer("patches"));
     base.formFactorRays = parameters.integer("form-factor-rays");
     base.lightSamples = parameters.integer("light-samples");
+    base.refineRounds = parameters.integer("refine");
     base.display = parameters.text("radiosity-display") == "flat" ? RadiosityDisplay::Flat : RadiosityDisplay::Smooth;
     return base;
 }
@@ -126,6 +135,9 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     const RadiosityOptions& options = options_;
     display_ = options.display;
     stats_ = {};
+    // The first mesh is uniform, within the budget or at the size the user set; refining then
+    // cuts where the error estimate asks, up to kRefineGrowth times the first mesh's elements.
+    const int rounds = std::max(options.refineRounds, 0);
     const float patchSize = options.patchSize > 0.0f
                                 ? options.patchSize
                                 : RadiosityMesh::patchSizeForBudget(context.scene, context.geometry, options.patchBudget,
@@ -136,39 +148,140 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
                                     std::to_string(count) + " elements, more than the " + std::to_string(kMaxPatches) +
                                     " radiosity can hold; choose a larger --patch-size or a smaller --patches");
     mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings);
-    stats_.patches = mesh_->patches().size();
-    stats_.clusters = mesh_->clusters().size();
+    const std::size_t elementCap = std::min(kMaxPatches, kRefineGrowth * mesh_->clusters().size());
     stats_.patchSize = patchSize;
     const std::uint32_t lightSamples = strataPerSide(options.lightSamples) * strataPerSide(options.lightSamples);
     stats_.unresolved = unresolvedMesh(*mesh_, options, lightSamples);
+    computeReflectance(context);
+
+    const std::vector<int> wanted = wantedBounces(context);
+    const int wantedMost = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());
+    // Refinement decides on every light and its first kRefineBounces bounces, whatever the outputs
+    // request, so the mesh (and an AOV's image) is the same whichever AOVs are rendered; the last
+    // solve, on the refined mesh, solves only what is requested.
+    const bool refining = rounds > 0 && wantedMost > 0;
+    const std::vector<int> everything(wanted.size(), std::min(context.maxDepth, kRefineBounces));
+    const auto passesFor = [](const std::vector<int>& w) {
+        const int most = w.empty() ? 0 : *std::max_element(w.begin(), w.end());
+        int passes = most > 1 ? 1 : 0;
+        for (int b : w) passes += b > 0 ? 1 + (b - 1) : 0;
+        return passes;
+    };
+
+    // Progress steps: chunks of form factors, of each light's direct light, and of each later
+    // (light, bounce), per solve; a solve's elements are taken as growing 4x a round up to the
+    // cap (the tolerance or the error estimate may stop sooner: the bar then ends early).
+    int steps = 0;
+    std::size_t elementsGuess = mesh_->clusters().size();
+    for (int round = 0; round < (refining ? rounds : 0); ++round, elementsGuess = std::min(elementCap, 4 * elementsGuess))
+        steps += static_cast<int>(chunkCount(static_cast<std::uint32_t>(2 * elementsGuess))) * passesFor(everything);
+    steps += static_cast<int>(chunkCount(static_cast<std::uint32_t>(2 * elementsGuess))) * passesFor(wanted);
+    ProgressBar progress(steps, context.progress, "radiosity steps", context.preprocessSteps);
+    const auto solveFor = [&](const std::vector<int>& w) {
+        bounces_ = w.empty() ? 0 : *std::max_element(w.begin(), w.end());
+        solvedBounces_.assign(w.size(), 0);
+        stats_.lightsSolved = static_cast<int>(std::count_if(w.begin(), w.end(), [](int b) { return b > 0; }));
+        stats_.formFactorRays = 0;
+        values_.assign(w.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
+        rowStart_.assign(std::size_t(elementCount()) + 1, 0);
+        targets_.clear();
+        factors_.clear();
+        if (bounces_ == 0) return;
+        // Direct light alone (every wanted path is E D L) needs no form factors.
+        if (bounces_ > 1) computeFormFactors(context, progress);
+        gatherDirectLight(context, w, progress);
+        solve(context, w, progress);
+        computeVertexValues();
+    };
+    std::size_t capped = 0;  // patches the last refinement pass asked to cut beyond the cap
+    for (int round = 0; refining && round < rounds; ++round) {
+        solveFor(everything);
+        if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) break;
+        std::vector<std::uint32_t> cut = patchesToRefine();
+        const std::size_t room = elementCap > mesh_->clusters().size() ? (elementCap - mesh_->clusters().size()) / 3 : 0;
+        capped = 0;
+        if (cut.size() > room) {
+            capped = cut.size() - room;
+            cut.resize(room);
+        }
+        if (cut.empty()) break;
+        mesh_->split(cut);
+        computeReflectance(context);
+        stats_.refined += cut.size();
+        stats_.refineRounds = round + 1;
+    }
+    solveFor(wanted);
+    if (capped > 0) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "radiosity: refinement stopped at %zu elements (%zux the first mesh's): %zu more patches' vertex "
+                      "radiosities differ from theirs by over %.3g%%; raise --patches or set a smaller --patch-size",
+                      mesh_->clusters().size(), kRefineGrowth, capped, 100.0 * options.refineTolerance);
+        stats_.unresolved += (stats_.unresolved.empty() ? "" : "; ") + std::string(text);
+    }
+    stats_.patches = mesh_->patches().size();
+    stats_.clusters = mesh_->clusters().size();
+    stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+void RadiosityIntegrator::computeReflectance(const RenderContext& context) {
     reflectance_.clear();
     for (const RadiosityCluster& c : mesh_->clusters())
         reflectance_.push_back(context.scene.materials[context.scene.objects[c.object].material]->diffuseReflectance());
+}
 
-    const std::vector<int> wanted = wantedBounces(context);
-    bounces_ = wanted.empty() ? 0 : *std::max_element(wanted.begin(), wanted.end());
-    solvedBounces_.assign(wanted.size(), 0);
-    const int lightsWanted = static_cast<int>(std::count_if(wanted.begin(), wanted.end(), [](int b) { return b > 0; }));
-    stats_.lightsSolved = lightsWanted;
-
-    // Progress steps: chunks of form factors, of each light's direct light, and of each later
-    // (light, bounce); the tolerance may stop the solve before the last.
-    int passes = (bounces_ > 1 ? 1 : 0) + lightsWanted;
-    for (int b : wanted) passes += std::max(b - 1, 0);
-    const int steps = static_cast<int>(chunkCount(elementCount())) * passes;
-    ProgressBar progress(steps, context.progress, "radiosity steps", context.preprocessSteps);
-    values_.assign(wanted.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
-    rowStart_.assign(std::size_t(elementCount()) + 1, 0);
-    targets_.clear();
-    factors_.clear();
-    if (bounces_ > 0) {
-        // Direct light alone (every wanted path is E D L) needs no form factors.
-        if (bounces_ > 1) computeFormFactors(context, progress);
-        gatherDirectLight(context, wanted, progress);
-        solve(context, wanted, progress);
-        computeVertexValues();
+std::vector<std::uint32_t> RadiosityIntegrator::patchesToRefine() const {
+    // The error estimate: Gouraud shading spreads a patch's radiosity B towards its vertices'
+    // values (the mean of the patches around each), so where a vertex value differs from B by
+    // more than the tolerance times B, the light changes faster than the patch resolves, and the
+    // patch is cut (Hanrahan, Salzman and Aupperle 1991 refine where the transported light's
+    // error estimate B F A exceeds a bound; here the bound is relative, as the error that matters
+    // on screen is). Checked per light and bounce, as each is its own output; patches darker than
+    // a tenth of their bounce's mean (over the lit area) are held to that floor, so the noise of
+    // the dark ones is not chased. Patches with the largest relative error times area go first.
+    const auto& patches = mesh_->patches();
+    const std::uint32_t elements = elementCount();
+    const int maxLevel = options_.refineRounds;
+    struct Candidate {
+        float priority;
+        std::uint32_t patch;
+    };
+    std::vector<Candidate> candidates;
+    std::vector<float> worst(patches.size(), 0.0f);
+    const auto& clusters = mesh_->clusters();
+    for (std::size_t l = 0; l < solvedBounces_.size(); ++l) {
+        for (int k = 1; k <= solvedBounces_[l]; ++k) {
+            double flux = 0.0, litArea = 0.0;
+            for (std::uint32_t e = 0; e < elements; ++e) {
+                const float b = luminance(values_[valueIndex(l, k, e)]);
+                if (b <= 0.0f) continue;
+                flux += double(clusters[e / 2].area) * b;
+                litArea += clusters[e / 2].area;
+            }
+            if (!(litArea > 0.0)) continue;
+            const float floor = kRefineFloor * float(flux / litArea);
+            for (std::uint32_t p = 0; p < patches.size(); ++p) {
+                const RadiosityPatch& patch = patches[p];
+                if (int(patch.level) >= maxLevel || !mesh_->splittable(p)) continue;
+                for (int side = 0; side < 2; ++side) {
+                    const float b = luminance(values_[valueIndex(l, k, 2 * patch.cluster + std::uint32_t(side))]);
+                    float difference = 0.0f;
+                    for (int v = 0; v < patch.vertexCount; ++v)
+                        difference = std::max(difference,
+                                              std::fabs(luminance(vertexValues_[vertexValueIndex(l, k, patch.vertices[v], side)]) - b));
+                    worst[p] = std::max(worst[p], difference / (std::max(b, floor) * float(options_.refineTolerance)));
+                }
+            }
+        }
     }
-    stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    for (std::uint32_t p = 0; p < patches.size(); ++p)
+        if (worst[p] > 1.0f) candidates.push_back({worst[p] * patches[p].area, p});
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.priority != b.priority ? a.priority > b.priority : a.patch < b.patch;
+    });
+    std::vector<std::uint32_t> cut;
+    for (const Candidate& c : candidates) cut.push_back(c.patch);
+    return cut;
 }
 
 std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context) const {
@@ -262,19 +375,27 @@ void RadiosityIntegrator::computeFormFactors(const RenderContext& context, Progr
 void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted,
                                             ProgressBar& progress) {
     const std::uint32_t side = strataPerSide(options_.lightSamples);
-    const std::uint32_t samples = side * side;
     const auto lights = context.lights.all();
     const auto& patches = mesh_->patches();
+    std::vector<std::uint32_t> clusterLevel(mesh_->clusters().size(), 0);
+    for (const RadiosityPatch& patch : patches) clusterLevel[patch.cluster] = std::max(clusterLevel[patch.cluster], patch.level);
+    const std::uint32_t maxLevel = clusterLevel.empty() ? 0 : *std::max_element(clusterLevel.begin(), clusterLevel.end());
     std::atomic<std::uint64_t> shadowRays{0};
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (wanted[l] == 0) continue;
         const Light& light = *lights[l];
         solveInChunks(elementCount(), context.threads, context.cancel, progress, [&](std::uint32_t begin, std::uint32_t end) {
-            std::vector<std::uint32_t> order(samples);
+            std::vector<std::uint32_t> order;
+            order.reserve(std::size_t(side) * side * (1 + maxLevel) * (1 + maxLevel));
             std::uint64_t cast = 0;
             for (std::uint32_t e = begin; e < end; ++e) {
                 const std::uint32_t p = e / 2;
                 if (isBlack(reflectance_[p])) continue;
+                // A refined patch is where the light changes fast (near an emitter's 1/d^2, say):
+                // (1 + level)^2 times the samples, so cutting it does not make its estimate noisier.
+                const std::uint32_t strata = side * (1 + clusterLevel[p]);
+                const std::uint32_t samples = strata * strata;
+                order.resize(samples);
                 Pcg32 rng(mixBits(e ^ (std::uint64_t(l) << 40)), 0x1165u);
                 shuffle(order, rng);
                 // Radiance reflected by a Lambertian patch, over kd: (1/pi) cos(theta) times each
@@ -284,10 +405,10 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 // emitters make the patch noisy.
                 Rgb sum{0.0f};
                 for (std::uint32_t k = 0; k < samples; ++k) {
-                    const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(k, side, rng));
+                    const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(k, strata, rng));
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
                     const SurfaceHit from = surfacePoint(patches[point.patch], point);
-                    const LightSample s = light.sample(point.point, stratum(order[k], side, rng));
+                    const LightSample s = light.sample(point.point, stratum(order[k], strata, rng));
                     const float cosTheta = glm::dot(normal, s.wi);
                     if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
                         ++cast;
@@ -457,5 +578,7 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
       .doc = "hemisphere rays per side of each patch (a square number, stratified)"},
      {.name = "light-samples", .type = lightpath::ParameterType::Integer, .defaultText = "64", .range = {1.0, 65536.0},
       .doc = "shadow rays per side of each patch and light"},
+     {.name = "refine", .type = lightpath::ParameterType::Integer, .defaultText = "3", .range = {0.0, 8.0},
+      .doc = "refinement passes: cut the patches whose vertex radiosities differ from theirs by over 5% into four, solve again (0: uniform patches)"},
      {.name = "radiosity-display", .type = lightpath::ParameterType::Name, .defaultText = "smooth",
       .doc = "smooth (vertex radiosities interpolated, Gouraud) or flat (one value per patch)", .choices = "smooth|flat"}}))

@@ -8,7 +8,10 @@
 // tracer's own), gathers every light's direct light at sample points of each patch with shadow rays
 // (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k). Iteration k holds
 // exactly the light that has been reflected k times, kept per bounce and per light, so a camera ray
-// can hand each to the automaton as its own path E D{k} L.
+// can hand each to the automaton as its own path E D{k} L. Then it refines (RadiosityOptions::
+// refineRounds): the patches whose vertex radiosities (what the display interpolates) differ from
+// their own by more than the tolerance are cut into four (RadiosityMesh::split) and everything is
+// solved again, until nothing asks or the element budget is spent.
 //
 // A patch's reflectance is its material's diffuse kd (the Lambert lobe of the shared Bsdf). Glossy
 // (ks), mirror (kr) and glass (kt) parts take no part, as in classic radiosity, and neither does
@@ -32,6 +35,8 @@ struct RadiosityStats {
     float patchSize = 0.0f;
     std::uint64_t formFactorRays = 0;
     std::uint64_t shadowRays = 0;      // direct light: shadow rays and, for area lights, rays towards them
+    std::size_t refined = 0;           // patches cut into four by the refinement passes
+    int refineRounds = 0;              // refinement passes that cut something
     int iterations = 0;                // bounces solved (Jacobi iterations, the first one direct)
     int lightsSolved = 0;              // lights some requested output accepts
     int lightBouncesSolved = 0;        // (light, bounce) solutions computed, summed over lights
@@ -81,6 +86,9 @@ private:
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void computeVertexValues();
+    void computeReflectance(const RenderContext& context);
+    // The patches the error estimate asks to cut, most urgent first (each cut adds three elements).
+    std::vector<std::uint32_t> patchesToRefine() const;
 
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied

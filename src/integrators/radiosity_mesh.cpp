@@ -266,9 +266,14 @@ float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry&
     return static_cast<float>(coarse);
 }
 
+RadiosityMesh::~RadiosityMesh() = default;
+
 RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings)
-    : geometry_(geometry), patchSize_(patchSize), planeRings_(planeRings) {
-    VertexWelder welder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_};
+    : geometry_(geometry),
+      welder_(std::make_unique<VertexWelder>(VertexWelder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_})),
+      patchSize_(patchSize),
+      planeRings_(planeRings) {
+    VertexWelder& welder = *welder_;
     sourceStart_.assign(geometry.primitiveCount() + 1, 0);
     const auto begin = [&](std::uint32_t id) { sourceStart_[id] = static_cast<std::uint32_t>(sources_.size()); };
     // A kind with a patch grid is cut into its cells; every other kind's patches are its
@@ -297,6 +302,91 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
     buildClusters(clusterable);
+    // Every patch is a root: node i holds patch i (node 0 is never a child, so firstChild 0 is "none").
+    nodes_.resize(patches_.size());
+    leafNode_.resize(patches_.size());
+    for (std::uint32_t i = 0; i < patches_.size(); ++i) {
+        nodes_[i].patch = i;
+        leafNode_[i] = i;
+    }
+}
+
+bool RadiosityMesh::splittable(std::uint32_t patch) const {
+    const RadiosityPatch& p = patches_[patch];
+    return p.vertexCount == 3 && clusters_[p.cluster].memberCount == 1;
+}
+
+void RadiosityMesh::split(std::span<const std::uint32_t> cut) {
+    for (std::uint32_t id : cut) {
+        if (!splittable(id)) throw std::logic_error("radiosity: split() asked to cut a patch that is not a lone triangle");
+        const RadiosityPatch parent = patches_[id];
+        const Vec3 ab = 0.5f * (parent.a + parent.b), bc = 0.5f * (parent.b + parent.c), ca = 0.5f * (parent.c + parent.a);
+        const std::uint32_t vab = welder_->vertex(parent.object, ab, parent.normal);
+        const std::uint32_t vbc = welder_->vertex(parent.object, bc, parent.normal);
+        const std::uint32_t vca = welder_->vertex(parent.object, ca, parent.normal);
+        const std::uint32_t va = parent.vertices[0], vb = parent.vertices[1], vc = parent.vertices[2];
+        // The corners' children, then the middle one (bc, ca, ab), whose winding keeps the normal.
+        const std::array<std::array<Vec3, 3>, 4> corners{{{parent.a, ab, ca}, {ab, parent.b, bc}, {ca, bc, parent.c}, {bc, ca, ab}}};
+        const std::array<std::array<std::uint32_t, 3>, 4> ids{{{va, vab, vca}, {vab, vb, vbc}, {vca, vbc, vc}, {vbc, vca, vab}}};
+        const std::uint32_t node = leafNode_[id];
+        const auto firstChild = static_cast<std::uint32_t>(nodes_.size());
+        nodes_[node].firstChild = firstChild;
+        for (int k = 0; k < 4; ++k) {
+            RadiosityPatch child = parent;
+            child.a = corners[k][0];
+            child.b = corners[k][1];
+            child.c = corners[k][2];
+            child.vertices = {ids[k][0], ids[k][1], ids[k][2], 0};
+            child.area = 0.25f * parent.area;
+            child.level = parent.level + 1;
+            std::uint32_t patch = id;
+            if (k > 0) {
+                patch = static_cast<std::uint32_t>(patches_.size());
+                child.cluster = static_cast<std::uint32_t>(clusters_.size());
+                clusters_.push_back({parent.object, static_cast<std::uint32_t>(members_.size()), 1, child.area});
+                members_.push_back(patch);
+                memberCdf_.push_back(1.0f);
+                patches_.push_back(child);
+                leafNode_.push_back(0);
+            } else {
+                patches_[id] = child;
+                clusters_[parent.cluster].area = child.area;
+            }
+            nodes_.push_back({patch, 0});
+            leafNode_[patch] = firstChild + std::uint32_t(k);
+        }
+    }
+}
+
+PatchLookup RadiosityMesh::descend(std::uint32_t node, float s, float t) const {
+    // (s, t): the point's coordinates along the node's triangle's edges b - a and c - a; each
+    // level maps them into the child holding the point (split()'s order).
+    while (nodes_[node].firstChild != 0) {
+        const std::uint32_t first = nodes_[node].firstChild;
+        if (s + t <= 0.5f) {
+            node = first;
+            s *= 2.0f;
+            t *= 2.0f;
+        } else if (s >= 0.5f) {
+            node = first + 1;
+            s = 2.0f * s - 1.0f;
+            t *= 2.0f;
+        } else if (t >= 0.5f) {
+            node = first + 2;
+            s *= 2.0f;
+            t = 2.0f * t - 1.0f;
+        } else {
+            node = first + 3;
+            s = 1.0f - 2.0f * s;
+            t = 1.0f - 2.0f * t;
+        }
+    }
+    s = std::clamp(s, 0.0f, 1.0f);
+    t = std::clamp(t, 0.0f, 1.0f - s);
+    PatchLookup found;
+    found.patch = nodes_[node].patch;
+    found.weights = {1.0f - s - t, s, t, 0.0f};
+    return found;
 }
 
 void RadiosityMesh::buildClusters(const std::vector<bool>& clusterable) {
@@ -488,12 +578,10 @@ std::optional<PatchLookup> RadiosityMesh::lookupTriangle(const Source& source, c
     const auto fs = static_cast<float>(gs - i), ft = static_cast<float>(gt - j);
     PatchLookup found;
     if (fs + ft <= 1.0f || i + j + 1 >= n) {
-        found.patch = source.firstPatch + rowStart(n, j) + 2 * i;
-        found.weights = {std::max(0.0f, 1.0f - fs - ft), fs, ft, 0.0f};
+        found = descend(source.firstNode + rowStart(n, j) + 2 * i, fs, ft);
     } else {
-        // The upper triangle (i+1, j+1), (i, j+1), (i+1, j).
-        found.patch = source.firstPatch + rowStart(n, j) + 2 * i + 1;
-        found.weights = {fs + ft - 1.0f, 1.0f - fs, 1.0f - ft, 0.0f};
+        // The upper triangle (i+1, j+1), (i, j+1), (i+1, j): its own coordinates are 1 - fs, 1 - ft.
+        found = descend(source.firstNode + rowStart(n, j) + 2 * i + 1, 1.0f - fs, 1.0f - ft);
     }
     const float sum = found.weights[0] + found.weights[1] + found.weights[2];
     for (float& w : found.weights) w /= sum;
@@ -526,7 +614,7 @@ PatchLookup RadiosityMesh::lookupCell(const Source& source, const Vec3& point) c
     const GridPoint at = source.record->ops->patchGrid->locate(*source.record, source.grid, point);
     const float fr = at.fraction.x, fc = at.fraction.y;
     PatchLookup found;
-    found.patch = source.firstPatch + at.row * source.grid.columns + at.column;
+    found.patch = source.firstNode + at.row * source.grid.columns + at.column;
     found.weights = {(1.0f - fr) * (1.0f - fc), (1.0f - fr) * fc, fr * (1.0f - fc), fr * fc};
     return found;
 }

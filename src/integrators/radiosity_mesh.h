@@ -16,11 +16,17 @@
 // exact for its area mean; what varies inside the cell and the cone is averaged away. Every other
 // patch is a cluster of one. Each cluster has two sides, each its own unknown.
 //
+// Refinement (RadiosityMesh::split): a triangle patch solved on its own can be cut into four at its
+// edges' midpoints, again and again, where the solve's error estimate asks (Hanrahan, Salzman and
+// Aupperle 1991, in spirit): each triangle of a source's grid is the root of a quadtree of patches.
+//
 // The mesh also answers the display's question: which patch, and which of its vertices with what
 // weights, lies under a hit point (Gouraud interpolation of vertex radiosities).
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "accel/scene_geometry.h"
@@ -44,6 +50,7 @@ struct RadiosityPatch {
     std::array<std::uint32_t, 4> vertices{};
     int vertexCount = 3;
     std::uint32_t cluster = 0;  // the cluster (solved element) it belongs to
+    std::uint32_t level = 0;    // how many times split() cut its way down to it
 };
 
 // Patches solved as one: members_[firstMember .. firstMember + memberCount) of the mesh.
@@ -71,6 +78,9 @@ class RadiosityMesh {
 public:
     // Splits every surface into patches of about `patchSize` scene units and clusters the smaller ones.
     RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings);
+    ~RadiosityMesh();
+    RadiosityMesh(const RadiosityMesh&) = delete;
+    RadiosityMesh& operator=(const RadiosityMesh&) = delete;
 
     // How many clusters (solved elements) `patchSize` would make (without building them): for a budget.
     static std::size_t countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings);
@@ -88,6 +98,13 @@ public:
     // A point uniformly by area over the members of cluster `cluster` (u.x picks the member and is
     // reused inside it, so a stratified pattern stays stratified).
     PatchPoint sampleClusterPoint(std::uint32_t cluster, Vec2 u) const;
+    // Whether split() can cut `patch`: a triangle that is a cluster of its own.
+    bool splittable(std::uint32_t patch) const;
+    // Cuts each of `patches` (splittable, distinct) into four at its edges' midpoints: the patch
+    // keeps its id and cluster as the corner child at its first vertex, the three others are
+    // appended to patches() and each becomes a new cluster appended to clusters(); new vertices
+    // are welded with their neighbours' (a neighbour not cut leaves a T-junction).
+    void split(std::span<const std::uint32_t> patches);
     // The patch under `hit`, or nullopt (an unbounded shape's hit outside its tessellated region).
     std::optional<PatchLookup> lookup(const SurfaceHit& hit) const;
 
@@ -97,13 +114,19 @@ private:
     struct Source {
         const ShapeRecord* record;  // nullptr: a triangle of the triangle array
         std::uint32_t primitive;
-        std::uint32_t firstPatch;
+        std::uint32_t firstNode;     // its grid's patches are nodes firstNode, firstNode + 1, ...
         std::uint32_t n = 0;         // triangle: subdivisions per edge
         PatchGrid grid{};            // grid cells: rows x columns (rows 0 for a triangle)
         Vec3 a{0.0f}, b{0.0f}, c{0.0f};  // triangle corners
     };
 
     struct VertexWelder;
+    // A quadtree node over the patches: a leaf is patch `patch`; an inner node's children are
+    // nodes firstChild .. firstChild + 3 (RadiosityMesh::split's order).
+    struct Node {
+        std::uint32_t patch = 0;
+        std::uint32_t firstChild = 0;  // 0: a leaf (node 0 is never anyone's child)
+    };
     // Each appends to `clusterable`, per patch: whether it is a whole triangle no larger than the
     // patch size (what buildClusters may join).
     void addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object, const Vec3& a,
@@ -115,7 +138,12 @@ private:
     PatchLookup lookupCell(const Source& source, const Vec3& point) const;
     static Vec3 closestPoint(const Source& source, const Vec3& point);
 
+    // Descends from `node` to the leaf holding local coordinates (s, t) of its triangle, with the
+    // leaf's vertex weights.
+    PatchLookup descend(std::uint32_t node, float s, float t) const;
+
     const SceneGeometry& geometry_;
+    std::unique_ptr<VertexWelder> welder_;
     float patchSize_;
     int planeRings_;
     std::vector<RadiosityPatch> patches_;
@@ -123,6 +151,8 @@ private:
     std::vector<std::uint32_t> members_;   // patch ids, cluster by cluster
     std::vector<float> memberCdf_;         // per member: its cluster's area up to and with it, over the cluster's
     std::vector<Source> sources_;
+    std::vector<Node> nodes_;              // one root per patch of a source's grid, then split()'s
+    std::vector<std::uint32_t> leafNode_;  // per patch: its node
     // sources_[sourceStart_[id] .. sourceStart_[id + 1]) lie on scene-wide primitive id.
     std::vector<std::uint32_t> sourceStart_;
     std::size_t vertexCount_ = 0;

@@ -18,6 +18,11 @@ struct RadiosityOptions {
     // square number, for stratification), and light samples per side of a patch and light.
     int formFactorRays = 256;
     int lightSamples = 64;
+    // Refinement passes after the first solve (radiosity.h): each cuts the patches whose vertex
+    // radiosities differ from their own by more than `refineTolerance` into four and solves again,
+    // within `patchBudget` elements (the first mesh takes a quarter of it). 0: uniform patches.
+    int refineRounds = 3;
+    double refineTolerance = 0.05;
     // Jacobi stops once a bounce adds less than this fraction of the light so far (or at --max-depth).
     double tolerance = 1e-4;
     RadiosityDisplay display = RadiosityDisplay::Smooth;

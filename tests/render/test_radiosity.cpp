@@ -13,6 +13,7 @@
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
 #include "integrators/radiosity.h"
+#include "math/random.h"
 #include "lpe/analysis.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -281,6 +282,9 @@ Rendered renderCornell(std::vector<lpe::NamedExpression> expressions, bool beaut
     options.threads = 2;
     options.radiosity.patchBudget = 1024;
     options.radiosity.tolerance = 0.0;
+    // Uniform patches: the refinement passes solve every light and bounce (radiosity.cpp), which
+    // the counts checked below (lights, bounces, form-factor rays of the requested solve) leave out.
+    options.radiosity.refineRounds = 0;
     RenderResult result = Renderer(cornellBox(32), aovs, options).render();
     REQUIRE(result.stats.radiosity);
     return {std::move(result.film), *result.stats.radiosity};
@@ -389,7 +393,8 @@ TEST_CASE("radiosity on the shipped scenes with planes and spheres: the classes 
         const RenderResult result = Renderer(scene, aovs, options).render();
         checkSumsToBeauty(result.film, true);
         REQUIRE(result.stats.radiosity);
-        CHECK(result.stats.radiosity->patches <= 512);
+        // The first mesh within the budget; refinement grows it by at most 4x (radiosity.cpp's kRefineGrowth).
+        CHECK(result.stats.radiosity->clusters <= 4 * 512);
         CHECK(layerTotal(result.film, 0) > 0.0);
     }
 }
@@ -458,8 +463,11 @@ struct BounceErrors {
 
 constexpr int kBounceDepth = 6;
 
-Film renderBounces(const Scene& scene, const std::string& integrator, int spp, const RadiosityOptions& radiosity) {
-    const AovSet aovs(std::vector<lpe::NamedExpression>{{"b1", "EDL"}, {"b2", "EDDL"}, {"b3", "EDDDL"}, {"b4", "ED{4,}L"}});
+// `lights`: the emitters a bounce ends at (Heckbert's L: all of them, the ambient term and the sky included).
+Film renderBounces(const Scene& scene, const std::string& integrator, int spp, const RadiosityOptions& radiosity,
+                   const std::string& lights = "L") {
+    const AovSet aovs(std::vector<lpe::NamedExpression>{
+        {"b1", "ED" + lights}, {"b2", "EDD" + lights}, {"b3", "EDDD" + lights}, {"b4", "ED{4,}" + lights}});
     RenderOptions options;
     options.integrator = integrator;
     options.writeBeauty = false;
@@ -510,9 +518,9 @@ const Film& pathTracedHeavyMesh() {
 
 // Issue 27's bar is 2% in the mean and 5% per region. The mean is met (0.5% at the default 4096
 // elements, 0.2% at 16384); the regions are NOT yet: the ceiling's direct light, which changes
-// fast near the walls, is 29% too bright in a top region at 4096 elements and 6.3% at 16384 —
-// uniform patches converge slowly there, where hierarchical refinement would subdivide. The test
-// holds what is met at 16384 elements and a 10% region bound.
+// fast near the walls, is 29% too bright in a top region at 4096 uniform elements and 6.3% at
+// 16384. With refinement (16384 first elements, up to 4x) the worst region measured 1.4% (mean
+// 0.2%); the test still holds the 10% region bound it held before refinement.
 constexpr double kHeavyMeshRegion = 0.10;
 
 TEST_CASE("a mesh with more triangles than the element budget: radiosity per bounce within 2% (mean) and 10% (4x4 regions) of path" *
@@ -568,6 +576,95 @@ TEST_CASE("control: the same planes clipped to the scene (no rings) fail the sam
     CAPTURE(errors.mean);
     CAPTURE(errors.region);
     CHECK(errors.mean > kOpenPlanesMean);
+}
+
+// Refinement (issue 27): the error estimate cuts patches where the light changes faster than they
+// resolve. scenes/cornell-original.toml at 64 x 64: the lights radiosity solves (its ambient term
+// and black background are no light of radiosity's), against the path tracer at 1024 spp. At the
+// default settings the refined solve's worst 4 x 4 region over the four bounces is 4.4% (mean
+// 1.0%); the uniform mesh at the same first budget, unrefined, is 8.4% off in a region (the floor
+// in front of the short block, bounces 2-4).
+constexpr const char* kRadiosityLights = "(<L.[^'ambient']>|O)";
+
+Scene cornellOriginal64() {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/cornell-original.toml");
+    scene.camera.width = scene.camera.height = 64;
+    return scene;
+}
+
+const Film& pathTracedCornellBounces() {
+    static const Film film = renderBounces(cornellOriginal64(), "path", 1024, {}, kRadiosityLights);
+    return film;
+}
+
+TEST_CASE("refined radiosity: every bounce of the Cornell box within 2% (mean) and 5% (4x4 regions) of path" *
+          doctest::test_suite("statistical")) {
+    const BounceErrors errors =
+        bounceErrors(renderBounces(cornellOriginal64(), "radiosity", 16, {}, kRadiosityLights), pathTracedCornellBounces());
+    CAPTURE(errors.mean);
+    CAPTURE(errors.region);
+    CHECK(errors.mean < 0.02);
+    CHECK(errors.region < 0.05);
+}
+
+TEST_CASE("control: the same box without refinement (the first mesh alone) fails the 5% region bound" *
+          doctest::test_suite("statistical")) {
+    RadiosityOptions uniform;
+    uniform.refineRounds = 0;
+    const BounceErrors errors =
+        bounceErrors(renderBounces(cornellOriginal64(), "radiosity", 16, uniform, kRadiosityLights), pathTracedCornellBounces());
+    CAPTURE(errors.mean);
+    CAPTURE(errors.region);
+    CHECK(errors.region > 0.05);
+}
+
+// split()'s quadtree: every point of a cut triangle is found in the leaf that holds it, with
+// weights that rebuild it from the leaf's corners; areas add up; the leaves are their own clusters.
+TEST_CASE("radiosity mesh refinement: a cut patch's leaves tile it and lookup finds the leaf under a point") {
+    Scene scene;
+    const auto m = test::addMaterial(scene, diffuse("grey", 0.5f));
+    const auto floor = test::addObject(scene, "floor", m);
+    addQuad(scene, floor, {0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0});
+    scene.lights.push_back(PointLight{"lamp", {1.0f, 1.0f, 1.0f}, Rgb{1.0f}});
+    const test::RenderWorld world(scene);
+    // Patch size 1.5: each triangle (legs 2) is cut 2 x 2, four patches of its own (not clustered).
+    RadiosityMesh mesh(world.scene, world.geometry, 1.5f, 0);
+    REQUIRE(mesh.patches().size() == 8);
+    float total = 0.0f;
+    for (const RadiosityPatch& p : mesh.patches()) total += p.area;
+    // Cut the first patch (its children 8, 9, 10 appended, 10 the middle one), then the middle
+    // child, then a corner child of that: three levels.
+    const std::uint32_t first[] = {0};
+    mesh.split(first);
+    REQUIRE(mesh.patches().size() == 11);
+    const std::uint32_t middle[] = {10};
+    mesh.split(middle);
+    const std::uint32_t corner[] = {11};
+    mesh.split(corner);
+    CHECK(mesh.patches().size() == 17);
+    CHECK(mesh.clusters().size() == 17);
+    float area = 0.0f;
+    for (const RadiosityPatch& p : mesh.patches()) {
+        area += p.area;
+        CHECK(mesh.clusters()[p.cluster].memberCount == 1);
+    }
+    CHECK(area == doctest::Approx(total).epsilon(1e-5));
+    CHECK(mesh.patches()[11].level == 3);
+    CHECK(mesh.patches()[1].level == 0);
+    Pcg32 rng(7, 1);
+    for (int i = 0; i < 2000; ++i) {
+        SurfaceHit hit;
+        hit.point = Vec3{2.0f * rng.nextFloat(), 2.0f * rng.nextFloat(), 0.0f};
+        hit.normal = Vec3{0, 0, 1};
+        hit.primitive = world.geometry.triangleId(hit.point.x >= hit.point.y ? 0u : 1u);
+        const auto found = mesh.lookup(hit);
+        REQUIRE(found);
+        const RadiosityPatch& p = mesh.patches()[found->patch];
+        const Vec3 rebuilt = found->weights[0] * p.a + found->weights[1] * p.b + found->weights[2] * p.c;
+        CAPTURE(i);
+        CHECK(glm::length(rebuilt - hit.point) < 1e-4f);
+        for (int k = 0; k < 3; ++k) CHECK(found->weights[k] >= -1e-5f);
+    }
 }
 
 }  // namespace
