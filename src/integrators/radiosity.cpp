@@ -212,10 +212,11 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     }
     solveFor(wanted);
     if (capped > 0) {
-        char text[300];
+        char text[400];
         std::snprintf(text, sizeof text,
                       "radiosity: refinement stopped at %zu elements (%zux the first mesh's): %zu more patches' vertex "
-                      "radiosities differ from theirs by over %.3g%%; raise --patches or set a smaller --patch-size",
+                      "radiosities differ from theirs by over %.3g%% (the form factors' sampling noise counts too); "
+                      "raise --patches or --form-factor-rays, or --refine 0 for the uniform mesh",
                       mesh_->clusters().size(), kRefineGrowth, capped, 100.0 * options.refineTolerance);
         stats_.unresolved += (stats_.unresolved.empty() ? "" : "; ") + std::string(text);
     }
