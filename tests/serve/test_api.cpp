@@ -508,8 +508,11 @@ TEST_CASE("serve: a change of settings runs the integrator's preprocess once: on
     fixture.waitUntilDone(small->generation);
     const std::uint64_t before = Renderer::preprocessesRun();
     // Pass 0 at the pixel centres, then jittered passes of kSamplesPerPass samples.
-    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings,
-                                                          settingsFor(16, 12, 2 * kSamplesPerPass, "radiosity").dump()));
+    // Refinement off: this checks serve's passes, not the solve (whose refinement rounds take
+    // minutes under the sanitizers).
+    json settings = settingsFor(16, 12, 2 * kSamplesPerPass, "radiosity");
+    settings["parameters"] = {{"refine", 0}};
+    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings, settings.dump()));
     const json done = fixture.waitUntilDone(job->generation);
     CHECK(done["passes"] == 3);
     CHECK(Renderer::preprocessesRun() - before == 1);
@@ -518,8 +521,9 @@ TEST_CASE("serve: a change of settings runs the integrator's preprocess once: on
 TEST_CASE("serve: progress reports the preparation (radiosity's solve) with its steps and time, apart from the passes") {
     ServerFixture fixture("cornell-original.toml");
     const auto started = std::chrono::steady_clock::now();
-    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings,
-                                                          settingsFor(16, 12, 1, "radiosity").dump()));
+    json settings = settingsFor(16, 12, 1, "radiosity");
+    settings["parameters"] = {{"refine", 0}};  // as above: serve's report, not the refinement
+    const auto job = fixture.session.update(applySettings(fixture.session.job()->settings, settings.dump()));
     const json done = fixture.waitUntilDone(job->generation);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const json& preparation = done["preparation"];
