@@ -42,6 +42,10 @@ public:
     std::span<const Rgb> interleaved() const { return pixels_; }
     // One layer's pixels, row by row (a copy).
     std::vector<Rgb> layer(std::size_t layer) const;
+    // Every value times `factor`: a sum of passes made their mean.
+    void scale(float factor) {
+        for (Rgb& value : pixels_) value *= factor;
+    }
 
 private:
     std::size_t index(int x, int y) const {

@@ -164,7 +164,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     const auto passesFor = [](const std::vector<int>& w) {
         const int most = w.empty() ? 0 : *std::max_element(w.begin(), w.end());
         int passes = most > 1 ? 1 : 0;
-        for (int b : w) passes += b > 0 ? 1 + (b - 1) : 0;
+        for (int b : w) passes += std::max(b, 0);  // its direct light, then b - 1 bounces
         return passes;
     };
 

@@ -1,8 +1,9 @@
 #pragma once
 // The one reading of a material that every integrator shares (docs/design.md, "One light
 // transport"): a material's lobes at one surface hit, the choice among them in proportion to
-// their albedo (or the material's own, Material::choosesLobe), and the densities that choice implies. Results name their lobe (its index in the
-// material's lobes()), and so its event (materials/lobe.h): an integrator never maps lobes to events by hand.
+// their albedo (or the material's own, Material::choosesLobe), and the densities that choice
+// implies. Results name their lobe (its index in the material's lobes()), and so its event
+// (materials/lobe.h): an integrator never maps lobes to events by hand.
 #include <array>
 #include <optional>
 

@@ -332,10 +332,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel, const Pas
     if (splats) addSplats(*splats, samplesPerPixel, film);
     if (progressive && pass * perPass > 1) {
         // The mean of the passes' samples (of those begun, when cancelled).
-        const float weight = 1.0f / static_cast<float>(pass * perPass);
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x)
-                for (Rgb& value : film.pixel(x, y)) value *= weight;
+        film.scale(1.0f / static_cast<float>(pass * perPass));
     }
 
     RenderStats stats;

@@ -298,10 +298,7 @@ void Session::renderJob(const std::shared_ptr<Job>& job) {
                 }
         }
         auto mean = std::make_shared<Film>(*sum);
-        const float weight = 1.0f / static_cast<float>(pass);
-        for (int y = 0; y < mean->height(); ++y)
-            for (int x = 0; x < mean->width(); ++x)
-                for (Rgb& value : mean->pixel(x, y)) value *= weight;
+        mean->scale(1.0f / static_cast<float>(pass));
         progress.image = std::move(mean);
         progress.passes = pass + 1;
         progress.samples = pass * perPass;
@@ -335,10 +332,7 @@ void Session::continueProgressive(const std::shared_ptr<Job>& job, Progress& pro
         if (samples - shown < perPass) return;
         shown = samples;
         auto mean = std::make_shared<Film>(sum);
-        const float weight = 1.0f / static_cast<float>(samples);
-        for (int y = 0; y < mean->height(); ++y)
-            for (int x = 0; x < mean->width(); ++x)
-                for (Rgb& value : mean->pixel(x, y)) value *= weight;
+        mean->scale(1.0f / static_cast<float>(samples));
         show(std::move(mean), samples, false);
     });
     if (result.cancelled) return;

@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <cstring>
@@ -369,51 +370,47 @@ private:
         return {buffer.data() + bv.byteOffset + a.byteOffset, a.count, stride, a.componentType};
     }
 
-    std::vector<Vec3> floats3(int index, const std::string& where) const {
-        const View v = view(index, TINYGLTF_TYPE_VEC3, where);
-        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components");
-        std::vector<Vec3> out(v.count);
+    // The FLOAT elements of a VECn accessor, each element's n floats checked finite (else the error
+    // `notFinite(i, floats)` says) and turned into lightpath's value by `convert`.
+    template <std::size_t N, class Convert, class NotFinite>
+    auto floatElements(int index, int type, const std::string& where, std::string_view notFloat, Convert convert,
+                       NotFinite notFinite) const {
+        const View v = view(index, type, where);
+        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, std::string(notFloat));
+        std::vector<decltype(convert(std::array<float, N>{}))> out(v.count);
         for (std::size_t i = 0; i < v.count; ++i) {
-            float xyz[3];
-            std::memcpy(xyz, v.data + i * v.stride, sizeof xyz);
-            out[i] = Vec3(xyz[0], xyz[1], xyz[2]);
-            if (!finite(xyz[0]) || !finite(xyz[1]) || !finite(xyz[2]))
-                fail(where, "element " + std::to_string(i) + " is " + formatVec3(out[i]) + "; expected numbers " +
-                                std::string(kMagnitudeRange));
+            std::array<float, N> element;
+            std::memcpy(element.data(), v.data + i * v.stride, sizeof element);
+            if (!std::all_of(element.begin(), element.end(), [](float x) { return finite(x); }))
+                fail(where, "element " + std::to_string(i) + notFinite(element) + std::string(kMagnitudeRange));
+            out[i] = convert(element);
         }
         return out;
+    }
+
+    std::vector<Vec3> floats3(int index, const std::string& where) const {
+        return floatElements<3>(
+            index, TINYGLTF_TYPE_VEC3, where, "expected FLOAT components",
+            [](const std::array<float, 3>& e) { return Vec3(e[0], e[1], e[2]); },
+            [](const std::array<float, 3>& e) { return " is " + formatVec3(Vec3(e[0], e[1], e[2])) + "; expected numbers "; });
     }
 
     // TANGENT: xyz a unit tangent, w the bitangent's sign, +1 or -1 (glTF 2.0, 3.7.2.1); any other
     // finite w is read by its sign (0 as +1), as viewers do.
     std::vector<Vec4> tangents(int index, const std::string& where) const {
-        const View v = view(index, TINYGLTF_TYPE_VEC4, where);
-        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components");
-        std::vector<Vec4> out(v.count);
-        for (std::size_t i = 0; i < v.count; ++i) {
-            float xyzw[4];
-            std::memcpy(xyzw, v.data + i * v.stride, sizeof xyzw);
-            if (!finite(xyzw[0]) || !finite(xyzw[1]) || !finite(xyzw[2]) || !finite(xyzw[3]))
-                fail(where, "element " + std::to_string(i) + " is not 4 numbers " + std::string(kMagnitudeRange));
-            out[i] = Vec4(xyzw[0], xyzw[1], xyzw[2], xyzw[3] < 0.0f ? -1.0f : 1.0f);
-        }
-        return out;
+        return floatElements<4>(
+            index, TINYGLTF_TYPE_VEC4, where, "expected FLOAT components",
+            [](const std::array<float, 4>& e) { return Vec4(e[0], e[1], e[2], e[3] < 0.0f ? -1.0f : 1.0f); },
+            [](const std::array<float, 4>&) { return std::string(" is not 4 numbers "); });
     }
 
     // A TEXCOORD_n as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
     // where lightpath's runs up (OBJ's vt; io/image_texture.cpp reads t = 1 - v), so v' = 1 - v.
     std::vector<Vec2> textureCoordinates(int index, const std::string& where) const {
-        const View v = view(index, TINYGLTF_TYPE_VEC2, where);
-        if (v.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(where, "expected FLOAT components (normalised integers are not read)");
-        std::vector<Vec2> out(v.count);
-        for (std::size_t i = 0; i < v.count; ++i) {
-            float uv[2];
-            std::memcpy(uv, v.data + i * v.stride, sizeof uv);
-            if (!finite(uv[0]) || !finite(uv[1]))
-                fail(where, "element " + std::to_string(i) + " is not a pair of numbers " + std::string(kMagnitudeRange));
-            out[i] = Vec2(uv[0], 1.0f - uv[1]);
-        }
-        return out;
+        return floatElements<2>(
+            index, TINYGLTF_TYPE_VEC2, where, "expected FLOAT components (normalised integers are not read)",
+            [](const std::array<float, 2>& e) { return Vec2(e[0], 1.0f - e[1]); },
+            [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
     }
 
     std::vector<std::uint32_t> indices(int index, std::size_t vertexCount, const std::string& where) const {

@@ -161,6 +161,27 @@ TEST_CASE("textures: up close each pixel is its texel's colour") {
     CHECK(checked > 1000);
 }
 
+// The pixels of a camera looking straight down at the 2 m square of the OBJ tests (vt (0,0) ..
+// (1,1) on x, z in [-1, 1]) that see a point 2 texels or more inside a check: `check(x, y, texel)`
+// with that check's value, 0 or 1.
+template <class Check>
+void forEachCheckPixel(const Scene& scene, Check check) {
+    const PinholeCamera camera(scene.camera);
+    for (int y = 0; y < camera.height(); ++y)
+        for (int x = 0; x < camera.width(); ++x) {
+            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+            const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
+            if (std::abs(p.x) >= 1.0f || std::abs(p.z) >= 1.0f) continue;
+            // vt interpolated: u = (x + 1) / 2, v = (1 - z) / 2; the texel row runs down from t = 1 - v.
+            const float i = (p.x + 1.0f) / 2.0f * kTexels, j = (1.0f - (1.0f - p.z) / 2.0f) * kTexels;
+            const float wi = std::fmod(i, float(kCheck)), wj = std::fmod(j, float(kCheck));
+            if (wi < 2.0f || wi > kCheck - 2.0f || wj < 2.0f || wj > kCheck - 2.0f) continue;
+            CAPTURE(x);
+            CAPTURE(y);
+            check(x, y, checkAt(int(i), int(j)));
+        }
+}
+
 TEST_CASE("textures: an OBJ's map_Kd is its kd, at its vt") {
     const std::filesystem::path folder = checkerboard().parent_path();
     // A 2 m square on the floor, vt (0,0) .. (1,1), its MTL's map_Kd the checkerboard, lit from
@@ -174,27 +195,16 @@ TEST_CASE("textures: an OBJ's map_Kd is its kd, at its vt") {
     const Scene scene = loadSceneFromText(text, "obj.toml");
     REQUIRE(scene.warnings.empty());
     const Film film = renderBeauty(scene, 1);
-    const PinholeCamera camera(scene.camera);
     int black = 0, white = 0;
-    for (int y = 0; y < camera.height(); ++y)
-        for (int x = 0; x < camera.width(); ++x) {
-            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-            const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
-            if (std::abs(p.x) >= 1.0f || std::abs(p.z) >= 1.0f) continue;
-            // vt interpolated: u = (x + 1) / 2, v = (1 - z) / 2; the texel row runs down from t = 1 - v.
-            const float i = (p.x + 1.0f) / 2.0f * kTexels, j = (1.0f - (1.0f - p.z) / 2.0f) * kTexels;
-            const float wi = std::fmod(i, float(kCheck)), wj = std::fmod(j, float(kCheck));
-            if (wi < 2.0f || wi > kCheck - 2.0f || wj < 2.0f || wj > kCheck - 2.0f) continue;
-            CAPTURE(x);
-            CAPTURE(y);
-            if (checkAt(int(i), int(j)) == 0.0f) {
-                ++black;
-                CHECK(film.at(0, x, y).g == 0.0f);
-            } else {
-                ++white;
-                CHECK(film.at(0, x, y).g > 0.1f);
-            }
+    forEachCheckPixel(scene, [&](int x, int y, float texel) {
+        if (texel == 0.0f) {
+            ++black;
+            CHECK(film.at(0, x, y).g == 0.0f);
+        } else {
+            ++white;
+            CHECK(film.at(0, x, y).g > 0.1f);
         }
+    });
     CHECK(black > 200);
     CHECK(white > 200);
 }
@@ -209,22 +219,11 @@ TEST_CASE("textures: an OBJ's map_Ke is its emission, at its vt (a black Ke coun
                              "resolution = [96, 72]\n[[meshes]]\nfile = \"" + (folder / "glow.obj").string() + "\"\n";
     const Scene scene = loadSceneFromText(text, "obj.toml");
     const Film film = renderBeauty(scene, 1);
-    const PinholeCamera camera(scene.camera);
     int black = 0, white = 0;
-    for (int y = 0; y < camera.height(); ++y)
-        for (int x = 0; x < camera.width(); ++x) {
-            const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
-            const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
-            if (std::abs(p.x) >= 1.0f || std::abs(p.z) >= 1.0f) continue;
-            const float i = (p.x + 1.0f) / 2.0f * kTexels, j = (1.0f - (1.0f - p.z) / 2.0f) * kTexels;
-            const float wi = std::fmod(i, float(kCheck)), wj = std::fmod(j, float(kCheck));
-            if (wi < 2.0f || wi > kCheck - 2.0f || wj < 2.0f || wj > kCheck - 2.0f) continue;
-            CAPTURE(x);
-            CAPTURE(y);
-            const float expected = checkAt(int(i), int(j));
-            (expected == 0.0f ? black : white) += 1;
-            CHECK(film.at(0, x, y).g == doctest::Approx(expected).epsilon(1e-4));
-        }
+    forEachCheckPixel(scene, [&](int x, int y, float expected) {
+        (expected == 0.0f ? black : white) += 1;
+        CHECK(film.at(0, x, y).g == doctest::Approx(expected).epsilon(1e-4));
+    });
     CHECK(black > 200);
     CHECK(white > 200);
 }

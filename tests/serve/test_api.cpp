@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <atomic>
+#include <optional>
 #include <cstring>
 #include <regex>
 #include <vector>
@@ -68,6 +69,26 @@ void checkSameAsFilm(const Decoded& exr, const Film& film) {
                                       << ", rendered " << expected);
                 }
     }
+}
+
+// The classes render the command line makes of `scene` with these settings (RenderConfig, as
+// `lightpath render` reads its flags), `parameters` the integrator's own; with `seed`, rendered as
+// serve's passes are, Renderer::render(seed, spp).
+Film renderAsCommandLine(const std::string& scene, const std::string& integrator, const std::string& resolution,
+                         int spp, const std::vector<std::pair<std::string, std::string>>& parameters,
+                         std::optional<std::uint64_t> seed = std::nullopt) {
+    RenderConfig config;
+    config.scenePath = scenePath(scene);
+    config.integrator = integrator;
+    config.resolution = resolution;
+    config.samplesPerPixel = spp;
+    config.aovs = "classes";
+    for (const auto& [name, value] : parameters) config.set(name, value);
+    config.validate();
+    const Scene loaded = config.loadScene();
+    const AovSet aovs(config.expressions(&loaded));  // the renderer keeps references to both
+    const Renderer renderer(loaded, aovs, config.renderOptions());
+    return (seed ? renderer.render(*seed, spp) : renderer.render()).film;
 }
 
 }  // namespace
@@ -225,16 +246,7 @@ TEST_CASE("serve: under sppm the passes continue one progressive render, the ima
     const Decoded image = decode(exr->body, "render.exr");
 
     // The same configuration given to the renderer directly.
-    RenderConfig config;
-    config.scenePath = scenePath("glass-sphere.toml");
-    config.integrator = "sppm";
-    config.resolution = "32x24";
-    config.samplesPerPixel = 8;
-    config.aovs = "classes";
-    config.set("photons", "2000");
-    config.validate();
-    const Scene scene = config.loadScene();
-    checkSameAsFilm(image, Renderer(scene, AovSet(config.expressions(&scene)), config.renderOptions()).render(1, 8).film);
+    checkSameAsFilm(image, renderAsCommandLine("glass-sphere.toml", "sppm", "32x24", 8, {{"photons", "2000"}}, 1));
 }
 
 TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton states") {
@@ -567,20 +579,8 @@ TEST_CASE("serve: an integrator's own parameters reach it, as the command line's
     const Decoded image = decode(fixture.client()->Get("/api/render.exr")->body, "render.exr");
 
     // The same configuration given to the renderer directly, and the control: the default patches.
-    const auto renderWith = [](const std::string& patchCount) {
-        RenderConfig config;
-        config.scenePath = scenePath("cornell-original.toml");
-        config.integrator = "radiosity";
-        config.resolution = "16x12";
-        config.samplesPerPixel = 1;
-        config.aovs = "classes";
-        if (!patchCount.empty()) config.set("patches", patchCount);
-        config.validate();
-        const Scene scene = config.loadScene();
-        return Renderer(scene, AovSet(config.expressions(&scene)), config.renderOptions()).render().film;
-    };
-    checkSameAsFilm(image, renderWith("24"));
-    const Film defaults = renderWith("");
+    checkSameAsFilm(image, renderAsCommandLine("cornell-original.toml", "radiosity", "16x12", 1, {{"patches", "24"}}));
+    const Film defaults = renderAsCommandLine("cornell-original.toml", "radiosity", "16x12", 1, {});
     bool differs = false;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) differs |= image.at(x, y, "R") != defaults.at(0, x, y).r;
