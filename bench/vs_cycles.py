@@ -1,6 +1,10 @@
 #!/usr/bin/python3
 """lightpath's path tracer against Blender's Cycles (CPU) on the Cornell box under its lamp.
 
+Two scenes (--scene): `cornell`, every material Lambertian (bench/cycles/cornell-lamp.toml), and
+`glossy`, the same box with a rough metal floor (bench/cycles/cornell-glossy.toml: GGX, roughness
+0.3, in Cycles a Principled BSDF with metallic 1).
+
 For each of Cycles' budgets (16, 64, 256 spp) the script measures Cycles' RMSE against Cycles' own
 converged image, then the render time lightpath needs to reach that same RMSE against its own
 converged image (the two converged images agree; the script prints by how much), interpolated
@@ -14,7 +18,7 @@ the wall time are reported; on a machine other processes load, CPU time is the s
 Runs alternate between the renderers; times are medians over runs, squared errors are averaged
 over runs (each run has its own seed). The machine is named in the output.
 
-  /usr/bin/python3 bench/vs_cycles.py [--runs 3] [--size 128] [--threads 2]
+  /usr/bin/python3 bench/vs_cycles.py [--scene cornell|glossy] [--runs 3] [--size 128] [--threads 2]
       [--variant SAMPLER:FILTER ...] [--reference-spp 2048] [--cache out/bench-cycles]
 
 Needs Blender (a benchmark peer, not a dependency of lightpath: `sudo apt-get install blender`)
@@ -35,7 +39,12 @@ import OpenImageIO as oiio
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-SCENE = os.path.join(HERE, "cycles", "cornell-lamp.toml")
+# Per scene: lightpath's scene file and the materials Blender makes rough metals (cornell_box.py's
+# metal=NAME:ROUGHNESS), matching the file's [materials] tables.
+SCENES = {
+    "cornell": (os.path.join(HERE, "cycles", "cornell-lamp.toml"), []),
+    "glossy": (os.path.join(HERE, "cycles", "cornell-glossy.toml"), ["metal=floor:0.3"]),
+}
 OBJ = os.path.join(ROOT, "scenes", "meshes", "cornell-box", "CornellBox-Original.obj")
 CYCLES_SPP = [16, 64, 256]
 # The lamp's radiance is (17, 12, 4); no wall comes near this luminance, so a pixel above it sees
@@ -64,9 +73,9 @@ def machine():
     return f"{platform.node()}, {os.cpu_count()} cores, {model}, load average {os.getloadavg()[0]:.1f}"
 
 
-def run_cycles(blender, out, size, threads, seed, spps):
+def run_cycles(blender, scene, out, size, threads, seed, spps):
     cmd = [blender, "-b", "--factory-startup", "-P", os.path.join(HERE, "cycles", "cornell_box.py"), "--",
-           OBJ, out, str(size), str(threads), str(seed)] + [str(s) for s in spps]
+           OBJ, out, str(size), str(threads), str(seed)] + SCENES[scene][1] + [str(s) for s in spps]
     log = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     results = {}
     for m in re.finditer(r"^cycles spp (\d+) seconds ([0-9.]+) cpu ([0-9.]+) file (\S+)$", log, re.M):
@@ -76,9 +85,9 @@ def run_cycles(blender, out, size, threads, seed, spps):
     return results
 
 
-def run_lightpath(lightpath, out, size, threads, seed, spp, sampler, pixel_filter):
+def run_lightpath(lightpath, scene, out, size, threads, seed, spp, sampler, pixel_filter):
     path = os.path.join(out, f"lightpath-{sampler}-{pixel_filter}-{spp}-seed{seed}.exr")
-    cmd = [lightpath, "render", SCENE, "--integrator", "path", "--spp", str(spp), "--threads", str(threads),
+    cmd = [lightpath, "render", SCENES[scene][0], "--integrator", "path", "--spp", str(spp), "--threads", str(threads),
            "--seed", str(seed), "--sampler", sampler, "--resolution", f"{size}x{size}", "--aovs", "none",
            "-o", path, "--quiet", "--stats"]
     if pixel_filter != "default":
@@ -104,6 +113,7 @@ def seconds_to_reach(curve, error):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--scene", choices=sorted(SCENES), default="cornell")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--size", type=int, default=128)
     ap.add_argument("--threads", type=int, default=2)
@@ -125,14 +135,16 @@ def main():
         print(f"vs_cycles: no lightpath binary at {lightpath} (build it first)", file=sys.stderr)
         return 2
     os.makedirs(args.cache, exist_ok=True)
-    work = os.path.join(args.cache, "runs")
+    # The Lambertian box keeps the folder names it had before there were two scenes.
+    prefix = "" if args.scene == "cornell" else f"{args.scene}-"
+    work = os.path.join(args.cache, f"{prefix}runs")
     os.makedirs(work, exist_ok=True)
 
     # Converged references, cached: Cycles', and lightpath's per pixel filter (the filter changes
     # the converged image; the sampler does not). Each is the mean of two renders with different
     # seeds; half their squared difference, halved again, estimates the reference's own squared
     # error, which is subtracted from every measured one (the reference is independent of them).
-    refs_dir = os.path.join(args.cache, f"references-{args.size}-{args.reference_spp}")
+    refs_dir = os.path.join(args.cache, f"{prefix}references-{args.size}-{args.reference_spp}")
     os.makedirs(refs_dir, exist_ok=True)
 
     def reference(render, name):
@@ -147,12 +159,12 @@ def main():
         return (halves[0] + halves[1]) / 2, difference / 4
 
     cycles_ref, cycles_ref_sq = reference(
-        lambda seed: run_cycles(blender, refs_dir, args.size, args.threads, seed, [args.reference_spp]), "cycles")
+        lambda seed: run_cycles(blender, args.scene, refs_dir, args.size, args.threads, seed, [args.reference_spp]), "cycles")
     lp_refs, lp_refs_sq = {}, {}
     for _, pixel_filter in variants:
         if pixel_filter not in lp_refs:
             lp_refs[pixel_filter], lp_refs_sq[pixel_filter] = reference(
-                lambda seed: run_lightpath(lightpath, refs_dir, args.size, args.threads, seed, args.reference_spp,
+                lambda seed: run_lightpath(lightpath, args.scene, refs_dir, args.size, args.threads, seed, args.reference_spp,
                                            "sobol", pixel_filter), f"lightpath-sobol-{pixel_filter}")
 
     lamp = (luminance(cycles_ref) > LAMP_LUMINANCE)
@@ -177,18 +189,18 @@ def main():
 
     for run in range(args.runs):
         seed = 1000 + run
-        for spp, (seconds, cpu, path) in run_cycles(blender, work, args.size, args.threads, seed, CYCLES_SPP).items():
+        for spp, (seconds, cpu, path) in run_cycles(blender, args.scene, work, args.size, args.threads, seed, CYCLES_SPP).items():
             cycles_times[spp].append((seconds, cpu))
             cycles_sq[spp].append(squared(read_rgb(path), cycles_ref, cycles_ref_sq))
         for v in variants:
             for spp in lp_spps:
-                seconds, cpu, path = run_lightpath(lightpath, work, args.size, args.threads, seed, spp, *v)
+                seconds, cpu, path = run_lightpath(lightpath, args.scene, work, args.size, args.threads, seed, spp, *v)
                 lp_times[(v, spp)].append((seconds, cpu))
                 lp_sq[(v, spp)].append(squared(read_rgb(path), lp_refs[v[1]], lp_refs_sq[v[1]]))
         print(f"run {run + 1}/{args.runs} done", file=sys.stderr, flush=True)
 
     print(f"machine: {machine()}")
-    print(f"scene: {os.path.relpath(SCENE, ROOT)} at {args.size}x{args.size}, {args.threads} threads, "
+    print(f"scene: {os.path.relpath(SCENES[args.scene][0], ROOT)} at {args.size}x{args.size}, {args.threads} threads, "
           f"{args.runs} runs; references 2 x {args.reference_spp} spp, their own error subtracted; "
           f"lamp and its ring: {int(ring.sum())} of {ring.size} pixels")
     for pixel_filter, ref in lp_refs.items():

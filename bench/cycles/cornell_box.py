@@ -11,8 +11,12 @@
 #     bounces is direct light alone); both use Russian roulette;
 #   - no clamping (Cycles' default clamps indirect light at 10), no denoising, no adaptive
 #     sampling, Cycles' default pixel filter (Blackman-Harris, 1.5 px) and sampling pattern.
-# Arguments: OBJ OUT_DIR SIZE THREADS SEED SPP [SPP ...]. Prints one line per render, its wall
-# time and the process's CPU time during it:
+#   - `metal=NAME:ROUGHNESS` (repeatable, before the budgets) makes MTL material NAME a Principled
+#     BSDF with metallic 1, GGX (not multiscatter), the roughness given (alpha = roughness^2, as
+#     lightpath's `microfacet`) and base colour its Kd: F0 = Kd with Schlick-like Fresnel, as
+#     lightpath's `microfacet` with metallic = 1 (bench/cycles/cornell-glossy.toml).
+# Arguments: OBJ OUT_DIR SIZE THREADS SEED [metal=NAME:ROUGHNESS ...] SPP [SPP ...]. Prints one
+# line per render, its wall time and the process's CPU time during it:
 #   cycles spp N seconds T cpu C file PATH
 import math
 import os
@@ -66,16 +70,23 @@ def parse_mtl(path):
     return materials
 
 
-def make_material(name, kd, ke):
+def make_material(name, kd, ke, metal_roughness=None):
     mat = bpy.data.materials.new(name)
     mat.use_nodes = True
     nodes, links = mat.node_tree.nodes, mat.node_tree.links
     nodes.clear()
     out = nodes.new("ShaderNodeOutputMaterial")
-    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = (*kd, 1.0)
-    diffuse.inputs["Roughness"].default_value = 0.0  # Lambert, not Oren-Nayar
-    shader = diffuse.outputs["BSDF"]
+    if metal_roughness is None:
+        bsdf = nodes.new("ShaderNodeBsdfDiffuse")
+        bsdf.inputs["Color"].default_value = (*kd, 1.0)
+        bsdf.inputs["Roughness"].default_value = 0.0  # Lambert, not Oren-Nayar
+    else:
+        bsdf = nodes.new("ShaderNodeBsdfPrincipled")
+        bsdf.distribution = "GGX"
+        bsdf.inputs["Base Color"].default_value = (*kd, 1.0)
+        bsdf.inputs["Metallic"].default_value = 1.0
+        bsdf.inputs["Roughness"].default_value = metal_roughness
+    shader = bsdf.outputs["BSDF"]
     if ke and max(ke) > 0.0:
         emission = nodes.new("ShaderNodeEmission")
         emission.inputs["Color"].default_value = (*ke, 1.0)
@@ -87,14 +98,14 @@ def make_material(name, kd, ke):
         links.new(geometry.outputs["Backfacing"], front.inputs[1])
         links.new(front.outputs["Value"], emission.inputs["Strength"])
         add = nodes.new("ShaderNodeAddShader")
-        links.new(diffuse.outputs["BSDF"], add.inputs[0])
+        links.new(bsdf.outputs["BSDF"], add.inputs[0])
         links.new(emission.outputs["Emission"], add.inputs[1])
         shader = add.outputs["Shader"]
     links.new(shader, out.inputs["Surface"])
     return mat
 
 
-def build_scene(obj_path, size, threads, seed):
+def build_scene(obj_path, size, threads, seed, metals):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
     vertices, faces = parse_obj(obj_path)
@@ -103,7 +114,8 @@ def build_scene(obj_path, size, threads, seed):
     mesh = bpy.data.meshes.new("cornell")
     mesh.from_pydata(vertices, [], [tri for _, tri in faces])
     for name in names:
-        mesh.materials.append(make_material(name, mtl[name].get("Kd", (0.0, 0.0, 0.0)), mtl[name].get("Ke")))
+        mesh.materials.append(make_material(name, mtl[name].get("Kd", (0.0, 0.0, 0.0)), mtl[name].get("Ke"),
+                                            metals.get(name)))
     for polygon, (name, _) in zip(mesh.polygons, faces):
         polygon.material_index = names.index(name)
     mesh.update()
@@ -150,8 +162,13 @@ def build_scene(obj_path, size, threads, seed):
 def main():
     args = sys.argv[sys.argv.index("--") + 1:]
     obj_path, out_dir, size, threads, seed = args[0], args[1], int(args[2]), int(args[3]), int(args[4])
-    spps = [int(a) for a in args[5:]]
-    scene = build_scene(obj_path, size, threads, seed)
+    metals = {}
+    for a in args[5:]:
+        if a.startswith("metal="):
+            name, roughness = a[len("metal="):].split(":")
+            metals[name] = float(roughness)
+    spps = [int(a) for a in args[5:] if not a.startswith("metal=")]
+    scene = build_scene(obj_path, size, threads, seed, metals)
     print(f"cycles pattern {scene.cycles.sampling_pattern} filter {scene.cycles.pixel_filter_type} "
           f"{scene.cycles.filter_width} bounces {scene.cycles.max_bounces}", flush=True)
     scene.cycles.samples = 1
