@@ -2,8 +2,23 @@
 
 namespace lightpath {
 
+namespace {
+
+// Markdown code: `text`. Appended, not "`" + text + "`": GCC 12 inlines operator+(const char*,
+// std::string&&) into a memcpy its -Wrestrict check misreads (GCC bug 105329).
+std::string codeSpan(std::string_view text) {
+    std::string span;
+    span.reserve(text.size() + 2);
+    span += '`';
+    span += text;
+    span += '`';
+    return span;
+}
+
+}  // namespace
+
 std::string allowedText(const Parameter& p) {
-    const std::string range = p.range.isAny() ? "any" : "`" + p.range.describe() + "`";
+    const std::string range = p.range.isAny() ? "any" : codeSpan(p.range.describe());
     switch (p.type) {
         case ParameterType::Colour: return "each channel " + range;
         case ParameterType::Point:
@@ -27,7 +42,7 @@ std::string allowedText(const Parameter& p) {
 std::string defaultCell(const Parameter& p) {
     if (p.required) return "**required**";
     if (p.defaultText.empty()) return "none";
-    return "`" + std::string(p.defaultText) + "`";
+    return codeSpan(p.defaultText);
 }
 
 std::string markdownTable(const TypeSchema& schema) {
