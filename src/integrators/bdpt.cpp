@@ -511,8 +511,13 @@ void BdptIntegrator::chooseLightWalkFraction(const RenderContext& ctx) {
     const auto started = std::chrono::steady_clock::now();
     stats_ = {};
     fraction_ = 1.0;
-    if (!lightWalks_ || strategies_ != Strategies::All) {
-        stats_.reason = !lightWalks_ ? "no light walks: no requested output takes light that scattered" : "light tracing alone";
+    if (!lightWalks_) {
+        stats_.lightWalkFraction = 0.0;
+        stats_.reason = "none: no requested output accepts a path that scatters before its light";
+        return;
+    }
+    if (strategies_ != Strategies::All) {
+        stats_.reason = "light tracing alone";
         return;
     }
     if (ctx.parameters != nullptr && ctx.parameters->has("light-walk-fraction")) {

@@ -20,8 +20,9 @@ namespace lightpath {
 inline constexpr std::array<double, 5> kLightWalkFractions = {1.0, 0.5, 0.25, 0.125, 0.0625};
 
 // A pilot's rays and joins costed in units of one ray cast: a join (its four densities, the BSDF
-// at both ends, the automaton's steps) costs about half a ray, calibrated with callgrind on the
-// Cornell box (docs/performance.md, "bdpt against path").
+// at both ends, the automaton's steps) counts half a ray. Checked against CPU time on the Cornell
+// box under its lamp (64 x 64, 16 spp, q = 1 against 1/8): this model puts the light walk's work at
+// 2.1x the eye walk's, the CPU time at 1.8x, so it errs towards fewer light walks by ~15%.
 inline constexpr double kJoinCost = 0.5;
 
 // Where one contribution of a camera sample lands.
