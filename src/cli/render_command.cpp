@@ -86,6 +86,16 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
     std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
 }
 
+void printBdptStats(const BdptStats& b) {
+    std::printf("bdpt          light walks for %.4g of the camera samples: %s\n", b.lightWalkFraction, b.reason.c_str());
+    if (b.candidates.empty()) return;
+    std::printf("              pilot of %llu samples in %.3f s; per sample, variance x work (rays):\n",
+                static_cast<unsigned long long>(b.pilotSamples), b.seconds);
+    for (const BdptStats::Candidate& c : b.candidates)
+        std::printf("              %-8.4g %.4g x %.3g = %.4g%s\n", c.fraction, c.variance, c.work, c.variance * c.work,
+                    c.fraction == b.lightWalkFraction ? "  <- chosen" : "");
+}
+
 void printRadiosityStats(const RadiosityStats& r) {
     std::printf("radiosity     %zu patches (size %.4g) in %zu clusters, %llu form-factor rays, %llu shadow rays\n",
                 r.patches, double(r.patchSize), r.clusters, static_cast<unsigned long long>(r.formFactorRays),
@@ -219,6 +229,7 @@ void run(const RenderCommand& command) {
         }
         if (result.stats.radiosity) printRadiosityStats(*result.stats.radiosity);
         if (result.stats.photon) printPhotonStats(*result.stats.photon);
+        if (result.stats.bdpt) printBdptStats(*result.stats.bdpt);
     }
 }
 

@@ -2,11 +2,13 @@
 
 #include "integrators/registry.h"
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
 #include "geometry/spawn_ray.h"
 #include "integrators/light_ray.h"
+#include "integrators/bdpt_allocation.h"
 #include "integrators/bdpt_vertex.h"
 #include "integrators/direct_light.h"
 #include "sampling/russian_roulette.h"
@@ -17,6 +19,21 @@ namespace {
 // Names the light walk's own random numbers within a pixel sample (Sampler::forVertex), so the
 // eye's walk draws the same numbers whether or not a light walk was traced.
 constexpr std::uint64_t kLightWalkKey = 0x6c69676874ull;  // "light"
+// Names the number that decides whether a camera sample walks from a light (a fraction q < 1 of
+// them do): its own dimension, stratified over the pixel's samples like the others.
+constexpr std::uint64_t kLightWalkChoiceKey = 0x63686f696365ull;  // "choice"
+
+// How one camera sample weighs the light walk's strategies. Under a fraction q of camera samples
+// walking from a light, each of those strategies counts q samples in the power heuristic and its
+// contributions are divided by q (bdpt_allocation.h); the pilot tallies them instead.
+struct Weights {
+    double lightWalks = 1.0;  // light walks per camera sample, q (0: none)
+    float lightScale = 1.0f;  // 1 / q
+    PilotSample* pilot = nullptr;
+    const Rgb* pilotBeauty = nullptr;  // the pilot's sink's beauty, read around s = 0's emission
+};
+
+float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 using Vertices = std::array<BdptVertex, kMaxSubpathVertices>;
 
@@ -156,7 +173,7 @@ void forPixelsCovering(const PixelFilter* filter, const Vec2& p, const PinholeCa
 }
 
 // t = 1: light vertex y_i joined to the pinhole, splatted into the pixels whose filter covers it.
-void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks, bool weighted) {
+void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& weights, bool weighted) {
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[i];
     const ShadingPoint& sp = *y.surface;
@@ -180,8 +197,21 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
         if (pushLightEvents(path, light, i - 1) && path.wants(lightEvent)) {
             const Rgb f = sp.bsdf.eval(lobe, sp.wo, w);
             if (!isBlack(f)) {
+                if (weights.pilot != nullptr) {
+                    weights.pilot->countJoin(PilotTerm::Splat);
+                    if (visible(path)) {
+                        double shareSquares = 0.0;
+                        forPixelsCovering(ctx.filter, *raster, ctx.camera, [&](int, int, float share) { shareSquares += share * share; });
+                        weights.pilot->add(PilotTerm::Splat, luminance(y.beta * f) * cameraTerm,
+                                           joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1,
+                                           shareSquares);
+                    }
+                    popTo(path, before);
+                    continue;
+                }
                 const float weight =
-                    weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1, lightWalks)
+                    weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1,
+                                         weights.lightWalks) * weights.lightScale
                              : 1.0f;
                 path.setStrategy(i + 1, 1);
                 if (weight > 0.0f && visible(path)) {
@@ -199,7 +229,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, bool lightWalks
 // s = 1: light sampling at eye vertex z_t-1, through every delta light and one area light chosen
 // by power, as the path tracer's next-event estimation does.
 void joinToLightSample(const Vertices& eye, int t, const Light& light, float choice, Vec2 uPoint, PathState& path,
-                       bool lightWalks) {
+                       const Weights& weights) {
     const RenderContext& ctx = path.context;
     const BdptVertex& z = eye[t - 1];
     const ShadingPoint& sp = *z.surface;
@@ -217,7 +247,14 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
         if (!z.scattersSmoothly(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
         const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
         if (isBlack(f)) continue;
-        const float weight = misWeight(joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1, lightWalks);
+        if (weights.pilot != nullptr) {
+            weights.pilot->countJoin(PilotTerm::Eye);
+            if (visible(path))
+                weights.pilot->add(PilotTerm::Eye, luminance(z.beta * f * sample.weight) / choice,
+                                   joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1);
+            continue;
+        }
+        const float weight = misWeight(joinedDensities(y, lobe, {eye.data(), std::size_t(t)}, lobe, ctx), 1, weights.lightWalks);
         path.setStrategy(1, t);
         if (weight > 0.0f && visible(path)) path.emit(sp.eventOf(lobe), lightEvent, z.beta * f * sample.weight * (weight / choice));
     }
@@ -225,7 +262,7 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
 
 // s, t >= 2: light vertex y_s-1 joined to eye vertex z_t-1, one contribution per pair of their
 // smooth lobes (each pair is a different path: E..D D..L and E..G D..L land in different AOVs).
-void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, PathState& path, bool lightWalks) {
+void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, PathState& path, const Weights& weights) {
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[s - 1];
     const BdptVertex& z = eye[t - 1];
@@ -248,10 +285,18 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
             if (!y.scattersSmoothly(lightLobe) || !path.push(ly.eventOf(lightLobe))) continue;
             if (pushLightEvents(path, light, s - 2) && path.wants(lightEvent)) {
                 const Rgb fy = ly.bsdf.eval(lightLobe, ly.wo, -w);
-                if (!isBlack(fy)) {
+                if (!isBlack(fy) && weights.pilot != nullptr) {
+                    weights.pilot->countJoin(PilotTerm::Join);
+                    if (visible(path))
+                        weights.pilot->add(PilotTerm::Join, luminance(z.beta * fz * fy * y.beta) / distance2,
+                                           joinedDensities({light.data(), std::size_t(s)}, lightLobe,
+                                                           {eye.data(), std::size_t(t)}, eyeLobe, ctx),
+                                           s);
+                } else if (!isBlack(fy)) {
                     const float weight = misWeight(joinedDensities({light.data(), std::size_t(s)}, lightLobe,
                                                                    {eye.data(), std::size_t(t)}, eyeLobe, ctx),
-                                                   s, lightWalks);
+                                                   s, weights.lightWalks) *
+                                         weights.lightScale;
                     path.setStrategy(s, t);
                     if (weight > 0.0f && visible(path))
                         path.emit(lightEvent, z.beta * fz * fy * y.beta * (weight / distance2));
@@ -263,11 +308,173 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     }
 }
 
+// One camera sample's strategies: the light walk's when `walkFromLights`, then the eye's.
+void traceStrategies(const Ray& cameraRay, PathState& path, bool walkFromLights, BdptIntegrator::Strategies strategies,
+                     const Weights& weights) {
+    const RenderContext& ctx = path.context;
+    Sampler& sampler = *path.sampler;
+    const std::uint64_t raysBefore = path.counters.total();
+    std::uint64_t lightWalkRays = 0;  // the pilot's: rays cast for the light walk's strategies
+
+    Subpaths& subpaths = threadSubpaths();
+    Vertices& light = subpaths.light;
+    int lightCount = 0;
+    if (walkFromLights) {
+        Sampler lightSampler = sampler.forVertex(kLightWalkKey);
+        lightCount = walkFromLight(lightSampler, light, path);
+        const bool weighted = strategies == BdptIntegrator::Strategies::All;
+        for (int i = 1; i < lightCount; ++i) joinToCamera(light, i, path, weights, weighted);
+        lightWalkRays = path.counters.total() - raysBefore;
+    }
+    if (strategies == BdptIntegrator::Strategies::LightTracingOnly) return;
+
+    Vertices& eye = subpaths.eye;
+    eye[0] = cameraVertex(ctx.camera.eye());
+    const std::size_t pathStart = path.size();
+    Ray ray = cameraRay;
+    Rgb beta{1.0f};
+    float pdf = ctx.camera.pdfDirection(cameraRay.direction);
+    bool delta = false;
+    for (int t = 2; t <= ctx.maxDepth + 2; ++t) {
+        const auto hit = ctx.geometry.intersect(ray);
+        if (!hit) {
+            path.setStrategy(0, t);
+            const Rgb before = weights.pilotBeauty != nullptr ? *weights.pilotBeauty : Rgb{0.0f};
+            addBackground(ray, beta, path);  // s = 0 only: nothing else samples the background
+            if (weights.pilot != nullptr) weights.pilot->addUnweighted(luminance(*weights.pilotBeauty - before));
+            break;
+        }
+        BdptVertex& z = eye[t - 1];
+        z = surfaceVertex(*hit, ray, beta, eye[t - 2], pdf, delta, ctx, TransportMode::Radiance);
+
+        // s = 0: an emitter found by the eye's walk.
+        if (const Light* emitter = ctx.lights.lightOfObject(hit->object)) {
+            PathEvent event = emitter->event();
+            event.position = hit->point;
+            if (path.wants(event) && !isBlack(emitter->radiance(*hit, -ray.direction))) {
+                markEmitter(z, *emitter, eye[t - 2]);
+                const PathDensities densities = joinedDensities({}, 0, {eye.data(), std::size_t(t)}, 0, ctx);
+                z.light = nullptr;
+                path.setStrategy(0, t);
+                if (weights.pilot != nullptr) {
+                    // The emission before its weight, as the pilot's sink adds it.
+                    const Rgb before = *weights.pilotBeauty;
+                    addEmission(*hit, ray, beta, 1.0f, path);
+                    weights.pilot->add(PilotTerm::Eye, luminance(*weights.pilotBeauty - before), densities, 0);
+                } else {
+                    addEmission(*hit, ray, beta, misWeight(densities, 0, weights.lightWalks), path);
+                }
+            }
+        }
+        // Joins at z scatter once more; the path may have at most maxDepth scattering events.
+        if (t - 1 > ctx.maxDepth) break;
+        const ShadingPoint& sp = *z.surface;
+        if (z.smoothLobes != 0) {
+            const float uChoice = sampler.next1D();
+            const Vec2 uPoint = sampler.next2D();
+            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, uPoint, path, weights);
+            const ChosenLight chosen = ctx.lights.chooseAreaLight(uChoice);
+            if (chosen.light != nullptr)
+                joinToLightSample(eye, t, *chosen.light, chosen.probability, uPoint, path, weights);
+            const int longestLight = std::min(lightCount, ctx.maxDepth + 2 - t);
+            const std::uint64_t shadowBefore = path.counters.shadow;
+            for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, path, weights);
+            lightWalkRays += path.counters.shadow - shadowBefore;
+        }
+
+        const float uLobe = sampler.next1D();
+        const Vec2 u = sampler.next2D();
+        const auto step = sampledStep(sp, uLobe, u);
+        if (!step) break;
+        const bool transmitted = sp.bsdf.lobe(step->lobe).transmits();
+        if (!path.push(sp.eventOf(step->lobe))) {
+            ++(transmitted ? path.counters.refractionDead : path.counters.reflectionDead);
+            break;
+        }
+        z.lobe = step->lobe;
+        z.delta = step->delta;
+        if (t >= 3) eye[t - 2].pdfRev = reverseDensity(*step, z, eye[t - 2]);
+        beta *= step->weight;
+        if (!survivesRussianRoulette(beta, t - 1, sampler)) break;
+        ++(transmitted ? path.counters.refraction : path.counters.reflection);
+        pdf = step->pdf;
+        delta = step->delta;
+        ray = spawnRay(sp.hit, step->wi, ctx.geometry.numerics());
+    }
+    popTo(path, pathStart);
+    if (weights.pilot != nullptr) {
+        // + 1 each: the ray leaving the light and the camera ray, which the counters leave out.
+        weights.pilot->lightWalkWork += double(lightWalkRays) + (walkFromLights ? 1.0 : 0.0);
+        weights.pilot->eyeWork += double(path.counters.total() - raysBefore - lightWalkRays) + 1.0;
+    }
+}
+
+// The pilot's camera samples: this many per pixel (at least 2, for each pixel's variance; more
+// pixels rather than more samples, so that the lamp's edges, which dominate the Cornell box's
+// noise, are among them), on a lattice of pixels over the image, about 1/128 of the render's
+// samples within bounds (callgrind: 256 samples of the Cornell box, 20.7 M instructions, 3% of a
+// 32 x 32 render at 32 spp).
+constexpr int kPilotSamplesPerPixel = 2;
+constexpr int kPilotMinSamples = 256, kPilotMaxSamples = 4096;
+constexpr std::uint64_t kPilotKey = 0x70696c6f74ull;  // "pilot"
+// Light walks per pilot sample for light tracing's splats, beside its own: a caustic reached by one
+// light walk in hundreds (the glass ball's) is then seen by the pilot.
+constexpr int kPilotExtraLightWalks = 2;
+
+// Traces the pilot (one thread, independent numbers from the render's seed: the same choice on
+// any number of threads) and tallies every strategy at every candidate fraction.
+LightWalkPilot runPilot(const RenderContext& ctx, BdptIntegrator::Strategies strategies) {
+    const int width = ctx.camera.width(), height = ctx.camera.height();
+    const std::int64_t renderSamples = std::int64_t(width) * height * ctx.samplesPerPixel;
+    const int samples = static_cast<int>(std::clamp<std::int64_t>(renderSamples / 128, kPilotMinSamples, kPilotMaxSamples));
+    const int pixels = samples / kPilotSamplesPerPixel;
+    const int columns = std::clamp(static_cast<int>(std::lround(std::sqrt(double(pixels) * width / height))), 1, width);
+    const int rows = std::clamp(pixels / columns, 1, height);
+    std::vector<Rgb> layers(lpe::kMaxOutputs + 2, Rgb{0.0f});
+    ContributionSink sink(layers);
+    RayCounters counters;
+    PathState path(ctx, sink, counters);
+    LightWalkPilot pilot(kPilotSamplesPerPixel);
+    const std::uint64_t seed = mixBits(ctx.seed ^ kPilotKey);
+    for (int row = 0; row < rows; ++row) {
+        for (int column = 0; column < columns; ++column) {
+            const int x = (2 * column + 1) * width / (2 * columns), y = (2 * row + 1) * height / (2 * rows);
+            for (int k = 0; k < kPilotSamplesPerPixel; ++k) {
+                Sampler sampler = Sampler::forPixel(SamplerKind::Independent, x, y, k, kPilotSamplesPerPixel, seed);
+                path.sampler = &sampler;
+                path.sampleIndex = k;
+                const Vec2 u = sampler.next2D();
+                const Vec2 offset = Vec2{0.5f} + (ctx.filter != nullptr ? ctx.filter->sample(u) : u - Vec2{0.5f});
+                PilotSample sample;
+                if (path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, ctx.camera.eye()})) {
+                    const Ray ray = ctx.camera.generateRay(float(x) + offset.x, float(y) + offset.y);
+                    traceStrategies(ray, path, true, strategies, {1.0, 1.0f, &sample, &layers[0]});
+                    // Light tracing's splats need no eye walk: more light walks, their splats'
+                    // second moment averaged with the sample's own (their work is not the render's).
+                    PilotSample more;
+                    const Weights moreWeights{1.0, 1.0f, &more, &layers[0]};
+                    Vertices& light = threadSubpaths().light;
+                    for (int m = 1; m <= kPilotExtraLightWalks; ++m) {
+                        Sampler lightSampler = sampler.forVertex(kLightWalkKey + std::uint64_t(m));
+                        const int count = walkFromLight(lightSampler, light, path);
+                        for (int i = 1; i < count; ++i) joinToCamera(light, i, path, moreWeights, true);
+                    }
+                    for (std::size_t f = 0; f < kLightWalkFractions.size(); ++f)
+                        sample.splatSquares[f] = (sample.splatSquares[f] + more.splatSquares[f]) / (1 + kPilotExtraLightWalks);
+                    path.pop();
+                }
+                pilot.add(sample);
+            }
+        }
+    }
+    return pilot;
+}
+
 }  // namespace
 
 void BdptIntegrator::preprocess(const RenderContext& ctx) {
     lightWalks_ = true;
-    if (ctx.keepAllPaths) return;
+    if (ctx.keepAllPaths) return chooseLightWalkFraction(ctx);
     // Does any requested output accept E, one or more scattering events, then a light? Search the
     // automaton over this scene's own events (every object through every lobe, every light).
     std::vector<PathEvent> scattering, lights;
@@ -297,87 +504,47 @@ void BdptIntegrator::preprocess(const RenderContext& ctx) {
         }
     }
     lightWalks_ = useful;
+    chooseLightWalkFraction(ctx);
+}
+
+void BdptIntegrator::chooseLightWalkFraction(const RenderContext& ctx) {
+    const auto started = std::chrono::steady_clock::now();
+    stats_ = {};
+    fraction_ = 1.0;
+    if (!lightWalks_) {
+        stats_.lightWalkFraction = 0.0;
+        stats_.reason = "none: no requested output accepts a path that scatters before its light";
+        return;
+    }
+    if (strategies_ != Strategies::All) {
+        stats_.reason = "light tracing alone";
+        return;
+    }
+    if (ctx.parameters != nullptr && ctx.parameters->has("light-walk-fraction")) {
+        fraction_ = ctx.parameters->number("light-walk-fraction");
+        stats_.lightWalkFraction = fraction_;
+        stats_.reason = "given (--light-walk-fraction)";
+        return;
+    }
+    const LightWalkPilot pilot = runPilot(ctx, strategies_);
+    const std::size_t best = pilot.best();
+    fraction_ = kLightWalkFractions[best];
+    stats_.lightWalkFraction = fraction_;
+    stats_.pilotSamples = pilot.samples();
+    for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
+        const LightWalkPilot::Estimate e = pilot.estimate(k);
+        stats_.candidates.push_back({kLightWalkFractions[k], e.variance, e.work});
+    }
+    stats_.reason = "least variance x work in a pilot";
+    stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const {
-    const RenderContext& ctx = path.context;
-    Sampler& sampler = *path.sampler;
-
-    Subpaths& subpaths = threadSubpaths();
-    Vertices& light = subpaths.light;
-    int lightCount = 0;
-    if (lightWalks_) {
-        Sampler lightSampler = sampler.forVertex(kLightWalkKey);
-        lightCount = walkFromLight(lightSampler, light, path);
-        const bool weighted = strategies_ == Strategies::All;
-        for (int i = 1; i < lightCount; ++i) joinToCamera(light, i, path, lightWalks_, weighted);
-    }
-    if (strategies_ == Strategies::LightTracingOnly) return;
-
-    Vertices& eye = subpaths.eye;
-    eye[0] = cameraVertex(ctx.camera.eye());
-    const std::size_t pathStart = path.size();
-    Ray ray = cameraRay;
-    Rgb beta{1.0f};
-    float pdf = ctx.camera.pdfDirection(cameraRay.direction);
-    bool delta = false;
-    for (int t = 2; t <= ctx.maxDepth + 2; ++t) {
-        const auto hit = ctx.geometry.intersect(ray);
-        if (!hit) {
-            path.setStrategy(0, t);
-            addBackground(ray, beta, path);  // s = 0 only: nothing else samples the background
-            break;
-        }
-        BdptVertex& z = eye[t - 1];
-        z = surfaceVertex(*hit, ray, beta, eye[t - 2], pdf, delta, ctx, TransportMode::Radiance);
-
-        // s = 0: an emitter found by the eye's walk.
-        if (const Light* emitter = ctx.lights.lightOfObject(hit->object)) {
-            PathEvent event = emitter->event();
-            event.position = hit->point;
-            if (path.wants(event) && !isBlack(emitter->radiance(*hit, -ray.direction))) {
-                markEmitter(z, *emitter, eye[t - 2]);
-                const float weight = misWeight(joinedDensities({}, 0, {eye.data(), std::size_t(t)}, 0, ctx),
-                                               0, lightWalks_);
-                z.light = nullptr;
-                path.setStrategy(0, t);
-                addEmission(*hit, ray, beta, weight, path);
-            }
-        }
-        // Joins at z scatter once more; the path may have at most maxDepth scattering events.
-        if (t - 1 > ctx.maxDepth) break;
-        const ShadingPoint& sp = *z.surface;
-        if (z.smoothLobes != 0) {
-            const float uChoice = sampler.next1D();
-            const Vec2 uPoint = sampler.next2D();
-            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, uPoint, path, lightWalks_);
-            const ChosenLight chosen = ctx.lights.chooseAreaLight(uChoice);
-            if (chosen.light != nullptr)
-                joinToLightSample(eye, t, *chosen.light, chosen.probability, uPoint, path, lightWalks_);
-            const int longestLight = std::min(lightCount, ctx.maxDepth + 2 - t);
-            for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, path, lightWalks_);
-        }
-
-        const float uLobe = sampler.next1D();
-        const Vec2 u = sampler.next2D();
-        const auto step = sampledStep(sp, uLobe, u);
-        if (!step) break;
-        const bool transmitted = sp.bsdf.lobe(step->lobe).transmits();
-        if (!path.push(sp.eventOf(step->lobe))) {
-            ++(transmitted ? path.counters.refractionDead : path.counters.reflectionDead);
-            break;
-        }
-        z.lobe = step->lobe;
-        z.delta = step->delta;
-        if (t >= 3) eye[t - 2].pdfRev = reverseDensity(*step, z, eye[t - 2]);
-        beta *= step->weight;
-        if (!survivesRussianRoulette(beta, t - 1, sampler)) break;
-        ++(transmitted ? path.counters.refraction : path.counters.reflection);
-        pdf = step->pdf;
-        delta = step->delta;
-        ray = spawnRay(sp.hit, step->wi, ctx.geometry.numerics());
-    }
-    popTo(path, pathStart);
+    // A fraction q < 1 of the camera samples walk from a light, chosen by their own dimension.
+    bool walk = lightWalks_;
+    if (walk && fraction_ < 1.0) walk = path.sampler->forVertex(kLightWalkChoiceKey).next1D() < fraction_;
+    traceStrategies(cameraRay, path, walk, strategies_,
+                    {lightWalks_ ? fraction_ : 0.0, static_cast<float>(1.0 / fraction_), nullptr, nullptr});
 }
 
 }  // namespace lightpath
@@ -390,4 +557,7 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::underPointLights(lightpath::integratorR
     "E.*[<L.[^'ambient']>OB]",
     "bidirectional path tracing follows every bounce, from the eye and from the lights, but adds no ambient term (ka Ia)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::BdptIntegrator>()); },
-    lightpath::ShadowRays::Always, 5), "E.*(D|G)L|E(D|G).*L|E.*(D|G)(D|G).*L"))
+    lightpath::ShadowRays::Always, 5,
+    {{.name = "light-walk-fraction", .type = lightpath::ParameterType::Number, .range = {0.0, 1.0, true, false},
+      .doc = "the fraction of camera samples that also walk from a light (default: chosen per scene by a pilot; "
+             "--stats prints it)"}}), "E.*(D|G)L|E(D|G).*L|E.*(D|G)(D|G).*L"))

@@ -1,4 +1,7 @@
 #pragma once
+#include <string>
+#include <vector>
+
 #include "integrators/integrator.h"
 
 namespace lightpath {
@@ -15,6 +18,18 @@ namespace lightpath {
 // and no light sampling can pass through a delta lobe. Each contribution's whole path, the eye's
 // vertices, the join, then the light's vertices reversed, runs through the automaton with the
 // events the other integrators use, so every AOV means the same light. Produces E .* L.
+// The fraction of camera samples that walked from a light, and why (--stats).
+struct BdptStats {
+    double lightWalkFraction = 1.0;
+    std::string reason;
+    std::uint64_t pilotSamples = 0;
+    struct Candidate {
+        double fraction, variance, work;  // variance and work (rays) per camera sample
+    };
+    std::vector<Candidate> candidates;  // the pilot's estimates, when one chose
+    double seconds = 0.0;               // the pilot's
+};
+
 class BdptIntegrator final : public Integrator {
 public:
     enum class Strategies : std::uint8_t {
@@ -26,12 +41,19 @@ public:
     void preprocess(const RenderContext& context) override;
     void traceCameraRay(const Ray& ray, PathState& path) const override;
     bool splats() const override { return true; }
+    const BdptStats& stats() const { return stats_; }
 
 private:
+    // q, the fraction of camera samples that walk from a light: the light-walk-fraction
+    // parameter, or the pilot's choice (bdpt_allocation.h).
+    void chooseLightWalkFraction(const RenderContext& context);
+
     // False when no requested output accepts a path with a scattering event before its light:
     // then no light walk could add anything, none is traced, and the strategies s >= 2 are out of
     // the weights (what remains is the path tracer's s = 0 and s = 1).
     bool lightWalks_ = true;
+    double fraction_ = 1.0;
+    BdptStats stats_;
     Strategies strategies_;
 };
 

@@ -150,29 +150,31 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, 
 
 namespace {
 
-bool available(const PathDensities& p, int s, bool lightWalks) {
+bool available(const PathDensities& p, int s, double lightWalks) {
     const int t = p.n - s;
     if (t < 1) return false;  // a pinhole cannot be hit by chance
     if (s == 0) return p.originHittable;
-    if (s >= 2 && !lightWalks) return false;
+    if (s >= 2 && !(lightWalks > 0.0)) return false;
     // The light seen straight by the camera (s = 1, t = 1) is left to the eye's walk (s = 0).
     if (t == 1) return s >= 2 && p.connectible[s - 1];
     return p.connectible[s - 1] && p.connectible[s];
 }
 
-// The factor x0's choice contributes to strategy s's density.
-double originFactor(const PathDensities& p, int s) {
-    return s == 0 ? 1.0 : s == 1 ? p.originByNextEvent : p.originByEmission;
+// The factor x0's choice contributes to strategy s's density, times its samples per camera sample.
+double originFactor(const PathDensities& p, int s, double lightWalks) {
+    return s == 0 ? 1.0 : s == 1 ? p.originByNextEvent : p.originByEmission * lightWalks;
 }
 
 }  // namespace
 
-float misWeight(const PathDensities& p, int s, bool lightWalks) {
+float misWeight(const PathDensities& p, int s, double lightWalks) {
     if (!available(p, s, lightWalks)) return 0.0f;
+    // Without light walks their strategies are out (available), but the ratios still pass through them.
+    const double count = lightWalks > 0.0 ? lightWalks : 1.0;
     // p_k / p_(k-1) = O(k) / O(k-1) * fromLight[k-1] (but for x0, in O) / fromEye[k-1]: vertex k-1
     // moves from the eye's walk to the light's (Veach 1997, eq. 10.9).
-    auto numerator = [&](int k) { return originFactor(p, k) * (k - 1 >= 1 ? p.fromLight[k - 1] : 1.0); };
-    auto denominator = [&](int k) { return originFactor(p, k - 1) * p.fromEye[k - 1]; };
+    auto numerator = [&](int k) { return originFactor(p, k, count) * (k - 1 >= 1 ? p.fromLight[k - 1] : 1.0); };
+    auto denominator = [&](int k) { return originFactor(p, k - 1, count) * p.fromEye[k - 1]; };
     double sum = 1.0;
     double r = 1.0;
     for (int k = s + 1; k < p.n; ++k) {

@@ -146,8 +146,10 @@ struct PathDensities {
 PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, std::span<const BdptVertex> eye,
                               int eyeLobe, const RenderContext& context);
 
-// The power-heuristic weight of strategy s for `path`: p_s^2 / sum over the strategies that can
-// make it of p_k^2. `lightWalks`: strategies s >= 2 are in use (light subpaths are traced).
-float misWeight(const PathDensities& path, int s, bool lightWalks);
+// The power-heuristic weight of strategy s for `path`: (n_s p_s)^2 / sum over the strategies that
+// can make it of (n_k p_k)^2 (Veach 1997, eq. 9.13, with n_k samples of strategy k). The eye's
+// strategies (s = 0, 1) take one sample per camera sample; the light walk's (s >= 2) take
+// `lightWalks`, the light walks traced per camera sample on average (0: none, their strategies out).
+float misWeight(const PathDensities& path, int s, double lightWalks);
 
 }  // namespace lightpath

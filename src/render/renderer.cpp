@@ -343,6 +343,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel, const Pas
     stats.accelerator = geometry_->acceleratorStats();
     if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
     if (const auto* photon = dynamic_cast<const PhotonIntegrator*>(integrator_.get())) stats.photon = photon->stats();
+    if (const auto* bdpt = dynamic_cast<const BdptIntegrator*>(integrator_.get())) stats.bdpt = bdpt->stats();
     if (const auto* sppm = dynamic_cast<const SppmRender*>(progressive.get())) stats.photon = sppm->stats();
     for (const auto& cpu : workerCpu) stats.workerCpuSeconds.push_back(cpu.value);
     stats.serialCpuSeconds = serialBeforeCpu + passesCpu + (threadCpuSeconds() - afterWorkersCpu);

@@ -16,6 +16,7 @@
 #include "film/splat_film.h"
 #include "geometry/numerics.h"
 #include "accel/scene_geometry.h"
+#include "integrators/bdpt.h"
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
 #include "integrators/integrator.h"
@@ -85,6 +86,7 @@ struct RenderStats {
     AcceleratorStats accelerator;  // what building the BVH (or Embree's) cost, before the render
     std::optional<RadiosityStats> radiosity;  // its mesh and solve, before the render
     std::optional<PhotonStats> photon;        // the photons shot and kept, before the render
+    std::optional<BdptStats> bdpt;            // the fraction of samples that walked from a light
     // CPU seconds of each worker in the render loop, and of the render's serial parts on the
     // calling thread (the film, the splats): load on the machine stretches wall time but not
     // these, so serial + the busiest worker is what the render would take on an idle machine, and

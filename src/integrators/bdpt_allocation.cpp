@@ -1,0 +1,67 @@
+#include "integrators/bdpt_allocation.h"
+
+namespace lightpath {
+
+void PilotSample::add(PilotTerm term, double value, const PathDensities& path, int s, double shareSquares) {
+    for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
+        const double weighted = value * misWeight(path, s, kLightWalkFractions[k]);
+        switch (term) {
+            case PilotTerm::Eye: eye[k] += weighted; break;
+            case PilotTerm::Join: join[k] += weighted; break;
+            case PilotTerm::Splat: splatSquares[k] += weighted * weighted * shareSquares; break;
+        }
+    }
+}
+
+void PilotSample::addUnweighted(double value) {
+    for (double& e : eye) e += value;
+}
+
+void LightWalkPilot::add(const PilotSample& sample) {
+    // A camera sample's own pixel gets X = eye + B join / q, B = 1 when it walks from a light
+    // (probability q): E_B[X] = eye + join whatever q, E_B[X^2] = eye^2 + 2 eye join + join^2 / q.
+    // Its splats, each on a pixel it reaches with a small probability, add their second moment
+    // E_B[(B S / q)^2] = S^2 / q to the image's variance (their means squared are a pixel's share
+    // of the image's pixels smaller).
+    for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
+        const double q = kLightWalkFractions[k];
+        const double x = sample.eye[k] + sample.join[k];
+        sumX_[k] += x;
+        sumX2_[k] += x * x;
+        sumY_[k] += sample.eye[k] * sample.eye[k] + 2.0 * sample.eye[k] * sample.join[k] + sample.join[k] * sample.join[k] / q;
+        splatMoment_[k] += sample.splatSquares[k] / q;
+    }
+    eyeWork_ += sample.eyeWork;
+    lightWalkWork_ += sample.lightWalkWork;
+    ++samples_;
+    if (samples_ % static_cast<std::uint64_t>(samplesPerPixel_) != 0) return;
+    // The pixel's variance per sample, E[Y] - E[X]^2, with E[X]^2 estimated without bias from
+    // its n samples: ((sum X)^2 - sum X^2) / (n (n - 1)).
+    const double n = samplesPerPixel_;
+    for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
+        pixelVariance_[k] += sumY_[k] / n - (sumX_[k] * sumX_[k] - sumX2_[k]) / (n * (n - 1.0));
+        sumX_[k] = sumX2_[k] = sumY_[k] = 0.0;
+    }
+    ++pixels_;
+}
+
+LightWalkPilot::Estimate LightWalkPilot::estimate(std::size_t fraction) const {
+    if (pixels_ == 0) return {};
+    const double samples = static_cast<double>(pixels_) * samplesPerPixel_;
+    const double q = kLightWalkFractions[fraction];
+    return {pixelVariance_[fraction] / static_cast<double>(pixels_) + splatMoment_[fraction] / samples,
+            (eyeWork_ + q * lightWalkWork_) / samples};
+}
+
+std::size_t LightWalkPilot::best() const {
+    std::size_t best = 0;
+    double bestCost = 0.0;
+    for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
+        const Estimate e = estimate(k);
+        const double cost = e.variance * e.work;
+        if (k == 0 || cost < bestCost) best = k, bestCost = cost;
+    }
+    return best;
+}
+
+}  // namespace lightpath

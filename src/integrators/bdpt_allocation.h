@@ -1,0 +1,77 @@
+#pragma once
+// How many light walks bidirectional path tracing traces per camera sample: a fraction q of the
+// samples walk from a light, the others trace the eye's strategies alone. The light walk's
+// strategies then count q samples each in the power heuristic (Veach 1997, eq. 9.13) and their
+// contributions are divided by q, so every q > 0 is unbiased; q trades the light walk's cost
+// against the variance of what only it finds (caustics). This chooses q from a pilot: per camera
+// sample of the pilot, every strategy's contribution with its densities, from which the variance
+// per sample at each candidate q follows in closed form (below), and the work of each walk.
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "integrators/bdpt_vertex.h"
+
+namespace lightpath {
+
+// The fractions a pilot compares, largest first. None below 1/16: the Cornell box's pilot gains
+// 4% from 1/8 to 1/16 (variance x work 9.57 -> 8.63) and would gain little more, while a caustic the
+// pilot missed would get 32x fewer light walks instead of 16x.
+inline constexpr std::array<double, 5> kLightWalkFractions = {1.0, 0.5, 0.25, 0.125, 0.0625};
+
+// A pilot's rays and joins costed in units of one ray cast: a join (its four densities, the BSDF
+// at both ends, the automaton's steps) counts half a ray. Checked against CPU time on the Cornell
+// box under its lamp (64 x 64, 16 spp, q = 1 against 1/8): this model puts the light walk's work at
+// 2.1x the eye walk's, the CPU time at 1.8x, so it errs towards fewer light walks by ~15%.
+inline constexpr double kJoinCost = 0.5;
+
+// Where one contribution of a camera sample lands.
+enum class PilotTerm : std::uint8_t {
+    Eye,    // s = 0, 1: the camera sample's own pixel, from the eye's walk alone
+    Join,   // s, t >= 2: its own pixel, through the light walk
+    Splat,  // t = 1: another pixel, through the light walk
+};
+
+// One camera sample of the pilot, at every candidate fraction.
+struct PilotSample {
+    std::array<double, kLightWalkFractions.size()> eye{}, join{}, splatSquares{};
+    double eyeWork = 0.0, lightWalkWork = 0.0;  // in rays (kJoinCost)
+
+    // A contribution `value` (luminance, before its MIS weight) of strategy s for `path`;
+    // `shareSquares`: a splat's filter weights squared, summed over the pixels it lands in.
+    void add(PilotTerm term, double value, const PathDensities& path, int s, double shareSquares = 1.0);
+    // A contribution no other strategy can make (the background): weight 1 at every fraction.
+    void addUnweighted(double value);
+    // One join evaluated (its densities and weight), whether or not it contributed.
+    void countJoin(PilotTerm term) { (term == PilotTerm::Eye ? eyeWork : lightWalkWork) += kJoinCost; }
+};
+
+// The pilot's samples, a pixel's samples in a row, and what they say about each fraction.
+class LightWalkPilot {
+public:
+    explicit LightWalkPilot(int samplesPerPixel) : samplesPerPixel_(samplesPerPixel) {}
+    // The next sample of the current pixel; a pixel's samplesPerPixel samples come in a row.
+    void add(const PilotSample& sample);
+
+    struct Estimate {
+        double variance = 0.0;  // per camera sample: its own pixel's and its splats', summed
+        double work = 0.0;      // per camera sample, in rays
+    };
+    Estimate estimate(std::size_t fraction) const;
+    // The candidate of least variance x work (Veach 1997, 9.2: a technique's efficiency), the
+    // largest on a tie.
+    std::size_t best() const;
+    std::uint64_t samples() const { return samples_; }
+
+private:
+    int samplesPerPixel_;
+    std::uint64_t samples_ = 0, pixels_ = 0;
+    // The current pixel's sums per fraction: X = eye + join (its own estimate), Y = E[X^2] over the
+    // walk's coin (below).
+    std::array<double, kLightWalkFractions.size()> sumX_{}, sumX2_{}, sumY_{};
+    // Over finished pixels: their variance estimates; over all samples: splats' second moments.
+    std::array<double, kLightWalkFractions.size()> pixelVariance_{}, splatMoment_{};
+    double eyeWork_ = 0.0, lightWalkWork_ = 0.0;
+};
+
+}  // namespace lightpath
