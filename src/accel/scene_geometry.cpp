@@ -73,7 +73,14 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
     for (std::uint32_t id = 0; id < shapes_.size(); ++id)
         (shapes_[id].ops->bounded ? bounded : unbounded_).push_back(id);
     shapesInBvh_ = !bounded.empty();
-    if (accelerator_ == Accelerator::BruteForce) return;
+    geometricNormals_.resize(triangles_.size());
+    const auto computeNormals = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) geometricNormals_[i] = triangleNormal(triangles_[i]);
+    };
+    if (accelerator_ == Accelerator::BruteForce) {
+        computeNormals(0, triangles_.size());
+        return;
+    }
     if (accelerator_ == Accelerator::Embree && !embreeAvailable())
         throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
     const auto started = std::chrono::steady_clock::now();
@@ -100,6 +107,7 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         buildThreads);
     const unsigned threads = threadsOrAll(buildThreads);
     constexpr std::size_t kGrain = 16384;
+    parallelChunks(triangles_.size(), kGrain, threads, computeNormals);
     if (accelerator_ == Accelerator::Bvh) {
         const auto ids = bvh_.slotIds();
         leafTriangles_.resize(ids.size() / kBvhLeafSize);
@@ -309,7 +317,7 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id,
     id -= static_cast<std::uint32_t>(shapes_.size());
     const Triangle& tri = triangles_[id];
     hit.shape = nullptr;
-    hit.normal = triangleNormal(tri);
+    hit.normal = geometricNormals_[id];
     hit.shadingNormal = hit.normal;
     hit.object = tri.object;
     Vec3 weights{0.0f};

@@ -133,6 +133,8 @@ private:
     std::vector<ShapeRecord> shapes_;
     std::vector<std::uint32_t> unbounded_;  // ids of the records no box holds (planes): tested apart
     bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
+    // Each triangle's unit geometric normal (triangleNormal), computed once: every hit reads it.
+    std::vector<Vec3> geometricNormals_;
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     std::vector<TriangleUvs> triangleUvs_;        // empty, or one per triangle
     std::vector<TriangleTangents> triangleTangents_;  // empty, or one per triangle
