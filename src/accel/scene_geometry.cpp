@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "accel/bvh_traversal.h"
@@ -72,7 +73,14 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
     for (std::uint32_t id = 0; id < shapes_.size(); ++id)
         (shapes_[id].ops->bounded ? bounded : unbounded_).push_back(id);
     shapesInBvh_ = !bounded.empty();
-    if (accelerator_ == Accelerator::BruteForce) return;
+    geometricNormals_.resize(triangles_.size());
+    const auto computeNormals = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) geometricNormals_[i] = triangleNormal(triangles_[i]);
+    };
+    if (accelerator_ == Accelerator::BruteForce) {
+        computeNormals(0, triangles_.size());
+        return;
+    }
     if (accelerator_ == Accelerator::Embree && !embreeAvailable())
         throw std::invalid_argument("this lightpath was built without Embree (CMake option LIGHTPATH_EMBREE)");
     const auto started = std::chrono::steady_clock::now();
@@ -99,6 +107,7 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         buildThreads);
     const unsigned threads = threadsOrAll(buildThreads);
     constexpr std::size_t kGrain = 16384;
+    parallelChunks(triangles_.size(), kGrain, threads, computeNormals);
     if (accelerator_ == Accelerator::Bvh) {
         const auto ids = bvh_.slotIds();
         leafTriangles_.resize(ids.size() / kBvhLeafSize);
@@ -149,13 +158,14 @@ template <typename Keep>
                                   std::uint32_t count, Keep keep) const {
     const std::uint32_t* ids = bvh_.slotIds().data() + firstSlot;
     int triangleLanes = (1 << count) - 1;
+    const auto unknownEdges = [] { return Vec4(0.0f); };
     if (shapesInBvh_ || leafTriangles_.empty()) {
         // Shape records (with Embree, only they) share the BVH with triangles: test them one by one.
         const std::uint32_t firstTriangle = this->firstTriangle();
         for (std::uint32_t lane = 0; lane < count; ++lane) {
             if (ids[lane] >= firstTriangle && !leafTriangles_.empty()) continue;
             triangleLanes &= ~(1 << lane);
-            keep(intersectPrimitive(ray, ids[lane]), ids[lane]);
+            keep(intersectPrimitive(ray, ids[lane]), ids[lane], unknownEdges);
         }
     }
     if (ray.ignoredPrimitive != kNoPrimitive) {
@@ -168,16 +178,19 @@ template <typename Keep>
         const PackHits found = watertightHits(pack, triangleLanes, packed, ray.tMin, ray.tMax);
         for (int lanes = found.hits; lanes != 0; lanes &= lanes - 1) {
             const int lane = simd::firstLane(lanes);
-            keep(found.t[lane], ids[lane]);
+            keep(found.t[lane], ids[lane], [&] { return found.edges(lane); });
         }
         for (int lanes = found.onEdge; lanes != 0; lanes &= lanes - 1) {
             const int lane = simd::firstLane(lanes);
-            keep(intersectTriangle(ray, packed.sheared, pack.triangle(lane), ray.tMin), ids[lane]);
+            // The scalar test divides (in its double-precision edge case): a divisor of 1 keeps them.
+            Vec3 weights{0.0f};
+            const float t = intersectTriangle(ray, packed.sheared, pack.triangle(lane), ray.tMin, &weights);
+            keep(t, ids[lane], [&] { return Vec4(weights, 1.0f); });
         }
     } else {
         for (int lanes = triangleLanes; lanes != 0; lanes &= lanes - 1) {
             const int lane = simd::firstLane(lanes);
-            keep(intersectTriangleMollerTrumbore(ray, pack.triangle(lane), ray.tMin), ids[lane]);
+            keep(intersectTriangleMollerTrumbore(ray, pack.triangle(lane), ray.tMin), ids[lane], unknownEdges);
         }
     }
 }
@@ -189,9 +202,10 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
         return describeHit(ray, found->t, found->primitive);
     }
     const PackedRay packed(ray);
-    const std::optional<PrimitiveHit> found = closestAccelerated(ray, packed);
+    Vec4 edges{0.0f};
+    const std::optional<PrimitiveHit> found = closestAccelerated(ray, packed, &edges);
     if (!found) return std::nullopt;
-    return describeHit(ray, found->t, found->primitive, nullptr, &packed.sheared);
+    return describeHit(ray, found->t, found->primitive, nullptr, &edges, &packed.sheared);
 }
 
 std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) const {
@@ -199,35 +213,45 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
     return closestAccelerated(ray, PackedRay(ray));
 }
 
-std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, const PackedRay& packed) const {
-    // The brute-force answer is the smallest t, ties to the smallest id (a later primitive must
-    // be strictly nearer). Candidates arrive in another order here, so each is tested against a
-    // limit one ulp beyond the best t, and an equal t wins only with a smaller id.
-    PrimitiveHit best{ray.tMax, kNoPrimitive};
-    Ray probe = ray;
-    const auto keep = [&](float t, std::uint32_t id) {
-        if (t == kNoHit) return;
-        if (t < best.t || (t == best.t && id < best.primitive)) {
-            best = {t, id};
-            // The next float up: for a positive t, its bit pattern plus one.
-            probe.tMax = t > 0.0f ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u)
-                                  : std::nextafter(t, std::numeric_limits<float>::infinity());
-        }
-    };
-    bvh_.closest(ray, best.t,
-                 [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
-    for (const std::uint32_t id : unbounded_) keep(intersectPrimitive(probe, id), id);
+std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, const PackedRay& packed,
+                                                              Vec4* edges) const {
+    // Compiled twice: without `edges` (closestPrimitive, the ray sets) the loop is as it was
+    // before the hand-off; a run-time test per kept hit cost them 1-2% (callgrind, ray_cost).
+    const auto search = [&](auto wantEdges) -> std::optional<PrimitiveHit> {
+        // The brute-force answer is the smallest t, ties to the smallest id (a later primitive
+        // must be strictly nearer). Candidates arrive in another order here, so each is tested
+        // against a limit one ulp beyond the best t, and an equal t wins only with a smaller id.
+        PrimitiveHit best{ray.tMax, kNoPrimitive};
+        Ray probe = ray;
+        const auto keep = [&](float t, std::uint32_t id, const auto& edgesOf) {
+            if (t == kNoHit) return;
+            if (t < best.t || (t == best.t && id < best.primitive)) {
+                best = {t, id};
+                if constexpr (decltype(wantEdges)::value) *edges = edgesOf();
+                // The next float up: for a positive t, its bit pattern plus one.
+                probe.tMax = t > 0.0f ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u)
+                                      : std::nextafter(t, std::numeric_limits<float>::infinity());
+            }
+        };
+        bvh_.closest(ray, best.t,
+                     [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
+        for (const std::uint32_t id : unbounded_) keep(intersectPrimitive(probe, id), id, [] { return Vec4(0.0f); });
 #ifdef LIGHTPATH_HAS_EMBREE
-    if (embree_) {
-        const std::uint32_t firstTriangle = this->firstTriangle();
-        const std::uint32_t ignored = ignoredTriangle(ray);
-        float t = 0.0f;
-        std::uint32_t index = 0;
-        if (embree_->intersect(ray, best.t, ignored, t, index) && t < best.t) best = {t, firstTriangle + index};
-    }
+        if (embree_) {
+            const std::uint32_t firstTriangle = this->firstTriangle();
+            const std::uint32_t ignored = ignoredTriangle(ray);
+            float t = 0.0f;
+            std::uint32_t index = 0;
+            if (embree_->intersect(ray, best.t, ignored, t, index) && t < best.t) {
+                best = {t, firstTriangle + index};
+                if constexpr (decltype(wantEdges)::value) *edges = Vec4(0.0f);
+            }
+        }
 #endif
-    if (best.primitive == kNoPrimitive) return std::nullopt;
-    return best;
+        if (best.primitive == kNoPrimitive) return std::nullopt;
+        return best;
+    };
+    return edges != nullptr ? search(std::true_type{}) : search(std::false_type{});
 }
 
 std::optional<PrimitiveHit> SceneGeometry::closestBruteForce(const Ray& ray) const {
@@ -260,7 +284,8 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     // the closest-hit loop keeps its leaf test out of line, where inlining cost 7% more.
     return bvh_.any(ray, [&](std::uint32_t first, std::uint32_t count) __attribute__((always_inline)) {
         bool blocked = false;
-        intersectLeaf(ray, packed, first, count, [&](float t, std::uint32_t) { blocked = blocked || t != kNoHit; });
+        intersectLeaf(ray, packed, first, count,
+                      [&](float t, std::uint32_t, const auto&) { blocked = blocked || t != kNoHit; });
         return blocked;
     });
 }
@@ -273,11 +298,11 @@ bool SceneGeometry::occludedBruteForce(const Ray& ray) const {
 }
 
 SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {
-    return describeHit(ray, t, id, barycentrics, nullptr);
+    return describeHit(ray, t, id, barycentrics, nullptr, nullptr);
 }
 
 SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics,
-                                      const WatertightRay* sheared) const {
+                                      const Vec4* edges, const WatertightRay* sheared) const {
     SurfaceHit hit;
     hit.t = t;
     hit.point = ray.at(t);
@@ -292,12 +317,13 @@ SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id,
     id -= static_cast<std::uint32_t>(shapes_.size());
     const Triangle& tri = triangles_[id];
     hit.shape = nullptr;
-    hit.normal = triangleNormal(tri);
+    hit.normal = geometricNormals_[id];
     hit.shadingNormal = hit.normal;
     hit.object = tri.object;
     Vec3 weights{0.0f};
     bool weighted = true;
     if (barycentrics != nullptr) weights = *barycentrics;
+    else if (edges != nullptr && edges->w != 0.0f) weights = Vec3(*edges) / edges->w;
     else if (sheared != nullptr) weighted = intersectTriangle(ray, *sheared, tri, ray.tMin, &weights) != kNoHit;
     else weighted = intersectTriangle(ray, tri, ray.tMin, &weights) != kNoHit;
     if (weighted) {

@@ -105,15 +105,22 @@ public:
     const Triangle& triangleOf(std::uint32_t id) const { return triangles_[id - firstTriangle()]; }
 
 private:
-    // The accelerated closest hit, given the ray's per-ray watertight set-up, which intersect()
-    // then hands on to describeHit so a triangle's barycentrics cost no second set-up.
-    std::optional<PrimitiveHit> closestAccelerated(const Ray& ray, const PackedRay& packed) const;
+    // The accelerated closest hit, given the ray's per-ray watertight set-up. With `edges`, also
+    // the hit's unnormalised barycentrics as the traversal's triangle test found them (see
+    // describeHit), so that intersect() need not test the triangle again.
+    std::optional<PrimitiveHit> closestAccelerated(const Ray& ray, const PackedRay& packed,
+                                                   Vec4* edges = nullptr) const;
+    // A triangle's barycentrics from, in this order: `barycentrics`; `edges`, its edge functions
+    // of a, b, c in x, y, z and their sum in w, the weights being xyz / w exactly as
+    // intersectTriangle divides them (w = 0 when the traversal did not compute them: Embree's
+    // hit, Moller-Trumbore); testing the triangle again, with the ray's `sheared` set-up if given.
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics,
-                           const WatertightRay* sheared) const;
+                           const Vec4* edges, const WatertightRay* sheared) const;
     std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
     bool occludedBruteForce(const Ray& ray) const;
-    // Calls keep(t, id) for every primitive of the BVH leaf at `firstSlot` that `ray` hits, t as
-    // intersectPrimitive gives it; its triangles are read from their leaf-ordered copy and
+    // Calls keep(t, id, edges) for every primitive of the BVH leaf at `firstSlot` that `ray`
+    // hits, t as intersectPrimitive gives it and edges() the hit's edge functions (describeHit's
+    // `edges`; called only by a keep that wants them); its triangles are read from their leaf-ordered copy and
     // filtered four at once first: the same test on the same numbers, from adjacent memory.
     template <typename Keep>
     void intersectLeaf(const Ray& ray, const PackedRay& packed, std::uint32_t firstSlot, std::uint32_t count,
@@ -126,6 +133,8 @@ private:
     std::vector<ShapeRecord> shapes_;
     std::vector<std::uint32_t> unbounded_;  // ids of the records no box holds (planes): tested apart
     bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
+    // Each triangle's unit geometric normal (triangleNormal), computed once: every hit reads it.
+    std::vector<Vec3> geometricNormals_;
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     std::vector<TriangleUvs> triangleUvs_;        // empty, or one per triangle
     std::vector<TriangleTangents> triangleTangents_;  // empty, or one per triangle

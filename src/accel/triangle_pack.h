@@ -57,6 +57,19 @@ struct PackHits {
     int hits = 0;    // lanes hit at t[lane], exactly as intersectTriangle finds them
     int onEdge = 0;  // lanes with an edge function of exactly zero: intersectTriangle decides them
     alignas(16) float t[kBvhLeafSize];
+    // The edge functions (the weights of a, b, c before division) and their sum, valid in the
+    // hit lanes: a hit's barycentrics are {u, v, w} / det, as intersectTriangle computes them.
+    // Kept in registers, read only for a hit that becomes the nearest (any-hit never reads them).
+    simd::Float4 u, v, w, det;
+
+    Vec4 edges(int lane) const {
+        alignas(16) float lanes[4][kBvhLeafSize];
+        u.store(lanes[0]);
+        v.store(lanes[1]);
+        w.store(lanes[2]);
+        det.store(lanes[3]);
+        return {lanes[0][lane], lanes[1][lane], lanes[2][lane], lanes[3][lane]};
+    }
 };
 
 // intersectTriangle (geometry/intersect.cpp) on the lanes of `lanes`: the same float expressions
@@ -109,6 +122,10 @@ struct PackHits {
         Float4(3.0f) * (Float4(roundingGamma(3)) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) / simd::abs(det);
     result.hits = hits & ~simd::lessEqual(t, deltaT);
     t.store(result.t);
+    result.u = u;
+    result.v = v;
+    result.w = w;
+    result.det = det;
     return result;
 }
 

@@ -111,15 +111,17 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         return;
     }
     lpe::OutputMask accepted[kMaxLobes];
-    bool wanted[kMaxLobes];
-    bool anyWanted = false;
+    // Bit l: lobe l's term reaches a requested output. A bit set, not a bool array: GCC made
+    // the array a memset call per sample when `rest` keeps every path.
+    static_assert(kMaxLobes <= 32);
+    unsigned wanted = 0;
     const lpe::Automaton::Symbol lightSymbol = path.symbolOf(lightEvent);
     for (int l = 0; l < lobes.count; ++l) {
         accepted[l] = path.acceptsAfter(lobes.after[l], lightSymbol);
-        wanted[l] = path.wanted(accepted[l]);
-        anyWanted = anyWanted || wanted[l];
+        wanted |= unsigned{path.wanted(accepted[l])} << l;
     }
-    if (!anyWanted) {
+    const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
+    if (wanted == 0) {
         ++counters.shadowDead;
         return;
     }
@@ -144,7 +146,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         weights[l] = 1.0f;
         const bool present = p.terms.lobes[lobe];
         const bool glossy = lobes.glossy[l];
-        if (!wanted[l] || !(present || !skip)) {
+        if (!isWanted(l) || !(present || !skip)) {
             if (glossy && !present) ++counters.glossyAbsent;
             continue;
         }
@@ -178,7 +180,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         }
     }
     for (int l = 0; l < lobes.count; ++l) {
-        if (!wanted[l] || (skip && isBlack(value[l]))) continue;
+        if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         if (!path.explaining()) {
             path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
             continue;
@@ -195,7 +197,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     bool earlierPresent = false;
     for (int l = 0; l < lobes.count; ++l) {
         const int lobe = lobes.lobes[l];
-        if (wanted[l] && !p.terms.lobes[lobe] && earlierPresent) {
+        if (isWanted(l) && !p.terms.lobes[lobe] && earlierPresent) {
             const LobeInfo& info = p.bsdf.lobe(lobe);
             path.reject(lobes.event(l), lightEvent,
                         std::string("the ") + info.name + " term is zero: " + info.coefficient + " = 0");

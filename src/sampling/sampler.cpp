@@ -7,9 +7,10 @@ namespace {
 
 float toUnitFloat(std::uint32_t bits) { return static_cast<float>(bits >> 8) * 0x1p-24f; }
 
-std::uint32_t reverseBits(std::uint32_t x) {
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+// Inline, with the bytes swapped in one instruction: seven reversals per vertex sampler's
+// next1D and next2D (callgrind: a call of 11 instructions each before).
+[[gnu::always_inline]] inline std::uint32_t reverseBits(std::uint32_t x) {
+    x = __builtin_bswap32(x);
     x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
     x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
     return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
@@ -18,7 +19,7 @@ std::uint32_t reverseBits(std::uint32_t x) {
 // A hash in which each bit depends only on the bits below it (Laine and Karras 2011); applied to
 // reversed bits it permutes each binary digit given the digits before it: Owen's nested uniform
 // scrambling (Burley 2020, sec. 3). This one takes the value with its bits already reversed.
-std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed) {
+[[gnu::always_inline]] inline std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed) {
     std::uint32_t x = reversed + seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;

@@ -38,16 +38,21 @@ void onEverySimdPath(Check check) {
 void expectSameAnswers(const SceneGeometry& brute, const SceneGeometry& bvh, const std::vector<Ray>& rays,
                        const std::string& what) {
     Pcg32 rng(99, 4);
-    std::size_t closestDiffer = 0, anyDiffer = 0, hits = 0, occluded = 0;
+    std::size_t closestDiffer = 0, normalDiffer = 0, anyDiffer = 0, hits = 0, occluded = 0;
     for (Ray ray : rays) {
         for (int pass = 0; pass < 2; ++pass) {
             if (pass == 1) ray.ignoredPrimitive = rng.nextUint() % static_cast<std::uint32_t>(brute.primitiveCount());
             const auto a = brute.intersect(ray);
             const auto b = bvh.intersect(ray);
+            // The BVH hands its triangle test's barycentrics to the hit record (point, smooth
+            // normal), brute force tests the triangle again: the same bits either way.
             const bool same = a.has_value() == b.has_value() &&
                               (!a || (a->t == b->t && a->primitive == b->primitive && a->point == b->point &&
-                                      a->shadingNormal == b->shadingNormal && a->object == b->object));
+                                      a->normal == b->normal && a->shadingNormal == b->shadingNormal &&
+                                      a->object == b->object));
             closestDiffer += !same;
+            // A triangle's normal is read from a table made at construction: triangleNormal's bits.
+            if (b && b->shape == nullptr) normalDiffer += b->normal != triangleNormal(bvh.triangleOf(b->primitive));
             hits += a.has_value();
             const bool blocked = brute.occluded(ray);
             anyDiffer += blocked != bvh.occluded(ray);
@@ -56,6 +61,7 @@ void expectSameAnswers(const SceneGeometry& brute, const SceneGeometry& bvh, con
     }
     INFO(what << ": " << rays.size() << " rays, " << hits << " closest hits and " << occluded << " occluded");
     CHECK(closestDiffer == 0);
+    CHECK(normalDiffer == 0);
     CHECK(anyDiffer == 0);
     // A ray set that hits nothing would test nothing.
     CHECK(hits > rays.size() / 10);
