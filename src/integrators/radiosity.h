@@ -80,15 +80,21 @@ private:
     std::size_t vertexValueIndex(std::size_t light, int bounce, std::size_t vertex, int side) const {
         return slot(light, bounce) * 2 * mesh_->vertexCount() + 2 * vertex + std::size_t(side);
     }
-    // The highest bounce of each light that a requested output can accept (0: none).
-    std::vector<int> wantedBounces(const RenderContext& context) const;
-    void computeFormFactors(const RenderContext& context, ProgressBar& progress);
+    // The highest bounce of each light that a requested output can accept (0: none), and in
+    // openFrom the first bounce from which the same outputs accept every later bounce (the
+    // open-ended group: 1 for ED*L, 4 for ED{4,}L beside EDL..EDDDL, 2 for the classes).
+    std::vector<int> wantedBounces(const RenderContext& context, int& openFrom) const;
+    // keepRays: also keep each ray's target element (rayTargets_), for the noise estimate.
+    void computeFormFactors(const RenderContext& context, ProgressBar& progress, bool keepRays);
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
-    void solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
+    void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
     void computeVertexValues();
     void computeReflectance(const RenderContext& context);
+    // The variance of each solved value's luminance (valueIndex order) from its own samples: the
+    // direct light's (directNoise_) and, for later bounces, the form-factor rays' (rayTargets_).
+    std::vector<float> valueNoise(int threads) const;
     // The patches the error estimate asks to cut, most urgent first (each cut adds three elements).
-    std::vector<std::uint32_t> patchesToRefine() const;
+    std::vector<std::uint32_t> patchesToRefine(int threads) const;
 
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied
@@ -102,6 +108,13 @@ private:
     std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
     std::vector<Rgb> values_;         // valueIndex(light, bounce, element)
     std::vector<Rgb> vertexValues_;   // vertexValueIndex(light, bounce, vertex, side)
+    // For the refinement's noise estimate (filled by the refinement passes' solves only): the
+    // variance of each element's direct light, valueIndex(light, 1, element), and each form-factor
+    // ray's target element (kNoTarget: it met nothing), rayTargets_[element * raysPerElement_ + k]
+    // for ray k of its stratified pattern.
+    std::vector<float> directNoise_;
+    std::vector<std::uint32_t> rayTargets_;
+    std::uint32_t raysPerElement_ = 0;
     RadiosityStats stats_;
 };
 
