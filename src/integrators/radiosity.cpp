@@ -755,6 +755,6 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
      {.name = "light-samples", .type = lightpath::ParameterType::Integer, .defaultText = "64", .range = {1.0, 65536.0},
       .doc = "shadow rays per side of each patch and light"},
      {.name = "refine", .type = lightpath::ParameterType::Integer, .defaultText = "3", .range = {0.0, 8.0},
-      .doc = "refinement passes: cut the patches whose vertex radiosities differ from theirs by over 5% into four, solve again (0: uniform patches)"},
+      .doc = "refinement passes: cut into four the patches whose Gouraud mean differs from their radiosity by over 5% and over its sampling noise, solve again (0: uniform patches)"},
      {.name = "radiosity-display", .type = lightpath::ParameterType::Name, .defaultText = "smooth",
       .doc = "smooth (vertex radiosities interpolated, Gouraud) or flat (one value per patch)", .choices = "smooth|flat"}}))

@@ -9,8 +9,9 @@
 // (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k). Iteration k holds
 // exactly the light that has been reflected k times, kept per bounce and per light, so a camera ray
 // can hand each to the automaton as its own path E D{k} L. Then it refines (RadiosityOptions::
-// refineRounds): the patches whose vertex radiosities (what the display interpolates) differ from
-// their own by more than the tolerance are cut into four (RadiosityMesh::split) and everything is
+// refineRounds): the patches whose vertex radiosities' mean (the mean of what the display
+// interpolates) differs from their own by more than the tolerance and by more than a few standard
+// deviations of its sampling noise are cut into four (RadiosityMesh::split) and everything is
 // solved again, until nothing asks or the element budget is spent.
 //
 // A patch's reflectance is its material's diffuse kd (the Lambert lobe of the shared Bsdf). Glossy
