@@ -9,8 +9,9 @@
 // (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k). Iteration k holds
 // exactly the light that has been reflected k times, kept per bounce and per light, so a camera ray
 // can hand each to the automaton as its own path E D{k} L. Then it refines (RadiosityOptions::
-// refineRounds): the patches whose vertex radiosities (what the display interpolates) differ from
-// their own by more than the tolerance are cut into four (RadiosityMesh::split) and everything is
+// refineRounds): the patches whose vertex radiosities' mean (the mean of what the display
+// interpolates) differs from their own by more than the tolerance and by more than a few standard
+// deviations of its sampling noise are cut into four (RadiosityMesh::split) and everything is
 // solved again, until nothing asks or the element budget is spent.
 //
 // A patch's reflectance is its material's diffuse kd (the Lambert lobe of the shared Bsdf). Glossy
@@ -80,15 +81,21 @@ private:
     std::size_t vertexValueIndex(std::size_t light, int bounce, std::size_t vertex, int side) const {
         return slot(light, bounce) * 2 * mesh_->vertexCount() + 2 * vertex + std::size_t(side);
     }
-    // The highest bounce of each light that a requested output can accept (0: none).
-    std::vector<int> wantedBounces(const RenderContext& context) const;
-    void computeFormFactors(const RenderContext& context, ProgressBar& progress);
+    // The highest bounce of each light that a requested output can accept (0: none), and in
+    // openFrom the first bounce from which the same outputs accept every later bounce (the
+    // open-ended group: 1 for ED*L, 4 for ED{4,}L beside EDL..EDDDL, 2 for the classes).
+    std::vector<int> wantedBounces(const RenderContext& context, int& openFrom) const;
+    // keepRays: also keep each ray's target element (rayTargets_), for the noise estimate.
+    void computeFormFactors(const RenderContext& context, ProgressBar& progress, bool keepRays);
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
-    void solve(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
+    void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
     void computeVertexValues();
     void computeReflectance(const RenderContext& context);
+    // The variance of each solved value's luminance (valueIndex order) from its own samples: the
+    // direct light's (directNoise_) and, for later bounces, the form-factor rays' (rayTargets_).
+    std::vector<float> valueNoise(int threads) const;
     // The patches the error estimate asks to cut, most urgent first (each cut adds three elements).
-    std::vector<std::uint32_t> patchesToRefine() const;
+    std::vector<std::uint32_t> patchesToRefine(int threads) const;
 
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied
@@ -102,6 +109,13 @@ private:
     std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
     std::vector<Rgb> values_;         // valueIndex(light, bounce, element)
     std::vector<Rgb> vertexValues_;   // vertexValueIndex(light, bounce, vertex, side)
+    // For the refinement's noise estimate (filled by the refinement passes' solves only): the
+    // variance of each element's direct light, valueIndex(light, 1, element), and each form-factor
+    // ray's target element (kNoTarget: it met nothing), rayTargets_[element * raysPerElement_ + k]
+    // for ray k of its stratified pattern.
+    std::vector<float> directNoise_;
+    std::vector<std::uint32_t> rayTargets_;
+    std::uint32_t raysPerElement_ = 0;
     RadiosityStats stats_;
 };
 

@@ -23,7 +23,13 @@ struct RadiosityOptions {
     // within `patchBudget` elements (the first mesh takes a quarter of it). 0: uniform patches.
     int refineRounds = 3;
     double refineTolerance = 0.05;
-    // Jacobi stops once a bounce adds less than this fraction of the light so far (or at --max-depth).
+    // A patch is cut only where that difference also exceeds this many standard deviations of its
+    // own sampling noise (the form factors' and the light samples', estimated from the rays
+    // themselves: radiosity.cpp, patchesToRefine), so refinement chases the mesh's error, not the
+    // noise. 0: noise-blind, as before (the tests' control). Not a command-line option.
+    double refineNoiseSigmas = 4.0;
+    // Jacobi stops once a bounce adds less than this fraction of the light so far of the outputs
+    // that receive it (radiosity.cpp, solve), or at --max-depth.
     double tolerance = 1e-4;
     RadiosityDisplay display = RadiosityDisplay::Smooth;
     // Coarser rings around an unbounded surface's rectangle over the scene (RadiosityMesh); 0 clips
