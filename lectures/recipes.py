@@ -19,7 +19,7 @@ import checks
 import plots
 import slide
 from slide import Panel, SLIDE_H, SLIDE_W, MARGIN, TOP, LABEL_H, BELOW_H
-from steps import FigureError, explain, render, scene_variant, sh
+from steps import FigureError, cached_render, explain, render, scene_variant, sh
 
 # The `classes` AOVs (docs/lpe.md): every path of every integrator is in exactly one.
 CLASSES = [("raycast", "E(D|G)L"), ("raytrace", "ES+(D|G)L"), ("mirror", "ES+L"),
@@ -59,7 +59,7 @@ def method_renders(fig):
                               # a quarter of the path tracer's samples: each bdpt sample also
                               # traces and joins a light walk, and only its caustics are shown
                               ("bdpt", max(run.spp_path // 4, 1), [CAUSTIC]),
-                              ("radiosity", run.spp_direct, [])):
+                              ("radiosity", run.spp_radiosity, [])):
         opts = ["--integrator", integ, "--spp", spp, *common]
         if integ == "radiosity":
             opts += ["--patches", run.patches]
@@ -168,7 +168,7 @@ def decomposition(fig):
     run, scene = fig.run, fig.scene(0)
     common = ["--resolution", run.res(640, 360), "--sampler", "sobol", "--aovs", "classes"]
     exrs = {integ: render(run, fig.id, integ, scene, "--integrator", integ, "--spp", spp, *common)
-            for integ, spp in (("whitted", run.spp_direct), ("path", run.spp_path))}
+            for integ, spp in (("whitted", run.spp_direct), ("path", run.spp_decomposition))}
     notes = []
     for integ in ("whitted", "path"):
         worst = checks.check_sum(exrs[integ], CLASS_NAMES)
@@ -399,9 +399,9 @@ def caustic_error_rows(fig):
     seconds are each budget's samples at the rate of the largest budget's render on one thread
     (render_seconds: its own time, without loading the scene or starting the process)."""
     run, scene = fig.run, fig.scene(0)
-    reference = fig.dir / "reference.exr"  # render() fixes seed 1: the budgets' seed
-    sh(run, [run.lightpath, "render", scene, "-o", reference, "--seed", 2, "--quiet",
-             "--integrator", "bdpt", "--spp", REFERENCE_SPP, "--aovs", "none"])
+    # another seed than the budgets' (render() fixes seed 1); the same every run: cached
+    reference = cached_render(run, scene, "--integrator", "bdpt", "--spp", REFERENCE_SPP,
+                              "--aovs", "none")
     truth = checks.layer(reference, "")
     rows = []
     for integ in ("path", "bdpt"):
@@ -522,9 +522,9 @@ def bounce_by_bounce(fig):
     lpes = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
     common = ["--resolution", run.res(512, 512), "--aovs", "none", *lpes]
     rad = render(run, fig.id, "radiosity", fig.scene(0), "--integrator", "radiosity",
-                 "--patches", run.patches, "--spp", 16 if not run.quick else 4, *common)
+                 "--patches", run.patches, "--spp", run.spp_radiosity, *common)
     path = render(run, fig.id, "path", fig.scene(0), "--integrator", "path", "--sampler", "sobol",
-                  "--spp", run.spp_path, *common)
+                  "--spp", run.spp_bounces, *common)
     names = [n for n, _ in BOUNCES] + ["e"]
     notes = []
     for integ, exr in (("radiosity", rad), ("path", path)):
@@ -560,7 +560,7 @@ def patch_mesh(fig):
             exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
                                    "--integrator", "radiosity", "--patches", budget,
                                    "--radiosity-display", display,
-                                   "--resolution", run.res(512, 512), "--spp", run.spp_direct,
+                                   "--resolution", run.res(512, 512), "--spp", run.spp_radiosity,
                                    "--aovs", "none")
             checks.check_nonzero(exrs[display], "", f"radiosity, {display}, {budget} patches")
         flat, smooth = (checks.layer(exrs[k], "") for k in ("flat", "smooth"))
@@ -609,7 +609,7 @@ def caustics(fig):
     run = fig.run
     res = run.res_for(slide.cell_aspect(6, 3))
     exrs = {}
-    for integ, spp in (("path", run.spp_path), ("bdpt", run.spp_caustic)):
+    for integ, spp in (("path", run.spp_caustic_path), ("bdpt", run.spp_caustic)):
         exrs[integ] = render(run, fig.id, integ, fig.scene(0), "--integrator", integ,
                              "--spp", spp, "--resolution", res,
                              "--aovs", "classes", "--lpe", CAUSTIC)
