@@ -517,14 +517,24 @@ def ambient(fig):
 BOUNCES = [("b1", "EDL"), ("b2", "EDDL"), ("b3", "EDDDL"), ("b4", "ED{4,}L")]
 
 
+BOUNCE_LPES = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
+
+
+def radiosity_bounces(run, scene):
+    """The Cornell box's radiosity at the budget of the radiosity figures, bounce by bounce: one
+    render for the bounce-by-bounce slide and the patch mesh's smooth panel at that budget (its
+    beauty), so the solve is made once."""
+    return render(run, "bounce-by-bounce", "radiosity", scene, "--integrator", "radiosity",
+                  "--patches", run.patches, "--spp", run.spp_radiosity,
+                  "--resolution", run.res(512, 512), "--aovs", "none", *BOUNCE_LPES)
+
+
 def bounce_by_bounce(fig):
     run = fig.run
-    lpes = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
-    common = ["--resolution", run.res(512, 512), "--aovs", "none", *lpes]
-    rad = render(run, fig.id, "radiosity", fig.scene(0), "--integrator", "radiosity",
-                 "--patches", run.patches, "--spp", run.spp_radiosity, *common)
+    rad = radiosity_bounces(run, fig.scene(0))
     path = render(run, fig.id, "path", fig.scene(0), "--integrator", "path", "--sampler", "sobol",
-                  "--spp", run.spp_bounces, *common)
+                  "--spp", run.spp_bounces, "--resolution", run.res(512, 512), "--aovs", "none",
+                  *BOUNCE_LPES)
     names = [n for n, _ in BOUNCES] + ["e"]
     notes = []
     for integ, exr in (("radiosity", rad), ("path", path)):
@@ -557,11 +567,14 @@ def patch_mesh(fig):
     for budget in budgets:
         exrs = {}
         for display in ("flat", "smooth"):
-            exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
-                                   "--integrator", "radiosity", "--patches", budget,
-                                   "--radiosity-display", display,
-                                   "--resolution", run.res(512, 512), "--spp", run.spp_radiosity,
-                                   "--aovs", "none")
+            if display == "smooth" and budget == run.patches:
+                exrs[display] = radiosity_bounces(run, fig.scene(0))  # its beauty: one solve
+            else:
+                exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
+                                       "--integrator", "radiosity", "--patches", budget,
+                                       "--radiosity-display", display,
+                                       "--resolution", run.res(512, 512),
+                                       "--spp", run.spp_radiosity, "--aovs", "none")
             checks.check_nonzero(exrs[display], "", f"radiosity, {display}, {budget} patches")
         flat, smooth = (checks.layer(exrs[k], "") for k in ("flat", "smooth"))
         diff = checks.check_close(smooth, flat, 0.1, f"{budget} patches: smooth against flat")
