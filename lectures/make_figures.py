@@ -224,8 +224,10 @@ def main():
         for fig, account in make_all(run, todo, a.jobs):
             add_account(totals, account)
             made.append(fig)
-            print(f"figure {fig.number:2d} {fig.id:20s} {fig.seconds:6.1f} s {fig.cpu:6.1f} CPU s  "
-                  f"{fig.png}", flush=True)
+            made_refs = (f" ({account['reference_cpu']:.1f} of them in references)"
+                         if account["references_made"] else "")
+            print(f"figure {fig.number:2d} {fig.id:20s} {fig.seconds:6.1f} s {fig.cpu:6.1f} CPU s"
+                  f"{made_refs}  {fig.png}", flush=True)
     except FigureError as e:
         sys.exit(f"make_figures: {e}")
     made.sort(key=lambda f: f.number)
