@@ -223,6 +223,7 @@ def main():
     try:
         for fig, account in make_all(run, todo, a.jobs):
             add_account(totals, account)
+            fig.reference_cpu = account["reference_cpu"]
             made.append(fig)
             made_refs = (f" ({account['reference_cpu']:.1f} of them in references)"
                          if account["references_made"] else "")
@@ -239,7 +240,8 @@ def main():
         times = json.loads(times_path.read_text())
     except (OSError, ValueError):
         times = {}
-    times.setdefault("quick" if run.quick else "default", {}).update({f.id: f.cpu for f in made})
+    times.setdefault("quick" if run.quick else "default", {}).update(
+        {f.id: round(f.cpu - f.reference_cpu, 1) for f in made})  # a cached run's cost
     times_path.write_text(json.dumps(times, indent=1, sort_keys=True) + "\n")
     pdf = run.out / PDF_NAME
     if a.only:
