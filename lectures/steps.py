@@ -58,9 +58,10 @@ class Run:
         # 0.019 at 16 spp, at most ~0.04 at 4, and the solve is 90% of the render's time.
         self.spp_radiosity = 1 if quick else 4
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
-        # The caustics slide: bdpt's focus 0.075 at 256 spp, so 192: ~0.087; the path tracer's
-        # beauty (no caustic to find) 0.010 at 64, so 16: ~0.020.
-        self.spp_caustic = 16 if quick else 192
+        # The caustics slide: bdpt's focus 0.075 at 256 spp (a converged focus; 192 would be
+        # ~0.087, not yet measured); the path tracer's beauty (no caustic to find) 0.010 at 64,
+        # so 16: ~0.020.
+        self.spp_caustic = 16 if quick else 256
         self.spp_caustic_path = 4 if quick else 16
         self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
