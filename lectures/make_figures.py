@@ -12,11 +12,15 @@ and a non-zero exit code.
 """
 
 import argparse
+import json
+import multiprocessing
 import os
 import shutil
 import sys
 import time
 import tomllib
+from collections import defaultdict
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -108,12 +112,90 @@ class Figure:
                 self.notes.append(f"noise: {exr.parent.name}/{exr.name} not held to a level: {why}")
 
 
+# The generator run a worker process makes its figures in (make_figure): set before the pool's
+# processes are forked, so each inherits it.
+RUN = None
+TIMES_NAME = "figure-cpu.json"  # each figure's CPU seconds last run: the pool's order next run
+
+
+def make_figure(number, entry):
+    """Make one figure in this (worker) process; return what the parent needs of it: the
+    Figure's attributes and the run's accounts of its renders, references and tools."""
+    run = RUN
+    run.noise, run.levels, run.seconds = {}, {}, defaultdict(float)
+    run.reference_seconds = run.reference_cpu = 0.0
+    run.references_made = run.references_cached = 0
+    fig = Figure(run, number, entry)
+    fig.make()
+    account = {k: getattr(run, k) for k in ("noise", "levels", "seconds", "reference_seconds",
+                                            "reference_cpu", "references_made",
+                                            "references_cached")}
+    return {k: v for k, v in vars(fig).items() if k != "run"}, account
+
+
+def make_all(run, todo, jobs):
+    """Make the figures todo [(number, entry)] on a pool of jobs worker processes, the longest
+    first (by last run's CPU seconds); yield each Figure as it is done. A figure's slide and
+    files are the same whatever the order: each writes only its own folder, and a render two
+    figures share is made once (steps.shared_render)."""
+    global RUN
+    RUN = run
+    shutil.rmtree(run.out / ".renders", ignore_errors=True)  # the last run's locks and records
+    times_path = run.out / TIMES_NAME
+    try:
+        last = json.loads(times_path.read_text()).get("quick" if run.quick else "default", {})
+    except (OSError, ValueError):
+        last = {}
+    order = sorted(todo, key=lambda ne: -last.get(ne[1]["id"], 0.0))
+
+    def adopt(number, entry, result):
+        attributes, account = result
+        fig = Figure(run, number, entry)
+        vars(fig).update(attributes)
+        return fig, account
+
+    if jobs <= 1:
+        for number, entry in order:
+            try:
+                result = make_figure(number, entry)
+            except FigureError as e:
+                raise FigureError(f"figure {entry['id']}: {e}") from e
+            yield adopt(number, entry, result)
+        return
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork"))
+    try:
+        futures = {pool.submit(make_figure, number, entry): (number, entry)
+                   for number, entry in order}
+        for future in as_completed(futures):
+            number, entry = futures[future]
+            try:
+                result = future.result()
+            except FigureError as e:
+                raise FigureError(f"figure {entry['id']}: {e}") from e
+            yield adopt(number, entry, result)
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+def add_account(totals, account):
+    """Add one figure's accounts (make_figure) to the run's totals, a dict of the same keys."""
+    totals["noise"].update(account["noise"])
+    totals["levels"].update(account["levels"])
+    for tool, seconds in account["seconds"].items():
+        totals["seconds"][tool] = totals["seconds"].get(tool, 0.0) + seconds
+    for k in ("reference_seconds", "reference_cpu", "references_made", "references_cached"):
+        totals[k] += account[k]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--lightpath", required=True, help="the built lightpath binary")
     ap.add_argument("--out", required=True, help="output folder (the build tree's lectures/)")
     ap.add_argument("--quick", action="store_true", help="small and few samples: CI")
     ap.add_argument("--only", nargs="*", help="figure ids to make (default: all; no PDF then)")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
+                    help="figures made at once, each render on cores/jobs threads "
+                    "(default: the number of cores; 1: one at a time, each on all cores)")
     a = ap.parse_args()
 
     for tool in ("dot",):
@@ -122,7 +204,8 @@ def main():
     if not Path(a.lightpath).is_file():
         sys.exit(f"make_figures: no lightpath binary at {a.lightpath}")
 
-    run = Run(a.lightpath, a.out, a.quick)
+    cores = os.cpu_count() or 1
+    run = Run(a.lightpath, a.out, a.quick, threads=0 if a.jobs <= 1 else max(1, cores // a.jobs))
     run.out.mkdir(parents=True, exist_ok=True)
     try:
         entries = load_figures()
@@ -131,20 +214,35 @@ def main():
     unknown = set(a.only or []) - {e["id"] for e in entries}
     if unknown:
         sys.exit(f"make_figures: --only: no figure {', '.join(sorted(unknown))} in {FIGURES_TOML}")
+    todo = [(n, e) for n, e in enumerate(entries, 1) if not a.only or e["id"] in a.only]
     made = []
     start = time.monotonic()
     cpu_start = steps.children_cpu() + sum(os.times()[:2])
-    for number, entry in enumerate(entries, 1):
-        if a.only and entry["id"] not in a.only:
-            continue
-        fig = Figure(run, number, entry)
-        try:
-            fig.make()
-        except FigureError as e:
-            sys.exit(f"make_figures: figure {fig.id}: {e}")
-        made.append(fig)
-        print(f"figure {number:2d} {fig.id:20s} {fig.seconds:6.1f} s {fig.cpu:6.1f} CPU s  {fig.png}",
-              flush=True)
+    totals = {"noise": {}, "levels": {}, "seconds": {}, "reference_seconds": 0.0,
+              "reference_cpu": 0.0, "references_made": 0, "references_cached": 0}
+    try:
+        for fig, account in make_all(run, todo, a.jobs):
+            add_account(totals, account)
+            fig.reference_cpu = account["reference_cpu"]
+            made.append(fig)
+            made_refs = (f" ({account['reference_cpu']:.1f} of them in references)"
+                         if account["references_made"] else "")
+            print(f"figure {fig.number:2d} {fig.id:20s} {fig.seconds:6.1f} s {fig.cpu:6.1f} CPU s"
+                  f"{made_refs}  {fig.png}", flush=True)
+    except FigureError as e:
+        sys.exit(f"make_figures: {e}")
+    made.sort(key=lambda f: f.number)
+    for k, v in totals.items():  # the whole run's accounts, as the summary below reads them
+        setattr(run, k, v)
+    render_wall = time.monotonic() - start
+    times_path = run.out / TIMES_NAME
+    try:
+        times = json.loads(times_path.read_text())
+    except (OSError, ValueError):
+        times = {}
+    times.setdefault("quick" if run.quick else "default", {}).update(
+        {f.id: round(f.cpu - f.reference_cpu, 1) for f in made})  # a cached run's cost
+    times_path.write_text(json.dumps(times, indent=1, sort_keys=True) + "\n")
     pdf = run.out / PDF_NAME
     if a.only:
         pdf.unlink(missing_ok=True)  # a partial run: no PDF that would miss slides
@@ -163,8 +261,9 @@ def main():
     print("time per slide: " + ", ".join(f"{f.number} {f.seconds:.1f} s ({f.cpu:.1f} CPU s)"
                                          for f in made))
     cpu = steps.children_cpu() + sum(os.times()[:2]) - cpu_start
-    print(f"CPU time {cpu:.1f} s, {cpu - run.reference_cpu:.1f} s of it outside references: "
-          f"{(cpu - run.reference_cpu) / 2:.0f} s on 2 idle cores with the references cached")
+    print(f"CPU time {cpu:.1f} s, {cpu - run.reference_cpu:.1f} s of it outside references; "
+          f"the figures took {render_wall:.1f} s of wall clock on {a.jobs} job(s) of "
+          f"{run.threads or cores} thread(s), at a load average of {os.getloadavg()[0]:.1f}")
     if run.noise:
         print(f"noise: {len(run.noise)} path, bdpt and radiosity renders, relative RMSE "
               f"{min(run.noise.values()):.3f} to {max(run.noise.values()):.3f}; "

@@ -19,7 +19,7 @@ import checks
 import plots
 import slide
 from slide import Panel, SLIDE_H, SLIDE_W, MARGIN, TOP, LABEL_H, BELOW_H
-from steps import FigureError, explain, render, scene_variant, sh
+from steps import FigureError, cached_render, explain, render, scene_variant, sh
 
 # The `classes` AOVs (docs/lpe.md): every path of every integrator is in exactly one.
 CLASSES = [("raycast", "E(D|G)L"), ("raytrace", "ES+(D|G)L"), ("mirror", "ES+L"),
@@ -59,7 +59,7 @@ def method_renders(fig):
                               # a quarter of the path tracer's samples: each bdpt sample also
                               # traces and joins a light walk, and only its caustics are shown
                               ("bdpt", max(run.spp_path // 4, 1), [CAUSTIC]),
-                              ("radiosity", run.spp_direct, [])):
+                              ("radiosity", run.spp_radiosity, [])):
         opts = ["--integrator", integ, "--spp", spp, *common]
         if integ == "radiosity":
             opts += ["--patches", run.patches]
@@ -168,7 +168,7 @@ def decomposition(fig):
     run, scene = fig.run, fig.scene(0)
     common = ["--resolution", run.res(640, 360), "--sampler", "sobol", "--aovs", "classes"]
     exrs = {integ: render(run, fig.id, integ, scene, "--integrator", integ, "--spp", spp, *common)
-            for integ, spp in (("whitted", run.spp_direct), ("path", run.spp_path))}
+            for integ, spp in (("whitted", run.spp_direct), ("path", run.spp_decomposition))}
     notes = []
     for integ in ("whitted", "path"):
         worst = checks.check_sum(exrs[integ], CLASS_NAMES)
@@ -399,9 +399,9 @@ def caustic_error_rows(fig):
     seconds are each budget's samples at the rate of the largest budget's render on one thread
     (render_seconds: its own time, without loading the scene or starting the process)."""
     run, scene = fig.run, fig.scene(0)
-    reference = fig.dir / "reference.exr"  # render() fixes seed 1: the budgets' seed
-    sh(run, [run.lightpath, "render", scene, "-o", reference, "--seed", 2, "--quiet",
-             "--integrator", "bdpt", "--spp", REFERENCE_SPP, "--aovs", "none"])
+    # another seed than the budgets' (render() fixes seed 1); the same every run: cached
+    reference = cached_render(run, scene, "--integrator", "bdpt", "--spp", REFERENCE_SPP,
+                              "--aovs", "none")
     truth = checks.layer(reference, "")
     rows = []
     for integ in ("path", "bdpt"):
@@ -517,14 +517,24 @@ def ambient(fig):
 BOUNCES = [("b1", "EDL"), ("b2", "EDDL"), ("b3", "EDDDL"), ("b4", "ED{4,}L")]
 
 
+BOUNCE_LPES = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
+
+
+def radiosity_bounces(run, scene):
+    """The Cornell box's radiosity at the budget of the radiosity figures, bounce by bounce: one
+    render for the bounce-by-bounce slide and the patch mesh's smooth panel at that budget (its
+    beauty), so the solve is made once."""
+    return render(run, "bounce-by-bounce", "radiosity", scene, "--integrator", "radiosity",
+                  "--patches", run.patches, "--spp", run.spp_radiosity,
+                  "--resolution", run.res(512, 512), "--aovs", "none", *BOUNCE_LPES)
+
+
 def bounce_by_bounce(fig):
     run = fig.run
-    lpes = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
-    common = ["--resolution", run.res(512, 512), "--aovs", "none", *lpes]
-    rad = render(run, fig.id, "radiosity", fig.scene(0), "--integrator", "radiosity",
-                 "--patches", run.patches, "--spp", 16 if not run.quick else 4, *common)
+    rad = radiosity_bounces(run, fig.scene(0))
     path = render(run, fig.id, "path", fig.scene(0), "--integrator", "path", "--sampler", "sobol",
-                  "--spp", run.spp_path, *common)
+                  "--spp", run.spp_bounces, "--resolution", run.res(512, 512), "--aovs", "none",
+                  *BOUNCE_LPES)
     names = [n for n, _ in BOUNCES] + ["e"]
     notes = []
     for integ, exr in (("radiosity", rad), ("path", path)):
@@ -557,11 +567,14 @@ def patch_mesh(fig):
     for budget in budgets:
         exrs = {}
         for display in ("flat", "smooth"):
-            exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
-                                   "--integrator", "radiosity", "--patches", budget,
-                                   "--radiosity-display", display,
-                                   "--resolution", run.res(512, 512), "--spp", run.spp_direct,
-                                   "--aovs", "none")
+            if display == "smooth" and budget == run.patches:
+                exrs[display] = radiosity_bounces(run, fig.scene(0))  # its beauty: one solve
+            else:
+                exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
+                                       "--integrator", "radiosity", "--patches", budget,
+                                       "--radiosity-display", display,
+                                       "--resolution", run.res(512, 512),
+                                       "--spp", run.spp_radiosity, "--aovs", "none")
             checks.check_nonzero(exrs[display], "", f"radiosity, {display}, {budget} patches")
         flat, smooth = (checks.layer(exrs[k], "") for k in ("flat", "smooth"))
         diff = checks.check_close(smooth, flat, 0.1, f"{budget} patches: smooth against flat")
@@ -609,7 +622,7 @@ def caustics(fig):
     run = fig.run
     res = run.res_for(slide.cell_aspect(6, 3))
     exrs = {}
-    for integ, spp in (("path", run.spp_path), ("bdpt", run.spp_caustic)):
+    for integ, spp in (("path", run.spp_caustic_path), ("bdpt", run.spp_caustic)):
         exrs[integ] = render(run, fig.id, integ, fig.scene(0), "--integrator", integ,
                              "--spp", spp, "--resolution", res,
                              "--aovs", "classes", "--lpe", CAUSTIC)

@@ -1,7 +1,10 @@
 """The steps every figure takes: running a command (recorded for the gallery), rendering a scene
 with the lightpath CLI, asking `explain --json`, and writing a scene from a template."""
 
+import fcntl
+import hashlib
 import json
+import os
 import re
 import shlex
 import string
@@ -32,7 +35,7 @@ class Run:
     """Settings of one generator run, the renders made so far, and the log of the commands the
     figure being made used (for the gallery)."""
 
-    def __init__(self, lightpath, out, quick):
+    def __init__(self, lightpath, out, quick, threads=0):
         self.lightpath = str(Path(lightpath).resolve())
         self.out = Path(out).resolve()
         self.quick = quick
@@ -42,16 +45,35 @@ class Run:
         # shadows of the area light) for slides
         self.spp_direct = 1 if quick else 16
         self.spp_path = 4 if quick else 64       # path tracer and bdpt
+        # Renders held to NOISE_LEVEL get the samples their measured error asks for, with a
+        # margin (error ~ 1/sqrt(spp): predicted = measured * sqrt(old / new)); a panel is
+        # not better for noise far below the level, only slower.
         # The taxonomy's path tracer (slides 2, 3, 11): the glass ball under the quad light makes
         # caustic fireflies, 60% of its squared error in 1% of the pixels; at 64 spp its relative
-        # RMSE was 0.244, and error ~ 1/sqrt(spp) puts 512 at 0.086, under NOISE_LEVEL.
-        self.spp_path_taxonomy = 4 if quick else 512
+        # RMSE was 0.244, at 512 0.077 (128: 0.184 measured, 0.189 predicted), so 448: ~0.082.
+        self.spp_path_taxonomy = 4 if quick else 448
+        self.spp_decomposition = 4 if quick else 48   # path: 0.064 at 64 spp, so ~0.074
+        self.spp_bounces = 4 if quick else 32         # path: 0.054 at 64 spp, so ~0.076
+        # Radiosity's image is its solve (the same at any spp) seen through the pixel samples:
+        # 0.019 at 16 spp, at most ~0.04 at 4, and the solve is 90% of the render's time.
+        self.spp_radiosity = 1 if quick else 4
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
-        self.spp_caustic = 16 if quick else 256  # bdpt on the caustics slide: a converged focus
+        # The caustics slide: bdpt's focus 0.075 at 256 spp (a converged focus; 192 would be
+        # ~0.087, not yet measured); the path tracer's beauty (no caustic to find) 0.010 at 64,
+        # so 16: ~0.020.
+        self.spp_caustic = 16 if quick else 256
+        self.spp_caustic_path = 4 if quick else 16
         self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
         self.dirs = []                           # folders holding the figure's EXRs
         self.rendered = {}                       # argv -> EXR, so figures share renders
+        # Each render's --threads (0: all cores): the generator's job pool runs several figures
+        # at once, each render on its share of the cores. Not part of the command the gallery
+        # shows or of a reference's cache key: a render is the same on any number of threads.
+        self.threads = threads
+        # This generator run, for renders shared between its worker processes (shared_render)
+        self.token = f"{os.getpid()}-{time.time_ns()}"
+        self.measured = {}                       # EXR -> (level, why, noise): kept across figures
         self.seconds = defaultdict(float)        # wall seconds per tool ("lightpath render", ...)
         self.noise = {}                          # EXR -> its relative RMSE (measure_noise)
         self.levels = {}                         # EXR -> (its level, why) (render's noise_level)
@@ -112,7 +134,8 @@ def render(run, folder, name, scene, *options, noise_level=None, noise_why=""):
     """Render scene into out/folder/name.exr (seed 1, --quiet); return the EXR path.
 
     The same command is run once per generator run: a figure that needs a render another figure
-    made reuses its EXR and lists the same command in the gallery.
+    made reuses its EXR and lists the same command in the gallery, in whichever of the
+    generator's worker processes it was made (shared_render).
 
     At the default quality a path, bdpt or radiosity render is held to NOISE_LEVEL
     (measure_noise), or to noise_level when the recipe states another and says why (noise_why):
@@ -126,16 +149,74 @@ def render(run, folder, name, scene, *options, noise_level=None, noise_why=""):
     argv = [run.lightpath, "render", str(scene), "-o", str(exr), "--seed", "1", "--quiet",
             *[str(o) for o in options]]
     run.dirs.append(folder)
+    run.commands.append(run.shown(argv))
     key = tuple(argv)
-    if key in run.rendered:
-        run.commands.append(run.shown(argv))
-        return exr
-    sh(run, argv)
-    run.rendered[key] = exr
-    run.levels[exr] = (NOISE_LEVEL if noise_level is None else noise_level, noise_why)
-    if not run.quick and run.levels[exr][0] != float("inf"):
-        measure_noise(run, argv, exr)
+    if key not in run.rendered:
+        level = (NOISE_LEVEL if noise_level is None else noise_level, noise_why)
+        with shared_render(run, argv) as share:
+            done = share.done
+            if done is None:
+                sh(run, with_threads(run, argv), record=False)
+                cpu = run.last_cpu
+                noise = None
+                if not run.quick and level[0] != float("inf"):
+                    noise = measure_noise(run, argv, exr)
+                done = {"level": level, "noise": noise}
+                share.record(done)
+                if not run.quick:
+                    spp = argv[argv.index("--spp") + 1] if "--spp" in argv else "1"
+                    verdict = ("" if noise is None else
+                               f", relative RMSE {noise:.3f} against {NOISE_REFERENCE_FACTOR}x "
+                               f"its samples (level {level[0]})" +
+                               ("" if noise <= level[0] else "  ABOVE its level"))
+                    print(f"  render {run.rel(exr)}: {spp} spp, {cpu:.1f} CPU s{verdict}",
+                          flush=True)
+        run.rendered[key] = exr
+        run.measured[exr] = (tuple(done["level"]), done["noise"])
+    # this figure's account of the render, whichever figure or worker made it
+    level, noise = run.measured[exr]
+    run.levels[exr] = level
+    if noise is not None:
+        run.noise[exr] = noise
     return exr
+
+
+def with_threads(run, argv):
+    """argv as run: with the run's --threads unless it sets its own."""
+    if run.threads and "--threads" not in argv:
+        return [*argv, "--threads", str(run.threads)]
+    return argv
+
+
+class shared_render:
+    """The one render of a command in this generator run, among its worker processes: entered
+    under a lock of the command, its `done` is None when this process is to render it (and
+    record what it measured), or what the worker that rendered it recorded."""
+
+    def __init__(self, run, argv):
+        folder = run.out / ".renders"
+        folder.mkdir(parents=True, exist_ok=True)
+        key = hashlib.sha256("\0".join(argv).encode()).hexdigest()[:16]
+        self.lock_path, self.done_path = folder / f"{key}.lock", folder / f"{key}.json"
+        self.token, self.done = run.token, None
+
+    def __enter__(self):
+        self.lock = open(self.lock_path, "w")
+        fcntl.flock(self.lock, fcntl.LOCK_EX)
+        try:
+            recorded = json.loads(self.done_path.read_text())
+            if recorded.get("token") == self.token:
+                self.done = recorded["result"]
+        except (OSError, ValueError):
+            pass
+        return self
+
+    def record(self, result):
+        self.done_path.write_text(json.dumps({"token": self.token, "result": result}))
+
+    def __exit__(self, *exc):
+        self.lock.close()
+        return False
 
 
 # The quality level of the default figures: every path-traced, bdpt and radiosity render's
@@ -169,33 +250,62 @@ def noise_layer(options):
 
 
 def measure_noise(run, argv, exr):
-    """The render's noise against its cached higher-spp reference (NOISE_REFERENCE_FACTOR)."""
-    import hashlib
+    """The render's relative RMSE against its cached higher-spp reference, as against one at
+    NOISE_REFERENCE_FACTOR times its samples (reference_noise), or None for a render that is
+    not of a noisy integrator.
+
+    The cache holds references by command (its --spp aside) and scene text; any with at least
+    NOISE_REFERENCE_FACTOR times the render's samples serves (the one with the most), so that
+    lowering a render's samples needs no new reference; a missing one is made at that factor."""
     options = argv[argv.index("--quiet") + 1:]
     get = lambda flag: options[options.index(flag) + 1] if flag in options else None  # noqa: E731
     if get("--integrator") not in NOISY_INTEGRATORS or get("--spp") is None:
-        return
+        return None
     spp = int(get("--spp"))
     ref_options = list(options)
-    ref_options[ref_options.index("--spp") + 1] = str(spp * NOISE_REFERENCE_FACTOR)
+    ref_options[ref_options.index("--spp") + 1] = "*"
     ref_argv = [argv[0], "render", argv[2], "--seed", "2", "--quiet", *ref_options]
     key = hashlib.sha256("\0".join([*ref_argv, Path(argv[2]).read_text()]).encode()).hexdigest()[:16]
-    reference = run.out / "references" / f"{key}.exr"
-    reference.parent.mkdir(parents=True, exist_ok=True)
-    if reference.is_file():
+    folder = run.out / "references"
+    folder.mkdir(parents=True, exist_ok=True)
+    cached = [int(m.group(1)) for f in folder.glob(f"{key}-*spp.exr")
+              if (m := re.fullmatch(rf"{key}-(\d+)spp\.exr", f.name))]
+    ref_spp = max(cached, default=0)
+    if ref_spp >= spp * NOISE_REFERENCE_FACTOR:
         run.references_cached += 1
     else:
+        ref_spp = spp * NOISE_REFERENCE_FACTOR
+        ref_argv[ref_argv.index("*")] = str(ref_spp)
         t0 = time.monotonic()
-        sh(run, ref_argv[:3] + ["-o", str(reference)] + ref_argv[3:], record=False)
+        sh(run, with_threads(run, ref_argv[:3] + ["-o", str(folder / f"{key}-{ref_spp}spp.exr")] +
+                             ref_argv[3:]), record=False)
         run.reference_seconds += time.monotonic() - t0
         run.reference_cpu += run.last_cpu
         run.references_made += 1
-    noise = relative_rmse(exr, reference, noise_layer(options))
-    run.noise[exr] = noise
-    level = run.levels[exr][0]
-    verdict = "" if noise <= level else f"  ABOVE its level {level}"
-    print(f"  noise {run.rel(exr)}: relative RMSE {noise:.3f} against "
-          f"{spp * NOISE_REFERENCE_FACTOR} spp{verdict}", flush=True)
+    measured = relative_rmse(exr, folder / f"{key}-{ref_spp}spp.exr", noise_layer(options))
+    return reference_noise(measured, ref_spp / spp)
+
+
+def reference_noise(measured, k):
+    """A relative RMSE measured against an independent reference with k times the samples, as
+    it would be against one with NOISE_REFERENCE_FACTOR times: both images' noise counts, the
+    reference's variance 1/k of the render's, so measured^2 = e^2 (1 + 1/k) for the render's
+    own error e, and the level is on e^2 (1 + 1/NOISE_REFERENCE_FACTOR)."""
+    return measured * ((1 + 1 / NOISE_REFERENCE_FACTOR) / (1 + 1 / k)) ** 0.5
+
+
+def cached_render(run, scene, *options):
+    """A render of scene (seed 2, --quiet) that is the same in every run, a converged reference:
+    cached in out/references/ by command and scene text, made when missing. Returns its path."""
+    argv = [run.lightpath, "render", str(scene), "--seed", "2", "--quiet", *[str(o) for o in options]]
+    key = hashlib.sha256("\0".join([*argv, Path(scene).read_text()]).encode()).hexdigest()[:16]
+    path = run.out / "references" / f"{key}.exr"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    run.commands.append(run.shown(argv[:3] + ["-o", str(path)] + argv[3:]))
+    with shared_render(run, argv):
+        if not path.is_file():
+            sh(run, with_threads(run, argv[:3] + ["-o", str(path)] + argv[3:]), record=False)
+    return path
 
 
 def explain(run, scene, x, y, *options):

@@ -135,5 +135,89 @@ class NoiseLevel(unittest.TestCase):
             steps.render(run, "f", "n", self.dir / "s.toml", noise_level=0.5)
 
 
+# A stand-in for the lightpath binary: `render SCENE -o OUT ... --spp N` writes a 4x4 EXR whose
+# every channel is N (1 without --spp) and appends its command line to the file CALLS beside it.
+FAKE_LIGHTPATH = """#!/usr/bin/python3
+import sys
+from pathlib import Path
+sys.path.insert(0, {lectures!r})
+import numpy as np
+import checks
+argv = sys.argv[1:]
+with open(Path(sys.argv[0]).parent / "CALLS", "a") as log:
+    log.write(" ".join(argv) + "\\n")
+spp = float(argv[argv.index("--spp") + 1]) if "--spp" in argv else 1.0
+checks.write_exr(np.full((4, 4, 3), spp), argv[argv.index("-o") + 1])
+"""
+
+
+class References(unittest.TestCase):
+    """The noise references (steps.measure_noise): any cached one with enough samples serves, and
+    a render two worker processes ask for is made once (steps.shared_render)."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = Path(self.tmp.name)
+        self.lightpath = self.dir / "bin" / "lightpath"
+        self.lightpath.parent.mkdir()
+        self.lightpath.write_text(FAKE_LIGHTPATH.format(lectures=str(Path(__file__).resolve().parent)))
+        self.lightpath.chmod(0o755)
+        self.scene = self.dir / "s.toml"
+        self.scene.write_text("# a scene\n")
+        self.run = steps.Run(self.lightpath, self.dir / "out", quick=False)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def calls(self):
+        log = self.lightpath.parent / "CALLS"
+        return log.read_text().splitlines() if log.is_file() else []
+
+    def test_reference_noise_against_hand_computed_values(self):
+        # measured^2 = e^2 (1 + 1/k): against 4x it is itself; against 16x, e^2 = 0.01 / 1.0625,
+        # and as against 4x: sqrt(0.01 * 1.25 / 1.0625) = 0.108465...
+        self.assertAlmostEqual(steps.reference_noise(0.1, 4), 0.1, places=12)
+        self.assertAlmostEqual(steps.reference_noise(0.1, 16), 0.1084652289, places=9)
+
+    def test_a_cached_reference_with_enough_samples_serves_a_render_with_fewer(self):
+        def noise(spp):
+            exr = checks.write_exr(np.full((4, 4, 3), 1.0), self.dir / f"r{spp}.exr")
+            argv = [self.run.lightpath, "render", str(self.scene), "-o", str(exr), "--seed", "1",
+                    "--quiet", "--integrator", "path", "--spp", str(spp)]
+            return steps.measure_noise(self.run, argv, exr)
+        # 2 spp: a reference at 8 is made (every pixel 8 against the render's 1: 7/8 relative)
+        self.assertAlmostEqual(noise(2), 7 / 8, places=6)
+        self.assertEqual(len(self.calls()), 1)
+        # 1 spp: that reference has 8x its samples, it serves; the noise as against 4x
+        self.assertAlmostEqual(noise(1), steps.reference_noise(7 / 8, 8), places=6)
+        self.assertEqual(len(self.calls()), 1)
+        # 4 spp: it has 2x, too few: one at 16 is made
+        self.assertAlmostEqual(noise(4), 15 / 16, places=6)
+        self.assertEqual(len(self.calls()), 2)
+        self.assertEqual(sorted(f.name.split("-")[1] for f in (self.dir / "out" / "references").iterdir()),
+                         ["16spp.exr", "8spp.exr"])
+        self.assertEqual((self.run.references_made, self.run.references_cached), (2, 1))
+
+    def test_a_render_two_worker_processes_ask_for_is_made_once(self):
+        import multiprocessing
+        run = self.run
+        run.quick = True  # no noise reference: only the render's own command is counted
+
+        def work(_):
+            steps.render(run, "f", "n", self.scene, "--integrator", "path", "--spp", 2)
+        ctx = multiprocessing.get_context("fork")
+        workers = [ctx.Process(target=work, args=(i,)) for i in range(4)]
+        for w in workers:
+            w.start()
+        for w in workers:
+            w.join()
+        self.assertEqual([w.exitcode for w in workers], [0] * 4)
+        self.assertEqual(len(self.calls()), 1)
+        # another generator run (another token) makes it again
+        steps.render(steps.Run(self.lightpath, self.dir / "out", quick=True), "f", "n", self.scene,
+                     "--integrator", "path", "--spp", 2)
+        self.assertEqual(len(self.calls()), 2)
+
+
 if __name__ == "__main__":
     unittest.main()
