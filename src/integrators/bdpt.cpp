@@ -433,7 +433,11 @@ LightWalkPilot runPilot(const RenderContext& ctx, BdptIntegrator::Strategies str
     std::vector<Rgb> layers(lpe::kMaxOutputs + 2, Rgb{0.0f});
     ContributionSink sink(layers);
     RayCounters counters;
-    PathState path(ctx, sink, counters);
+    // Every path, whatever the request: the fraction chosen, and so every output's image, must not
+    // depend on which outputs are written (an AOV alone is the same AOV of the full render).
+    RenderContext everyPath = ctx;
+    everyPath.keepAllPaths = true;
+    PathState path(everyPath, sink, counters);
     LightWalkPilot pilot(kPilotSamplesPerPixel);
     const std::uint64_t seed = mixBits(ctx.seed ^ kPilotKey);
     for (int row = 0; row < rows; ++row) {
