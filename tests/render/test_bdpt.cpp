@@ -152,7 +152,8 @@ TEST_CASE("bdpt: with a light walk for a quarter of the camera samples, explain'
     const Renderer renderer(scene, aovs, renderOptions("bdpt", 4, 5, 3, 1, 0.25));
     const Film film = renderer.render().film;
     // Pixels on the caustic under the ball (light tracing's), on the floor and on the ball.
-    for (const auto& [x, y] : std::vector<std::pair<int, int>>{{14, 13}, {3, 15}, {12, 9}}) {
+    for (const std::pair<int, int>& pixel : std::vector<std::pair<int, int>>{{14, 13}, {3, 15}, {12, 9}}) {
+        const int x = pixel.first, y = pixel.second;  // not a structured binding: clang 14's CAPTURE
         Rgb sum{0.0f};
         int splatted = 0;
         for (const LoggedContribution& c : renderer.explainPixel(x, y)) {
