@@ -33,8 +33,6 @@ struct Weights {
     const Rgb* pilotBeauty = nullptr;  // the pilot's sink's beauty, read around s = 0's emission
 };
 
-float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 using Vertices = std::array<BdptVertex, kMaxSubpathVertices>;
 
 // Both subpaths' vertices, kept per thread: constructing 2 x kMaxSubpathVertices vertices per

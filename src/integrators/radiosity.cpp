@@ -33,8 +33,6 @@ constexpr std::uint32_t kNoTarget = ~std::uint32_t{0};
 // Elements handed to a worker at a time, and one progress step.
 constexpr std::uint32_t kChunk = 256;
 
-float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 // Runs work(begin, end) over [0, count) in chunks of kChunk on `threads` workers (0: all), one
 // progress step per chunk; once `cancel` is set, the chunks left are skipped.
 template <class Work>

@@ -15,6 +15,8 @@ inline constexpr float kPi = std::numbers::pi_v<float>;
 
 inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 inline bool isBlack(const Rgb& c) { return c.r == 0.0f && c.g == 0.0f && c.b == 0.0f; }
+// Relative luminance of linear RGB with Rec. 709 primaries (ITU-R BT.709 weights).
+inline float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 // The cross product of two parallel vectors vanishes; compare against their lengths so the test
 // does not depend on how long the student wrote them (a camera's up, a triangle's edges).

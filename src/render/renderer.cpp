@@ -138,8 +138,6 @@ std::string PixelMemory::describe() const {
 
 namespace {
 
-float luminance(const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 // Adaptive sampling's test: the standard error of the pixel's mean luminance, estimated from its
 // samples, relative to that mean (an absolute floor keeps black pixels from sampling forever).
 bool converged(double sum, double sumOfSquares, int n, double targetError) {
