@@ -11,6 +11,8 @@
 #include "geometry/shapes.h"
 #include "math/ray.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 namespace lightpath {
 
 // Coordinates as corners[vertex][axis][lane]: vertex 0, 1, 2 are a triangle's a, b, c.
@@ -48,7 +50,8 @@ struct PackedRay {
     explicit PackedRay(const Ray& ray)
         : sheared(ray.direction), k{sheared.kx, sheared.ky, sheared.kz}, sx(sheared.sx), sy(sheared.sy),
           sz(sheared.sz) {
-        for (int i = 0; i < 3; ++i) origin[i] = simd::Float4(ray.origin[k[i]]);
+        const float* o = glm::value_ptr(ray.origin);  // indexed loads: glm's operator[] is a switch
+        for (int i = 0; i < 3; ++i) origin[i] = simd::Float4(o[k[i]]);
     }
 };
 
