@@ -520,18 +520,11 @@ BOUNCES = [("b1", "EDL"), ("b2", "EDDL"), ("b3", "EDDDL"), ("b4", "ED{4,}L")]
 BOUNCE_LPES = sum((["--lpe", f"{n}={e}"] for n, e in BOUNCES), []) + ["--lpe", "e=EL"]
 
 
-def radiosity_bounces(run, scene):
-    """The Cornell box's radiosity at the budget of the radiosity figures, bounce by bounce: one
-    render for the bounce-by-bounce slide and the patch mesh's smooth panel at that budget (its
-    beauty), so the solve is made once."""
-    return render(run, "bounce-by-bounce", "radiosity", scene, "--integrator", "radiosity",
-                  "--patches", run.patches, "--spp", run.spp_radiosity,
-                  "--resolution", run.res(512, 512), "--aovs", "none", *BOUNCE_LPES)
-
-
 def bounce_by_bounce(fig):
     run = fig.run
-    rad = radiosity_bounces(run, fig.scene(0))
+    rad = render(run, fig.id, "radiosity", fig.scene(0), "--integrator", "radiosity",
+                 "--patches", run.patches, "--spp", run.spp_radiosity,
+                 "--resolution", run.res(512, 512), "--aovs", "none", *BOUNCE_LPES)
     path = render(run, fig.id, "path", fig.scene(0), "--integrator", "path", "--sampler", "sobol",
                   "--spp", run.spp_bounces, "--resolution", run.res(512, 512), "--aovs", "none",
                   *BOUNCE_LPES)
@@ -561,26 +554,26 @@ def bounce_by_bounce(fig):
 def patch_mesh(fig):
     run = fig.run
     # five budgets, doubling up to the one the other radiosity figures use: square panels in
-    # five columns fill the frame (flat above, smooth below)
+    # five columns fill the frame (flat above, smooth below). Uniform meshes (--refine 0): each
+    # panel has the budget its label says; refinement would cut up to 4x as many patches where the
+    # light changes, and the label would not be true.
     budgets = [run.patches >> k for k in range(4, -1, -1)]
     flat_panels, smooth_panels, notes = [], [], []
     for budget in budgets:
         exrs = {}
         for display in ("flat", "smooth"):
-            if display == "smooth" and budget == run.patches:
-                exrs[display] = radiosity_bounces(run, fig.scene(0))  # its beauty: one solve
-            else:
-                exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
-                                       "--integrator", "radiosity", "--patches", budget,
-                                       "--radiosity-display", display,
-                                       "--resolution", run.res(512, 512),
-                                       "--spp", run.spp_radiosity, "--aovs", "none")
+            exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
+                                   "--integrator", "radiosity", "--patches", budget, "--refine", 0,
+                                   "--radiosity-display", display,
+                                   "--resolution", run.res(512, 512),
+                                   "--spp", run.spp_radiosity, "--aovs", "none")
             checks.check_nonzero(exrs[display], "", f"radiosity, {display}, {budget} patches")
         flat, smooth = (checks.layer(exrs[k], "") for k in ("flat", "smooth"))
         diff = checks.check_close(smooth, flat, 0.1, f"{budget} patches: smooth against flat")
         notes.append(f"{budget} patches: smooth and flat means differ by {diff:.3g}")
-        flat_panels.append(Panel(exrs["flat"], f"{budget} patches", "flat"))
-        smooth_panels.append(Panel(exrs["smooth"], f"{budget}", "smooth"))
+        # the budget, as the option says it: the mesh has at most that many (256 gives 252)
+        flat_panels.append(Panel(exrs["flat"], f"--patches {budget}", "flat"))
+        smooth_panels.append(Panel(exrs["smooth"], f"--patches {budget}", "smooth"))
     fig.compose(flat_panels + smooth_panels, cols=len(budgets))
     return notes
 
