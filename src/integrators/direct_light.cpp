@@ -91,6 +91,42 @@ std::string zeroReason(const ShadingPoint& p, const SmoothLobeEvents& lobes, con
     return "the term is zero: " + absent;
 }
 
+// `explain`: a light sample that added nothing through any lobe (cold: see emitExplained).
+[[gnu::cold, gnu::noinline]] void rejectZero(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                             const LightSample& sample, bool litSide, const PathEvent& lightEvent,
+                                             PathState& path) {
+    path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
+}
+
+// `explain`: the shadow ray of a light sample is blocked; by what, and where.
+[[gnu::cold, gnu::noinline]] void rejectBlocked(const SmoothLobeEvents& lobes, const Ray& shadowRay,
+                                                const PathEvent& lightEvent, float distance, PathState& path) {
+    const RenderContext& ctx = path.context;
+    const auto blocker = ctx.geometry.intersect(shadowRay);
+    const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
+                            blocker ? blocker->object : 0};
+    path.reject(lobes.event(0), lightEvent,
+                "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
+                    (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
+                    formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, distance));
+}
+
+// What `explain` needs of one light sample beside its per-lobe values.
+struct LightTerms {
+    const LightSample& sample;
+    const Light& light;
+    Rgb incident;
+    Rgb transmittance;
+    float lightPdf;
+    DirectLightWeighting weighting;
+    const Rgb& throughput;
+};
+
+[[gnu::cold, gnu::noinline]] void emitExplained(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                                const LightTerms& terms, const PathEvent& lightEvent,
+                                                const Rgb* value, const float* weights,
+                                                const lpe::OutputMask* accepted, unsigned wanted, PathState& path);
+
 // One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
 void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
@@ -107,7 +143,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     lightEvent.position = sample.point;
     if (!litSide && skip) {
         ++counters.shadowBehind;
-        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
+        if (path.explaining()) [[unlikely]]
+            rejectZero(p, lobes, sample, litSide, lightEvent, path);
         return;
     }
     lpe::OutputMask accepted[kMaxLobes];
@@ -158,7 +195,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
     if (skip && !anyValue) {
         ++counters.shadowZero;
-        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
+        if (path.explaining()) [[unlikely]]
+            rejectZero(p, lobes, sample, litSide, lightEvent, path);
         return;
     }
 
@@ -167,31 +205,39 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         if (medium != nullptr) ++counters.mediumShadow;
         const Ray shadowRay = spawnShadowRay(origins, sample.point);
         if (throughInterfaces ? isBlack(transmittance) : ctx.geometry.occluded(shadowRay)) {
-            if (path.explaining()) {
-                const auto blocker = ctx.geometry.intersect(shadowRay);
-                const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
-                                        blocker ? blocker->object : 0};
-                path.reject(lobes.event(0), lightEvent,
-                            "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
-                                (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
-                                formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
-            }
+            if (path.explaining()) [[unlikely]]
+                rejectBlocked(lobes, shadowRay, lightEvent, sample.distance, path);
             return;
         }
     }
+    if (path.explaining()) [[unlikely]] {
+        const LightTerms terms{sample, light, incident, transmittance, lightPdf, weighting, throughput};
+        emitExplained(p, lobes, terms, lightEvent, value, weights, accepted, wanted, path);
+        return;
+    }
     for (int l = 0; l < lobes.count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
-        if (!path.explaining()) {
-            path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
-            continue;
-        }
+        path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
+    }
+}
+
+// `explain`'s part of addLightSample, out of line and cold (GCC places it apart from the hot
+// code): every term with its factors, then the absent lobes beside present ones. Inline, this and
+// the rejections below made addLightSample 9.3 KB, its hot lines spread among the cold ones.
+[[gnu::cold, gnu::noinline]] void emitExplained(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                                const LightTerms& terms, const PathEvent& lightEvent,
+                                                const Rgb* value, const float* weights,
+                                                const lpe::OutputMask* accepted, unsigned wanted, PathState& path) {
+    const bool skip = path.context.skipEnabled;
+    const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
+    for (int l = 0; l < lobes.count; ++l) {
+        if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
-            termFactors(p, lobes.lobes[l], sample, light, incident, transmittance, lightPdf, weights[l], weighting,
-                        throughput, factors);
+            termFactors(p, lobes.lobes[l], terms.sample, terms.light, terms.incident, terms.transmittance,
+                        terms.lightPdf, weights[l], terms.weighting, terms.throughput, factors);
         path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
-    if (!path.explaining()) return;
     // A lobe that is absent beside one that scatters, in the lecture's order (ks = 0 beside kd):
     // say so, as its term is part of the formula.
     bool earlierPresent = false;
