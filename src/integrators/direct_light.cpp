@@ -7,6 +7,7 @@
 
 #include "geometry/spawn_ray.h"
 #include "integrators/integrator.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -128,6 +129,7 @@ struct LightTerms {
                                                 const lpe::OutputMask* accepted, unsigned wanted, PathState& path);
 
 // One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
+LIGHTPATH_HOT_PATH
 void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium) {
@@ -252,6 +254,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
 }
 
+LIGHTPATH_HOT_PATH
 void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
                     const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path,
                     const Medium* medium = nullptr) {
@@ -319,6 +322,7 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
     path.emitAccepted(scatter, lightEvent, value, accepted, std::span(factors, 5));
 }
 
+LIGHTPATH_HOT_PATH
 void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput, PathState& path) {
     const RenderContext& ctx = path.context;
     if (!point.terms.ambient && ctx.skipEnabled) return;
@@ -338,6 +342,7 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
 
 }  // namespace
 
+LIGHTPATH_HOT_PATH
 float powerHeuristic(float pdf, float otherPdf) {
     // Squared in double: a pdf above 1.8e19 (a small light seen edge-on) squares to infinity in
     // float, and inf / inf is NaN.
@@ -345,6 +350,7 @@ float powerHeuristic(float pdf, float otherPdf) {
     return a + b > 0.0 ? static_cast<float>(a / (a + b)) : 0.0f;
 }
 
+LIGHTPATH_HOT_PATH
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium) {
     addDirectLight(point, SmoothLobeEvents(point, path), throughput, u, weighting, path, medium);
@@ -361,6 +367,7 @@ void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const
                          *chosen.light, weighting, path);
 }
 
+LIGHTPATH_HOT_PATH
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
     if (!point.terms.ambient && path.context.skipEnabled) return;
     addAmbient(point, SmoothLobeEvents(point, path), throughput, path);
@@ -388,6 +395,7 @@ void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::
     }
 }
 
+LIGHTPATH_HOT_PATH
 Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
                   const Rgb& throughput, PathState& path) {
     const Medium* medium = path.context.scene.medium(mediumIndex);
@@ -450,6 +458,7 @@ std::uint32_t cameraMedium(const RenderContext& ctx) {
     return scene.worldMedium;
 }
 
+LIGHTPATH_HOT_PATH
 void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path, const Medium* medium) {
     const SmoothLobeEvents lobes(point, path);
     addAmbient(point, lobes, throughput, path);
@@ -466,6 +475,7 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
     addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path, medium);
 }
 
+LIGHTPATH_HOT_PATH
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path) {
     const Light* light = path.context.lights.lightOfObject(hit.object);
     if (light == nullptr) return;
@@ -481,6 +491,7 @@ void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, f
     path.emit(event, throughput * emitted * weight, std::span(factors, 3));
 }
 
+LIGHTPATH_HOT_PATH
 void addBackground(const Ray& ray, const Rgb& throughput, PathState& path) {
     const Rgb& background = path.context.scene.background;
     if (isBlack(background) && path.context.skipEnabled) return;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "integrators/integrator.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -70,6 +71,7 @@ TextureFootprint footprintOf(const SurfaceHit& hit, const SurfaceParameters& sur
 
 }  // namespace
 
+LIGHTPATH_HOT_PATH
 ShadingPoint makeShadingPoint(const SurfaceHit& hit, const Ray& ray, const RenderContext& context, TransportMode mode) {
     const bool entering = glm::dot(hit.normal, ray.direction) < 0.0f;
     const std::uint32_t material = context.scene.objects[hit.object].material;
