@@ -12,6 +12,7 @@
 #include "geometry/builtin_shapes.h"
 #include "geometry/intersect.h"
 #include "sampling/warp.h"
+#include "util/hot_path.h"
 #include "util/parallel_chunks.h"
 #ifdef LIGHTPATH_HAS_EMBREE
 #include "accel/embree_accelerator.h"
@@ -195,6 +196,7 @@ template <typename Keep>
     }
 }
 
+LIGHTPATH_HOT_PATH
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) {
         const std::optional<PrimitiveHit> found = closestBruteForce(ray);
@@ -213,6 +215,7 @@ std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) cons
     return closestAccelerated(ray, PackedRay(ray));
 }
 
+LIGHTPATH_HOT_PATH
 std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, const PackedRay& packed,
                                                               Vec4* edges) const {
     // Compiled twice: without `edges` (closestPrimitive, the ray sets) the loop is as it was
@@ -269,6 +272,7 @@ std::optional<PrimitiveHit> SceneGeometry::closestBruteForce(const Ray& ray) con
     return PrimitiveHit{closest.tMax, found};
 }
 
+LIGHTPATH_HOT_PATH
 bool SceneGeometry::occluded(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) return occludedBruteForce(ray);
     const auto blocks = [&](std::uint32_t id) { return intersectPrimitive(ray, id) != kNoHit; };
@@ -297,10 +301,12 @@ bool SceneGeometry::occludedBruteForce(const Ray& ray) const {
     return false;
 }
 
+LIGHTPATH_HOT_PATH
 SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {
     return describeHit(ray, t, id, barycentrics, nullptr, nullptr);
 }
 
+LIGHTPATH_HOT_PATH
 SurfaceHit SceneGeometry::describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics,
                                       const Vec4* edges, const WatertightRay* sheared) const {
     SurfaceHit hit;

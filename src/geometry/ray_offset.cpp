@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "math/float_bits.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -31,6 +32,7 @@ float roundAway(float moved, float normal) {
 
 }  // namespace
 
+LIGHTPATH_HOT_PATH
 Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n, float travelled) {
     const Vec3 magnitude = glm::abs(p);
     const float t = std::isfinite(travelled) ? std::fabs(travelled) : 0.0f;

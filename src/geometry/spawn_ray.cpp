@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry/ray_offset.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -42,9 +43,11 @@ void aimShadowRay(Ray& ray, const Vec3& target) {
 
 }  // namespace
 
+LIGHTPATH_HOT_PATH
 RayOrigins::RayOrigins(const SurfaceHit& hit, const NumericsOptions& numerics)
     : hit_(hit), numerics_(numerics), normalUsable_(isUsable(hit.normal)) {}
 
+LIGHTPATH_HOT_PATH
 Ray RayOrigins::leave(const Vec3& direction) {
     Ray ray;
     ray.origin = hit_.point;
@@ -75,17 +78,20 @@ Ray RayOrigins::leave(const Vec3& direction) {
     return ray;
 }
 
+LIGHTPATH_HOT_PATH
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics) {
     Ray ray = RayOrigins(hit, numerics).leave(direction);
     ray.direction = direction;
     return ray;
 }
 
+LIGHTPATH_HOT_PATH
 Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOptions& numerics) {
     RayOrigins origins(hit, numerics);
     return spawnShadowRay(origins, target);
 }
 
+LIGHTPATH_HOT_PATH
 Ray spawnShadowRay(const Vec3& origin, const Vec3& target) {
     Ray ray;
     ray.origin = origin;
@@ -93,6 +99,7 @@ Ray spawnShadowRay(const Vec3& origin, const Vec3& target) {
     return ray;
 }
 
+LIGHTPATH_HOT_PATH
 Ray spawnShadowRay(RayOrigins& origins, const Vec3& target) {
     Ray ray = origins.leave(target - origins.hit().point);
     aimShadowRay(ray, target);

@@ -7,6 +7,7 @@
 
 #include "geometry/spawn_ray.h"
 #include "integrators/integrator.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -91,7 +92,44 @@ std::string zeroReason(const ShadingPoint& p, const SmoothLobeEvents& lobes, con
     return "the term is zero: " + absent;
 }
 
+// `explain`: a light sample that added nothing through any lobe (cold: see emitExplained).
+[[gnu::cold, gnu::noinline]] void rejectZero(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                             const LightSample& sample, bool litSide, const PathEvent& lightEvent,
+                                             PathState& path) {
+    path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
+}
+
+// `explain`: the shadow ray of a light sample is blocked; by what, and where.
+[[gnu::cold, gnu::noinline]] void rejectBlocked(const SmoothLobeEvents& lobes, const Ray& shadowRay,
+                                                const PathEvent& lightEvent, float distance, PathState& path) {
+    const RenderContext& ctx = path.context;
+    const auto blocker = ctx.geometry.intersect(shadowRay);
+    const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
+                            blocker ? blocker->object : 0};
+    path.reject(lobes.event(0), lightEvent,
+                "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
+                    (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
+                    formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, distance));
+}
+
+// What `explain` needs of one light sample beside its per-lobe values.
+struct LightTerms {
+    const LightSample& sample;
+    const Light& light;
+    Rgb incident;
+    Rgb transmittance;
+    float lightPdf;
+    DirectLightWeighting weighting;
+    const Rgb& throughput;
+};
+
+[[gnu::cold, gnu::noinline]] void emitExplained(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                                const LightTerms& terms, const PathEvent& lightEvent,
+                                                const Rgb* value, const float* weights,
+                                                const lpe::OutputMask* accepted, unsigned wanted, PathState& path);
+
 // One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
+LIGHTPATH_HOT_PATH
 void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium) {
@@ -107,7 +145,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     lightEvent.position = sample.point;
     if (!litSide && skip) {
         ++counters.shadowBehind;
-        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
+        if (path.explaining()) [[unlikely]]
+            rejectZero(p, lobes, sample, litSide, lightEvent, path);
         return;
     }
     lpe::OutputMask accepted[kMaxLobes];
@@ -158,7 +197,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
     if (skip && !anyValue) {
         ++counters.shadowZero;
-        if (path.explaining()) path.reject(lobes.event(0), lightEvent, zeroReason(p, lobes, sample, litSide));
+        if (path.explaining()) [[unlikely]]
+            rejectZero(p, lobes, sample, litSide, lightEvent, path);
         return;
     }
 
@@ -167,31 +207,39 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         if (medium != nullptr) ++counters.mediumShadow;
         const Ray shadowRay = spawnShadowRay(origins, sample.point);
         if (throughInterfaces ? isBlack(transmittance) : ctx.geometry.occluded(shadowRay)) {
-            if (path.explaining()) {
-                const auto blocker = ctx.geometry.intersect(shadowRay);
-                const PathEvent blocked{lpe::EventType::Reflection, lpe::Scatter::None, Subject::Object,
-                                        blocker ? blocker->object : 0};
-                path.reject(lobes.event(0), lightEvent,
-                            "the shadow ray towards " + subjectName(ctx.scene, lightEvent) + " is blocked by " +
-                                (blocker ? subjectName(ctx.scene, blocked) : std::string("an object")) +
-                                formatted(" at t = %.3f (of %.3f)", blocker ? blocker->t : 0.0, sample.distance));
-            }
+            if (path.explaining()) [[unlikely]]
+                rejectBlocked(lobes, shadowRay, lightEvent, sample.distance, path);
             return;
         }
     }
+    if (path.explaining()) [[unlikely]] {
+        const LightTerms terms{sample, light, incident, transmittance, lightPdf, weighting, throughput};
+        emitExplained(p, lobes, terms, lightEvent, value, weights, accepted, wanted, path);
+        return;
+    }
     for (int l = 0; l < lobes.count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
-        if (!path.explaining()) {
-            path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
-            continue;
-        }
+        path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
+    }
+}
+
+// `explain`'s part of addLightSample, out of line and cold (GCC places it apart from the hot
+// code): every term with its factors, then the absent lobes beside present ones. Inline, this and
+// the rejections below made addLightSample 9.3 KB, its hot lines spread among the cold ones.
+[[gnu::cold, gnu::noinline]] void emitExplained(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                                const LightTerms& terms, const PathEvent& lightEvent,
+                                                const Rgb* value, const float* weights,
+                                                const lpe::OutputMask* accepted, unsigned wanted, PathState& path) {
+    const bool skip = path.context.skipEnabled;
+    const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
+    for (int l = 0; l < lobes.count; ++l) {
+        if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
-            termFactors(p, lobes.lobes[l], sample, light, incident, transmittance, lightPdf, weights[l], weighting,
-                        throughput, factors);
+            termFactors(p, lobes.lobes[l], terms.sample, terms.light, terms.incident, terms.transmittance,
+                        terms.lightPdf, weights[l], terms.weighting, terms.throughput, factors);
         path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
-    if (!path.explaining()) return;
     // A lobe that is absent beside one that scatters, in the lecture's order (ks = 0 beside kd):
     // say so, as its term is part of the formula.
     bool earlierPresent = false;
@@ -206,6 +254,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
 }
 
+LIGHTPATH_HOT_PATH
 void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
                     const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path,
                     const Medium* medium = nullptr) {
@@ -273,6 +322,7 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
     path.emitAccepted(scatter, lightEvent, value, accepted, std::span(factors, 5));
 }
 
+LIGHTPATH_HOT_PATH
 void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput, PathState& path) {
     const RenderContext& ctx = path.context;
     if (!point.terms.ambient && ctx.skipEnabled) return;
@@ -292,6 +342,7 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
 
 }  // namespace
 
+LIGHTPATH_HOT_PATH
 float powerHeuristic(float pdf, float otherPdf) {
     // Squared in double: a pdf above 1.8e19 (a small light seen edge-on) squares to infinity in
     // float, and inf / inf is NaN.
@@ -299,6 +350,7 @@ float powerHeuristic(float pdf, float otherPdf) {
     return a + b > 0.0 ? static_cast<float>(a / (a + b)) : 0.0f;
 }
 
+LIGHTPATH_HOT_PATH
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium) {
     addDirectLight(point, SmoothLobeEvents(point, path), throughput, u, weighting, path, medium);
@@ -315,6 +367,7 @@ void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const
                          *chosen.light, weighting, path);
 }
 
+LIGHTPATH_HOT_PATH
 void addAmbient(const ShadingPoint& point, const Rgb& throughput, PathState& path) {
     if (!point.terms.ambient && path.context.skipEnabled) return;
     addAmbient(point, SmoothLobeEvents(point, path), throughput, path);
@@ -342,6 +395,7 @@ void addSingleScattering(const Ray& ray, float tMax, const Medium& medium, std::
     }
 }
 
+LIGHTPATH_HOT_PATH
 Rgb throughMedium(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uint32_t mediumIndex,
                   const Rgb& throughput, PathState& path) {
     const Medium* medium = path.context.scene.medium(mediumIndex);
@@ -404,6 +458,7 @@ std::uint32_t cameraMedium(const RenderContext& ctx) {
     return scene.worldMedium;
 }
 
+LIGHTPATH_HOT_PATH
 void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, PathState& path, const Medium* medium) {
     const SmoothLobeEvents lobes(point, path);
     addAmbient(point, lobes, throughput, path);
@@ -420,6 +475,7 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
     addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path, medium);
 }
 
+LIGHTPATH_HOT_PATH
 void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, float weight, PathState& path) {
     const Light* light = path.context.lights.lightOfObject(hit.object);
     if (light == nullptr) return;
@@ -435,6 +491,7 @@ void addEmission(const SurfaceHit& hit, const Ray& ray, const Rgb& throughput, f
     path.emit(event, throughput * emitted * weight, std::span(factors, 3));
 }
 
+LIGHTPATH_HOT_PATH
 void addBackground(const Ray& ray, const Rgb& throughput, PathState& path) {
     const Rgb& background = path.context.scene.background;
     if (isBlack(background) && path.context.skipEnabled) return;

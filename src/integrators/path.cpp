@@ -7,9 +7,11 @@
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
 #include "sampling/russian_roulette.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 
+LIGHTPATH_HOT_PATH
 void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const {
     const RenderContext& ctx = path.context;
     Sampler& sampler = *path.sampler;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "integrators/integrator.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 
@@ -16,6 +17,7 @@ PathState::PathState(const RenderContext& context, ContributionSink& sink, RayCo
     states_[0] = context.automaton.start();
 }
 
+LIGHTPATH_HOT_PATH
 bool PathState::push(const PathEvent& event) {
     // Room is kept for the surface and light that emit() records after the last push. Checked in
     // Release too: one compare, against writing past the end of a std::array.
@@ -30,6 +32,7 @@ bool PathState::push(const PathEvent& event) {
     return true;
 }
 
+LIGHTPATH_HOT_PATH
 void PathState::pop() { events_.pop(); }
 
 void PathState::emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors) {

@@ -4,13 +4,16 @@
 
 #include "integrators/registry.h"
 #include "integrators/direct_light.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 
+LIGHTPATH_HOT_PATH
 void RaycastIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
     shadeFirstHit(path.context.geometry.intersect(ray), ray, path);
 }
 
+LIGHTPATH_HOT_PATH
 void shadeFirstHit(const std::optional<SurfaceHit>& hit, const Ray& ray, PathState& path) {
     const RenderContext& ctx = path.context;
     // Every term is seen through the media from the camera's on, across index-matched boundaries

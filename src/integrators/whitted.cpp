@@ -5,13 +5,16 @@
 #include "integrators/registry.h"
 #include "geometry/spawn_ray.h"
 #include "integrators/direct_light.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 
+LIGHTPATH_HOT_PATH
 void WhittedIntegrator::traceCameraRay(const Ray& ray, PathState& path) const {
     trace(ray, Rgb{1.0f}, 0, path.context.eyeMedium, path);
 }
 
+LIGHTPATH_HOT_PATH
 void WhittedIntegrator::trace(const Ray& firstRay, const Rgb& firstThroughput, int depth, std::uint32_t firstMedium,
                               PathState& path) const {
     const RenderContext& ctx = path.context;

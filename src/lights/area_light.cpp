@@ -8,6 +8,7 @@
 
 #include "geometry/intersect.h"
 #include "sampling/warp.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -56,6 +57,7 @@ AreaLightSource::AreaLightSource(const PathEvent& event, ColorParameter emission
     sampleable_ = area_ >= kMinSampledEmitterArea;
 }
 
+LIGHTPATH_HOT_PATH
 AreaLightSource::SurfacePoint AreaLightSource::samplePoint(Vec2 u) const {
     // Reuse u.x: pick the shape, then rescale the remainder to [0, 1) for the point on it.
     const float target = u.x * area_;
@@ -85,6 +87,7 @@ Rgb AreaLightSource::emissionAt(Vec2 uv) const {
     return emission_.at(side);
 }
 
+LIGHTPATH_HOT_PATH
 LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     LightSample s;
     if (!sampleable_) return s;
@@ -169,6 +172,7 @@ Rgb AreaLightSource::power() const {
     return emission_.mean() * (kPi * area_ * (spheres_ ? 2.0f : 1.0f));
 }
 
+LIGHTPATH_HOT_PATH
 float areaToSolidAngle(float pdfArea, const Vec3& receiver, const Vec3& point, const Vec3& normal) {
     const Vec3 toPoint = point - receiver;
     const float distance2 = glm::dot(toPoint, toPoint);

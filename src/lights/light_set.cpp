@@ -4,6 +4,7 @@
 
 #include "scene/emission.h"
 #include "scene/framing.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 
@@ -66,6 +67,7 @@ std::vector<LightSet::Choice> LightSet::distribution(std::span<const Light* cons
     return choices;
 }
 
+LIGHTPATH_HOT_PATH
 ChosenLight LightSet::choose(const std::vector<Choice>& choices, float u) {
     if (choices.empty()) return {};
     auto it = std::upper_bound(choices.begin(), choices.end(), u,
@@ -74,6 +76,7 @@ ChosenLight LightSet::choose(const std::vector<Choice>& choices, float u) {
     return {it->light, it->probability};
 }
 
+LIGHTPATH_HOT_PATH
 ChosenLight LightSet::chooseAreaLight(float u) const { return choose(areaChoices_, u); }
 ChosenLight LightSet::chooseEmitter(float u) const { return choose(emitterChoices_, u); }
 
@@ -95,6 +98,7 @@ Rgb LightSet::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
     return light ? light->radiance(hit, towardViewer) : Rgb{0.0f};
 }
 
+LIGHTPATH_HOT_PATH
 float LightSet::pdf(const Vec3& receiver, const SurfaceHit& hit) const {
     const Light* light = lightOfObject(hit.object);
     if (!light) return 0.0f;

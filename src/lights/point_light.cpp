@@ -4,6 +4,7 @@
 
 #include "scene/light_type.h"
 #include "sampling/warp.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 
@@ -15,6 +16,7 @@ std::unique_ptr<Light> PointLight::makeSource(std::uint32_t index) const {
     return std::make_unique<PointLightSource>(*this, index);
 }
 
+LIGHTPATH_HOT_PATH
 LightSample PointLightSource::sample(const Vec3& receiver, Vec2) const {
     LightSample s;
     s.point = description_.location;

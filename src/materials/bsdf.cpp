@@ -1,7 +1,10 @@
 #include "materials/bsdf.h"
 
+#include "util/hot_path.h"
+
 namespace lightpath {
 
+LIGHTPATH_HOT_PATH
 const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) const {
     if (wo == first_.wo) return first_.probabilities;
     if (wo == last_.wo) return last_.probabilities;
@@ -11,6 +14,7 @@ const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) cons
     return choice.probabilities;
 }
 
+LIGHTPATH_HOT_PATH
 void Bsdf::computeLobeProbabilities(LobeChoice& choice) const {
     std::array<float, kMaxLobes>& weights = choice.probabilities;
     weights.fill(0.0f);
@@ -25,6 +29,7 @@ void Bsdf::computeLobeProbabilities(LobeChoice& choice) const {
         for (float& w : weights) w /= total;
 }
 
+LIGHTPATH_HOT_PATH
 float Bsdf::pdf(int lobe, const Vec3& wo, const Vec3& wi) const {
     if (this->lobe(lobe).delta()) return 0.0f;
     if (material_.choosesLobe()) return material_.chosenLobePdf(lobe, side_, wo, wi);
@@ -32,6 +37,7 @@ float Bsdf::pdf(int lobe, const Vec3& wo, const Vec3& wi) const {
     return probability == 0.0f ? 0.0f : probability * material_.pdf(lobe, side_, wo, wi);
 }
 
+LIGHTPATH_HOT_PATH
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, Vec2 u) const {
     if (material_.choosesLobe()) {
         const std::optional<ChosenLobeSample> s = material_.sampleChosenLobe(side_, wo, uLobe, u);

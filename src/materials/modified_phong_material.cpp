@@ -7,6 +7,7 @@
 #include "materials/material_type.h"
 #include "materials/optics.h"
 #include "sampling/warp.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -24,6 +25,7 @@ bool ModifiedPhongMaterial::has(int lobe) const {
     return false;
 }
 
+LIGHTPATH_HOT_PATH
 Rgb ModifiedPhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
     if (lobe == kDiffuse) return lambert::eval(kd.at(side), side, wi);
@@ -32,6 +34,7 @@ Rgb ModifiedPhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& w
     return Rgb{0.0f};
 }
 
+LIGHTPATH_HOT_PATH
 float ModifiedPhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return 0.0f;
     if (lobe == kDiffuse) return lambert::pdf(side, wi);
@@ -41,6 +44,7 @@ float ModifiedPhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& 
     return 0.0f;
 }
 
+LIGHTPATH_HOT_PATH
 std::optional<LobeSample> ModifiedPhongMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo,
                                                         Vec2 u) const {
     if (lobe == kDiffuse) return lambert::sample(kd.at(side), side, wo, u);

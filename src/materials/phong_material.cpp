@@ -7,6 +7,7 @@
 #include "materials/material_type.h"
 #include "materials/optics.h"
 #include "sampling/warp.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -37,6 +38,7 @@ bool PhongMaterial::has(int lobe) const {
     return false;
 }
 
+LIGHTPATH_HOT_PATH
 Rgb PhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return Rgb{0.0f};
     if (lobe == kDiffuse) return lambert::eval(kd.at(side), side, wi);
@@ -44,6 +46,7 @@ Rgb PhongMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const
     return Rgb{0.0f};  // a delta lobe has no value to evaluate
 }
 
+LIGHTPATH_HOT_PATH
 float PhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!side.bothAbove(wo, wi)) return 0.0f;
     if (lobe == kDiffuse) return lambert::pdf(side, wi);
@@ -58,6 +61,7 @@ float PhongMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, cons
     return 0.0f;
 }
 
+LIGHTPATH_HOT_PATH
 std::optional<LobeSample> PhongMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const {
     if (lobe == kDiffuse) return lambert::sample(kd.at(side), side, wo, u);
     if (lobe == kHighlight) {
@@ -84,6 +88,7 @@ float PhongMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3&) cons
     return 0.0f;
 }
 
+LIGHTPATH_HOT_PATH
 int PhongMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
     if (kr.black() && kt.black()) return 0;
     const float cosOut = glm::dot(wo, side.normal);

@@ -15,6 +15,7 @@
 #include "sampling/sampler.h"
 #include "util/parallel_chunks.h"
 #include "util/worker_threads.h"
+#include "util/hot_path.h"
 
 namespace lightpath {
 namespace {
@@ -152,6 +153,7 @@ constexpr int kAdaptiveMinimum = 8;
 
 }  // namespace
 
+LIGHTPATH_HOT_PATH
 void Renderer::traceSample(int x, int y, std::uint64_t seed, int sample, int spp, PathState& path,
                            ProgressiveRender* progressive) const {
     Sampler sampler = Sampler::forPixel(options_.sampler, x, y, sample, spp, seed);
@@ -174,6 +176,7 @@ void Renderer::traceSample(int x, int y, std::uint64_t seed, int sample, int spp
     path.pop();
 }
 
+LIGHTPATH_HOT_PATH
 int Renderer::renderPixel(int x, int y, std::uint64_t seed, int spp, std::span<Rgb> layers, PathState& path) const {
     const bool adaptive = options_.targetError > 0.0;
     double sum = 0.0, sumOfSquares = 0.0;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "util/hot_path.h"
+
 namespace lightpath {
 namespace {
 
@@ -94,17 +96,20 @@ const char* samplerName(SamplerKind kind) {
     return "";
 }
 
+LIGHTPATH_HOT_PATH
 Sampler::Sampler(SamplerKind kind, std::uint64_t seed, int sampleIndex, int samplesPerPixel)
     : kind_(kind), seed_(seed), index_(static_cast<std::uint32_t>(sampleIndex)),
       count_(static_cast<std::uint32_t>(samplesPerPixel)),
       gridSide_(kind == SamplerKind::Stratified ? squareSide(count_) : 0),
       rng_(usesRng() ? Pcg32(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) : Pcg32::unseeded()) {}
 
+LIGHTPATH_HOT_PATH
 Sampler Sampler::forPixel(SamplerKind kind, int x, int y, int sampleIndex, int samplesPerPixel, std::uint64_t seed) {
     const std::uint64_t pixel = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 32) | static_cast<std::uint32_t>(x);
     return Sampler(kind, mixBits(pixel ^ mixBits(seed)), sampleIndex, samplesPerPixel);
 }
 
+LIGHTPATH_HOT_PATH
 float Sampler::next1D() {
     const std::uint64_t seed = dimensionSeed();
     switch (kind_) {
@@ -119,6 +124,7 @@ float Sampler::next1D() {
     return rng_.nextFloat();
 }
 
+LIGHTPATH_HOT_PATH
 void Sampler::skip2D() {
     ++dimension_;
     if (!usesRng()) return;
@@ -126,6 +132,7 @@ void Sampler::skip2D() {
     rng_.nextUint();
 }
 
+LIGHTPATH_HOT_PATH
 Vec2 Sampler::next2D() {
     const std::uint64_t seed = dimensionSeed();
     switch (kind_) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "util/hot_path.h"
+
 namespace lightpath {
 
 PinholeCamera::PinholeCamera(const CameraDescription& d)
@@ -21,6 +23,7 @@ Vec3 PinholeCamera::filmDirection(float x, float y) const {
     return forward_ + u * right_ + v * up_;
 }
 
+LIGHTPATH_HOT_PATH
 Ray PinholeCamera::generateRay(float x, float y) const {
     Ray ray;
     ray.origin = eye_;
