@@ -72,6 +72,7 @@ void run(const ErrorOptions& options) {
         if (s.timeRatio > 0.0) std::printf("%-18s %-12s %10.3f %25.2fx", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
         else std::printf("%-18s %-12s %10.3f %26s", s.scene.c_str(), s.sampler.c_str(), s.slope, "-");
         if (s.raysPerSample > 0.0) std::printf("   %.2f rays/sample", s.raysPerSample);
+        if (s.equalTimeErrorRatio > 0.0) std::printf("   error at path's time %.2fx", s.equalTimeErrorRatio);
         std::printf("\n");
     }
     std::printf("\ntargets: independent slope -0.5 +- 0.05; on area-light-plane sobol <= 0.5x and adaptive <= 0.33x of "
