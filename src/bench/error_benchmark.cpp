@@ -172,13 +172,13 @@ Scene glassCausticScene(int size) {
     glass.ior = 1.5f;
     glass.fresnel = true;
     lamp.name = "lamp";
-    lamp.emission = Rgb{22.5f};
+    lamp.emission = Rgb{40.0f};
     scene.materials = {floor, glass, lamp};
     scene.objects = {{"floor", 0}, {"ball", 1}, {"lamp", 2}};
     scene.planes.push_back({{0, 0, 0}, {0, 1, 0}, 0});
     scene.spheres.push_back({{0.0f, 0.9f, 0.0f}, 0.5f, 1});
-    // A 0.4 x 0.4 quad at height 3, facing down, up and to the left of the ball.
-    const Vec3 q0{-1.0f, 3.0f, -0.2f}, q1{-0.6f, 3.0f, -0.2f}, q2{-0.6f, 3.0f, 0.2f}, q3{-1.0f, 3.0f, 0.2f};
+    // A 0.3 x 0.3 quad at height 3, facing down, up and to the left of the ball.
+    const Vec3 q0{-0.95f, 3.0f, -0.15f}, q1{-0.65f, 3.0f, -0.15f}, q2{-0.65f, 3.0f, 0.15f}, q3{-0.95f, 3.0f, 0.15f};
     scene.triangles.push_back({q0, q1, q2, 2});
     scene.triangles.push_back({q0, q3, q2, 2});
     return scene;
@@ -243,7 +243,9 @@ double secondsToReach(const std::vector<ErrorBenchmarkRow>& rows, double error) 
             return std::exp(std::log(a.seconds) + t * (std::log(b.seconds) - std::log(a.seconds)));
         }
     }
-    const auto& last = rows.back();
+    // Outside: from the nearer end (an error above the smallest budget's, as bdpt's on the glass
+    // caustic against path's, from the smallest).
+    const auto& last = error > rows.front().rmse ? rows.front() : rows.back();
     return std::exp(std::log(last.seconds) + (std::log(error) - std::log(last.rmse)) / fitSlope(rows));
 }
 
@@ -304,11 +306,14 @@ void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory
     }
     {
         // The glass ball's caustic AOV against the path tracer's, converged (it does find it): at
-        // 65,536 spp its RMSE is about 0.1x bdpt's at 32 spp (path's falls as 1/sqrt(spp) from
-        // 0.05 at 32 spp), 70 CPU seconds once.
+        // 131,072 spp its RMSE is about 0.0014 (path's 0.088 at 32 spp over 64), half bdpt's at 32
+        // spp, which it raises by about 10%; 140 CPU seconds, once. --quick (and CI's end-to-end
+        // run) takes 16,384 spp, 17 s: RMSE 0.004, which raises bdpt's error, not path's, so it
+        // understates bdpt's lead.
         Scene scene = glassCausticScene(32);
-        Reference reference =
-            cachedReference(scene, cacheDirectory / "glass-caustic-32-reference.exr", 65536, "E(D|G)S+L");
+        const int spp = quick ? 16384 : 131072;
+        Reference reference = cachedReference(
+            scene, cacheDirectory / ("glass-caustic-32-" + std::to_string(spp) + "-reference.exr"), spp, "E(D|G)S+L");
         comparisons.push_back({"glass-caustic", std::move(scene), std::move(reference), "E(D|G)S+L"});
     }
     {
@@ -354,8 +359,9 @@ void compareIntegrators(bool quick, const std::filesystem::path& scenesDirectory
         // The path tracer's error at its largest budget; on the mirror caustic it never falls (it
         // finds none of the light), so bdpt's time to reach it extrapolates nothing of path's, and
         // the error ratio at path's largest time says more.
+        // Path reaches its own error at its largest budget's time (its curve may be flat there).
         const double error = curves[0].back().rmse;
-        const double pathSeconds = secondsToReach(curves[0], error);
+        const double pathSeconds = curves[0].back().seconds;
         result.summaries.push_back({c.name, "path", fitSlope(curves[0]), 1.0, raysPerSample[0], 1.0});
         result.summaries.push_back({c.name, "bdpt", fitSlope(curves[1]), secondsToReach(curves[1], error) / pathSeconds,
                                     raysPerSample[1], errorAt(curves[1], curves[0].back().seconds) / error});

@@ -120,8 +120,9 @@ void addBenchErrorCommand(CLI::App& bench) {
         "Renders each scene at budgets 1, 2, 4, ... spp with independent, stratified and Sobol sampling and\n"
         "with adaptive sampling, prints RMSE against time, the fitted convergence slope, and the time each\n"
         "needs to reach the error independent sampling reaches with its largest budget. Then path tracing\n"
-        "against bdpt on a mirror caustic (closed form) and the Cornell box under its lamp (a cached\n"
-        "reference): bdpt's time to reach the path tracer's error at its largest budget, as a ratio.\n\n"
+        "against bdpt on a mirror caustic (closed form), a glass ball's caustic under a small area light\n"
+        "and the Cornell box under its lamp (cached path-traced references): bdpt's time to reach the\n"
+        "path tracer's error at its largest budget, as a ratio, and its error at that budget's time.\n\n"
         "Examples:\n"
         "  lightpath bench error\n"
         "  lightpath bench error --quick --json out/error.json");
