@@ -9,6 +9,9 @@
 // then path tracing against bidirectional path tracing:
 //   mirror-caustic    the light a mirror throws on a floor (E(D|G)S+L) under a point light: the
 //                     light's mirror image in closed form; only bdpt's light tracing finds it
+//   glass-caustic     a glass ball's caustic on a floor under a small area light (E(D|G)S+L), which
+//                     the path tracer finds only by hitting the light through the ball: against a
+//                     cached high-sample path-traced render of that AOV
 //   cornell-lamp      the Cornell box under its area light, against a cached high-sample render
 //   cornell           the diffuse Cornell box, against the path tracer's cached high-sample render
 // Radiosity gets its own rows on the furnace and the Cornell box, one per patch budget; photon
@@ -38,6 +41,10 @@ struct ErrorBenchmarkSummary {
     // Integrators: rays cast per pixel sample (camera, shadow and connection rays, walks' bounces)
     // at the largest budget; their ratio to the path tracer's is the cost of the extra strategies.
     double raysPerSample = 0.0;
+    // Integrators: the error at the path tracer's time at its largest budget, over the path
+    // tracer's (0: not compared). Where path's error is bias that never falls (mirror-caustic), the
+    // time ratio extrapolates and this says more.
+    double equalTimeErrorRatio = 0.0;
 };
 
 struct ErrorBenchmarkResult {

@@ -72,6 +72,7 @@ void run(const ErrorOptions& options) {
         if (s.timeRatio > 0.0) std::printf("%-18s %-12s %10.3f %25.2fx", s.scene.c_str(), s.sampler.c_str(), s.slope, s.timeRatio);
         else std::printf("%-18s %-12s %10.3f %26s", s.scene.c_str(), s.sampler.c_str(), s.slope, "-");
         if (s.raysPerSample > 0.0) std::printf("   %.2f rays/sample", s.raysPerSample);
+        if (s.equalTimeErrorRatio > 0.0) std::printf("   error at path's time %.2fx", s.equalTimeErrorRatio);
         std::printf("\n");
     }
     std::printf("\ntargets: independent slope -0.5 +- 0.05; on area-light-plane sobol <= 0.5x and adaptive <= 0.33x of "
@@ -119,8 +120,9 @@ void addBenchErrorCommand(CLI::App& bench) {
         "Renders each scene at budgets 1, 2, 4, ... spp with independent, stratified and Sobol sampling and\n"
         "with adaptive sampling, prints RMSE against time, the fitted convergence slope, and the time each\n"
         "needs to reach the error independent sampling reaches with its largest budget. Then path tracing\n"
-        "against bdpt on a mirror caustic (closed form) and the Cornell box under its lamp (a cached\n"
-        "reference): bdpt's time to reach the path tracer's error at its largest budget, as a ratio.\n\n"
+        "against bdpt on a mirror caustic (closed form), a glass ball's caustic under a small area light\n"
+        "and the Cornell box under its lamp (cached path-traced references): bdpt's time to reach the\n"
+        "path tracer's error at its largest budget, as a ratio, and its error at that budget's time.\n\n"
         "Examples:\n"
         "  lightpath bench error\n"
         "  lightpath bench error --quick --json out/error.json");

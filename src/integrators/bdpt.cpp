@@ -19,27 +19,30 @@ namespace {
 // Names the light walk's own random numbers within a pixel sample (Sampler::forVertex), so the
 // eye's walk draws the same numbers whether or not a light walk was traced.
 constexpr std::uint64_t kLightWalkKey = 0x6c69676874ull;  // "light"
-// Names the number that decides whether a camera sample walks from a light (a fraction q < 1 of
-// them do): its own dimension, stratified over the pixel's samples like the others.
+// Names the number that decides whether a camera sample takes one more light walk (a fraction
+// q - floor(q) of them do): its own dimension, stratified over the pixel's samples like the others.
 constexpr std::uint64_t kLightWalkChoiceKey = 0x63686f696365ull;  // "choice"
 
-// How one camera sample weighs the light walk's strategies. Under a fraction q of camera samples
-// walking from a light, each of those strategies counts q samples in the power heuristic and its
-// contributions are divided by q (bdpt_allocation.h); the pilot tallies them instead.
+// How one camera sample weighs the light walk's strategies. Under q light walks per camera sample
+// on average, light tracing counts q samples in the power heuristic and its splats are divided by
+// q, the joins (of the first walk) count min(q, 1) and are divided by it (bdpt_allocation.h); the
+// pilot tallies them instead.
 struct Weights {
     double lightWalks = 1.0;  // light walks per camera sample, q (0: none)
-    float lightScale = 1.0f;  // 1 / q
+    float splatScale = 1.0f;  // 1 / q
+    float joinScale = 1.0f;   // 1 / min(q, 1)
     PilotSample* pilot = nullptr;
     const Rgb* pilotBeauty = nullptr;  // the pilot's sink's beauty, read around s = 0's emission
 };
 
 using Vertices = std::array<BdptVertex, kMaxSubpathVertices>;
 
-// Both subpaths' vertices, kept per thread: constructing 2 x kMaxSubpathVertices vertices per
-// sample (about 30 KB, most never used at the usual depths) cost more than a bounce. A walk
-// writes each vertex before anything reads it, so nothing carries over between samples.
+// Both subpaths' vertices, and the light walks' beyond the first (splatted, never joined), kept
+// per thread: constructing 2 x kMaxSubpathVertices vertices per sample (about 30 KB, most never
+// used at the usual depths) cost more than a bounce. A walk writes each vertex before anything
+// reads it, so nothing carries over between samples.
 struct Subpaths {
-    Vertices light, eye;
+    Vertices light, eye, moreLight;
 };
 Subpaths& threadSubpaths() {
     thread_local Subpaths subpaths;
@@ -209,7 +212,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& 
                 }
                 const float weight =
                     weighted ? misWeight(joinedDensities({light.data(), std::size_t(i + 1)}, lobe, eye, lobe, ctx), i + 1,
-                                         weights.lightWalks) * weights.lightScale
+                                         weights.lightWalks) * weights.splatScale
                              : 1.0f;
                 path.setStrategy(i + 1, 1);
                 if (weight > 0.0f && visible(path)) {
@@ -294,7 +297,7 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
                     const float weight = misWeight(joinedDensities({light.data(), std::size_t(s)}, lightLobe,
                                                                    {eye.data(), std::size_t(t)}, eyeLobe, ctx),
                                                    s, weights.lightWalks) *
-                                         weights.lightScale;
+                                         weights.joinScale;
                     path.setStrategy(s, t);
                     if (weight > 0.0f && visible(path))
                         path.emit(lightEvent, z.beta * fz * fy * y.beta * (weight / distance2));
@@ -306,24 +309,28 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     }
 }
 
-// One camera sample's strategies: the light walk's when `walkFromLights`, then the eye's.
-void traceStrategies(const Ray& cameraRay, PathState& path, bool walkFromLights, BdptIntegrator::Strategies strategies,
+// One camera sample's strategies: `lightWalks` light walks, each splatted, the first also joined
+// to the eye's walk, then the eye's.
+void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, BdptIntegrator::Strategies strategies,
                      const Weights& weights) {
     const RenderContext& ctx = path.context;
     Sampler& sampler = *path.sampler;
     const std::uint64_t raysBefore = path.counters.total();
-    std::uint64_t lightWalkRays = 0;  // the pilot's: rays cast for the light walk's strategies
+    std::uint64_t lightWalkRays = 0, joinRays = 0;  // the pilot's: rays cast for the light walk's strategies
 
     Subpaths& subpaths = threadSubpaths();
     Vertices& light = subpaths.light;
     int lightCount = 0;
-    if (walkFromLights) {
-        Sampler lightSampler = sampler.forVertex(kLightWalkKey);
-        lightCount = walkFromLight(lightSampler, light, path);
-        const bool weighted = strategies == BdptIntegrator::Strategies::All;
-        for (int i = 1; i < lightCount; ++i) joinToCamera(light, i, path, weights, weighted);
-        lightWalkRays = path.counters.total() - raysBefore;
+    const bool weighted = strategies == BdptIntegrator::Strategies::All;
+    for (int walk = 0; walk < lightWalks; ++walk) {
+        // The first walk draws the numbers it drew before there were more (its key alone).
+        Sampler lightSampler = sampler.forVertex(kLightWalkKey + std::uint64_t(walk));
+        Vertices& vertices = walk == 0 ? light : subpaths.moreLight;
+        const int count = walkFromLight(lightSampler, vertices, path);
+        for (int i = 1; i < count; ++i) joinToCamera(vertices, i, path, weights, weighted);
+        if (walk == 0) lightCount = count;
     }
+    lightWalkRays = path.counters.total() - raysBefore;
     if (strategies == BdptIntegrator::Strategies::LightTracingOnly) return;
 
     Vertices& eye = subpaths.eye;
@@ -377,7 +384,7 @@ void traceStrategies(const Ray& cameraRay, PathState& path, bool walkFromLights,
             const int longestLight = std::min(lightCount, ctx.maxDepth + 2 - t);
             const std::uint64_t shadowBefore = path.counters.shadow;
             for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, path, weights);
-            lightWalkRays += path.counters.shadow - shadowBefore;
+            joinRays += path.counters.shadow - shadowBefore;
         }
 
         const float uLobe = sampler.next1D();
@@ -402,8 +409,9 @@ void traceStrategies(const Ray& cameraRay, PathState& path, bool walkFromLights,
     popTo(path, pathStart);
     if (weights.pilot != nullptr) {
         // + 1 each: the ray leaving the light and the camera ray, which the counters leave out.
-        weights.pilot->lightWalkWork += double(lightWalkRays) + (walkFromLights ? 1.0 : 0.0);
-        weights.pilot->eyeWork += double(path.counters.total() - raysBefore - lightWalkRays) + 1.0;
+        weights.pilot->lightWalkWork += double(lightWalkRays) + double(lightWalks);
+        weights.pilot->joinWork += double(joinRays);
+        weights.pilot->eyeWork += double(path.counters.total() - raysBefore - lightWalkRays - joinRays) + 1.0;
     }
 }
 
@@ -450,11 +458,11 @@ LightWalkPilot runPilot(const RenderContext& ctx, BdptIntegrator::Strategies str
                 PilotSample sample;
                 if (path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, ctx.camera.eye()})) {
                     const Ray ray = ctx.camera.generateRay(float(x) + offset.x, float(y) + offset.y);
-                    traceStrategies(ray, path, true, strategies, {1.0, 1.0f, &sample, &layers[0]});
+                    traceStrategies(ray, path, 1, strategies, {1.0, 1.0f, 1.0f, &sample, &layers[0]});
                     // Light tracing's splats need no eye walk: more light walks, their splats'
                     // second moment averaged with the sample's own (their work is not the render's).
                     PilotSample more;
-                    const Weights moreWeights{1.0, 1.0f, &more, &layers[0]};
+                    const Weights moreWeights{1.0, 1.0f, 1.0f, &more, &layers[0]};
                     Vertices& light = threadSubpaths().light;
                     for (int m = 1; m <= kPilotExtraLightWalks; ++m) {
                         Sampler lightSampler = sampler.forVertex(kLightWalkKey + std::uint64_t(m));
@@ -542,11 +550,17 @@ void BdptIntegrator::chooseLightWalkFraction(const RenderContext& ctx) {
 }
 
 void BdptIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const {
-    // A fraction q < 1 of the camera samples walk from a light, chosen by their own dimension.
-    bool walk = lightWalks_;
-    if (walk && fraction_ < 1.0) walk = path.sampler->forVertex(kLightWalkChoiceKey).next1D() < fraction_;
-    traceStrategies(cameraRay, path, walk, strategies_,
-                    {lightWalks_ ? fraction_ : 0.0, static_cast<float>(1.0 / fraction_), nullptr, nullptr});
+    // floor(q) light walks, and one more for a fraction q - floor(q) of the camera samples, chosen
+    // by their own dimension.
+    int walks = 0;
+    if (lightWalks_) {
+        const double whole = std::floor(fraction_);
+        walks = static_cast<int>(whole);
+        if (fraction_ > whole && path.sampler->forVertex(kLightWalkChoiceKey).next1D() < fraction_ - whole) ++walks;
+    }
+    traceStrategies(cameraRay, path, walks, strategies_,
+                    {lightWalks_ ? fraction_ : 0.0, static_cast<float>(1.0 / fraction_),
+                     static_cast<float>(1.0 / std::min(fraction_, 1.0)), nullptr, nullptr});
 }
 
 }  // namespace lightpath
@@ -560,6 +574,6 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::underPointLights(lightpath::integratorR
     "bidirectional path tracing follows every bounce, from the eye and from the lights, but adds no ambient term (ka Ia)",
     [] { return std::unique_ptr<lightpath::Integrator>(std::make_unique<lightpath::BdptIntegrator>()); },
     lightpath::ShadowRays::Always, 5,
-    {{.name = "light-walk-fraction", .type = lightpath::ParameterType::Number, .range = {0.0, 1.0, true, false},
-      .doc = "the fraction of camera samples that also walk from a light (default: chosen per scene by a pilot; "
-             "--stats prints it)"}}), "E.*(D|G)L|E(D|G).*L|E.*(D|G)(D|G).*L"))
+    {{.name = "light-walk-fraction", .type = lightpath::ParameterType::Number, .range = {0.0, 16.0, true, false},
+      .doc = "light walks per camera sample: below 1 the fraction of camera samples that also walk from a light, "
+             "above 1 more walks, splatted only (default: chosen per scene by a pilot; --stats prints it)"}}), "E.*(D|G)L|E(D|G).*L|E.*(D|G)(D|G).*L"))

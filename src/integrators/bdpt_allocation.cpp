@@ -1,5 +1,8 @@
 #include "integrators/bdpt_allocation.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace lightpath {
 
 void PilotSample::add(PilotTerm term, double value, const PathDensities& path, int s, double shareSquares) {
@@ -18,21 +21,22 @@ void PilotSample::addUnweighted(double value) {
 }
 
 void LightWalkPilot::add(const PilotSample& sample) {
-    // A camera sample's own pixel gets X = eye + B join / q, B = 1 when it walks from a light
-    // (probability q): E_B[X] = eye + join whatever q, E_B[X^2] = eye^2 + 2 eye join + join^2 / q.
-    // Its splats, each on a pixel it reaches with a small probability, add their second moment
-    // E_B[(B S / q)^2] = S^2 / q to the image's variance (their means squared are a pixel's share
-    // of the image's pixels smaller).
+    // A camera sample's own pixel gets X = eye + B join / p, B = 1 when it has a first light walk
+    // (probability p = min(q, 1)): E_B[X] = eye + join whatever q, E_B[X^2] = eye^2 + 2 eye join +
+    // join^2 / p. Its splats, each on a pixel it reaches with a small probability, add their second
+    // moment to the image's variance (their means squared are a pixel's share of the image's pixels
+    // smaller): N walks, E[N] = q, each splatting S / q, give E[N] S^2 / q^2 = S^2 / q.
     for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
-        const double q = kLightWalkFractions[k];
+        const double q = kLightWalkFractions[k], p = std::min(q, 1.0);
         const double x = sample.eye[k] + sample.join[k];
         sumX_[k] += x;
         sumX2_[k] += x * x;
-        sumY_[k] += sample.eye[k] * sample.eye[k] + 2.0 * sample.eye[k] * sample.join[k] + sample.join[k] * sample.join[k] / q;
+        sumY_[k] += sample.eye[k] * sample.eye[k] + 2.0 * sample.eye[k] * sample.join[k] + sample.join[k] * sample.join[k] / p;
         splatMoment_[k] += sample.splatSquares[k] / q;
     }
     eyeWork_ += sample.eyeWork;
     lightWalkWork_ += sample.lightWalkWork;
+    joinWork_ += sample.joinWork;
     ++samples_;
     if (samples_ % static_cast<std::uint64_t>(samplesPerPixel_) != 0) return;
     // The pixel's variance per sample, E[Y] - E[X]^2, with E[X]^2 estimated without bias from
@@ -50,7 +54,7 @@ LightWalkPilot::Estimate LightWalkPilot::estimate(std::size_t fraction) const {
     const double samples = static_cast<double>(pixels_) * samplesPerPixel_;
     const double q = kLightWalkFractions[fraction];
     return {pixelVariance_[fraction] / static_cast<double>(pixels_) + splatMoment_[fraction] / samples,
-            (eyeWork_ + q * lightWalkWork_) / samples};
+            (eyeWork_ + q * lightWalkWork_ + std::min(q, 1.0) * joinWork_) / samples};
 }
 
 std::size_t LightWalkPilot::best() const {
@@ -59,7 +63,8 @@ std::size_t LightWalkPilot::best() const {
     for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
         const Estimate e = estimate(k);
         const double cost = e.variance * e.work;
-        if (k == 0 || cost < bestCost) best = k, bestCost = cost;
+        const bool nearerOne = std::fabs(std::log(kLightWalkFractions[k])) < std::fabs(std::log(kLightWalkFractions[best]));
+        if (k == 0 || cost < bestCost || (cost == bestCost && nearerOne)) best = k, bestCost = cost;
     }
     return best;
 }

@@ -1,5 +1,6 @@
 #include "integrators/bdpt_vertex.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "integrators/integrator.h"
@@ -160,9 +161,13 @@ bool available(const PathDensities& p, int s, double lightWalks) {
     return p.connectible[s - 1] && p.connectible[s];
 }
 
-// The factor x0's choice contributes to strategy s's density, times its samples per camera sample.
+// The factor x0's choice contributes to strategy s's density, times its samples per camera sample:
+// light tracing (t = 1) takes every light walk, a join (s, t >= 2) the first walk only, which a
+// camera sample has with probability min(lightWalks, 1) (bdpt_allocation.h says why).
 double originFactor(const PathDensities& p, int s, double lightWalks) {
-    return s == 0 ? 1.0 : s == 1 ? p.originByNextEvent : p.originByEmission * lightWalks;
+    if (s == 0) return 1.0;
+    if (s == 1) return p.originByNextEvent;
+    return p.originByEmission * (s == p.n - 1 ? lightWalks : std::min(lightWalks, 1.0));
 }
 
 }  // namespace

@@ -148,8 +148,9 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, 
 
 // The power-heuristic weight of strategy s for `path`: (n_s p_s)^2 / sum over the strategies that
 // can make it of (n_k p_k)^2 (Veach 1997, eq. 9.13, with n_k samples of strategy k). The eye's
-// strategies (s = 0, 1) take one sample per camera sample; the light walk's (s >= 2) take
-// `lightWalks`, the light walks traced per camera sample on average (0: none, their strategies out).
+// strategies (s = 0, 1) take one sample per camera sample; light tracing (t = 1) takes `lightWalks`,
+// the light walks traced per camera sample on average (0: none, the light walk's strategies out),
+// and the joins (s, t >= 2), made from the first light walk only, min(lightWalks, 1).
 float misWeight(const PathDensities& path, int s, double lightWalks);
 
 }  // namespace lightpath
