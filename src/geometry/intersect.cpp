@@ -7,6 +7,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "util/hot_path.h"
+
 namespace lightpath {
 namespace {
 
@@ -88,6 +90,7 @@ float intersectPlane(const Ray& ray, const Plane& plane, float tMin) {
     return (tf > tMin && tf < ray.tMax) ? tf : kNoHit;
 }
 
+LIGHTPATH_HOT_PATH
 WatertightRay::WatertightRay(const Vec3& direction) {
     // Shear and scale so the ray becomes the +z axis through the origin; then the three edge
     // functions are 2D cross products evaluated identically for a shared edge.

@@ -23,7 +23,7 @@ REQUIRED = [
     "PinholeCamera::generateRay", "SceneGeometry::intersect", "SceneGeometry::occluded",
     "makeShadingPoint", "addLocalIllumination", "addDirectLight", "AreaLightSource::sample",
     "PointLightSource::sample", "PhongMaterial::eval", "WhittedIntegrator::trace",
-    "PathIntegrator::traceCameraRay", "spawnShadowRay",
+    "PathIntegrator::traceCameraRay", "spawnShadowRay", "WatertightRay::WatertightRay",
 ]
 
 
