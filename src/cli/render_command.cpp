@@ -87,7 +87,7 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
 }
 
 void printBdptStats(const BdptStats& b) {
-    std::printf("bdpt          light walks for %.4g of the camera samples: %s\n", b.lightWalkFraction, b.reason.c_str());
+    std::printf("bdpt          light walks per camera sample: %.4g (%s)\n", b.lightWalkFraction, b.reason.c_str());
     if (b.candidates.empty()) return;
     std::printf("              pilot of %llu samples in %.3f s; per sample, variance x work (rays):\n",
                 static_cast<unsigned long long>(b.pilotSamples), b.seconds);
