@@ -563,7 +563,8 @@ TEST_CASE("bdpt: light tracing alone lights a Lambertian plane under a point lig
 
 // A mirror wall x = 1 beside a diffuse floor: light reaching the floor by the mirror (E D S L) is
 // the light's mirror image at (2 - x, y, z), kr times as bright, under the inverse-square law.
-TEST_CASE("bdpt: a mirror's caustic is the mirror image of the point light, scaled by kr") {
+// lightWalkFraction 0 leaves the number of light walks to the pilot.
+void checkMirrorCaustic(int spp, std::uint64_t seed, double lightWalkFraction) {
     const glm::dvec3 light{0.3, 1.2, 0.1}, image{2.0 - light.x, light.y, light.z};
     const double kr = 0.8;
     Scene scene = floorUnderLight(light, {0, 0, 1});
@@ -574,7 +575,7 @@ TEST_CASE("bdpt: a mirror's caustic is the mirror image of the point light, scal
     mirror.kr = Rgb{float(kr)};
     test::addPlane(scene, "mirror", test::addMaterial(scene, mirror), {1, 0, 0}, {-1, 0, 0});
     const std::vector<lpe::NamedExpression> set{{"caustic", "E(D|G)S+L"}};
-    const Film film = render(scene, set, "bdpt", 1024, 5, 21);
+    const Film film = render(scene, set, "bdpt", spp, 5, seed, 0, lightWalkFraction);
     checkAgainst(film, 1, PinholeCamera(scene.camera), [&](const glm::dvec3& p) {
         const glm::dvec3 toImage = image - p;
         const double d = glm::length(toImage);
@@ -582,26 +583,15 @@ TEST_CASE("bdpt: a mirror's caustic is the mirror image of the point light, scal
     });
 }
 
+TEST_CASE("bdpt: a mirror's caustic is the mirror image of the point light, scaled by kr") {
+    checkMirrorCaustic(1024, 21, 0.0);
+}
+
 // More light walks than camera samples: light tracing's splats count q in the weights and are
 // divided by q, the joins keep the first walk's, so the caustic (splats alone) and the furnace
 // (every strategy) keep their closed forms. 2.5: two walks, and a third for half the samples.
 TEST_CASE("bdpt: with 2.5 light walks per camera sample, the mirror's caustic is the light's mirror image") {
-    const glm::dvec3 light{0.3, 1.2, 0.1}, image{2.0 - light.x, light.y, light.z};
-    const double kr = 0.8;
-    Scene scene = floorUnderLight(light, {0, 0, 1});
-    scene.camera = test::centredCamera({0.2f, 1.0f, 0.1f}, {0.2f, 0, 0.1f}, {0, 0, -1}, 31);
-    scene.camera.verticalFovDegrees = 50.0f;
-    PhongMaterial mirror;
-    mirror.name = "mirror";
-    mirror.kr = Rgb{float(kr)};
-    test::addPlane(scene, "mirror", test::addMaterial(scene, mirror), {1, 0, 0}, {-1, 0, 0});
-    const std::vector<lpe::NamedExpression> set{{"caustic", "E(D|G)S+L"}};
-    const Film film = render(scene, set, "bdpt", 512, 5, 23, 0, 2.5);
-    checkAgainst(film, 1, PinholeCamera(scene.camera), [&](const glm::dvec3& p) {
-        const glm::dvec3 toImage = image - p;
-        const double d = glm::length(toImage);
-        return kr * 0.6 * 3.0 * (toImage.y / d) / (d * d);
-    });
+    checkMirrorCaustic(512, 23, 2.5);
 }
 
 TEST_CASE("bdpt: with 2 light walks per camera sample, the point-light furnace keeps its closed forms") {
