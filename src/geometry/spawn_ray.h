@@ -19,6 +19,7 @@ public:
     // A ray (origin, tMin, ignored primitive; no direction) leaving on the side `direction` points to.
     Ray leave(const Vec3& direction);
     const SurfaceHit& hit() const { return hit_; }
+    const NumericsOptions& numerics() const { return numerics_; }
 
 private:
     const SurfaceHit& hit_;
@@ -30,12 +31,16 @@ private:
 // A ray leaving `hit` in unit `direction`; it leaves on the side of the surface `direction` points to.
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics);
 
-// The segment from `hit` towards a point light at `target`, stopping just short of it so a light
-// placed on a surface does not shadow itself.
-Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const NumericsOptions& numerics);
+// The segment from `hit` towards `target`, stopping just short of it so a light placed on a
+// surface does not shadow itself. When `target` lies on a surface (an area light's sample, a bdpt
+// vertex), `targetNormal` is that surface's unit normal and the segment also ends off that surface
+// by its rounding error; zero (a point light, the camera) means no surface.
+Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const Vec3& targetNormal,
+                   const NumericsOptions& numerics);
 // The same from origins shared by several shadow rays of one hit.
-Ray spawnShadowRay(RayOrigins& origins, const Vec3& target);
-// The segment from a point inside a medium, on no surface (so with no offset), towards `target`.
-Ray spawnShadowRay(const Vec3& origin, const Vec3& target);
+Ray spawnShadowRay(RayOrigins& origins, const Vec3& target, const Vec3& targetNormal);
+// The segment from a point inside a medium, on no surface (so with no offset at its start).
+Ray spawnShadowRay(const Vec3& origin, const Vec3& target, const Vec3& targetNormal,
+                   const NumericsOptions& numerics);
 
 }  // namespace lightpath

@@ -129,12 +129,13 @@ PathEvent eventOfLight(const BdptVertex& origin) {
 // A shadow ray's answer, cast at most once per join and only when a contribution needs it.
 class Visibility {
 public:
-    Visibility(const SurfaceHit& from, const Vec3& to) : from_(from), to_(to) {}
+    // `toNormal`: the unit normal of the surface `to` lies on; zero for the camera and a point light.
+    Visibility(const SurfaceHit& from, const Vec3& to, const Vec3& toNormal) : from_(from), to_(to), toNormal_(toNormal) {}
     bool operator()(PathState& path) {
         if (!known_) {
             ++path.counters.shadow;
             const RenderContext& ctx = path.context;
-            visible_ = !ctx.geometry.occluded(spawnShadowRay(from_, to_, ctx.geometry.numerics()));
+            visible_ = !ctx.geometry.occluded(spawnShadowRay(from_, to_, toNormal_, ctx.geometry.numerics()));
             known_ = true;
         }
         return visible_;
@@ -142,7 +143,7 @@ public:
 
 private:
     const SurfaceHit& from_;
-    Vec3 to_;
+    Vec3 to_, toNormal_;
     bool known_ = false, visible_ = false;
 };
 
@@ -190,7 +191,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& 
     const float cameraTerm = importance * glm::dot(-w, ctx.camera.forward()) / distance2;
     const PathEvent lightEvent = eventOfLight(light[0]);
     const BdptVertex eye[1] = {cameraVertex(ctx.camera.eye())};
-    Visibility visible(sp.hit, ctx.camera.eye());
+    Visibility visible(sp.hit, ctx.camera.eye(), Vec3{0.0f});
     const std::size_t before = path.size();
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
         if (!y.scattersSmoothly(lobe)) continue;
@@ -243,7 +244,7 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
     BdptVertex y[1] = {lightVertex(light, sample.point, sample.normal, pdfPosition, pdfEmission)};
     y[0].pdfFwd = choice * pdfPosition;
     const PathEvent lightEvent = eventOfLight(y[0]);
-    Visibility visible(sp.hit, sample.point);
+    Visibility visible(sp.hit, sample.point, sample.normal);
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
         if (!z.scattersSmoothly(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
         const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
@@ -275,7 +276,7 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     if (!(distance2 > 0.0f)) return;
     const Vec3 w = d / std::sqrt(distance2);  // from z to y
     const PathEvent lightEvent = eventOfLight(light[0]);
-    Visibility visible(ez.hit, y.point);
+    Visibility visible(ez.hit, y.point, y.normal);
     const std::size_t before = path.size();
     for (int eyeLobe = 0; eyeLobe < int(ez.bsdf.lobes().size()); ++eyeLobe) {
         if (!z.scattersSmoothly(eyeLobe)) continue;

@@ -170,8 +170,8 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     // segment by segment, and black means blocked.
     const bool throughInterfaces = ctx.scene.interfaces && ctx.shadows;
     const Rgb transmittance =
-        throughInterfaces ? shadowTransmittance(spawnShadowRay(origins, sample.point), sample.point,
-                                                ctx.scene.indexOf(medium), ctx)
+        throughInterfaces ? shadowTransmittance(spawnShadowRay(origins, sample.point, sample.normal), sample.point,
+                                                sample.normal, ctx.scene.indexOf(medium), ctx)
         : medium != nullptr ? medium->transmittance(Ray{p.hit.point, sample.wi}, 0.0f, sample.distance)
                             : Rgb{1.0f};
     const Rgb seen = incident * transmittance;  // x * 1 is x: no cost to bit-identity without media
@@ -205,7 +205,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     if (ctx.shadows) {
         ++counters.shadow;
         if (medium != nullptr) ++counters.mediumShadow;
-        const Ray shadowRay = spawnShadowRay(origins, sample.point);
+        const Ray shadowRay = spawnShadowRay(origins, sample.point, sample.normal);
         if (throughInterfaces ? isBlack(transmittance) : ctx.geometry.occluded(shadowRay)) {
             if (path.explaining()) [[unlikely]]
                 rejectBlocked(lobes, shadowRay, lightEvent, sample.distance, path);
@@ -293,11 +293,11 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
     const float weight = weighting == DirectLightWeighting::MultipleImportance && lightPdf > 0.0f
                              ? powerHeuristic(lightPdf, phase.pdf(m.wo, sample.wi))
                              : 1.0f;
-    const Ray shadowRay = spawnShadowRay(m.point, sample.point);
+    const Ray shadowRay = spawnShadowRay(m.point, sample.point, sample.normal, ctx.geometry.numerics());
     if (ctx.shadows) {
         ++counters.shadow;
         ++counters.mediumShadow;
-        const bool blocked = ctx.scene.interfaces ? isBlack(shadowTransmittance(shadowRay, sample.point, m.index, ctx))
+        const bool blocked = ctx.scene.interfaces ? isBlack(shadowTransmittance(shadowRay, sample.point, sample.normal, m.index, ctx))
                                                   : ctx.geometry.occluded(shadowRay);
         if (blocked) {
             if (path.explaining()) path.reject(scatter, lightEvent, "the shadow ray from the medium point is blocked");
@@ -306,7 +306,7 @@ void addMediumLightSample(const MediumPoint& m, const Rgb& throughput, const Lig
     }
     // Through interfaces, the media beyond them attenuate too (pbrt-v4's SampleLd crosses them).
     const Rgb transmittance = ctx.scene.interfaces && ctx.shadows
-                                  ? shadowTransmittance(shadowRay, sample.point, m.index, ctx)
+                                  ? shadowTransmittance(shadowRay, sample.point, sample.normal, m.index, ctx)
                                   : m.medium.transmittance(shadowRay, 0.0f, sample.distance);
     const Rgb incident = sample.weight / choiceProbability;
     const Rgb value = throughput * phaseValue * incident * transmittance * weight;
@@ -420,7 +420,8 @@ BeyondInterfaces crossInterfaces(std::optional<SurfaceHit> hit, Ray ray, std::ui
     return {hit, ray, mediumIndex, throughput};
 }
 
-Rgb shadowTransmittance(Ray ray, const Vec3& target, std::uint32_t mediumIndex, const RenderContext& ctx) {
+Rgb shadowTransmittance(Ray ray, const Vec3& target, const Vec3& targetNormal, std::uint32_t mediumIndex,
+                        const RenderContext& ctx) {
     Rgb transmittance{1.0f};
     Vec3 from = ray.origin;
     for (int crossing = 0; crossing <= kMaxInterfaceCrossings; ++crossing) {
@@ -434,7 +435,7 @@ Rgb shadowTransmittance(Ray ray, const Vec3& target, std::uint32_t mediumIndex, 
         const bool entering = glm::dot(hit->normal, ray.direction) < 0.0f;
         mediumIndex = ctx.scene.mediumBeyond(hit->object, entering, mediumIndex);
         from = hit->point;
-        ray = spawnShadowRay(*hit, target, ctx.geometry.numerics());
+        ray = spawnShadowRay(*hit, target, targetNormal, ctx.geometry.numerics());
     }
     return Rgb{0.0f};
 }

@@ -82,9 +82,11 @@ struct BeyondInterfaces {
 BeyondInterfaces crossInterfaces(std::optional<SurfaceHit> hit, Ray ray, std::uint32_t mediumIndex,
                                  Rgb throughput, PathState& path);
 
-// A shadow ray's transmittance from its origin (in medium `mediumIndex`) to `target`, through
-// interfaces and the media between them; black when a scattering surface blocks it.
-Rgb shadowTransmittance(Ray ray, const Vec3& target, std::uint32_t mediumIndex, const RenderContext& ctx);
+// A shadow ray's transmittance from its origin (in medium `mediumIndex`) to `target` (on a surface
+// of unit normal `targetNormal`, or zero), through interfaces and the media between them; black
+// when a scattering surface blocks it.
+Rgb shadowTransmittance(Ray ray, const Vec3& target, const Vec3& targetNormal, std::uint32_t mediumIndex,
+                        const RenderContext& ctx);
 
 // The medium the camera is in: the interior of the closed object around the eye, else the world's.
 // Found by the first closed boundary a ray from the eye meets (media do not nest): leaving it

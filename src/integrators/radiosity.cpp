@@ -551,7 +551,7 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                     const float cosTheta = glm::dot(normal, s.wi);
                     if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
                         ++cast;
-                        if (!context.geometry.occluded(spawnShadowRay(from, s.point, context.geometry.numerics()))) {
+                        if (!context.geometry.occluded(spawnShadowRay(from, s.point, s.normal, context.geometry.numerics()))) {
                             const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
                             sum += (weight * cosTheta / kPi) * s.weight;
                         }

@@ -3,6 +3,7 @@
 // irradiance of a uniformly emitting sphere at any radius. Also issue #30's light-set defects.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -245,6 +246,48 @@ TEST_CASE("area light: one light is spheres or triangles, never both (#30)") {
     CHECK_THROWS_AS(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.triangleId(0), geometry.shapeId(0)}),
                     std::invalid_argument);
     CHECK_NOTHROW(AreaLightSource(event, Rgb{1.0f}, geometry, {geometry.shapeId(0)}));
+}
+
+}  // namespace lightpath
+
+namespace lightpath {
+
+// Inside a closed sphere that emits Le and reflects kd, every wall point sees emission over its
+// whole hemisphere: E(D|G)L is kd Le. Sampled by area, by the cone or by the cosine, each sample
+// is exactly that (cos cos / d^2 is 1/4r^2 everywhere on a sphere), so any shadow ray the light's
+// own surface wrongly blocks shows as a pixel kd Le / spp low: no noise hides it. Rounding (the
+// path tracer's MIS weights along short chords) moves a pixel by far less, under a quarter of that.
+TEST_CASE("emitters: inside a closed emissive sphere every pixel's direct light is kd Le, no sample lost to the light's own surface") {
+    const Scene scene = loadSceneFromText(R"(
+[camera]
+eye = [0.1, -0.2, 0.05]
+look_at = [0, 0, -1]
+up = [0, 1, 0]
+fov = 90
+resolution = [24, 24]
+[materials.wall]
+kd = 0.5
+emission = 1
+[[spheres]]
+name = "furnace"
+material = "wall"
+center = [0, 0, 0]
+radius = 1
+)", "furnace.toml");
+    const AovSet aovs(classesSet());
+    constexpr int kSpp = 128;
+    constexpr float kOneSampleLost = 0.5f / kSpp;
+    for (const std::string integrator : {"raycast", "path"}) {
+        CAPTURE(integrator);
+        const Film film = renderWith(scene, aovs, integrator, kSpp).film;
+        const std::size_t layer = static_cast<std::size_t>(
+            std::find(film.layerNames().begin(), film.layerNames().end(), "raycast") - film.layerNames().begin());
+        REQUIRE(layer < film.layerCount());
+        int off = 0;
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x) off += !(std::fabs(film.at(layer, x, y).g - 0.5f) < 0.25f * kOneSampleLost);
+        CHECK(off == 0);
+    }
 }
 
 }  // namespace lightpath

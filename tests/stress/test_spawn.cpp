@@ -72,12 +72,70 @@ TEST_CASE("shadow rays from shared origins are the rays spawned one by one, unde
             for (int light = 0; light < 4; ++light) {  // lights on both sides of the surface, some twice
                 const Vec3 target = hit->point + 3.0f * Vec3{u(rng), u(rng), u(rng)};
                 CAPTURE(i);
-                CHECK(sameRay(spawnShadowRay(origins, target), spawnShadowRay(*hit, target, numerics)));
-                CHECK(sameRay(spawnShadowRay(origins, target), spawnShadowRay(*hit, target, numerics)));
+                CHECK(sameRay(spawnShadowRay(origins, target, Vec3{0.0f}), spawnShadowRay(*hit, target, Vec3{0.0f}, numerics)));
+                CHECK(sameRay(spawnShadowRay(origins, target, Vec3{0.0f}), spawnShadowRay(*hit, target, Vec3{0.0f}, numerics)));
                 ++compared;
             }
         }
         CHECK(compared > 1000);
+    }
+}
+
+// Shadow rays between two points seen from inside a closed surface, the second point ending the
+// segment as an area light's sample does: {blocked with the target's normal, blocked without it}.
+// Short chords graze the surface, so an error of an ulp across it is many along the ray.
+struct ChordCount {
+    int blocked = 0, blockedWithoutNormal = 0, cast = 0;
+};
+ChordCount castChords(const SceneGeometry& geometry, const Vec3& inside) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    ChordCount count;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 d = glm::normalize(Vec3{u(rng), u(rng), u(rng)});
+        const float spread = std::pow(10.0f, -4.0f + 4.0f * (0.5f + 0.5f * u(rng)));  // chords 1e-4 .. 1 long
+        const Vec3 e = glm::normalize(d + spread * Vec3{u(rng), u(rng), u(rng)});
+        const auto from = geometry.intersect(Ray{inside, d});
+        const auto to = geometry.intersect(Ray{inside, e});
+        if (!from || !to || from->point == to->point) continue;
+        ++count.cast;
+        count.blocked += geometry.occluded(spawnShadowRay(*from, to->point, to->normal, geometry.numerics()));
+        count.blockedWithoutNormal += geometry.occluded(spawnShadowRay(*from, to->point, Vec3{0.0f}, geometry.numerics()));
+    }
+    return count;
+}
+
+TEST_CASE("a shadow ray ending on a surface is not blocked by that surface, along grazing chords of a closed sphere and box") {
+    const Vec3 inside{0.1f, -0.2f, 0.05f};
+    std::vector<Triangle> box;  // the cube [-1, 1]^3, two triangles a face
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const float side : {-1.0f, 1.0f}) {
+            const auto corner = [&](float s, float t) {
+                Vec3 p{0.0f};
+                p[axis] = side;
+                p[(axis + 1) % 3] = s;
+                p[(axis + 2) % 3] = t;
+                return p;
+            };
+            box.push_back({corner(-1, -1), corner(1, -1), corner(1, 1), 0});
+            box.push_back({corner(-1, -1), corner(1, 1), corner(-1, 1), 0});
+        }
+    }
+    for (const RayOffset offset : {RayOffset::Robust, RayOffset::WachterBinder}) {
+        NumericsOptions numerics;
+        numerics.offset = offset;
+        CAPTURE(int(offset));
+        const ChordCount sphere = castChords(SceneGeometry({Sphere{{0.0f, 0.0f, 0.0f}, 1.0f, 0}}, {}, {}, numerics), inside);
+        CHECK(sphere.cast > 19000);
+        CHECK(sphere.blocked == 0);
+        // The control: a point target is only shortened by a fixed fraction, which these chords defeat.
+        CHECK(sphere.blockedWithoutNormal > 0);
+        const ChordCount cube = castChords(SceneGeometry({}, {}, box, numerics), inside);
+        CHECK(cube.cast > 19000);
+        CHECK(cube.blocked == 0);
+        CHECK(cube.blockedWithoutNormal > 0);
+        MESSAGE("blocked without the target's normal: sphere ", sphere.blockedWithoutNormal, ", box ",
+                cube.blockedWithoutNormal, " of ", cube.cast);
     }
 }
 
@@ -97,7 +155,7 @@ TEST_CASE("the robust offset puts the origin on the leaving side of the exact pl
             const auto hit = geometry.intersect(camera);
             REQUIRE(hit);
             const Vec3 light = hit->point + scale * glm::normalize(-camera.direction + Vec3{u(rng), 0.0f, u(rng)});
-            const Ray shadow = spawnShadowRay(*hit, light, geometry.numerics());
+            const Ray shadow = spawnShadowRay(*hit, light, Vec3{0.0f}, geometry.numerics());
             const long double side = test::planeDistance(tri, shadow.origin) * test::planeDistance(tri, light);
             wrongSide += !(side > 0);
             selfHits += geometry.occluded(shadow);
@@ -124,7 +182,7 @@ TEST_CASE("spawned rays stay finite from a zero-length or NaN normal and towards
         const Ray ray = spawnRay(hit, {0.0f, 1.0f, 0.0f}, NumericsOptions{});
         CHECK(finite(ray.origin));
         CHECK(ray.origin.y > hit.point.y);
-        const Ray shadow = spawnShadowRay(hit, hit.point, NumericsOptions{});
+        const Ray shadow = spawnShadowRay(hit, hit.point, Vec3{0.0f}, NumericsOptions{});
         CHECK(finite(shadow.origin));
         CHECK_FALSE(std::isnan(shadow.tMax));
     }
@@ -134,7 +192,7 @@ TEST_CASE("shadow segments stop short of the light") {
     SurfaceHit hit;
     hit.point = {0.0f, 0.0f, 0.0f};
     hit.normal = {0.0f, 1.0f, 0.0f};
-    const Ray shadow = spawnShadowRay(hit, {0.0f, 4.0f, 0.0f}, NumericsOptions{});
+    const Ray shadow = spawnShadowRay(hit, {0.0f, 4.0f, 0.0f}, Vec3{0.0f}, NumericsOptions{});
     CHECK(shadow.tMax < 4.0f);
     CHECK(shadow.tMax > 3.999f);
 }
