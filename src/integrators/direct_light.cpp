@@ -219,7 +219,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     }
     for (int l = 0; l < lobes.count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
-        path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l]);
+        path.addAccepted(value[l], accepted[l]);
     }
 }
 
@@ -333,7 +333,7 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     const Rgb ka = point.bsdf.ambientReflectance();
     const Rgb value = throughput * ka * ctx.scene.ambient;
     if (!path.explaining()) {
-        path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted);
+        path.addAccepted(value, accepted);
         return;
     }
     const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};

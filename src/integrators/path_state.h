@@ -74,6 +74,12 @@ public:
         }
         emitExplained(surface, light, value, accepted, factors);
     }
+    // emitAccepted() where the caller knows `explain` is not logging: the surface and light
+    // events are not needed, so not even built (about 15 instructions a term; docs/performance.md,
+    // Shading share, fourth pass).
+    void addAccepted(const Rgb& value, lpe::OutputMask accepted) {
+        if (finite(value)) sink_.add(value, accepted, events_);
+    }
     // `explain` only: the term through `surface` from `light` added nothing, for `reason`.
     bool explaining() const { return sink_.explaining(); }
     void reject(const PathEvent& surface, const PathEvent& light, std::string reason);
