@@ -31,10 +31,13 @@ private:
 // A ray leaving `hit` in unit `direction`; it leaves on the side of the surface `direction` points to.
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics);
 
+// The `targetNormal` of a target on no surface: a point light, the camera.
+inline const Vec3 kNoSurfaceNormal{0.0f};
+
 // The segment from `hit` towards `target`, stopping just short of it so a light placed on a
 // surface does not shadow itself. When `target` lies on a surface (an area light's sample, a bdpt
 // vertex), `targetNormal` is that surface's unit normal and the segment also ends off that surface
-// by its rounding error; zero (a point light, the camera) means no surface.
+// by its rounding error; kNoSurfaceNormal means no surface.
 Ray spawnShadowRay(const SurfaceHit& hit, const Vec3& target, const Vec3& targetNormal,
                    const NumericsOptions& numerics);
 // The same from origins shared by several shadow rays of one hit.

@@ -191,7 +191,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& 
     const float cameraTerm = importance * glm::dot(-w, ctx.camera.forward()) / distance2;
     const PathEvent lightEvent = eventOfLight(light[0]);
     const BdptVertex eye[1] = {cameraVertex(ctx.camera.eye())};
-    Visibility visible(sp.hit, ctx.camera.eye(), Vec3{0.0f});
+    Visibility visible(sp.hit, ctx.camera.eye(), kNoSurfaceNormal);
     const std::size_t before = path.size();
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
         if (!y.scattersSmoothly(lobe)) continue;

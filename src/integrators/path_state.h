@@ -66,13 +66,12 @@ public:
     // instructions; docs/performance.md, Shading). `explain` takes the call below.
     void emitAccepted(const PathEvent& surface, const PathEvent& light, const Rgb& value, lpe::OutputMask accepted,
                       std::span<const TermFactor> factors = {}) {
-        if (!finite(value)) return;
         // Only `explain`'s log reads the finished path: the events are recorded for it alone.
         if (!sink_.explaining()) [[likely]] {
-            sink_.add(value, accepted, events_);
+            addAccepted(value, accepted);
             return;
         }
-        emitExplained(surface, light, value, accepted, factors);
+        if (finite(value)) emitExplained(surface, light, value, accepted, factors);
     }
     // emitAccepted() where the caller knows `explain` is not logging: the surface and light
     // events are not needed, so not even built (about 15 instructions a term; docs/performance.md,

@@ -76,7 +76,7 @@ double hostileQueries(const Scene& scene, const NumericsOptions& numerics) {
         degenerate.normal = Vec3{0.0f};
         for (const SurfaceHit& from : {*hit, degenerate}) {
             bad += !finite(spawnRay(from, {0.0f, 1.0f, 0.0f}, numerics).origin);
-            const Ray shadow = spawnShadowRay(from, from.point, Vec3{0.0f}, numerics);  // a light on the point itself
+            const Ray shadow = spawnShadowRay(from, from.point, kNoSurfaceNormal, numerics);  // a light on the point itself
             bad += !finite(shadow.origin) || std::isnan(shadow.tMax);
         }
     }

@@ -80,7 +80,7 @@ std::vector<bool> litFlatMask(const Scene& scene) {
             const Vec3 toLight = scene.lights[0]->position() - hit->point;
             if (glm::dot(toLight, hit->normal) * glm::dot(-camera.generateRay(x + 0.5f, y + 0.5f).direction, hit->normal) <= 0.0f)
                 continue;  // the light is on the other side of the wall
-            if (geometry.occluded(spawnShadowRay(*hit, scene.lights[0]->position(), Vec3{0.0f}, geometry.numerics()))) continue;
+            if (geometry.occluded(spawnShadowRay(*hit, scene.lights[0]->position(), kNoSurfaceNormal, geometry.numerics()))) continue;
             object[static_cast<std::size_t>(y * w + x)] = static_cast<int>(hit->object);
         }
     }

@@ -90,7 +90,7 @@ void acneRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
                                                            : 30.0 + 60.0 * stress::uniform(rng)) * std::numbers::pi / 180.0;
                     const Vec3 light = hit->point + static_cast<float>(scale * (0.5 + 1.5 * stress::uniform(rng))) *
                                                         aboveFloor(floor, elevation, rng);
-                    const bool shadowed = geometry.occluded(spawnShadowRay(*hit, light, Vec3{0.0f}, geometry.numerics()));
+                    const bool shadowed = geometry.occluded(spawnShadowRay(*hit, light, kNoSurfaceNormal, geometry.numerics()));
                     (grazingLight ? grazing : high) += shadowed;
                     ++shadowRays;
                 }
@@ -141,7 +141,7 @@ void contactRow(const StressConfig& config, std::vector<ScoreRow>& rows) {
                     continue;
                 }
                 const Vec3 light = hit->point + scale * toLight;
-                caseLeaks += !scene.occluded(spawnShadowRay(*hit, light, Vec3{0.0f}, scene.numerics()));
+                caseLeaks += !scene.occluded(spawnShadowRay(*hit, light, kNoSurfaceNormal, scene.numerics()));
                 ++shadowRays;
             }
             leaks += caseLeaks;
