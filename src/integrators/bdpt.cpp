@@ -81,9 +81,13 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
             // Light sampling from x1 would have picked x0 by another density than emission did.
             if (!light.samplesByArea(hit->point))
                 v[0].pdfPosition = lightSamplingAreaDensity(light, hit->point, v[0].point, v[0].normal);
+            // An area light's ray left from an offset origin: x1's density from x0 -> x1, as the
+            // other strategies' views compute it (linkThrough says why).
+            if (!light.isDelta()) pdf = light.pdfEmissionDirection(v[0].normal, glm::normalize(hit->point - v[0].point));
         }
         BdptVertex& here = v[count];
         here = surfaceVertex(*hit, ray, beta, v[count - 1], pdf, delta, ctx, TransportMode::Importance);
+        if (count >= 2) linkThrough(v[count - 2], v[count - 1], here);
         ++count;
         if (count > ctx.maxDepth) break;  // a vertex deeper could not be joined within maxDepth
         const float uLobe = sampler.next1D();
@@ -92,7 +96,6 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
         if (!step) break;
         here.lobe = step->lobe;
         here.delta = step->delta;
-        v[count - 2].pdfRev = reverseDensity(*step, here, v[count - 2]);
         beta *= step->weight;
         if (!survivesRussianRoulette(beta, count - 1, sampler)) break;
         ++(here.surface->bsdf.lobe(step->lobe).transmits() ? path.counters.refraction : path.counters.reflection);
@@ -352,6 +355,7 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
         }
         BdptVertex& z = eye[t - 1];
         z = surfaceVertex(*hit, ray, beta, eye[t - 2], pdf, delta, ctx, TransportMode::Radiance);
+        if (t >= 3) linkThrough(eye[t - 3], eye[t - 2], z);
 
         // s = 0: an emitter found by the eye's walk.
         if (const Light* emitter = ctx.lights.lightOfObject(hit->object)) {
@@ -399,7 +403,6 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
         }
         z.lobe = step->lobe;
         z.delta = step->delta;
-        if (t >= 3) eye[t - 2].pdfRev = reverseDensity(*step, z, eye[t - 2]);
         beta *= step->weight;
         if (!survivesRussianRoulette(beta, t - 1, sampler)) break;
         ++(transmitted ? path.counters.refraction : path.counters.reflection);

@@ -13,11 +13,10 @@ ScatterStep prescribedStep(const ShadingPoint& vertex, int lobe, const Vec3& wi)
     step.lobe = lobe;
     step.delta = vertex.bsdf.lobe(lobe).delta();
     if (step.delta) {
-        step.pdf = step.pdfRev = 1.0f;
+        step.pdf = 1.0f;
         return step;
     }
     step.pdf = vertex.bsdf.pdf(lobe, vertex.wo, wi);
-    step.pdfRev = vertex.bsdf.pdf(lobe, wi, vertex.wo);
     if (step.pdf > 0.0f) step.weight = vertex.bsdf.eval(lobe, vertex.wo, wi) / step.pdf;
     return step;
 }
@@ -31,9 +30,8 @@ std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, 
     step.weight = sample->weight;
     step.delta = vertex.bsdf.lobe(sample->lobe).delta();
     // A delta lobe's Dirac is common to every strategy that can make the path (those that do not
-    // join at this vertex), so both its densities count as 1 (pbrt-v4's remap0 of the same).
+    // join at this vertex), so its densities count as 1 (pbrt-v4's remap0 of the same).
     step.pdf = step.delta ? 1.0f : sample->pdf;
-    step.pdfRev = step.delta ? 1.0f : vertex.bsdf.pdf(sample->lobe, sample->wi, vertex.wo);
     return step;
 }
 
@@ -89,15 +87,22 @@ void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous
     z.pdfEmission = emitter.samplesByArea(previous.point) ? z.pdfPosition : emitter.pdfEmissionPosition();
 }
 
-float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous) {
-    return step.delta ? 1.0f : toAreaDensity(step.pdfRev, vertex, previous);
-}
-
 namespace {
 
 Vec3 directionTo(const BdptVertex& from, const BdptVertex& to) { return glm::normalize(to.point - from.point); }
 
 }  // namespace
+
+void linkThrough(BdptVertex& before, const BdptVertex& at, BdptVertex& here) {
+    if (at.delta) {
+        here.pdfFwd = before.pdfRev = 1.0f;  // the Dirac's, as sampledStep counts it
+        return;
+    }
+    const Bsdf& bsdf = at.surface->bsdf;
+    const Vec3 back = directionTo(at, before), ahead = directionTo(at, here);
+    here.pdfFwd = toAreaDensity(bsdf.pdf(at.lobe, back, ahead), at, here);
+    before.pdfRev = toAreaDensity(bsdf.pdf(at.lobe, ahead, back), at, before);
+}
 
 PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, std::span<const BdptVertex> eye,
                               int eyeLobe, const RenderContext& context) {
@@ -125,14 +130,17 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, 
         if (s == 1) {
             p.fromLight[s] = toAreaDensity(y.light->pdfEmissionDirection(y.normal, yz), y, z);
         } else {
-            p.fromLight[s] = toAreaDensity(y.surface->bsdf.pdf(lightLobe, y.surface->wo, yz), y, z);
-            p.fromEye[s - 2] = toAreaDensity(y.surface->bsdf.pdf(lightLobe, yz, y.surface->wo), y, light[s - 2]);
+            // Directions between the points, as linkThrough takes them (not the traced rays').
+            const Vec3 back = directionTo(y, light[s - 2]);
+            p.fromLight[s] = toAreaDensity(y.surface->bsdf.pdf(lightLobe, back, yz), y, z);
+            p.fromEye[s - 2] = toAreaDensity(y.surface->bsdf.pdf(lightLobe, yz, back), y, light[s - 2]);
         }
         if (t == 1) {
             p.fromEye[s - 1] = toAreaDensity(context.camera.pdfDirection(-yz), z, y);
         } else {
-            p.fromEye[s - 1] = toAreaDensity(z.surface->bsdf.pdf(eyeLobe, z.surface->wo, -yz), z, y);
-            p.fromLight[s + 1] = toAreaDensity(z.surface->bsdf.pdf(eyeLobe, -yz, z.surface->wo), z, eye[t - 2]);
+            const Vec3 back = directionTo(z, eye[t - 2]);
+            p.fromEye[s - 1] = toAreaDensity(z.surface->bsdf.pdf(eyeLobe, back, -yz), z, y);
+            p.fromLight[s + 1] = toAreaDensity(z.surface->bsdf.pdf(eyeLobe, -yz, back), z, eye[t - 2]);
         }
     } else if (s == 0 && t >= 2) {
         // An eye walk that hit a light: the light's first step as a light walk would take it.

@@ -100,7 +100,6 @@ struct ScatterStep {
     int lobe = 0;  // its index in the material's lobes()
     Rgb weight{0.0f};      // f |cos| / pdf
     float pdf = 0.0f;      // solid angle, forward; 1 for a delta lobe (its Dirac cancels between strategies)
-    float pdfRev = 0.0f;   // solid angle, the same lobe with wo and wi swapped
     bool delta = false;
 };
 
@@ -119,13 +118,22 @@ BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal
 // on `light`: Light::pdf converted from solid angle (Veach 1997, eq. 8.10).
 float lightSamplingAreaDensity(const Light& light, const Vec3& receiver, const Vec3& point, const Vec3& normal);
 // The vertex where a walk's `ray`, leaving `previous` with solid-angle density `pdfSolidAngle`
-// (through a delta lobe when `delta`), hits `hit`.
+// (through a delta lobe when `delta`), hits `hit`. When `previous` is a surface vertex, linkThrough
+// then sets the density from the points.
 BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
                          float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode);
+// Once a walk has gone `before` -> `at` -> `here` through `at`'s lobe: here's area density as the
+// walk sampled it (pdfFwd) and before's as the opposite walk would sample it from `at` (pdfRev),
+// both with the BSDF's directions taken between the three points, as joinedDensities takes every
+// other strategy's. Not from the traced ray: it left `at` from an origin offset off the surface
+// (geometry/ray_offset.h), so its direction differs from at -> here by about offset / distance,
+// and along a short grazing chord the density it gives (the sampled direction's, converted with
+// the chord's cosine and length) differs by offset / cos^2 from the one the other strategies give
+// the same path. The weights of a path's strategies then sum below one: a closed emissive sphere
+// (kd 0.5, Le 1) read 0.49998 for its 0.5 of E D L (docs/integrators.md, bdpt).
+void linkThrough(BdptVertex& before, const BdptVertex& at, BdptVertex& here);
 // Makes surface vertex `z`, reached from `previous`, the origin x0 of a path on `emitter` (s = 0).
 void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous);
-// The area density of `previous` as the other walk would reach it from `vertex` by `step`.
-float reverseDensity(const ScatterStep& step, const BdptVertex& vertex, const BdptVertex& previous);
 
 // Every strategy's density of one path, per vertex, in the path's order from the light. Only the
 // first n entries are written and read: the arrays are left uninitialised, since clearing all
