@@ -29,7 +29,9 @@ void forEveryMaterial(Check&& check) {
     CHECK(cases > 0);
 }
 
-TEST_CASE("materials: sample() follows pdf() in every smooth lobe (chi-square)") {
+// Statistical: a chi-square over every material, lobe and direction. The sanitizer stage runs the
+// same sample() through the weight check below.
+TEST_CASE("materials: sample() follows pdf() in every smooth lobe (chi-square)" * doctest::test_suite("statistical")) {
     forEveryMaterial([](const MaterialCase& c) {
         CheckResult result;
         for (const int lobe : presentSmoothLobes(*c.material))
