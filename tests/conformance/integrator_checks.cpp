@@ -58,10 +58,14 @@ namespace {
 // every code path, not accuracy. Radiosity's solve was 90% of their CPU at checkOptions' 1024
 // patches (7.2 s a render against 0.6 s for every other integrator); at 512 its first mesh (476
 // elements) still spans two of its 256-element chunks and its refined one (1904) eight, so 3
-// threads still split every pass of the solve, at half the cost.
+// threads still split every pass of the solve. Its rays were the rest (3.7 s a render in Release,
+// about 10x that under the sanitizers): 16 form-factor rays and 4 light samples (2x2 strata, the
+// fewest the refinement's noise estimate pairs) still cut patches in every refinement pass.
 RenderOptions structuralOptions(const IntegratorInfo& integrator) {
     RenderOptions options = checkOptions(integrator);
     options.radiosity.patchBudget = 512;
+    options.radiosity.formFactorRays = 16;
+    options.radiosity.lightSamples = 4;
     return options;
 }
 
