@@ -46,7 +46,7 @@ double peakMemoryMiB() {
     return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
 }
 
-void printStats(const RenderStats& stats, const WriteStats& write) {
+void printStats(const RenderStats& stats, const WriteStats& write, const std::string& integrator) {
     const RayCounters& r = stats.rays;
     const auto n = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
     std::printf("rays cast     camera %llu, shadow %llu, reflection %llu, refraction %llu (total %llu)\n",
@@ -81,6 +81,11 @@ void printStats(const RenderStats& stats, const WriteStats& write) {
         std::printf("cpu time      workers %s s, serial %.3f s: %.3f s on an idle machine\n", workers.c_str(),
                     stats.serialCpuSeconds, stats.serialCpuSeconds + busiest);
     }
+    // What ran before the render and the times above leave out: a radiosity render's solve can be
+    // most of the command's time.
+    std::printf("preparing     BVH built in %.3f s, the %s integrator's preprocess %.3f s (before the render, "
+                "not in the times above)\n",
+                stats.accelerator.buildSeconds, integrator.c_str(), stats.preprocessSeconds);
     std::printf("non-finite contributions dropped: %llu\n", n(r.nonFinite));
     if (r.eventOverflow > 0) std::printf("paths cut at the event stack's bound: %llu\n", n(r.eventOverflow));
     std::printf("peak memory   %.1f MiB (resident set, whole process)\n", peakMemoryMiB());
@@ -219,7 +224,7 @@ void run(const RenderCommand& command) {
     if (result.stats.radiosity && !result.stats.radiosity->unresolved.empty())
         Warnings(config.quiet)(result.stats.radiosity->unresolved);
     if (command.stats) {
-        printStats(result.stats, write);
+        printStats(result.stats, write, options.integrator);
         printAcceleratorStats(config.accel, result.stats.accelerator);
         for (const BlackAov& b : black) {
             const std::string as = b.inThisScene ? "as this scene leaves it under --integrator " + options.integrator

@@ -93,7 +93,9 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
     if (const std::size_t bytes = integrator_->preprocessBytes(camera_.width(), camera_.height()); bytes > 0)
         refuseBeyondMemory(bytes, "the " + options.integrator + " integrator's preprocess for " +
                                       pixelMemory(scene, aovs, options).describe());
+    const auto preprocessStarted = std::chrono::steady_clock::now();
     integrator_->preprocess(context_);
+    preprocessSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - preprocessStarted).count();
     preprocessesRun_.fetch_add(1, std::memory_order_relaxed);
 }
 
@@ -344,6 +346,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel, const Pas
     stats.samples = stats.rays.camera + stats.rays.cameraDead;  // adaptive sampling takes fewer
     stats.threads = threadCount;
     stats.accelerator = geometry_->acceleratorStats();
+    stats.preprocessSeconds = preprocessSeconds_;
     if (const auto* radiosity = dynamic_cast<const RadiosityIntegrator*>(integrator_.get())) stats.radiosity = radiosity->stats();
     if (const auto* photon = dynamic_cast<const PhotonIntegrator*>(integrator_.get())) stats.photon = photon->stats();
     if (const auto* bdpt = dynamic_cast<const BdptIntegrator*>(integrator_.get())) stats.bdpt = bdpt->stats();

@@ -87,6 +87,9 @@ struct RenderStats {
     std::optional<RadiosityStats> radiosity;  // its mesh and solve, before the render
     std::optional<PhotonStats> photon;        // the photons shot and kept, before the render
     std::optional<BdptStats> bdpt;            // the fraction of samples that walked from a light
+    // Wall seconds of the integrator's preprocess (radiosity's solve, the photons, bdpt's pilot),
+    // run once when the Renderer is built: not in `seconds`, which is the render alone.
+    double preprocessSeconds = 0.0;
     // CPU seconds of each worker in the render loop, and of the render's serial parts on the
     // calling thread (the film, the splats): load on the machine stretches wall time but not
     // these, so serial + the busiest worker is what the render would take on an idle machine, and
@@ -199,6 +202,7 @@ private:
     std::vector<std::size_t> writtenLayers_;
     std::unique_ptr<Integrator> integrator_;
     RenderContext context_;
+    double preprocessSeconds_ = 0.0;  // RenderStats::preprocessSeconds
 };
 
 }  // namespace lightpath
