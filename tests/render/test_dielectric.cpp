@@ -126,7 +126,8 @@ Albedos sampledAlbedos(const DielectricMaterial& material, const SurfaceSide& si
     return result;
 }
 
-TEST_CASE("dielectric: white furnace, reflectance plus transmittance is Walter's BSDF integrated over the sphere, never above 1") {
+TEST_CASE("dielectric: white furnace, reflectance plus transmittance is Walter's BSDF integrated over the sphere, never above 1" *
+          doctest::test_suite("statistical")) {
     constexpr float kIor = 1.5f;
     for (const bool entering : {true, false}) {
         const double no = entering ? 1.0 : kIor, ni = entering ? kIor : 1.0;

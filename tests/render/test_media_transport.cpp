@@ -282,7 +282,8 @@ double airlight(const glm::dvec3& eye, const glm::dvec3& w, const glm::dvec3& li
     return sum * h / 3.0;
 }
 
-TEST_CASE("single scattering from a point light in infinite fog matches the airlight integral, raycast and path's E V <L.>") {
+TEST_CASE("single scattering from a point light in infinite fog matches the airlight integral, raycast and path's E V <L.>" *
+          doctest::test_suite("statistical")) {
     const glm::dvec3 light{2.5, 0.3, -2.0};  // outside the view: no camera ray passes near it
     constexpr double kSigmaS = 0.3, kSigmaA = 0.1, kI = 5.0;
     Scene scene;

@@ -89,7 +89,7 @@ TEST_CASE("the closed forms themselves: Howell's tabulated values") {
     CHECK(std::fabs(perpendicularSharingEdge(1, 1) - 0.2000) < 5e-5);
 }
 
-TEST_CASE("form factors of unit squares match Hottel's closed forms to 1% at the default density") {
+TEST_CASE("form factors of unit squares match Hottel's closed forms to 1% at the default density" * doctest::test_suite("statistical")) {
     const RadiosityOptions defaults;
     SUBCASE("parallel, directly opposed, one apart") {
         Scene scene;
