@@ -7,8 +7,10 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "geometry/spawn_ray.h"
 #include "math/random.h"
 #include "sampling/warp.h"
+#include "util/parallel_chunks.h"
 
 namespace lightpath {
 namespace {
@@ -123,12 +125,13 @@ struct ClusterKey {
     std::uint32_t object;
     std::int64_t x, y, z;
     std::uint32_t direction;
+    bool buried;  // buried and exposed triangles never share a cluster (isBuried)
     bool operator==(const ClusterKey&) const = default;
 };
 
 struct ClusterKeyHash {
     std::size_t operator()(const ClusterKey& k) const {
-        std::uint64_t h = mixBits(k.object ^ (std::uint64_t(k.direction) << 32));
+        std::uint64_t h = mixBits(k.object ^ (std::uint64_t(k.direction) << 32) ^ (std::uint64_t(k.buried) << 63));
         for (std::int64_t v : {k.x, k.y, k.z}) h = mixBits(h ^ static_cast<std::uint64_t>(v));
         return static_cast<std::size_t>(h);
     }
@@ -146,13 +149,56 @@ std::uint32_t directionBucket(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Vec3 centroidOf(const Vec3& a, const Vec3& b, const Vec3& c) { return (a + b + c) / 3.0f; }
 
-ClusterKey clusterKey(std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize) {
+ClusterKey clusterKey(std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize, bool buried) {
     const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / patchSize)); };
-    return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction};
+    return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction, buried};
 }
 
-ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
-    return clusterKey(object, centroidOf(a, b, c), directionBucket(a, b, c), patchSize);
+ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, bool buried) {
+    return clusterKey(object, centroidOf(a, b, c), directionBucket(a, b, c), patchSize, buried);
+}
+
+// Issue 27: the lecture room's bunny sits 0.23 below the floor plane, so some of its triangles lie
+// under the plane, where no light comes; clustered with the exposed triangles beside them, they
+// diluted each cluster's radiosity (the bunny 0.87 of the path tracer at bounce 4, its lowest rows
+// 0.3-0.5). A cluster stands for members that receive about the same light (Smits, Arvo and
+// Greenberg 1994 group elements whose transport one value can carry); a buried triangle receives
+// none, so buried and exposed triangles are never clustered together (each keeps its own
+// clusters: nothing is dropped, and a buried cluster simply stays dark).
+// A triangle is buried when, along kBurialDirections from its centroid, the surfaces of other
+// objects met first show their back (the ray travels along their normal) more often than their
+// front: it lies inside a closed object whose normals point out, or on the back of a plane. Its own
+// object's surfaces are passed through (up to kBurialCrossings of them), so a closed mesh's own
+// inside does not count. A scene whose surfaces face the other way misjudges whole regions alike,
+// and a region judged alike keeps the clusters it had: only clusters that mix the two are split.
+constexpr int kBurialCrossings = 16;
+constexpr float kDiagonal = 0.57735027f;  // 1 / sqrt(3)
+constexpr std::array<Vec3, 14> kBurialDirections{{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+                                                  {kDiagonal, kDiagonal, kDiagonal}, {kDiagonal, kDiagonal, -kDiagonal},
+                                                  {kDiagonal, -kDiagonal, kDiagonal}, {kDiagonal, -kDiagonal, -kDiagonal},
+                                                  {-kDiagonal, kDiagonal, kDiagonal}, {-kDiagonal, kDiagonal, -kDiagonal},
+                                                  {-kDiagonal, -kDiagonal, kDiagonal}, {-kDiagonal, -kDiagonal, -kDiagonal}}};
+
+bool isBuried(const SceneGeometry& geometry, std::uint32_t primitive, const Triangle& t) {
+    SurfaceHit start;
+    start.point = centroidOf(t.a, t.b, t.c);
+    start.normal = start.shadingNormal = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
+    start.object = t.object;
+    start.primitive = primitive;
+    int back = 0, front = 0;
+    for (const Vec3& direction : kBurialDirections) {
+        Ray ray = spawnRay(start, direction, geometry.numerics());
+        for (int crossing = 0; crossing < kBurialCrossings; ++crossing) {
+            const auto hit = geometry.intersect(ray);
+            if (!hit) break;
+            if (hit->object != t.object) {
+                ++(glm::dot(hit->normal, direction) > 0.0f ? back : front);
+                break;
+            }
+            ray = spawnRay(*hit, direction, geometry.numerics());
+        }
+    }
+    return back > front;
 }
 
 // How many clusters a patch size makes, for the budget's bisection, which asks at some 60 sizes:
@@ -160,12 +206,14 @@ ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const 
 // normal bucket) is computed once, and the key set's buckets are kept from one size to the next.
 class ClusterCounter {
 public:
-    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings)
+    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings, std::span<const std::uint8_t> buried)
         : geometry_(geometry), planeRings_(planeRings), region_(sceneRegion(scene, geometry)) {
-        for (const Triangle& t : geometry.triangles())
+        for (std::size_t i = 0; i < geometry.triangles().size(); ++i) {
+            const Triangle& t = geometry.triangles()[i];
             if (hasArea(t.a, t.b, t.c))
                 triangles_.push_back({longestEdge(t.a, t.b, t.c), centroidOf(t.a, t.b, t.c), t.object,
-                                      directionBucket(t.a, t.b, t.c)});
+                                      directionBucket(t.a, t.b, t.c), !buried.empty() && buried[i] != 0});
+        }
     }
 
     std::size_t count(float patchSize) {
@@ -182,11 +230,11 @@ public:
                 const Triangle& t = p.triangle;
                 if (!hasArea(t.a, t.b, t.c)) continue;
                 add(subdivisions(longestEdge(t.a, t.b, t.c), p.patchSize), shape.object, centroidOf(t.a, t.b, t.c),
-                    directionBucket(t.a, t.b, t.c), patchSize);
+                    directionBucket(t.a, t.b, t.c), patchSize, false);
             }
         }
         for (const Counted& t : triangles_)
-            add(subdivisions(t.longest, patchSize), t.object, t.centroid, t.direction, patchSize);
+            add(subdivisions(t.longest, patchSize), t.object, t.centroid, t.direction, patchSize, t.buried);
         return count_;
     }
 
@@ -195,12 +243,14 @@ private:
         double longest;
         Vec3 centroid;
         std::uint32_t object, direction;
+        bool buried;
     };
 
     // A triangle cut n x n makes n^2 patches; one not cut joins its cluster (or starts it).
-    void add(std::size_t n, std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize) {
+    void add(std::size_t n, std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize,
+             bool buried) {
         if (n == 1) {
-            if (keys_.insert(clusterKey(object, centroid, direction, patchSize)).second) ++count_;
+            if (keys_.insert(clusterKey(object, centroid, direction, patchSize, buried)).second) ++count_;
         } else {
             count_ += n * n;
         }
@@ -249,15 +299,27 @@ struct RadiosityMesh::VertexWelder {
     }
 };
 
-std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings) {
-    return ClusterCounter(scene, geometry, planeRings).count(patchSize);
+std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
+                                         std::span<const std::uint8_t> buried) {
+    return ClusterCounter(scene, geometry, planeRings, buried).count(patchSize);
+}
+
+std::vector<std::uint8_t> RadiosityMesh::buriedTriangles(const SceneGeometry& geometry, int threads) {
+    const auto& triangles = geometry.triangles();
+    std::vector<std::uint8_t> buried(triangles.size(), 0);
+    parallelChunks(triangles.size(), 1024, threadsOrAll(threads), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            if (hasArea(triangles[i].a, triangles[i].b, triangles[i].c))
+                buried[i] = isBuried(geometry, geometry.triangleId(std::uint32_t(i)), triangles[i]) ? 1 : 0;
+    });
+    return buried;
 }
 
 float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
-                                        int planeRings) {
+                                        int planeRings, std::span<const std::uint8_t> buried) {
     // The count falls as the size grows: bisect log(size) between a size too fine and one coarse
     // enough to leave one patch per triangle (the least any mesh can have).
-    ClusterCounter counter(scene, geometry, planeRings);
+    ClusterCounter counter(scene, geometry, planeRings, buried);
     double fine = 1e-6, coarse = 1e6;
     for (int i = 0; i < 60; ++i) {
         const double middle = std::sqrt(fine * coarse);
@@ -268,7 +330,8 @@ float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry&
 
 RadiosityMesh::~RadiosityMesh() = default;
 
-RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings)
+RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
+                             std::span<const std::uint8_t> buried)
     : geometry_(geometry),
       welder_(std::make_unique<VertexWelder>(VertexWelder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_})),
       patchSize_(patchSize),
@@ -282,26 +345,27 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     const Bounds region = sceneRegion(scene, geometry);
     std::vector<Triangle> scratch;
     std::vector<Piece> pieces;
-    std::vector<bool> clusterable;
+    std::vector<Clustering> clustering;
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
         begin(geometry.shapeId(i));
         const ShapeRecord& shape = geometry.shapes()[i];
         if (shape.ops->patchGrid) {
-            addGrid(i, clusterable);
+            addGrid(i, clustering);
             continue;
         }
         tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
         for (const Piece& p : pieces)
             addTriangle(&shape, geometry.shapeId(i), shape.object, p.triangle.a, p.triangle.b, p.triangle.c, p.patchSize,
-                        welder, clusterable);
+                        false, welder, clustering);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) {
         begin(geometry.triangleId(i));
         const Triangle& t = geometry.triangles()[i];
-        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, welder, clusterable);
+        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, !buried.empty() && buried[i] != 0,
+                    welder, clustering);
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
-    buildClusters(clusterable);
+    buildClusters(clustering);
     // Every patch is a root: node i holds patch i (node 0 is never a child, so firstChild 0 is "none").
     nodes_.resize(patches_.size());
     leafNode_.resize(patches_.size());
@@ -389,7 +453,7 @@ PatchLookup RadiosityMesh::descend(std::uint32_t node, float s, float t) const {
     return found;
 }
 
-void RadiosityMesh::buildClusters(const std::vector<bool>& clusterable) {
+void RadiosityMesh::buildClusters(const std::vector<Clustering>& clustering) {
     // Cluster ids in the order of each cluster's first patch: a mesh with nothing to cluster has
     // cluster i = patch i.
     std::unordered_map<ClusterKey, std::uint32_t, ClusterKeyHash> ids;
@@ -398,7 +462,9 @@ void RadiosityMesh::buildClusters(const std::vector<bool>& clusterable) {
     for (std::uint32_t i = 0; i < patches_.size(); ++i) {
         RadiosityPatch& p = patches_[i];
         std::uint32_t id = static_cast<std::uint32_t>(clusters_.size());
-        if (clusterable[i]) id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_), id).first->second;
+        if (clustering[i] != Clustering::Alone)
+            id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_, clustering[i] == Clustering::Buried), id)
+                     .first->second;
         if (id == clusters_.size()) {
             clusters_.push_back({p.object, 0, 0, 0.0f});
             memberCount.push_back(0);
@@ -437,8 +503,8 @@ PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) cons
 }
 
 void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object,
-                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder,
-                                std::vector<bool>& clusterable) {
+                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, bool buried,
+                                VertexWelder& welder, std::vector<Clustering>& clustering) {
     if (!hasArea(a, b, c)) return;
     const std::uint32_t n = triangleSubdivisions(a, b, c, patchSize);
     sources_.push_back({record, primitive, static_cast<std::uint32_t>(patches_.size()), n, PatchGrid{}, a, b, c});
@@ -466,7 +532,7 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
             lower.area = area;
             lower.vertices = {vertexAt(i, j), vertexAt(i + 1, j), vertexAt(i, j + 1), 0};
             patches_.push_back(lower);
-            clusterable.push_back(n == 1);
+            clustering.push_back(n != 1 ? Clustering::Alone : buried ? Clustering::Buried : Clustering::Exposed);
             if (i + j + 1 < n) {
                 RadiosityPatch upper = lower;
                 upper.a = gridPoint(i + 1, j + 1);
@@ -474,13 +540,13 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
                 upper.c = gridPoint(i + 1, j);
                 upper.vertices = {vertexAt(i + 1, j + 1), vertexAt(i, j + 1), vertexAt(i + 1, j), 0};
                 patches_.push_back(upper);
-                clusterable.push_back(false);
+                clustering.push_back(Clustering::Alone);
             }
         }
     }
 }
 
-void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<bool>& clusterable) {
+void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<Clustering>& clustering) {
     const ShapeRecord& shape = geometry_.shapes()[shapeIndex];
     const PatchGridOps& cells = *shape.ops->patchGrid;
     const PatchGrid grid = cells.cells(shape, patchSize_);
@@ -505,7 +571,7 @@ void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<bool>& cluster
                           vertexAt(row + 1, column + 1)};
             p.vertexCount = 4;
             patches_.push_back(p);
-            clusterable.push_back(false);
+            clustering.push_back(Clustering::Alone);
         }
     }
 }

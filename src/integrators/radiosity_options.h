@@ -36,6 +36,10 @@ struct RadiosityOptions {
     // it to the rectangle, as before issue 27 (the light it bounces from beyond is lost: the tests'
     // control). Not a command-line option.
     int planeRings = 3;
+    // Buried triangles (inside another object, behind a plane: RadiosityMesh::buriedTriangles) are
+    // clustered apart from exposed ones. false: clustered together, as before issue 27's fix (they
+    // dilute the exposed triangles' light: the tests' control). Not a command-line option.
+    bool separateBuried = true;
 };
 
 }  // namespace lightpath
