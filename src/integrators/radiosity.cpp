@@ -144,14 +144,14 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     const float patchSize = options.patchSize > 0.0f
                                 ? options.patchSize
                                 : RadiosityMesh::patchSizeForBudget(context.scene, context.geometry, options.patchBudget,
-                                                                    options.planeRings, buried);
-    const std::size_t count =
-        RadiosityMesh::countClusters(context.scene, context.geometry, patchSize, options.planeRings, buried);
+                                                                    options.planeRings, buried, options.cutPlanes);
+    const std::size_t count = RadiosityMesh::countClusters(context.scene, context.geometry, patchSize, options.planeRings,
+                                                           buried, options.cutPlanes);
     if (count > kMaxPatches)
         throw std::invalid_argument("radiosity: patch size " + std::to_string(patchSize) + " makes " +
                                     std::to_string(count) + " elements, more than the " + std::to_string(kMaxPatches) +
                                     " radiosity can hold; choose a larger --patch-size or a smaller --patches");
-    mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings, buried);
+    mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings, buried, options.cutPlanes);
     const std::size_t elementCap = std::min(kMaxPatches, kRefineGrowth * mesh_->clusters().size());
     stats_.patchSize = patchSize;
     const std::uint32_t lightSamples = strataPerSide(options.lightSamples) * strataPerSide(options.lightSamples);

@@ -78,11 +78,15 @@ constexpr float kRingCoarsening = 8.0f;
 // are built around a parallelogram (a, b, c), (a, c, d), which is what the only unbounded kind's
 // tessellateRegion makes (shapes/plane.cpp); a kind meshing its region otherwise would lose the
 // light beyond it again, silently, so it is refused here until rings are built for its form.
-void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, std::vector<Piece>& out) {
-    if (rings == 0 || inner.empty()) return;
+void requireParallelogram(const std::vector<Triangle>& inner) {
     if (inner.size() != 2 || inner[1].a != inner[0].a || inner[1].b != inner[0].c)
         throw std::logic_error("radiosity: an unbounded shape's region is not meshed as a parallelogram of two "
-                               "triangles, the only form its rings are built around (RadiosityMesh, addRings)");
+                               "triangles, the only form its rings and cuts are built for (RadiosityMesh, addRings)");
+}
+
+void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, std::vector<Piece>& out) {
+    if (rings == 0 || inner.empty()) return;
+    requireParallelogram(inner);
     const Vec3 a = inner[0].a, b = inner[0].b, d = inner[1].c;
     const Vec3 centre = 0.5f * (b + d), halfS = 0.5f * (b - a), halfT = 0.5f * (d - a);
     const std::uint32_t object = inner[0].object;
@@ -103,10 +107,173 @@ void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, st
     }
 }
 
+// Issue 27: an unbounded shape's rectangle reaches past the scene, so where a wall stands on a
+// floor plane the floor's patches ran under the wall's foot: each averaged the room's light with
+// the dark outside and spread it outside (the lecture room's floor and walls 2-5% low at bounce 4).
+// The rectangle is cut along every line where another surface meets its plane, so no patch
+// straddles one: the edges of triangles lying in the plane (a wall's foot) and the lines where
+// the other unbounded shapes' planes cross it. Each line is cut across the whole rectangle (the
+// pieces stay convex); at most kMaxContactLines of them, the longest contacts first, so a mesh
+// resting on the plane with a flat base of many edges does not shatter it.
+constexpr std::size_t kMaxContactLines = 16;
+// A triangle's edge lies in the plane when both ends are within this fraction of the region's
+// diagonal of it; an edge shorter than kMinContactFraction of the diagonal is no contact line.
+constexpr float kContactTolerance = 1e-5f;
+constexpr float kMinContactFraction = 1e-2f;
+
+struct ContactLine {
+    Vec3 point, direction;
+    float length;  // of the contact (a plane's crossing: the region's diagonal)
+};
+
+// The plane of an unbounded shape's region parallelogram (addRings' form): a point and unit normal.
+struct PlaneOf {
+    Vec3 point, normal;
+};
+
+PlaneOf planeOf(const std::vector<Triangle>& inner) {
+    return {inner[0].a, glm::normalize(glm::cross(inner[0].b - inner[0].a, inner[0].c - inner[0].a))};
+}
+
+std::vector<ContactLine> contactLines(const SceneGeometry& geometry, const ShapeRecord& shape, const PlaneOf& plane,
+                                      const Bounds& region) {
+    const float diagonal = glm::length(region.hi - region.lo);
+    const float tolerance = kContactTolerance * diagonal;
+    std::vector<ContactLine> lines;
+    const auto distance = [&](const Vec3& p) { return std::fabs(glm::dot(p - plane.point, plane.normal)); };
+    for (const Triangle& t : geometry.triangles()) {
+        if (t.object == shape.object) continue;
+        const std::array<Vec3, 3> corners{t.a, t.b, t.c};
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 p = corners[e], q = corners[(e + 1) % 3];
+            const float length = glm::length(q - p);
+            if (distance(p) <= tolerance && distance(q) <= tolerance && length >= kMinContactFraction * diagonal)
+                lines.push_back({p, (q - p) / length, length});
+        }
+    }
+    std::vector<Triangle> scratch;
+    for (const ShapeRecord& other : geometry.shapes()) {
+        if (&other == &shape || other.ops->bounded || !other.ops->tessellateRegion) continue;
+        scratch.clear();
+        other.ops->tessellateRegion(other, region, scratch);
+        if (scratch.empty()) continue;
+        const PlaneOf o = planeOf(scratch);
+        const Vec3 direction = glm::cross(plane.normal, o.normal);
+        const float sine = glm::length(direction);
+        if (sine < 1e-3f) continue;  // parallel planes never meet
+        // The point of both planes nearest the region's centre (Goldman, Graphics Gems 1990).
+        const Vec3 u = direction / sine;
+        const float h1 = glm::dot(plane.normal, plane.point), h2 = glm::dot(o.normal, o.point);
+        const float c = glm::dot(plane.normal, o.normal), det = 1.0f - c * c;
+        const Vec3 onBoth = ((h1 - c * h2) / det) * plane.normal + ((h2 - c * h1) / det) * o.normal;
+        const Vec3 centre = region.centroid();
+        lines.push_back({onBoth + glm::dot(centre - onBoth, u) * u, u, diagonal});
+    }
+    std::stable_sort(lines.begin(), lines.end(), [](const ContactLine& a, const ContactLine& b) { return a.length > b.length; });
+    if (lines.size() > kMaxContactLines) lines.resize(kMaxContactLines);
+    return lines;
+}
+
+// A convex polygon in a parallelogram's coordinates (s, t), split by the line through p with normal n
+// into the parts on either side (Sutherland and Hodgman 1974, both halves); false if the line
+// misses it (a corner within kSide of the line lies on it).
+using Polygon = std::vector<Vec2>;
+
+bool splitPolygon(const Polygon& polygon, Vec2 p, Vec2 n, Polygon& negative, Polygon& positive) {
+    constexpr float kSide = 1e-6f;
+    std::vector<float> side(polygon.size());
+    bool below = false, above = false;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        side[i] = glm::dot(polygon[i] - p, n);
+        below |= side[i] < -kSide;
+        above |= side[i] > kSide;
+    }
+    if (!(below && above)) return false;
+    negative.clear();
+    positive.clear();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const std::size_t j = (i + 1) % polygon.size();
+        if (side[i] <= kSide) negative.push_back(polygon[i]);
+        if (side[i] >= -kSide) positive.push_back(polygon[i]);
+        if ((side[i] < -kSide && side[j] > kSide) || (side[i] > kSide && side[j] < -kSide)) {
+            const Vec2 crossing = polygon[i] + (side[i] / (side[i] - side[j])) * (polygon[j] - polygon[i]);
+            negative.push_back(crossing);
+            positive.push_back(crossing);
+        }
+    }
+    return true;
+}
+
+// A piece longer than kMaxPieceAspect times its width is cut across into near-square parts: a
+// triangle is subdivided n x n by its longest edge, so a long thin strip (the rectangle beyond a
+// wall) would be cut into slivers, several times the elements its area needs.
+constexpr float kMaxPieceAspect = 1.5f;
+
+// The parallelogram (a, b, c), (a, c, d) cut along `lines` into convex pieces, each fanned into
+// triangles wound as the parallelogram (so with its normal). Worked in its coordinates (s, t):
+// p = a + s (b - a) + t (d - a), the unit square.
+void cutAlongLines(const std::vector<Triangle>& inner, const std::vector<ContactLine>& lines, float patchSize,
+                   std::vector<Piece>& out) {
+    const Vec3 a = inner[0].a, e1 = inner[0].b - inner[0].a, e2 = inner[1].c - inner[0].a;
+    const float d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+    const float denominator = d00 * d11 - d01 * d01;
+    const auto local = [&](const Vec3& v) {  // a vector's (s, t), least squares
+        const float d20 = glm::dot(v, e1), d21 = glm::dot(v, e2);
+        return Vec2{(d11 * d20 - d01 * d21) / denominator, (d00 * d21 - d01 * d20) / denominator};
+    };
+    std::vector<Polygon> pieces{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, next;
+    Polygon negative, positive;
+    for (const ContactLine& line : lines) {
+        const Vec2 p = local(line.point - a), d = local(line.direction);
+        const Vec2 n = glm::normalize(Vec2{-d.y, d.x});
+        next.clear();
+        for (const Polygon& polygon : pieces) {
+            if (splitPolygon(polygon, p, n, negative, positive)) {
+                next.push_back(negative);
+                next.push_back(positive);
+            } else {
+                next.push_back(polygon);
+            }
+        }
+        pieces.swap(next);
+    }
+    // Long pieces cut across their longer axis (s or t, in scene units) into near-square parts.
+    const float lengthS = std::sqrt(d00), lengthT = std::sqrt(d11);
+    next.clear();
+    for (Polygon& polygon : pieces) {
+        Vec2 lo{1.0f}, hi{0.0f};
+        for (const Vec2& v : polygon) {
+            lo = glm::min(lo, v);
+            hi = glm::max(hi, v);
+        }
+        const float extentS = (hi.x - lo.x) * lengthS, extentT = (hi.y - lo.y) * lengthT;
+        const bool alongS = extentS >= extentT;
+        const float ratio = alongS ? extentS / std::max(extentT, 1e-30f) : extentT / std::max(extentS, 1e-30f);
+        const int parts = ratio > kMaxPieceAspect ? static_cast<int>(std::lround(ratio)) : 1;
+        const Vec2 n = alongS ? Vec2{1, 0} : Vec2{0, 1};
+        for (int k = 1; k < parts; ++k) {
+            const float f = float(k) / float(parts);
+            const Vec2 p = lo + f * (hi - lo);
+            if (!splitPolygon(polygon, p, n, negative, positive)) continue;
+            next.push_back(negative);
+            polygon = positive;
+        }
+        next.push_back(std::move(polygon));
+    }
+    pieces.swap(next);
+    const std::uint32_t object = inner[0].object;
+    const auto at = [&](const Vec2& st) { return a + st.x * e1 + st.y * e2; };
+    for (const Polygon& polygon : pieces)
+        for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+            out.push_back({{at(polygon[0]), at(polygon[i]), at(polygon[i + 1]), object}, patchSize});
+}
+
 // The triangles a record without a patch grid is meshed as (geometry/shape.h): its tessellation,
-// or an unbounded kind's over `region` and the rings around it (none if it has no tessellateRegion).
+// or an unbounded kind's over `region`, cut along where the scene meets it (with `contacts`: the
+// scene's geometry; nullptr leaves it whole), and the rings around it (none if it has no
+// tessellateRegion).
 void tessellateRecord(const ShapeRecord& shape, float patchSize, int rings, const Bounds& region,
-                      std::vector<Triangle>& scratch, std::vector<Piece>& out) {
+                      const SceneGeometry* contacts, std::vector<Triangle>& scratch, std::vector<Piece>& out) {
     scratch.clear();
     out.clear();
     if (shape.ops->bounded) {
@@ -114,7 +281,12 @@ void tessellateRecord(const ShapeRecord& shape, float patchSize, int rings, cons
     } else if (shape.ops->tessellateRegion) {
         shape.ops->tessellateRegion(shape, region, scratch);
     }
-    for (const Triangle& t : scratch) out.push_back({t, patchSize});
+    if (!shape.ops->bounded && contacts != nullptr && !scratch.empty()) {
+        requireParallelogram(scratch);
+        cutAlongLines(scratch, contactLines(*contacts, shape, planeOf(scratch), region), patchSize, out);
+    } else {
+        for (const Triangle& t : scratch) out.push_back({t, patchSize});
+    }
     if (!shape.ops->bounded) addRings(scratch, patchSize, rings, out);
 }
 
@@ -206,8 +378,9 @@ bool isBuried(const SceneGeometry& geometry, std::uint32_t primitive, const Tria
 // normal bucket) is computed once, and the key set's buckets are kept from one size to the next.
 class ClusterCounter {
 public:
-    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings, std::span<const std::uint8_t> buried)
-        : geometry_(geometry), planeRings_(planeRings), region_(sceneRegion(scene, geometry)) {
+    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings, std::span<const std::uint8_t> buried,
+                   bool cutPlanes)
+        : geometry_(geometry), planeRings_(planeRings), cutPlanes_(cutPlanes), region_(sceneRegion(scene, geometry)) {
         for (std::size_t i = 0; i < geometry.triangles().size(); ++i) {
             const Triangle& t = geometry.triangles()[i];
             if (hasArea(t.a, t.b, t.c))
@@ -225,7 +398,7 @@ public:
                 count_ += std::size_t{grid.rows} * grid.columns;
                 continue;
             }
-            tessellateRecord(shape, patchSize, planeRings_, region_, scratch_, pieces_);
+            tessellateRecord(shape, patchSize, planeRings_, region_, cutPlanes_ ? &geometry_ : nullptr, scratch_, pieces_);
             for (const Piece& p : pieces_) {
                 const Triangle& t = p.triangle;
                 if (!hasArea(t.a, t.b, t.c)) continue;
@@ -258,6 +431,7 @@ private:
 
     const SceneGeometry& geometry_;
     int planeRings_;
+    bool cutPlanes_;
     Bounds region_;
     std::vector<Counted> triangles_;  // the triangle array's, those with area
     std::unordered_set<ClusterKey, ClusterKeyHash> keys_;
@@ -300,8 +474,8 @@ struct RadiosityMesh::VertexWelder {
 };
 
 std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
-                                         std::span<const std::uint8_t> buried) {
-    return ClusterCounter(scene, geometry, planeRings, buried).count(patchSize);
+                                         std::span<const std::uint8_t> buried, bool cutPlanes) {
+    return ClusterCounter(scene, geometry, planeRings, buried, cutPlanes).count(patchSize);
 }
 
 std::vector<std::uint8_t> RadiosityMesh::buriedTriangles(const SceneGeometry& geometry, int threads) {
@@ -316,10 +490,10 @@ std::vector<std::uint8_t> RadiosityMesh::buriedTriangles(const SceneGeometry& ge
 }
 
 float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
-                                        int planeRings, std::span<const std::uint8_t> buried) {
+                                        int planeRings, std::span<const std::uint8_t> buried, bool cutPlanes) {
     // The count falls as the size grows: bisect log(size) between a size too fine and one coarse
     // enough to leave one patch per triangle (the least any mesh can have).
-    ClusterCounter counter(scene, geometry, planeRings, buried);
+    ClusterCounter counter(scene, geometry, planeRings, buried, cutPlanes);
     double fine = 1e-6, coarse = 1e6;
     for (int i = 0; i < 60; ++i) {
         const double middle = std::sqrt(fine * coarse);
@@ -331,7 +505,7 @@ float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry&
 RadiosityMesh::~RadiosityMesh() = default;
 
 RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
-                             std::span<const std::uint8_t> buried)
+                             std::span<const std::uint8_t> buried, bool cutPlanes)
     : geometry_(geometry),
       welder_(std::make_unique<VertexWelder>(VertexWelder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_})),
       patchSize_(patchSize),
@@ -353,7 +527,7 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
             addGrid(i, clustering);
             continue;
         }
-        tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
+        tessellateRecord(shape, patchSize, planeRings, region, cutPlanes ? &geometry : nullptr, scratch, pieces);
         for (const Piece& p : pieces)
             addTriangle(&shape, geometry.shapeId(i), shape.object, p.triangle.a, p.triangle.b, p.triangle.c, p.patchSize,
                         false, welder, clustering);

@@ -4,9 +4,9 @@
 // (n = ceil(longest edge / size)). A record of the shape table (geometry/shape.h) is asked, never
 // named: a kind with a patch grid is cut into its cells (the sphere's equal-area latitude-longitude
 // cells); any other is first tessellated, a bounded kind whole (`tessellate`), an unbounded one over
-// the scene's bounds (`tessellateRegion`: the plane's rectangle) and three coarser rings around it
-// reaching 64 times as far (what lies beyond takes the outermost ring's value), and its triangles
-// subdivided.
+// the scene's bounds (`tessellateRegion`: the plane's rectangle, cut along the lines where other
+// surfaces meet it) and three coarser rings around it reaching 64 times as far (what lies beyond
+// takes the outermost ring's value), and its triangles subdivided.
 // Triangles no larger than the patch size are not subdivided but clustered (in the spirit of
 // Smits, Arvo and Greenberg 1994, restricted to near-coplanar groups): the patches of one object
 // whose centroids share a cell of the patch size and whose normals share a direction bucket (a
@@ -80,19 +80,20 @@ class RadiosityMesh {
 public:
     // Splits every surface into patches of about `patchSize` scene units and clusters the smaller ones.
     // `buried`: per triangle of the geometry's triangle array, whether it is buried (buriedTriangles);
-    // empty: none is (the tests' control).
+    // empty: none is (the tests' control). cutPlanes: an unbounded shape's rectangle is cut along the
+    // lines where the scene's other surfaces meet it (radiosity_mesh.cpp, contactLines); false: whole.
     RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
-                  std::span<const std::uint8_t> buried = {});
+                  std::span<const std::uint8_t> buried = {}, bool cutPlanes = true);
     ~RadiosityMesh();
     RadiosityMesh(const RadiosityMesh&) = delete;
     RadiosityMesh& operator=(const RadiosityMesh&) = delete;
 
     // How many clusters (solved elements) `patchSize` would make (without building them): for a budget.
     static std::size_t countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
-                                     std::span<const std::uint8_t> buried = {});
+                                     std::span<const std::uint8_t> buried = {}, bool cutPlanes = true);
     // The patch size whose mesh has at most `budget` clusters and is finest among such sizes.
     static float patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
-                                    int planeRings, std::span<const std::uint8_t> buried = {});
+                                    int planeRings, std::span<const std::uint8_t> buried = {}, bool cutPlanes = true);
     // Per triangle of the triangle array, 1 where it is buried: inside another object or behind an
     // unbounded one, judged by rays from its centroid (radiosity_mesh.cpp, isBuried).
     static std::vector<std::uint8_t> buriedTriangles(const SceneGeometry& geometry, int threads);

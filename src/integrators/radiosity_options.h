@@ -40,6 +40,10 @@ struct RadiosityOptions {
     // clustered apart from exposed ones. false: clustered together, as before issue 27's fix (they
     // dilute the exposed triangles' light: the tests' control). Not a command-line option.
     bool separateBuried = true;
+    // An unbounded surface's rectangle is cut along the lines where other surfaces meet it (a wall's
+    // foot on a floor plane), so no patch straddles one (RadiosityMesh). false: whole, as before
+    // (its patches run under the walls: the tests' control). Not a command-line option.
+    bool cutPlanes = true;
 };
 
 }  // namespace lightpath
