@@ -867,5 +867,44 @@ TEST_CASE("control: radiosity of the same box with buried and exposed triangles 
     CHECK(error > kSunkBoxTolerance);
 }
 
+// Planes cut at contact lines (issue 27): a floor plane and a wall standing on it along x = 0.9
+// (two triangles, y from 0 to 2, z from -1.3 to 1.7: neither line is a patch boundary at size
+// 0.7). With the cut, no floor patch of the rectangle over the scene straddles the wall's line or
+// the line where the floor meets the back-wall plane z = -1.3; without it (the control) patches do.
+int floorPatchesStraddling(bool cutPlanes) {
+    Scene scene;
+    const auto m = test::addMaterial(scene, diffuse("grey", 0.5f));
+    test::addPlane(scene, "floor", m, {0, 0, 0}, {0, 1, 0});
+    test::addPlane(scene, "back", m, {0, 0, -1.3f}, {0, 0, 1});
+    const auto wall = test::addObject(scene, "wall", m);
+    addQuad(scene, wall, {0.9f, 0, -1.3f}, {0.9f, 0, 1.7f}, {0.9f, 2, 1.7f}, {0.9f, 2, -1.3f});
+    scene.lights.push_back(PointLight{"lamp", {0.0f, 1.5f, 0.0f}, Rgb{1.0f}});
+    scene.camera = test::centredCamera({0.0f, 1.0f, 3.0f}, {0.0f, 0.5f, 0.0f}, {0, 1, 0}, 9);
+    const test::RenderWorld world(scene);
+    const RadiosityMesh mesh(world.scene, world.geometry, 0.7f, 3, {}, cutPlanes);
+    int straddling = 0;
+    for (const RadiosityPatch& p : mesh.patches()) {
+        // The rectangle over the scene spans about x in [-2.4, 3.3], z in [-3.7, 5.4] (the bounds of
+        // the wall, lamp and eye grown by half their diagonal); the rings beyond are not cut.
+        const Vec3 centroid = (p.a + p.b + p.c) / 3.0f;
+        if (p.object != 0 || centroid.x < -2.0f || centroid.x > 3.0f || centroid.z < -3.5f || centroid.z > 5.0f) continue;
+        for (const auto& [axis, at] : {std::pair{0, 0.9f}, std::pair{2, -1.3f}}) {
+            const float da = p.a[axis] - at, db = p.b[axis] - at, dc = p.c[axis] - at;
+            constexpr float kOn = 1e-4f;
+            const bool below = da < -kOn || db < -kOn || dc < -kOn, above = da > kOn || db > kOn || dc > kOn;
+            if (below && above) ++straddling;
+        }
+    }
+    return straddling;
+}
+
+TEST_CASE("radiosity mesh: a plane is cut where a wall and another plane meet it, so no patch straddles the line") {
+    CHECK(floorPatchesStraddling(true) == 0);
+}
+
+TEST_CASE("control: radiosity mesh of the same plane uncut has patches straddling those lines") {
+    CHECK(floorPatchesStraddling(false) > 0);
+}
+
 }  // namespace
 }  // namespace lightpath
