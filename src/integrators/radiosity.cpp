@@ -138,16 +138,20 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     // The first mesh is uniform, within the budget or at the size the user set; refining then
     // cuts where the error estimate asks, up to kRefineGrowth times the first mesh's elements.
     const int rounds = std::max(options.refineRounds, 0);
+    const std::vector<std::uint8_t> buried = options.separateBuried
+                                                 ? RadiosityMesh::buriedTriangles(context.geometry, context.threads)
+                                                 : std::vector<std::uint8_t>{};
     const float patchSize = options.patchSize > 0.0f
                                 ? options.patchSize
                                 : RadiosityMesh::patchSizeForBudget(context.scene, context.geometry, options.patchBudget,
-                                                                    options.planeRings);
-    const std::size_t count = RadiosityMesh::countClusters(context.scene, context.geometry, patchSize, options.planeRings);
+                                                                    options.planeRings, buried, options.cutPlanes);
+    const std::size_t count = RadiosityMesh::countClusters(context.scene, context.geometry, patchSize, options.planeRings,
+                                                           buried, options.cutPlanes);
     if (count > kMaxPatches)
         throw std::invalid_argument("radiosity: patch size " + std::to_string(patchSize) + " makes " +
                                     std::to_string(count) + " elements, more than the " + std::to_string(kMaxPatches) +
                                     " radiosity can hold; choose a larger --patch-size or a smaller --patches");
-    mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings);
+    mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings, buried, options.cutPlanes);
     const std::size_t elementCap = std::min(kMaxPatches, kRefineGrowth * mesh_->clusters().size());
     stats_.patchSize = patchSize;
     const std::uint32_t lightSamples = strataPerSide(options.lightSamples) * strataPerSide(options.lightSamples);

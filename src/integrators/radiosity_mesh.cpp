@@ -7,8 +7,10 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "geometry/spawn_ray.h"
 #include "math/random.h"
 #include "sampling/warp.h"
+#include "util/parallel_chunks.h"
 
 namespace lightpath {
 namespace {
@@ -76,11 +78,15 @@ constexpr float kRingCoarsening = 8.0f;
 // are built around a parallelogram (a, b, c), (a, c, d), which is what the only unbounded kind's
 // tessellateRegion makes (shapes/plane.cpp); a kind meshing its region otherwise would lose the
 // light beyond it again, silently, so it is refused here until rings are built for its form.
-void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, std::vector<Piece>& out) {
-    if (rings == 0 || inner.empty()) return;
+void requireParallelogram(const std::vector<Triangle>& inner) {
     if (inner.size() != 2 || inner[1].a != inner[0].a || inner[1].b != inner[0].c)
         throw std::logic_error("radiosity: an unbounded shape's region is not meshed as a parallelogram of two "
-                               "triangles, the only form its rings are built around (RadiosityMesh, addRings)");
+                               "triangles, the only form its rings and cuts are built for (RadiosityMesh, addRings)");
+}
+
+void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, std::vector<Piece>& out) {
+    if (rings == 0 || inner.empty()) return;
+    requireParallelogram(inner);
     const Vec3 a = inner[0].a, b = inner[0].b, d = inner[1].c;
     const Vec3 centre = 0.5f * (b + d), halfS = 0.5f * (b - a), halfT = 0.5f * (d - a);
     const std::uint32_t object = inner[0].object;
@@ -101,10 +107,173 @@ void addRings(const std::vector<Triangle>& inner, float patchSize, int rings, st
     }
 }
 
+// Issue 27: an unbounded shape's rectangle reaches past the scene, so where a wall stands on a
+// floor plane the floor's patches ran under the wall's foot: each averaged the room's light with
+// the dark outside and spread it outside (the lecture room's floor and walls 2-5% low at bounce 4).
+// The rectangle is cut along every line where another surface meets its plane, so no patch
+// straddles one: the edges of triangles lying in the plane (a wall's foot) and the lines where
+// the other unbounded shapes' planes cross it. Each line is cut across the whole rectangle (the
+// pieces stay convex); at most kMaxContactLines of them, the longest contacts first, so a mesh
+// resting on the plane with a flat base of many edges does not shatter it.
+constexpr std::size_t kMaxContactLines = 16;
+// A triangle's edge lies in the plane when both ends are within this fraction of the region's
+// diagonal of it; an edge shorter than kMinContactFraction of the diagonal is no contact line.
+constexpr float kContactTolerance = 1e-5f;
+constexpr float kMinContactFraction = 1e-2f;
+
+struct ContactLine {
+    Vec3 point, direction;
+    float length;  // of the contact (a plane's crossing: the region's diagonal)
+};
+
+// The plane of an unbounded shape's region parallelogram (addRings' form): a point and unit normal.
+struct PlaneOf {
+    Vec3 point, normal;
+};
+
+PlaneOf planeOf(const std::vector<Triangle>& inner) {
+    return {inner[0].a, glm::normalize(glm::cross(inner[0].b - inner[0].a, inner[0].c - inner[0].a))};
+}
+
+std::vector<ContactLine> contactLines(const SceneGeometry& geometry, const ShapeRecord& shape, const PlaneOf& plane,
+                                      const Bounds& region) {
+    const float diagonal = glm::length(region.hi - region.lo);
+    const float tolerance = kContactTolerance * diagonal;
+    std::vector<ContactLine> lines;
+    const auto distance = [&](const Vec3& p) { return std::fabs(glm::dot(p - plane.point, plane.normal)); };
+    for (const Triangle& t : geometry.triangles()) {
+        if (t.object == shape.object) continue;
+        const std::array<Vec3, 3> corners{t.a, t.b, t.c};
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 p = corners[e], q = corners[(e + 1) % 3];
+            const float length = glm::length(q - p);
+            if (distance(p) <= tolerance && distance(q) <= tolerance && length >= kMinContactFraction * diagonal)
+                lines.push_back({p, (q - p) / length, length});
+        }
+    }
+    std::vector<Triangle> scratch;
+    for (const ShapeRecord& other : geometry.shapes()) {
+        if (&other == &shape || other.ops->bounded || !other.ops->tessellateRegion) continue;
+        scratch.clear();
+        other.ops->tessellateRegion(other, region, scratch);
+        if (scratch.empty()) continue;
+        const PlaneOf o = planeOf(scratch);
+        const Vec3 direction = glm::cross(plane.normal, o.normal);
+        const float sine = glm::length(direction);
+        if (sine < 1e-3f) continue;  // parallel planes never meet
+        // The point of both planes nearest the region's centre (Goldman, Graphics Gems 1990).
+        const Vec3 u = direction / sine;
+        const float h1 = glm::dot(plane.normal, plane.point), h2 = glm::dot(o.normal, o.point);
+        const float c = glm::dot(plane.normal, o.normal), det = 1.0f - c * c;
+        const Vec3 onBoth = ((h1 - c * h2) / det) * plane.normal + ((h2 - c * h1) / det) * o.normal;
+        const Vec3 centre = region.centroid();
+        lines.push_back({onBoth + glm::dot(centre - onBoth, u) * u, u, diagonal});
+    }
+    std::stable_sort(lines.begin(), lines.end(), [](const ContactLine& a, const ContactLine& b) { return a.length > b.length; });
+    if (lines.size() > kMaxContactLines) lines.resize(kMaxContactLines);
+    return lines;
+}
+
+// A convex polygon in a parallelogram's coordinates (s, t), split by the line through p with normal n
+// into the parts on either side (Sutherland and Hodgman 1974, both halves); false if the line
+// misses it (a corner within kSide of the line lies on it).
+using Polygon = std::vector<Vec2>;
+
+bool splitPolygon(const Polygon& polygon, Vec2 p, Vec2 n, Polygon& negative, Polygon& positive) {
+    constexpr float kSide = 1e-6f;
+    std::vector<float> side(polygon.size());
+    bool below = false, above = false;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        side[i] = glm::dot(polygon[i] - p, n);
+        below |= side[i] < -kSide;
+        above |= side[i] > kSide;
+    }
+    if (!(below && above)) return false;
+    negative.clear();
+    positive.clear();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const std::size_t j = (i + 1) % polygon.size();
+        if (side[i] <= kSide) negative.push_back(polygon[i]);
+        if (side[i] >= -kSide) positive.push_back(polygon[i]);
+        if ((side[i] < -kSide && side[j] > kSide) || (side[i] > kSide && side[j] < -kSide)) {
+            const Vec2 crossing = polygon[i] + (side[i] / (side[i] - side[j])) * (polygon[j] - polygon[i]);
+            negative.push_back(crossing);
+            positive.push_back(crossing);
+        }
+    }
+    return true;
+}
+
+// A piece longer than kMaxPieceAspect times its width is cut across into near-square parts: a
+// triangle is subdivided n x n by its longest edge, so a long thin strip (the rectangle beyond a
+// wall) would be cut into slivers, several times the elements its area needs.
+constexpr float kMaxPieceAspect = 1.5f;
+
+// The parallelogram (a, b, c), (a, c, d) cut along `lines` into convex pieces, each fanned into
+// triangles wound as the parallelogram (so with its normal). Worked in its coordinates (s, t):
+// p = a + s (b - a) + t (d - a), the unit square.
+void cutAlongLines(const std::vector<Triangle>& inner, const std::vector<ContactLine>& lines, float patchSize,
+                   std::vector<Piece>& out) {
+    const Vec3 a = inner[0].a, e1 = inner[0].b - inner[0].a, e2 = inner[1].c - inner[0].a;
+    const float d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+    const float denominator = d00 * d11 - d01 * d01;
+    const auto local = [&](const Vec3& v) {  // a vector's (s, t), least squares
+        const float d20 = glm::dot(v, e1), d21 = glm::dot(v, e2);
+        return Vec2{(d11 * d20 - d01 * d21) / denominator, (d00 * d21 - d01 * d20) / denominator};
+    };
+    std::vector<Polygon> pieces{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, next;
+    Polygon negative, positive;
+    for (const ContactLine& line : lines) {
+        const Vec2 p = local(line.point - a), d = local(line.direction);
+        const Vec2 n = glm::normalize(Vec2{-d.y, d.x});
+        next.clear();
+        for (const Polygon& polygon : pieces) {
+            if (splitPolygon(polygon, p, n, negative, positive)) {
+                next.push_back(negative);
+                next.push_back(positive);
+            } else {
+                next.push_back(polygon);
+            }
+        }
+        pieces.swap(next);
+    }
+    // Long pieces cut across their longer axis (s or t, in scene units) into near-square parts.
+    const float lengthS = std::sqrt(d00), lengthT = std::sqrt(d11);
+    next.clear();
+    for (Polygon& polygon : pieces) {
+        Vec2 lo{1.0f}, hi{0.0f};
+        for (const Vec2& v : polygon) {
+            lo = glm::min(lo, v);
+            hi = glm::max(hi, v);
+        }
+        const float extentS = (hi.x - lo.x) * lengthS, extentT = (hi.y - lo.y) * lengthT;
+        const bool alongS = extentS >= extentT;
+        const float ratio = alongS ? extentS / std::max(extentT, 1e-30f) : extentT / std::max(extentS, 1e-30f);
+        const int parts = ratio > kMaxPieceAspect ? static_cast<int>(std::lround(ratio)) : 1;
+        const Vec2 n = alongS ? Vec2{1, 0} : Vec2{0, 1};
+        for (int k = 1; k < parts; ++k) {
+            const float f = float(k) / float(parts);
+            const Vec2 p = lo + f * (hi - lo);
+            if (!splitPolygon(polygon, p, n, negative, positive)) continue;
+            next.push_back(negative);
+            polygon = positive;
+        }
+        next.push_back(std::move(polygon));
+    }
+    pieces.swap(next);
+    const std::uint32_t object = inner[0].object;
+    const auto at = [&](const Vec2& st) { return a + st.x * e1 + st.y * e2; };
+    for (const Polygon& polygon : pieces)
+        for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+            out.push_back({{at(polygon[0]), at(polygon[i]), at(polygon[i + 1]), object}, patchSize});
+}
+
 // The triangles a record without a patch grid is meshed as (geometry/shape.h): its tessellation,
-// or an unbounded kind's over `region` and the rings around it (none if it has no tessellateRegion).
+// or an unbounded kind's over `region`, cut along where the scene meets it (with `contacts`: the
+// scene's geometry; nullptr leaves it whole), and the rings around it (none if it has no
+// tessellateRegion).
 void tessellateRecord(const ShapeRecord& shape, float patchSize, int rings, const Bounds& region,
-                      std::vector<Triangle>& scratch, std::vector<Piece>& out) {
+                      const SceneGeometry* contacts, std::vector<Triangle>& scratch, std::vector<Piece>& out) {
     scratch.clear();
     out.clear();
     if (shape.ops->bounded) {
@@ -112,7 +281,12 @@ void tessellateRecord(const ShapeRecord& shape, float patchSize, int rings, cons
     } else if (shape.ops->tessellateRegion) {
         shape.ops->tessellateRegion(shape, region, scratch);
     }
-    for (const Triangle& t : scratch) out.push_back({t, patchSize});
+    if (!shape.ops->bounded && contacts != nullptr && !scratch.empty()) {
+        requireParallelogram(scratch);
+        cutAlongLines(scratch, contactLines(*contacts, shape, planeOf(scratch), region), patchSize, out);
+    } else {
+        for (const Triangle& t : scratch) out.push_back({t, patchSize});
+    }
     if (!shape.ops->bounded) addRings(scratch, patchSize, rings, out);
 }
 
@@ -123,12 +297,13 @@ struct ClusterKey {
     std::uint32_t object;
     std::int64_t x, y, z;
     std::uint32_t direction;
+    bool buried;  // buried and exposed triangles never share a cluster (isBuried)
     bool operator==(const ClusterKey&) const = default;
 };
 
 struct ClusterKeyHash {
     std::size_t operator()(const ClusterKey& k) const {
-        std::uint64_t h = mixBits(k.object ^ (std::uint64_t(k.direction) << 32));
+        std::uint64_t h = mixBits(k.object ^ (std::uint64_t(k.direction) << 32) ^ (std::uint64_t(k.buried) << 63));
         for (std::int64_t v : {k.x, k.y, k.z}) h = mixBits(h ^ static_cast<std::uint64_t>(v));
         return static_cast<std::size_t>(h);
     }
@@ -146,13 +321,56 @@ std::uint32_t directionBucket(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Vec3 centroidOf(const Vec3& a, const Vec3& b, const Vec3& c) { return (a + b + c) / 3.0f; }
 
-ClusterKey clusterKey(std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize) {
+ClusterKey clusterKey(std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize, bool buried) {
     const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / patchSize)); };
-    return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction};
+    return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction, buried};
 }
 
-ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize) {
-    return clusterKey(object, centroidOf(a, b, c), directionBucket(a, b, c), patchSize);
+ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, bool buried) {
+    return clusterKey(object, centroidOf(a, b, c), directionBucket(a, b, c), patchSize, buried);
+}
+
+// Issue 27: the lecture room's bunny sits 0.23 below the floor plane, so some of its triangles lie
+// under the plane, where no light comes; clustered with the exposed triangles beside them, they
+// diluted each cluster's radiosity (the bunny 0.87 of the path tracer at bounce 4, its lowest rows
+// 0.3-0.5). A cluster stands for members that receive about the same light (Smits, Arvo and
+// Greenberg 1994 group elements whose transport one value can carry); a buried triangle receives
+// none, so buried and exposed triangles are never clustered together (each keeps its own
+// clusters: nothing is dropped, and a buried cluster simply stays dark).
+// A triangle is buried when, along kBurialDirections from its centroid, the surfaces of other
+// objects met first show their back (the ray travels along their normal) more often than their
+// front: it lies inside a closed object whose normals point out, or on the back of a plane. Its own
+// object's surfaces are passed through (up to kBurialCrossings of them), so a closed mesh's own
+// inside does not count. A scene whose surfaces face the other way misjudges whole regions alike,
+// and a region judged alike keeps the clusters it had: only clusters that mix the two are split.
+constexpr int kBurialCrossings = 16;
+constexpr float kDiagonal = 0.57735027f;  // 1 / sqrt(3)
+constexpr std::array<Vec3, 14> kBurialDirections{{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1},
+                                                  {kDiagonal, kDiagonal, kDiagonal}, {kDiagonal, kDiagonal, -kDiagonal},
+                                                  {kDiagonal, -kDiagonal, kDiagonal}, {kDiagonal, -kDiagonal, -kDiagonal},
+                                                  {-kDiagonal, kDiagonal, kDiagonal}, {-kDiagonal, kDiagonal, -kDiagonal},
+                                                  {-kDiagonal, -kDiagonal, kDiagonal}, {-kDiagonal, -kDiagonal, -kDiagonal}}};
+
+bool isBuried(const SceneGeometry& geometry, std::uint32_t primitive, const Triangle& t) {
+    SurfaceHit start;
+    start.point = centroidOf(t.a, t.b, t.c);
+    start.normal = start.shadingNormal = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
+    start.object = t.object;
+    start.primitive = primitive;
+    int back = 0, front = 0;
+    for (const Vec3& direction : kBurialDirections) {
+        Ray ray = spawnRay(start, direction, geometry.numerics());
+        for (int crossing = 0; crossing < kBurialCrossings; ++crossing) {
+            const auto hit = geometry.intersect(ray);
+            if (!hit) break;
+            if (hit->object != t.object) {
+                ++(glm::dot(hit->normal, direction) > 0.0f ? back : front);
+                break;
+            }
+            ray = spawnRay(*hit, direction, geometry.numerics());
+        }
+    }
+    return back > front;
 }
 
 // How many clusters a patch size makes, for the budget's bisection, which asks at some 60 sizes:
@@ -160,12 +378,15 @@ ClusterKey clusterKey(std::uint32_t object, const Vec3& a, const Vec3& b, const 
 // normal bucket) is computed once, and the key set's buckets are kept from one size to the next.
 class ClusterCounter {
 public:
-    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings)
-        : geometry_(geometry), planeRings_(planeRings), region_(sceneRegion(scene, geometry)) {
-        for (const Triangle& t : geometry.triangles())
+    ClusterCounter(const Scene& scene, const SceneGeometry& geometry, int planeRings, std::span<const std::uint8_t> buried,
+                   bool cutPlanes)
+        : geometry_(geometry), planeRings_(planeRings), cutPlanes_(cutPlanes), region_(sceneRegion(scene, geometry)) {
+        for (std::size_t i = 0; i < geometry.triangles().size(); ++i) {
+            const Triangle& t = geometry.triangles()[i];
             if (hasArea(t.a, t.b, t.c))
                 triangles_.push_back({longestEdge(t.a, t.b, t.c), centroidOf(t.a, t.b, t.c), t.object,
-                                      directionBucket(t.a, t.b, t.c)});
+                                      directionBucket(t.a, t.b, t.c), !buried.empty() && buried[i] != 0});
+        }
     }
 
     std::size_t count(float patchSize) {
@@ -177,16 +398,16 @@ public:
                 count_ += std::size_t{grid.rows} * grid.columns;
                 continue;
             }
-            tessellateRecord(shape, patchSize, planeRings_, region_, scratch_, pieces_);
+            tessellateRecord(shape, patchSize, planeRings_, region_, cutPlanes_ ? &geometry_ : nullptr, scratch_, pieces_);
             for (const Piece& p : pieces_) {
                 const Triangle& t = p.triangle;
                 if (!hasArea(t.a, t.b, t.c)) continue;
                 add(subdivisions(longestEdge(t.a, t.b, t.c), p.patchSize), shape.object, centroidOf(t.a, t.b, t.c),
-                    directionBucket(t.a, t.b, t.c), patchSize);
+                    directionBucket(t.a, t.b, t.c), patchSize, false);
             }
         }
         for (const Counted& t : triangles_)
-            add(subdivisions(t.longest, patchSize), t.object, t.centroid, t.direction, patchSize);
+            add(subdivisions(t.longest, patchSize), t.object, t.centroid, t.direction, patchSize, t.buried);
         return count_;
     }
 
@@ -195,12 +416,14 @@ private:
         double longest;
         Vec3 centroid;
         std::uint32_t object, direction;
+        bool buried;
     };
 
     // A triangle cut n x n makes n^2 patches; one not cut joins its cluster (or starts it).
-    void add(std::size_t n, std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize) {
+    void add(std::size_t n, std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize,
+             bool buried) {
         if (n == 1) {
-            if (keys_.insert(clusterKey(object, centroid, direction, patchSize)).second) ++count_;
+            if (keys_.insert(clusterKey(object, centroid, direction, patchSize, buried)).second) ++count_;
         } else {
             count_ += n * n;
         }
@@ -208,6 +431,7 @@ private:
 
     const SceneGeometry& geometry_;
     int planeRings_;
+    bool cutPlanes_;
     Bounds region_;
     std::vector<Counted> triangles_;  // the triangle array's, those with area
     std::unordered_set<ClusterKey, ClusterKeyHash> keys_;
@@ -249,15 +473,27 @@ struct RadiosityMesh::VertexWelder {
     }
 };
 
-std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings) {
-    return ClusterCounter(scene, geometry, planeRings).count(patchSize);
+std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
+                                         std::span<const std::uint8_t> buried, bool cutPlanes) {
+    return ClusterCounter(scene, geometry, planeRings, buried, cutPlanes).count(patchSize);
+}
+
+std::vector<std::uint8_t> RadiosityMesh::buriedTriangles(const SceneGeometry& geometry, int threads) {
+    const auto& triangles = geometry.triangles();
+    std::vector<std::uint8_t> buried(triangles.size(), 0);
+    parallelChunks(triangles.size(), 1024, threadsOrAll(threads), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            if (hasArea(triangles[i].a, triangles[i].b, triangles[i].c))
+                buried[i] = isBuried(geometry, geometry.triangleId(std::uint32_t(i)), triangles[i]) ? 1 : 0;
+    });
+    return buried;
 }
 
 float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
-                                        int planeRings) {
+                                        int planeRings, std::span<const std::uint8_t> buried, bool cutPlanes) {
     // The count falls as the size grows: bisect log(size) between a size too fine and one coarse
     // enough to leave one patch per triangle (the least any mesh can have).
-    ClusterCounter counter(scene, geometry, planeRings);
+    ClusterCounter counter(scene, geometry, planeRings, buried, cutPlanes);
     double fine = 1e-6, coarse = 1e6;
     for (int i = 0; i < 60; ++i) {
         const double middle = std::sqrt(fine * coarse);
@@ -268,7 +504,8 @@ float RadiosityMesh::patchSizeForBudget(const Scene& scene, const SceneGeometry&
 
 RadiosityMesh::~RadiosityMesh() = default;
 
-RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings)
+RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
+                             std::span<const std::uint8_t> buried, bool cutPlanes)
     : geometry_(geometry),
       welder_(std::make_unique<VertexWelder>(VertexWelder{std::max(patchSize * 1e-3f, 1e-6f), {}, vertexCount_})),
       patchSize_(patchSize),
@@ -282,26 +519,27 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
     const Bounds region = sceneRegion(scene, geometry);
     std::vector<Triangle> scratch;
     std::vector<Piece> pieces;
-    std::vector<bool> clusterable;
+    std::vector<Clustering> clustering;
     for (std::uint32_t i = 0; i < geometry.shapes().size(); ++i) {
         begin(geometry.shapeId(i));
         const ShapeRecord& shape = geometry.shapes()[i];
         if (shape.ops->patchGrid) {
-            addGrid(i, clusterable);
+            addGrid(i, clustering);
             continue;
         }
-        tessellateRecord(shape, patchSize, planeRings, region, scratch, pieces);
+        tessellateRecord(shape, patchSize, planeRings, region, cutPlanes ? &geometry : nullptr, scratch, pieces);
         for (const Piece& p : pieces)
             addTriangle(&shape, geometry.shapeId(i), shape.object, p.triangle.a, p.triangle.b, p.triangle.c, p.patchSize,
-                        welder, clusterable);
+                        false, welder, clustering);
     }
     for (std::uint32_t i = 0; i < geometry.triangles().size(); ++i) {
         begin(geometry.triangleId(i));
         const Triangle& t = geometry.triangles()[i];
-        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, welder, clusterable);
+        addTriangle(nullptr, geometry.triangleId(i), t.object, t.a, t.b, t.c, patchSize, !buried.empty() && buried[i] != 0,
+                    welder, clustering);
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
-    buildClusters(clusterable);
+    buildClusters(clustering);
     // Every patch is a root: node i holds patch i (node 0 is never a child, so firstChild 0 is "none").
     nodes_.resize(patches_.size());
     leafNode_.resize(patches_.size());
@@ -389,7 +627,7 @@ PatchLookup RadiosityMesh::descend(std::uint32_t node, float s, float t) const {
     return found;
 }
 
-void RadiosityMesh::buildClusters(const std::vector<bool>& clusterable) {
+void RadiosityMesh::buildClusters(const std::vector<Clustering>& clustering) {
     // Cluster ids in the order of each cluster's first patch: a mesh with nothing to cluster has
     // cluster i = patch i.
     std::unordered_map<ClusterKey, std::uint32_t, ClusterKeyHash> ids;
@@ -398,7 +636,9 @@ void RadiosityMesh::buildClusters(const std::vector<bool>& clusterable) {
     for (std::uint32_t i = 0; i < patches_.size(); ++i) {
         RadiosityPatch& p = patches_[i];
         std::uint32_t id = static_cast<std::uint32_t>(clusters_.size());
-        if (clusterable[i]) id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_), id).first->second;
+        if (clustering[i] != Clustering::Alone)
+            id = ids.try_emplace(clusterKey(p.object, p.a, p.b, p.c, patchSize_, clustering[i] == Clustering::Buried), id)
+                     .first->second;
         if (id == clusters_.size()) {
             clusters_.push_back({p.object, 0, 0, 0.0f});
             memberCount.push_back(0);
@@ -437,8 +677,8 @@ PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) cons
 }
 
 void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object,
-                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder,
-                                std::vector<bool>& clusterable) {
+                                const Vec3& a, const Vec3& b, const Vec3& c, float patchSize, bool buried,
+                                VertexWelder& welder, std::vector<Clustering>& clustering) {
     if (!hasArea(a, b, c)) return;
     const std::uint32_t n = triangleSubdivisions(a, b, c, patchSize);
     sources_.push_back({record, primitive, static_cast<std::uint32_t>(patches_.size()), n, PatchGrid{}, a, b, c});
@@ -466,7 +706,7 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
             lower.area = area;
             lower.vertices = {vertexAt(i, j), vertexAt(i + 1, j), vertexAt(i, j + 1), 0};
             patches_.push_back(lower);
-            clusterable.push_back(n == 1);
+            clustering.push_back(n != 1 ? Clustering::Alone : buried ? Clustering::Buried : Clustering::Exposed);
             if (i + j + 1 < n) {
                 RadiosityPatch upper = lower;
                 upper.a = gridPoint(i + 1, j + 1);
@@ -474,13 +714,13 @@ void RadiosityMesh::addTriangle(const ShapeRecord* record, std::uint32_t primiti
                 upper.c = gridPoint(i + 1, j);
                 upper.vertices = {vertexAt(i + 1, j + 1), vertexAt(i, j + 1), vertexAt(i + 1, j), 0};
                 patches_.push_back(upper);
-                clusterable.push_back(false);
+                clustering.push_back(Clustering::Alone);
             }
         }
     }
 }
 
-void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<bool>& clusterable) {
+void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<Clustering>& clustering) {
     const ShapeRecord& shape = geometry_.shapes()[shapeIndex];
     const PatchGridOps& cells = *shape.ops->patchGrid;
     const PatchGrid grid = cells.cells(shape, patchSize_);
@@ -505,7 +745,7 @@ void RadiosityMesh::addGrid(std::uint32_t shapeIndex, std::vector<bool>& cluster
                           vertexAt(row + 1, column + 1)};
             p.vertexCount = 4;
             patches_.push_back(p);
-            clusterable.push_back(false);
+            clustering.push_back(Clustering::Alone);
         }
     }
 }

@@ -4,9 +4,9 @@
 // (n = ceil(longest edge / size)). A record of the shape table (geometry/shape.h) is asked, never
 // named: a kind with a patch grid is cut into its cells (the sphere's equal-area latitude-longitude
 // cells); any other is first tessellated, a bounded kind whole (`tessellate`), an unbounded one over
-// the scene's bounds (`tessellateRegion`: the plane's rectangle) and three coarser rings around it
-// reaching 64 times as far (what lies beyond takes the outermost ring's value), and its triangles
-// subdivided.
+// the scene's bounds (`tessellateRegion`: the plane's rectangle, cut along the lines where other
+// surfaces meet it) and three coarser rings around it reaching 64 times as far (what lies beyond
+// takes the outermost ring's value), and its triangles subdivided.
 // Triangles no larger than the patch size are not subdivided but clustered (in the spirit of
 // Smits, Arvo and Greenberg 1994, restricted to near-coplanar groups): the patches of one object
 // whose centroids share a cell of the patch size and whose normals share a direction bucket (a
@@ -14,7 +14,9 @@
 // (its area / patch size^2) elements rather than one per triangle. A cluster gathers the light
 // arriving over all its members (sample points by area, each with its member's normal), which is
 // exact for its area mean; what varies inside the cell and the cone is averaged away. Every other
-// patch is a cluster of one. Each cluster has two sides, each its own unknown.
+// patch is a cluster of one. Each cluster has two sides, each its own unknown. Buried triangles
+// (RadiosityMesh::buriedTriangles: inside another object or behind a plane, where no light comes)
+// never share a cluster with exposed ones, whose light they would dilute.
 //
 // Refinement (RadiosityMesh::split): a triangle patch solved on its own can be cut into four at its
 // edges' midpoints, again and again, where the solve's error estimate asks (Hanrahan, Salzman and
@@ -77,16 +79,24 @@ struct PatchLookup {
 class RadiosityMesh {
 public:
     // Splits every surface into patches of about `patchSize` scene units and clusters the smaller ones.
-    RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings);
+    // `buried`: per triangle of the geometry's triangle array, whether it is buried (buriedTriangles);
+    // empty: none is (the tests' control). cutPlanes: an unbounded shape's rectangle is cut along the
+    // lines where the scene's other surfaces meet it (radiosity_mesh.cpp, contactLines); false: whole.
+    RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
+                  std::span<const std::uint8_t> buried = {}, bool cutPlanes = true);
     ~RadiosityMesh();
     RadiosityMesh(const RadiosityMesh&) = delete;
     RadiosityMesh& operator=(const RadiosityMesh&) = delete;
 
     // How many clusters (solved elements) `patchSize` would make (without building them): for a budget.
-    static std::size_t countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings);
+    static std::size_t countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
+                                     std::span<const std::uint8_t> buried = {}, bool cutPlanes = true);
     // The patch size whose mesh has at most `budget` clusters and is finest among such sizes.
     static float patchSizeForBudget(const Scene& scene, const SceneGeometry& geometry, std::size_t budget,
-                                    int planeRings);
+                                    int planeRings, std::span<const std::uint8_t> buried = {}, bool cutPlanes = true);
+    // Per triangle of the triangle array, 1 where it is buried: inside another object or behind an
+    // unbounded one, judged by rays from its centroid (radiosity_mesh.cpp, isBuried).
+    static std::vector<std::uint8_t> buriedTriangles(const SceneGeometry& geometry, int threads);
 
     const std::vector<RadiosityPatch>& patches() const { return patches_; }
     const std::vector<RadiosityCluster>& clusters() const { return clusters_; }
@@ -127,12 +137,15 @@ private:
         std::uint32_t patch = 0;
         std::uint32_t firstChild = 0;  // 0: a leaf (node 0 is never anyone's child)
     };
-    // Each appends to `clusterable`, per patch: whether it is a whole triangle no larger than the
-    // patch size (what buildClusters may join).
+    // Per patch, whether buildClusters may join it with others: a whole triangle no larger than the
+    // patch size may, with the others exposed or buried like it.
+    enum class Clustering : std::uint8_t { Alone, Exposed, Buried };
+    // Each appends to `clustering`, per patch. buried: the triangle is (buriedTriangles).
     void addTriangle(const ShapeRecord* record, std::uint32_t primitive, std::uint32_t object, const Vec3& a,
-                     const Vec3& b, const Vec3& c, float patchSize, VertexWelder& welder, std::vector<bool>& clusterable);
-    void addGrid(std::uint32_t shapeIndex, std::vector<bool>& clusterable);
-    void buildClusters(const std::vector<bool>& clusterable);
+                     const Vec3& b, const Vec3& c, float patchSize, bool buried, VertexWelder& welder,
+                     std::vector<Clustering>& clustering);
+    void addGrid(std::uint32_t shapeIndex, std::vector<Clustering>& clustering);
+    void buildClusters(const std::vector<Clustering>& clustering);
     // strict: nullopt for a point outside the source's triangle (when its primitive has several).
     std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict) const;
     PatchLookup lookupCell(const Source& source, const Vec3& point) const;

@@ -36,6 +36,14 @@ struct RadiosityOptions {
     // it to the rectangle, as before issue 27 (the light it bounces from beyond is lost: the tests'
     // control). Not a command-line option.
     int planeRings = 3;
+    // Buried triangles (inside another object, behind a plane: RadiosityMesh::buriedTriangles) are
+    // clustered apart from exposed ones. false: clustered together, as before issue 27's fix (they
+    // dilute the exposed triangles' light: the tests' control). Not a command-line option.
+    bool separateBuried = true;
+    // An unbounded surface's rectangle is cut along the lines where other surfaces meet it (a wall's
+    // foot on a floor plane), so no patch straddles one (RadiosityMesh). false: whole, as before
+    // (its patches run under the walls: the tests' control). Not a command-line option.
+    bool cutPlanes = true;
 };
 
 }  // namespace lightpath

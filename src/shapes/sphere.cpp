@@ -123,11 +123,17 @@ void tessellateSphere(const ShapeRecord& record, float edgeLength, std::vector<T
 // (ring, sector) spans z = cos(theta) from 1 - 2 ring/rows down to 1 - 2 (ring+1)/rows and phi
 // from 2 pi sector/columns to 2 pi (sector+1)/columns, in the frame of the world's axes.
 constexpr double kMaxCellsAcross = 1 << 15;  // bounds the counts at a tiny patch size
+// At least this many bands and sectors, whatever the patch size (issue 27): a sphere about as wide
+// as the patch size got 2 bands, so its lit and unlit halves shared cells (the lecture room's matte
+// ball, 2 x 6 cells at the default budget: 0.63 of the path tracer's direct light on its visible
+// side, 1.3 times its fourth bounce). Above the floor the count is still ceil(2 r / size) bands by
+// ceil(2 pi r / size) sectors, so it falls with the size as before.
+constexpr double kMinBands = 12.0, kMinSectors = 24.0;
 
 PatchGrid sphereCells(const ShapeRecord& record, float patchSize) {
     const float radius = sphereOf(record).radius;
-    const double bands = std::clamp(std::ceil(2.0 * radius / patchSize), 2.0, kMaxCellsAcross);
-    const double sectors = std::clamp(std::ceil(2.0 * kPi * radius / patchSize), 4.0, kMaxCellsAcross);
+    const double bands = std::clamp(std::ceil(2.0 * radius / patchSize), kMinBands, kMaxCellsAcross);
+    const double sectors = std::clamp(std::ceil(2.0 * kPi * radius / patchSize), kMinSectors, kMaxCellsAcross);
     const auto rows = static_cast<std::uint32_t>(bands), columns = static_cast<std::uint32_t>(sectors);
     return {rows, columns, 2 + (rows - 1) * columns};
 }
