@@ -321,8 +321,12 @@ std::uint32_t directionBucket(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 Vec3 centroidOf(const Vec3& a, const Vec3& b, const Vec3& c) { return (a + b + c) / 3.0f; }
 
+// RadiosityMesh::kClusterCell: at the whole patch size a cluster of a curved mesh spans light that
+// varies across it (the lecture room's bunny, 1.05 high, in cells of 0.96: its ED{4,}L 0.805 of
+// the path tracer's, its lowest regions 0.39); at half, 0.904 and 0.61, for a first mesh of the
+// same budget (the walls' patches 1.00 rather than 0.96, refined as before).
 ClusterKey clusterKey(std::uint32_t object, const Vec3& centroid, std::uint32_t direction, float patchSize, bool buried) {
-    const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / patchSize)); };
+    const auto cell = [&](float v) { return static_cast<std::int64_t>(std::floor(double(v) / (RadiosityMesh::kClusterCell * patchSize))); };
     return {object, cell(centroid.x), cell(centroid.y), cell(centroid.z), direction, buried};
 }
 

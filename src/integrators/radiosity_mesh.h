@@ -9,9 +9,9 @@
 // takes the outermost ring's value), and its triangles subdivided.
 // Triangles no larger than the patch size are not subdivided but clustered (in the spirit of
 // Smits, Arvo and Greenberg 1994, restricted to near-coplanar groups): the patches of one object
-// whose centroids share a cell of the patch size and whose normals share a direction bucket (a
+// whose centroids share a cell of half the patch size and whose normals share a direction bucket (a
 // cone of about 25 degrees) form one cluster, solved as one element, so a dense mesh costs about
-// (its area / patch size^2) elements rather than one per triangle. A cluster gathers the light
+// 4 (its area / patch size^2) elements rather than one per triangle. A cluster gathers the light
 // arriving over all its members (sample points by area, each with its member's normal), which is
 // exact for its area mean; what varies inside the cell and the cone is averaged away. Every other
 // patch is a cluster of one. Each cluster has two sides, each its own unknown. Buried triangles
@@ -78,6 +78,9 @@ struct PatchLookup {
 
 class RadiosityMesh {
 public:
+    // A cluster's cell, as a fraction of the patch size (radiosity_mesh.cpp says why half).
+    static constexpr double kClusterCell = 0.5;
+
     // Splits every surface into patches of about `patchSize` scene units and clusters the smaller ones.
     // `buried`: per triangle of the geometry's triangle array, whether it is buried (buriedTriangles);
     // empty: none is (the tests' control). cutPlanes: an unbounded shape's rectangle is cut along the
