@@ -852,7 +852,8 @@ RadiosityOptions sunkBoxOptions() {
 
 constexpr double kSunkBoxTolerance = 0.05;
 
-TEST_CASE("radiosity of buried triangles: a box half sunk into the floor shows the path tracer's light, bounces 1 and 2 within 5%") {
+TEST_CASE("radiosity of buried triangles: a box half sunk into the floor shows the path tracer's light, bounces 1 and 2 within 5%" *
+          doctest::test_suite("statistical")) {
     const RadiosityOptions options = sunkBoxOptions();
     const Solved solved(sunkBoxScene(), options, 2);
     std::size_t clustered = 0;
@@ -863,7 +864,8 @@ TEST_CASE("radiosity of buried triangles: a box half sunk into the floor shows t
     CHECK(error < kSunkBoxTolerance);
 }
 
-TEST_CASE("control: radiosity of the same box with buried and exposed triangles clustered together fails the same check") {
+TEST_CASE("control: radiosity of the same box with buried and exposed triangles clustered together fails the same check" *
+          doctest::test_suite("statistical")) {
     RadiosityOptions together = sunkBoxOptions();
     together.separateBuried = false;
     const double error = sunkBoxError(together);
