@@ -56,9 +56,9 @@ def method_renders(fig):
     for integ, spp, extra in (("raycast", run.spp_direct, [AMBIENT]),
                               ("whitted", run.spp_direct, [AMBIENT]),
                               ("path", run.spp_path_taxonomy, [BOUNCED, CAUSTIC]),
-                              # a quarter of the path tracer's samples: each bdpt sample also
-                              # traces and joins a light walk, and only its caustics are shown
-                              ("bdpt", max(run.spp_path // 4, 1), [CAUSTIC]),
+                              # each bdpt sample also traces and joins light walks, and only
+                              # its caustics are shown
+                              ("bdpt", run.spp_bdpt_taxonomy, [CAUSTIC]),
                               ("radiosity", run.spp_radiosity, [])):
         opts = ["--integrator", integ, "--spp", spp, *common]
         if integ == "radiosity":
@@ -74,10 +74,11 @@ def method_renders(fig):
 
 # bdpt's taxonomy render shows only its caustic AOV (x4 on slide 2), a focused spot checked
 # non-zero; its beauty, on no slide, holds caustic fireflies (87% of the squared error in 1% of
-# the pixels): 0.368 at 16 spp, so 0.1 would take about 220 spp, some 200 CPU seconds.
+# the pixels): 0.368 and 0.426 at 16 spp against two references (steps.Run.spp_bdpt_taxonomy),
+# so 0.1 would take about 300 spp, some 130 CPU seconds.
 BDPT_TAXONOMY_LEVEL = 0.4
 BDPT_TAXONOMY_WHY = ("its beauty is on no slide; only its caustic AOV is, a focused spot checked "
-                     "non-zero (0.1 would cost ~220 spp, 200 CPU s)")
+                     "non-zero (0.1 would cost ~300 spp, 130 CPU s)")
 
 
 def check_panel_lpes(fig, panels):

@@ -44,7 +44,7 @@ class Run:
         # raycast / Whitted: one sample at the pixel centre for CI; anti-aliased (and smooth soft
         # shadows of the area light) for slides
         self.spp_direct = 1 if quick else 16
-        self.spp_path = 4 if quick else 64       # path tracer and bdpt
+        self.spp_path = 4 if quick else 64       # the fog slide's path tracer
         # Renders held to NOISE_LEVEL get the samples their measured error asks for, with a
         # margin (error ~ 1/sqrt(spp): predicted = measured * sqrt(old / new)); a panel is
         # not better for noise far below the level, only slower.
@@ -57,11 +57,17 @@ class Run:
         # Radiosity's image is its solve (the same at any spp) seen through the pixel samples:
         # 0.019 at 16 spp, at most ~0.04 at 4, and the solve is 90% of the render's time.
         self.spp_radiosity = 1 if quick else 4
+        # bdpt's taxonomy render, whose caustic AOV alone is shown (recipes.BDPT_TAXONOMY_LEVEL):
+        # 0.368 and 0.426 at 16 spp against two 64-spp references (caustic fireflies make the
+        # figure vary), so 32: ~0.30.
+        self.spp_bdpt_taxonomy = 1 if quick else 32
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
-        # The caustics slide: bdpt's focus 0.075 at 256 spp (a converged focus; 192 would be
-        # ~0.087, not yet measured); the path tracer's beauty (no caustic to find) 0.010 at 64,
-        # so 16: ~0.020.
-        self.spp_caustic = 16 if quick else 256
+        # The caustics slide: bdpt's beauty 0.044 at 256 spp against its 1024-spp reference, and
+        # 0.060 over the caustic's brightest 1% of pixels (the zoomed panels); each light walk
+        # the pilot adds per sample makes a sample costly (191 CPU s at 256). At 128: ~0.059 and
+        # ~0.081 there (the reference's share of the noise taken out, then put back). The path
+        # tracer's beauty (no caustic to find) 0.010 at 64, so 16: ~0.020.
+        self.spp_caustic = 16 if quick else 128
         self.spp_caustic_path = 4 if quick else 16
         self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
