@@ -21,6 +21,12 @@
 // Refinement (RadiosityMesh::split): a triangle patch solved on its own can be cut into four at its
 // edges' midpoints, again and again, where the solve's error estimate asks (Hanrahan, Salzman and
 // Aupperle 1991, in spirit): each triangle of a source's grid is the root of a quadtree of patches.
+// Clusters are cut too (RadiosityMesh::splitClusters; Smits, Arvo and Greenberg 1994 refine a
+// cluster into its children): a cluster's cell is the node of an octree (its depth, shrunk to the
+// smallest cell holding its members' centroids), and a cut makes each occupied eighth of the cell a
+// cluster of its own, down to single triangles (which split() may then cut into four). The solve's
+// estimate for a cluster is its parts' own (radiosity.cpp, clustersToRefine). Patches, vertices and
+// the Gouraud display are untouched by a cluster cut: only which cluster each member solves with.
 //
 // The mesh also answers the display's question: which patch, and which of its vertices with what
 // weights, lies under a hit point (Gouraud interpolation of vertex radiosities).

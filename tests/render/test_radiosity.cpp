@@ -868,6 +868,10 @@ TEST_CASE("control: radiosity of the same box with buried and exposed triangles 
           doctest::test_suite("statistical")) {
     RadiosityOptions together = sunkBoxOptions();
     together.separateBuried = false;
+    // Cutting clusters (RadiosityOptions::refineClusters) separates the mixed ones too, where the
+    // error estimate sees their parts differ (the control's error 3.0% with it): off, so this
+    // control measures the clustering rule alone, as it was measured (18.5%).
+    together.refineClusters = false;
     const double error = sunkBoxError(together);
     CAPTURE(error);
     CHECK(error > kSunkBoxTolerance);
@@ -986,7 +990,7 @@ RadiosityOptions shadowedSlabOptions() {
 
 constexpr double kSlabMean = 0.03, kSlabRegion = 0.35;
 
-TEST_CASE("cluster refinement: a dense slab's shadow edges, every bounce within 3% (mean) and 35% (4x4 regions) of path" *
+TEST_CASE("radiosity cluster refinement: a dense slab's shadow edges, every bounce within 3% (mean) and 35% (4x4 regions) of path" *
           doctest::test_suite("statistical")) {
     const RadiosityOptions options = shadowedSlabOptions();
     const Solved solved(shadowedSlabScene(), options, 4);
@@ -998,7 +1002,7 @@ TEST_CASE("cluster refinement: a dense slab's shadow edges, every bounce within 
     CHECK(errors.region < kSlabRegion);
 }
 
-TEST_CASE("control: the same slab with clusters never cut fails the same check" * doctest::test_suite("statistical")) {
+TEST_CASE("control: radiosity of the same slab with clusters never cut fails the same check" * doctest::test_suite("statistical")) {
     RadiosityOptions uncut = shadowedSlabOptions();
     uncut.refineClusters = false;
     const BounceErrors errors = shadowedSlabErrors(uncut);
