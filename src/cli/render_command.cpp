@@ -105,9 +105,12 @@ void printRadiosityStats(const RadiosityStats& r) {
     std::printf("radiosity     %zu patches (size %.4g) in %zu clusters, %llu form-factor rays, %llu shadow rays\n",
                 r.patches, double(r.patchSize), r.clusters, static_cast<unsigned long long>(r.formFactorRays),
                 static_cast<unsigned long long>(r.shadowRays));
-    if (r.refineRounds > 0)
+    if (r.refineRounds > 0) {
         std::printf("              refined: %zu patches cut into four in %d rounds (where the error estimate asked)\n",
                     r.refined, r.refineRounds);
+        if (r.clustersCut > 0)
+            std::printf("              refined: %zu clusters cut into the eighths of their cells\n", r.clustersCut);
+    }
     std::printf("              %d iterations (%d light-bounces over %d lights solved), residual %.3g, solved in %.3f s\n",
                 r.iterations, r.lightBouncesSolved, r.lightsSolved, r.residual, r.seconds);
     if (!r.unresolved.empty()) std::printf("              not resolved: %s\n", r.unresolved.c_str());

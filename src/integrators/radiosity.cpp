@@ -1,6 +1,7 @@
 #include "integrators/radiosity.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -154,8 +155,6 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     mesh_.emplace(context.scene, context.geometry, patchSize, options.planeRings, buried, options.cutPlanes);
     const std::size_t elementCap = std::min(kMaxPatches, kRefineGrowth * mesh_->clusters().size());
     stats_.patchSize = patchSize;
-    const std::uint32_t lightSamples = strataPerSide(options.lightSamples) * strataPerSide(options.lightSamples);
-    stats_.unresolved = unresolvedMesh(*mesh_, options, lightSamples);
     computeReflectance(context);
 
     int openFrom = 1;
@@ -190,6 +189,12 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
         stats_.formFactorRays = 0;
         values_.assign(w.size() * std::size_t(bounces_) * elementCount(), Rgb{0.0f});
         directNoise_.assign(deciding ? values_.size() : 0, 0.0f);
+        splitSlot_.assign(deciding && options.refineClusters ? mesh_->clusters().size() : 0, kNoSlot);
+        splitSlots_ = 0;
+        for (std::uint32_t c = 0; c < splitSlot_.size(); ++c)
+            if (mesh_->clusterSplittable(c)) splitSlot_[c] = splitSlots_++;
+        rayParts_.clear();
+        directParts_.assign(std::size_t(splitSlots_) * w.size() * 2 * 8, PartSums{});
         rayTargets_.clear();
         raysPerElement_ = 0;
         rowStart_.assign(std::size_t(elementCount()) + 1, 0);
@@ -202,31 +207,45 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
         solve(context, w, openFrom, progress);
         computeVertexValues();
     };
-    std::size_t capped = 0;  // patches the last refinement pass asked to cut beyond the cap
+    std::size_t capped = 0;  // patches and clusters the last refinement pass asked to cut beyond the cap
     for (int round = 0; refining && round < rounds; ++round) {
         solveFor(everything, true);
         if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) break;
-        std::vector<std::uint32_t> cut = patchesToRefine(context.threads);
-        const std::size_t room = elementCap > mesh_->clusters().size() ? (elementCap - mesh_->clusters().size()) / 3 : 0;
+        // Most urgent first while the cap has room: a patch cut adds three elements, a cluster cut
+        // one fewer than its parts.
+        std::size_t room = elementCap > mesh_->clusters().size() ? elementCap - mesh_->clusters().size() : 0;
+        std::vector<std::uint32_t> patchCuts, clusterCuts;
         capped = 0;
-        if (cut.size() > room) {
-            capped = cut.size() - room;
-            cut.resize(room);
+        for (const RefineCut& c : patchesToRefine(context.threads)) {
+            const std::size_t adds = c.cluster ? mesh_->clusterParts(c.id) - 1 : 3;
+            if (adds > room) {
+                ++capped;
+                continue;
+            }
+            room -= adds;
+            (c.cluster ? clusterCuts : patchCuts).push_back(c.id);
         }
-        if (cut.empty()) break;
-        mesh_->split(cut);
+        if (patchCuts.empty() && clusterCuts.empty()) break;
+        mesh_->split(patchCuts);
+        mesh_->splitClusters(clusterCuts);
         computeReflectance(context);
-        stats_.refined += cut.size();
+        stats_.refined += patchCuts.size();
+        stats_.clustersCut += clusterCuts.size();
         stats_.refineRounds = round + 1;
     }
     solveFor(wanted, false);
     directNoise_ = {};
     rayTargets_ = {};
+    rayParts_ = {};
+    directParts_ = {};
+    // What the final mesh could not resolve: its clusters (fewer and smaller where refinement cut them).
+    const std::uint32_t lightSamples = strataPerSide(options.lightSamples) * strataPerSide(options.lightSamples);
+    stats_.unresolved = unresolvedMesh(*mesh_, options, lightSamples);
     if (capped > 0) {
         char text[400];
         std::snprintf(text, sizeof text,
                       "radiosity: refinement stopped at %zu elements (%zux the first mesh's) with %zu more patches "
-                      "to cut: the light changes across them (shadow edges, contact lines, beside emitters) by over "
+                      "or clusters to cut: the light changes across them (shadow edges, contact lines, beside emitters) by over "
                       "%.3g%%%s, so the display smooths it; raise --patches for a finer first mesh, or --refine 0 "
                       "for the uniform mesh",
                       mesh_->clusters().size(), kRefineGrowth, capped, 100.0 * options.refineTolerance,
@@ -286,7 +305,7 @@ std::vector<float> RadiosityIntegrator::valueNoise(int threads) const {
     return noise;
 }
 
-std::vector<std::uint32_t> RadiosityIntegrator::patchesToRefine(int threads) const {
+std::vector<RadiosityIntegrator::RefineCut> RadiosityIntegrator::patchesToRefine(int threads) const {
     // The error estimate: Gouraud shading shows, over a triangle, the plane through its vertices'
     // values (each the area-weighted mean of the patches around the vertex), whose mean over the
     // triangle is the mean of those values. Where the light varies linearly, that mean is the
@@ -356,6 +375,8 @@ std::vector<std::uint32_t> RadiosityIntegrator::patchesToRefine(int threads) con
         weightStart.push_back(weights.size());
     }
     std::vector<float> worst(candidates.size(), 0.0f);
+    // Per light and bounce (slot order): kRefineFloor of its mean over the lit area; 0: nothing lit.
+    std::vector<float> floors(solvedBounces_.size() * std::size_t(bounces_), 0.0f);
     for (std::size_t l = 0; l < solvedBounces_.size(); ++l) {
         for (int k = 1; k <= solvedBounces_[l]; ++k) {
             double flux = 0.0, litArea = 0.0;
@@ -367,6 +388,7 @@ std::vector<std::uint32_t> RadiosityIntegrator::patchesToRefine(int threads) con
             }
             if (!(litArea > 0.0)) continue;
             const float floor = kRefineFloor * float(flux / litArea);
+            floors[slot(l, k)] = floor;
             for (std::size_t c = 0; c < candidates.size(); ++c) {
                 const RadiosityPatch& patch = patches[candidates[c]];
                 for (int side = 0; side < 2; ++side) {
@@ -395,19 +417,71 @@ std::vector<std::uint32_t> RadiosityIntegrator::patchesToRefine(int threads) con
             }
         }
     }
-    struct Candidate {
-        float priority;
-        std::uint32_t patch;
-    };
-    std::vector<Candidate> asking;
+    std::vector<RefineCut> asking;
     for (std::size_t c = 0; c < candidates.size(); ++c)
-        if (worst[c] > 1.0f) asking.push_back({worst[c] * patches[candidates[c]].area, candidates[c]});
-    std::sort(asking.begin(), asking.end(), [](const Candidate& a, const Candidate& b) {
-        return a.priority != b.priority ? a.priority > b.priority : a.patch < b.patch;
+        if (worst[c] > 1.0f) asking.push_back({worst[c] * patches[candidates[c]].area, candidates[c], false});
+    if (splitSlots_ > 0) clustersToRefine(floors, asking);
+    std::sort(asking.begin(), asking.end(), [](const RefineCut& a, const RefineCut& b) {
+        if (a.priority != b.priority) return a.priority > b.priority;
+        return a.cluster != b.cluster ? b.cluster : a.id < b.id;
     });
-    std::vector<std::uint32_t> cut;
-    for (const Candidate& c : asking) cut.push_back(c.patch);
-    return cut;
+    return asking;
+}
+
+void RadiosityIntegrator::clustersToRefine(const std::vector<float>& floors, std::vector<RefineCut>& out) const {
+    // A cluster's value is exact for the mean of the light over its members (RadiosityMesh), and
+    // the display shows that one value over all of them, so its error is how far the light its
+    // parts receive (the eighths of its cell, RadiosityMesh::splitClusters) is from it: each part's
+    // own estimate, from the samples that started on it (the direct light's for bounce 1, the
+    // form-factor rays' rho B_{k-1}(target) for bounce k > 1), against the cluster's value B. The
+    // Gouraud estimate of patchesToRefine sees none of this (a curved mesh's vertices weld with no
+    // neighbour, so they show B). A cluster is cut when some part differs from B by more than the
+    // tolerance (against max(B, floor), as for patches) and by more than refineNoiseSigmas standard
+    // deviations of the part's mean (its samples' spread over their count: a part has a fraction
+    // of the cluster's samples). Priority: the excess times the cluster's area, as for patches.
+    const auto& clusters = mesh_->clusters();
+    const float sigmas = float(std::max(options_.refineNoiseSigmas, 0.0));
+    const std::uint32_t rays = raysPerElement_;
+    for (std::uint32_t c = 0; c < clusters.size(); ++c) {
+        const std::uint32_t slotOf = splitSlot_[c];
+        if (slotOf == kNoSlot) continue;
+        const Rgb rho = reflectance_[c];
+        if (isBlack(rho)) continue;
+        float worst = 0.0f;
+        for (std::size_t l = 0; l < solvedBounces_.size(); ++l) {
+            for (int k = 1; k <= solvedBounces_[l]; ++k) {
+                const float floor = floors[slot(l, k)];
+                for (int side = 0; side < 2; ++side) {
+                    const std::uint32_t e = 2 * c + std::uint32_t(side);
+                    if (isBlack(values_[valueIndex(l, k, e)])) continue;
+                    const float b = luminance(values_[valueIndex(l, k, e)]);
+                    std::array<PartSums, 8> parts{};
+                    if (k == 1) {
+                        for (std::uint32_t part = 0; part < 8; ++part) parts[part] = directParts_[partSlot(l, slotOf, side, part)];
+                    } else if (rays > 0) {
+                        const Rgb* previous = &values_[valueIndex(l, k - 1, 0)];
+                        for (std::uint32_t r = 0; r < rays; ++r) {
+                            const std::uint32_t target = rayTargets_[std::size_t(e) * rays + r];
+                            parts[rayParts_[std::size_t(e) * rays + r]].add(
+                                target == kNoTarget ? 0.0f : luminance(rho * previous[target]));
+                        }
+                    }
+                    for (const PartSums& part : parts) {
+                        if (part.count < 2) continue;
+                        const float n = float(part.count), mean = part.sum / n;
+                        const float difference = std::fabs(mean - b);
+                        float excess = difference / (std::max(b, floor) * float(options_.refineTolerance));
+                        if (sigmas > 0.0f && excess > 1.0f) {
+                            const float variance = std::max(part.squares - n * mean * mean, 0.0f) / (n * (n - 1.0f));
+                            if (variance > 0.0f) excess = std::min(excess, difference / (sigmas * std::sqrt(variance)));
+                        }
+                        worst = std::max(worst, excess);
+                    }
+                }
+            }
+        }
+        if (worst > 1.0f) out.push_back({worst * clusters[c].area, c, true});
+    }
 }
 
 std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context, int& openFrom) const {
@@ -458,6 +532,8 @@ void RadiosityIntegrator::computeFormFactors(const RenderContext& context, Progr
         raysPerElement_ = rays;
         rayTargets_.assign(std::size_t(elements) * rays, kNoTarget);
     }
+    const bool keepParts = keepRays && splitSlots_ > 0;
+    if (keepParts) rayParts_.assign(std::size_t(elements) * rays, 0);
     // Each chunk writes its own rows; they are joined in element order afterwards.
     struct ChunkRows {
         std::vector<std::uint32_t> lengths, targets;
@@ -477,6 +553,8 @@ void RadiosityIntegrator::computeFormFactors(const RenderContext& context, Progr
                 shuffle(order, rng);
                 for (std::uint32_t k = 0; k < rays; ++k) {
                     const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(order[k], side, rng));
+                    if (keepParts && splitSlot_[p] != kNoSlot)
+                        rayParts_[std::size_t(e) * rays + k] = static_cast<std::uint8_t>(mesh_->clusterPart(point.patch));
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
                     const Vec3 direction = Frame(normal).toWorld(sampleCosineHemisphere(stratum(k, side, rng)));
                     const auto hit = context.geometry.intersect(
@@ -547,8 +625,9 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 // cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
                 // heuristic, so neither the 1/d^2 of points near the emitter nor small bright
                 // emitters make the patch noisy.
-                const auto sampleDirect = [&](std::uint32_t k, Rgb& sum) {
+                const auto sampleDirect = [&](std::uint32_t k, Rgb& sum, std::uint32_t& origin) {
                     const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(k, strata, rng));
+                    origin = point.patch;
                     const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
                     const SurfaceHit from = surfacePoint(patches[point.patch], point);
                     const LightSample s = light.sample(point.point, stratum(order[k], strata, rng));
@@ -576,14 +655,18 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 // sum (the collapsed-strata estimator, Cochran 1977, 5A.12): unlike the spread of
                 // independent samples it does not count as noise the light's change over the patch
                 // that stratification already averages.
+                // A cluster's samples are also summed per part, for its error estimate (clustersToRefine).
                 const bool estimateNoise = !directNoise_.empty();
+                const std::uint32_t partsSlot = directParts_.empty() ? kNoSlot : splitSlot_[p];
                 Rgb sum{0.0f};
                 float pairs = 0.0f, first = 0.0f;
                 for (std::uint32_t k = 0; k < samples; ++k) {
                     const Rgb before = sum;
-                    sampleDirect(k, sum);
+                    std::uint32_t origin = 0;
+                    sampleDirect(k, sum, origin);
                     if (!estimateNoise) continue;
                     const float x = luminance(reflectance_[p] * (sum - before));
+                    if (partsSlot != kNoSlot) directParts_[partSlot(l, partsSlot, int(e % 2), mesh_->clusterPart(origin))].add(x);
                     if (k % 2 == 0) {
                         first = x;
                     } else {

@@ -37,6 +37,7 @@ struct RadiosityStats {
     std::uint64_t formFactorRays = 0;
     std::uint64_t shadowRays = 0;      // direct light: shadow rays and, for area lights, rays towards them
     std::size_t refined = 0;           // patches cut into four by the refinement passes
+    std::size_t clustersCut = 0;       // clusters cut into the eighths of their cells by them
     int refineRounds = 0;              // refinement passes that cut something
     int iterations = 0;                // bounces solved (Jacobi iterations, the first one direct)
     int lightsSolved = 0;              // lights some requested output accepts
@@ -94,8 +95,18 @@ private:
     // The variance of each solved value's luminance (valueIndex order) from its own samples: the
     // direct light's (directNoise_) and, for later bounces, the form-factor rays' (rayTargets_).
     std::vector<float> valueNoise(int threads) const;
-    // The patches the error estimate asks to cut, most urgent first (each cut adds three elements).
-    std::vector<std::uint32_t> patchesToRefine(int threads) const;
+    // What a refinement pass cuts: a patch into four (RadiosityMesh::split) or a cluster into the
+    // eighths of its cell (RadiosityMesh::splitClusters).
+    struct RefineCut {
+        float priority;
+        std::uint32_t id;
+        bool cluster;
+    };
+    // The patches and clusters the error estimate asks to cut, most urgent first.
+    std::vector<RefineCut> patchesToRefine(int threads) const;
+    // The clusters' part of it: each part's (eighth's) own estimate against the cluster's value,
+    // per light, bounce and side, floors[light * bounces_ + bounce - 1] as in patchesToRefine.
+    void clustersToRefine(const std::vector<float>& floors, std::vector<RefineCut>& out) const;
 
     std::optional<RadiosityMesh> mesh_;
     RadiosityOptions options_;  // of this render: the context's, with its parameters applied
@@ -116,6 +127,27 @@ private:
     std::vector<float> directNoise_;
     std::vector<std::uint32_t> rayTargets_;
     std::uint32_t raysPerElement_ = 0;
+    // For the clusters' error estimate (refinement passes with RadiosityOptions::refineClusters):
+    // per cluster its slot among those splitClusters can cut (kNoSlot: none), per ray of those
+    // its origin's part (RadiosityMesh::clusterPart), and per (light, slot, side, part) the sums of
+    // its direct-light samples, partSlot(light, slot, side, part).
+    struct PartSums {
+        float sum = 0.0f, squares = 0.0f;
+        std::uint32_t count = 0;
+        void add(float x) {
+            sum += x;
+            squares += x * x;
+            ++count;
+        }
+    };
+    static constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
+    std::vector<std::uint32_t> splitSlot_;
+    std::uint32_t splitSlots_ = 0;
+    std::vector<std::uint8_t> rayParts_;
+    std::vector<PartSums> directParts_;
+    std::size_t partSlot(std::size_t light, std::uint32_t slot, int side, std::uint32_t part) const {
+        return ((light * splitSlots_ + slot) * 2 + std::size_t(side)) * 8 + part;
+    }
     RadiosityStats stats_;
 };
 

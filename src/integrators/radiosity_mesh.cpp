@@ -1,6 +1,7 @@
 #include "integrators/radiosity_mesh.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -667,6 +668,94 @@ void RadiosityMesh::buildClusters(const std::vector<Clustering>& clustering) {
         memberCdf_[slot] = areaSoFar[patches_[i].cluster] / c.area;
     }
     for (const RadiosityCluster& c : clusters_) memberCdf_[c.firstMember + c.memberCount - 1] = 1.0f;
+    for (std::uint32_t c = 0; c < clusters_.size(); ++c) tightenCluster(c);
+}
+
+std::uint32_t RadiosityMesh::octant(std::uint32_t patch, std::uint32_t depth) const {
+    // clusterKey's cells halved depth times: the quotient by a power of two rounds as the cell's
+    // own, so a cell at depth d is exactly the union of its eighths at d + 1.
+    const RadiosityPatch& p = patches_[patch];
+    const Vec3 centroid = centroidOf(p.a, p.b, p.c);
+    const double side = std::ldexp(kClusterCell * patchSize_, -static_cast<int>(depth));
+    std::uint32_t code = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        code |= static_cast<std::uint32_t>(static_cast<std::int64_t>(std::floor(double(centroid[axis]) / side)) & 1) << axis;
+    return code;
+}
+
+void RadiosityMesh::tightenCluster(std::uint32_t cluster) {
+    RadiosityCluster& c = clusters_[cluster];
+    if (c.memberCount < 2) return;
+    while (c.depth < kMaxClusterDepth) {
+        const std::uint32_t first = octant(members_[c.firstMember], c.depth + 1);
+        for (std::uint32_t i = 1; i < c.memberCount; ++i)
+            if (octant(members_[c.firstMember + i], c.depth + 1) != first) return;
+        ++c.depth;
+    }
+}
+
+void RadiosityMesh::setMemberCdf(std::uint32_t cluster) {
+    const RadiosityCluster& c = clusters_[cluster];
+    float areaSoFar = 0.0f;
+    for (std::uint32_t i = c.firstMember; i < c.firstMember + c.memberCount; ++i) {
+        areaSoFar += patches_[members_[i]].area;
+        memberCdf_[i] = areaSoFar / c.area;
+    }
+    memberCdf_[c.firstMember + c.memberCount - 1] = 1.0f;
+}
+
+bool RadiosityMesh::clusterSplittable(std::uint32_t cluster) const {
+    const RadiosityCluster& c = clusters_[cluster];
+    return c.memberCount > 1 && c.depth < kMaxClusterDepth;  // tightenCluster: then its members span eighths
+}
+
+std::uint32_t RadiosityMesh::clusterPart(std::uint32_t patch) const {
+    return octant(patch, clusters_[patches_[patch].cluster].depth + 1);
+}
+
+std::uint32_t RadiosityMesh::clusterParts(std::uint32_t cluster) const {
+    const RadiosityCluster& c = clusters_[cluster];
+    std::uint32_t occupied = 0;
+    for (std::uint32_t i = 0; i < c.memberCount; ++i) occupied |= 1u << octant(members_[c.firstMember + i], c.depth + 1);
+    return static_cast<std::uint32_t>(std::popcount(occupied));
+}
+
+void RadiosityMesh::splitClusters(std::span<const std::uint32_t> cut) {
+    // Hierarchical refinement of clusters (Smits, Arvo and Greenberg 1994 refine a cluster into its
+    // children where the transport's error bound asks; here a cluster's children are the occupied
+    // eighths of its cell, and the error is the solve's, radiosity.cpp, clustersToRefine). A part's
+    // members stay a contiguous range of members_, so nothing else moves.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> coded;  // (eighth, member)
+    for (std::uint32_t id : cut) {
+        if (!clusterSplittable(id)) throw std::logic_error("radiosity: splitClusters() asked to cut a cluster that is not splittable");
+        const RadiosityCluster parent = clusters_[id];
+        const std::uint32_t depth = parent.depth + 1;
+        coded.clear();
+        for (std::uint32_t i = 0; i < parent.memberCount; ++i) {
+            const std::uint32_t member = members_[parent.firstMember + i];
+            coded.emplace_back(octant(member, depth), member);
+        }
+        std::stable_sort(coded.begin(), coded.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (std::size_t i = 0; i < coded.size();) {
+            std::size_t j = i;
+            const auto cluster = i == 0 ? id : static_cast<std::uint32_t>(clusters_.size());
+            RadiosityCluster part{parent.object, parent.firstMember + std::uint32_t(i), 0, 0.0f, depth};
+            for (; j < coded.size() && coded[j].first == coded[i].first; ++j) {
+                members_[parent.firstMember + j] = coded[j].second;
+                patches_[coded[j].second].cluster = cluster;
+                part.area += patches_[coded[j].second].area;
+            }
+            part.memberCount = static_cast<std::uint32_t>(j - i);
+            if (i == 0) {
+                clusters_[id] = part;
+            } else {
+                clusters_.push_back(part);
+            }
+            setMemberCdf(cluster);
+            tightenCluster(cluster);
+            i = j;
+        }
+    }
 }
 
 PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) const {

@@ -21,6 +21,12 @@
 // Refinement (RadiosityMesh::split): a triangle patch solved on its own can be cut into four at its
 // edges' midpoints, again and again, where the solve's error estimate asks (Hanrahan, Salzman and
 // Aupperle 1991, in spirit): each triangle of a source's grid is the root of a quadtree of patches.
+// Clusters are cut too (RadiosityMesh::splitClusters; Smits, Arvo and Greenberg 1994 refine a
+// cluster into its children): a cluster's cell is the node of an octree (its depth, shrunk to the
+// smallest cell holding its members' centroids), and a cut makes each occupied eighth of the cell a
+// cluster of its own, down to single triangles (which split() may then cut into four). The solve's
+// estimate for a cluster is its parts' own (radiosity.cpp, clustersToRefine). Patches, vertices and
+// the Gouraud display are untouched by a cluster cut: only which cluster each member solves with.
 //
 // The mesh also answers the display's question: which patch, and which of its vertices with what
 // weights, lies under a hit point (Gouraud interpolation of vertex radiosities).
@@ -61,6 +67,10 @@ struct RadiosityCluster {
     std::uint32_t firstMember = 0;
     std::uint32_t memberCount = 0;
     float area = 0.0f;
+    // Its cell's depth in the octree of cluster cells: side kClusterCell * patchSize / 2^depth, the
+    // smallest cell holding all its members' centroids (RadiosityMesh::splitClusters cuts it into
+    // the cell's eighths).
+    std::uint32_t depth = 0;
 };
 
 // A point on a patch: where it is and the patch's outward (front-side) normal there.
@@ -80,6 +90,9 @@ class RadiosityMesh {
 public:
     // A cluster's cell, as a fraction of the patch size (radiosity_mesh.cpp says why half).
     static constexpr double kClusterCell = 0.5;
+    // Cells no deeper than this (2^-24 of the first cell): members whose centroids share such a
+    // cell stay one cluster.
+    static constexpr std::uint32_t kMaxClusterDepth = 24;
 
     // Splits every surface into patches of about `patchSize` scene units and clusters the smaller ones.
     // `buried`: per triangle of the geometry's triangle array, whether it is buried (buriedTriangles);
@@ -113,6 +126,18 @@ public:
     PatchPoint sampleClusterPoint(std::uint32_t cluster, Vec2 u) const;
     // Whether split() can cut `patch`: a triangle that is a cluster of its own.
     bool splittable(std::uint32_t patch) const;
+    // Whether splitClusters() can cut `cluster`: it has members in more than one eighth of its cell.
+    bool clusterSplittable(std::uint32_t cluster) const;
+    // The eighth of its cluster's cell (0..7) that holds the centroid of member `patch`: which part
+    // of the cluster splitClusters() puts it in.
+    std::uint32_t clusterPart(std::uint32_t patch) const;
+    // How many clusters splitClusters() makes of `cluster` (its occupied eighths).
+    std::uint32_t clusterParts(std::uint32_t cluster) const;
+    // Cuts each of `clusters` (clusterSplittable, distinct) into the eighths of its cell: the members
+    // in each occupied eighth become a cluster, the first keeping the cluster's id, the others
+    // appended to clusters(); each part's cell is then shrunk to its members (depth). Patches and
+    // vertices are unchanged: the members' `cluster` says which part they solve with.
+    void splitClusters(std::span<const std::uint32_t> clusters);
     // Cuts each of `patches` (splittable, distinct) into four at its edges' midpoints: the patch
     // keeps its id and cluster as the corner child at its first vertex, the three others are
     // appended to patches() and each becomes a new cluster appended to clusters(); new vertices
@@ -149,6 +174,12 @@ private:
                      std::vector<Clustering>& clustering);
     void addGrid(std::uint32_t shapeIndex, std::vector<Clustering>& clustering);
     void buildClusters(const std::vector<Clustering>& clustering);
+    // The eighth (0..7: x, y, z bits) of a cell at depth - 1 that holds `patch`'s centroid, as a cell at `depth`.
+    std::uint32_t octant(std::uint32_t patch, std::uint32_t depth) const;
+    // Deepens `cluster`'s cell while all its members share one eighth of it.
+    void tightenCluster(std::uint32_t cluster);
+    // memberCdf_ over `cluster`'s members.
+    void setMemberCdf(std::uint32_t cluster);
     // strict: nullopt for a point outside the source's triangle (when its primitive has several).
     std::optional<PatchLookup> lookupTriangle(const Source& source, const Vec3& point, bool strict) const;
     PatchLookup lookupCell(const Source& source, const Vec3& point) const;

@@ -28,6 +28,11 @@ struct RadiosityOptions {
     // themselves: radiosity.cpp, patchesToRefine), so refinement chases the mesh's error, not the
     // noise. 0: noise-blind, as before (the tests' control). Not a command-line option.
     double refineNoiseSigmas = 4.0;
+    // Refinement also cuts clusters (RadiosityMesh::splitClusters) where the light their parts
+    // receive differs from the cluster's by more than the tolerance and the noise (radiosity.cpp,
+    // clustersToRefine). false: clusters are never cut, as before (the tests' control). Not a
+    // command-line option.
+    bool refineClusters = true;
     // Jacobi stops once a bounce adds less than this fraction of the light so far of the outputs
     // that receive it (radiosity.cpp, solve), or at --max-depth.
     double tolerance = 1e-4;

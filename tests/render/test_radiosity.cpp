@@ -868,6 +868,10 @@ TEST_CASE("control: radiosity of the same box with buried and exposed triangles 
           doctest::test_suite("statistical")) {
     RadiosityOptions together = sunkBoxOptions();
     together.separateBuried = false;
+    // Cutting clusters (RadiosityOptions::refineClusters) separates the mixed ones too, where the
+    // error estimate sees their parts differ (the control's error 3.0% with it): off, so this
+    // control measures the clustering rule alone, as it was measured (18.5%).
+    together.refineClusters = false;
     const double error = sunkBoxError(together);
     CAPTURE(error);
     CHECK(error > kSunkBoxTolerance);
@@ -910,6 +914,101 @@ TEST_CASE("radiosity mesh: a plane is cut where a wall and another plane meet it
 
 TEST_CASE("control: radiosity mesh of the same plane uncut has patches straddling those lines") {
     CHECK(floorPatchesStraddling(false) > 0);
+}
+
+
+// Clusters cut by refinement (issue 27): a dense slab (12,288 small triangles, a 32 x 32 grid of
+// quads a face) in a closed room (black but its ceiling), a black square hung between it and a point light casting a sharp
+// shadow across its top. At patch size 0.5 the top's triangles are clustered in cells of 0.25,
+// which the shadow's edges cross: solved as one element, a cluster shows the mean of its lit and
+// shadowed triangles, so the 4 x 4 regions along the edges are off. Refinement cuts the clusters
+// the error estimate flags (RadiosityMesh::splitClusters, radiosity.cpp, clustersToRefine) towards
+// their triangles. Measured on the slab's own pixels per bounce (E<.D'slab'>D{k-1}L, k = 1..4)
+// against the path tracer at 1024 spp: worst 4 x 4 region 0.28 (the shadow's edge at bounce 1,
+// still blurred by Gouraud over the triangles that straddle it), mean 2.7%; clusters never cut
+// (the control) 0.51. Issue 27's 5% per region is NOT met by a hard shadow's edge on triangles of
+// this size; the test holds what cutting clusters buys.
+constexpr float kSlabLow = 0.05f, kSlabHigh = 0.25f;
+
+Scene shadowedSlabScene() {
+    Scene scene;
+    const auto grey = test::addMaterial(scene, diffuse("grey", 0.7f));
+    const auto clay = test::addMaterial(scene, diffuse("clay", 0.7f));
+    const auto black = test::addMaterial(scene, diffuse("black", 0.0f));
+    // Only the ceiling reflects besides the slab, so the refinement's element cap goes to the slab.
+    const auto room = test::addObject(scene, "room", black);
+    const auto ceiling = test::addObject(scene, "ceiling", grey);
+    const Vec3 lo{-1.5f, 0.0f, -1.5f}, hi{1.5f, 3.0f, 2.5f};
+    addQuad(scene, room, {lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z});  // floor
+    addQuad(scene, ceiling, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z});
+    addQuad(scene, room, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, lo.y, lo.z});  // back
+    addQuad(scene, room, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z});  // front
+    addQuad(scene, room, {lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z});  // left
+    addQuad(scene, room, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z});  // right
+    const auto slab = test::addObject(scene, "slab", clay);
+    const Vec3 x{2, 0, 0}, y{0, kSlabHigh - kSlabLow, 0}, z{0, 0, 2};
+    const Vec3 a{-1.0f, kSlabLow, -1.0f}, b{1.0f, kSlabHigh, 1.0f};
+    addGridQuad(scene, slab, a, x, z, 32);                      // bottom
+    addGridQuad(scene, slab, {a.x, b.y, a.z}, z, x, 32);        // top
+    addGridQuad(scene, slab, a, y, x, 32);                      // back
+    addGridQuad(scene, slab, {a.x, a.y, b.z}, x, y, 32);        // front
+    addGridQuad(scene, slab, a, z, y, 32);                      // left
+    addGridQuad(scene, slab, {b.x, a.y, a.z}, y, z, 32);        // right
+    const auto blocker = test::addObject(scene, "blocker", black);
+    addQuad(scene, blocker, {-0.3f, 0.8f, -0.3f}, {0.3f, 0.8f, -0.3f}, {0.3f, 0.8f, 0.3f}, {-0.3f, 0.8f, 0.3f});
+    scene.lights.push_back(PointLight{"lamp", {0.05f, 2.0f, -0.8f}, Rgb{8.0f}});
+    scene.camera = test::centredCamera({0.0f, 2.6f, 1.9f}, {0.0f, kSlabHigh, 0.1f}, {0, 1, 0}, 33);
+    return scene;
+}
+
+Film renderShadowedSlab(const std::string& integrator, int spp, const RadiosityOptions& radiosity) {
+    const AovSet aovs(std::vector<lpe::NamedExpression>{{"b1", "E<.D'slab'>L"},
+                                                        {"b2", "E<.D'slab'>DL"},
+                                                        {"b3", "E<.D'slab'>DDL"},
+                                                        {"b4", "E<.D'slab'>DDDL"}});
+    RenderOptions options;
+    options.integrator = integrator;
+    options.writeBeauty = false;
+    options.samplesPerPixel = spp;
+    options.sampler = SamplerKind::Sobol;
+    options.maxDepth = 4;
+    options.threads = 2;
+    options.radiosity = radiosity;
+    return Renderer(shadowedSlabScene(), aovs, options).render().film;
+}
+
+BounceErrors shadowedSlabErrors(const RadiosityOptions& options) {
+    static const Film path = renderShadowedSlab("path", 1024, {});
+    return bounceErrors(renderShadowedSlab("radiosity", 4, options), path);
+}
+
+RadiosityOptions shadowedSlabOptions() {
+    RadiosityOptions options;
+    options.patchSize = 0.5f;
+    return options;
+}
+
+constexpr double kSlabMean = 0.03, kSlabRegion = 0.35;
+
+TEST_CASE("radiosity cluster refinement: a dense slab's shadow edges, every bounce within 3% (mean) and 35% (4x4 regions) of path" *
+          doctest::test_suite("statistical")) {
+    const RadiosityOptions options = shadowedSlabOptions();
+    const Solved solved(shadowedSlabScene(), options, 4);
+    CHECK(solved.radiosity.stats().clustersCut > 0);  // the slab's clusters were cut: the case this is about
+    const BounceErrors errors = shadowedSlabErrors(options);
+    CAPTURE(errors.mean);
+    CAPTURE(errors.region);
+    CHECK(errors.mean < kSlabMean);
+    CHECK(errors.region < kSlabRegion);
+}
+
+TEST_CASE("control: radiosity of the same slab with clusters never cut fails the same check" * doctest::test_suite("statistical")) {
+    RadiosityOptions uncut = shadowedSlabOptions();
+    uncut.refineClusters = false;
+    const BounceErrors errors = shadowedSlabErrors(uncut);
+    CAPTURE(errors.mean);
+    CAPTURE(errors.region);
+    CHECK((errors.mean > kSlabMean || errors.region > kSlabRegion));
 }
 
 }  // namespace
