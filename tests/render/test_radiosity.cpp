@@ -466,20 +466,27 @@ struct BounceErrors {
 
 constexpr int kBounceDepth = 6;
 
-// `lights`: the emitters a bounce ends at (Heckbert's L: all of them, the ambient term and the sky included).
-Film renderBounces(const Scene& scene, const std::string& integrator, int spp, const RadiosityOptions& radiosity,
-                   const std::string& lights = "L") {
-    const AovSet aovs(std::vector<lpe::NamedExpression>{
-        {"b1", "ED" + lights}, {"b2", "EDD" + lights}, {"b3", "EDDD" + lights}, {"b4", "ED{4,}" + lights}});
+// The AOVs `expressions` alone (no beauty) of `scene` under `integrator`, Sobol samples on 2 threads.
+Film renderAovs(const Scene& scene, std::vector<lpe::NamedExpression> expressions, const std::string& integrator,
+                int spp, int maxDepth, const RadiosityOptions& radiosity) {
+    const AovSet aovs(std::move(expressions));
     RenderOptions options;
     options.integrator = integrator;
     options.writeBeauty = false;
     options.samplesPerPixel = spp;
     options.sampler = SamplerKind::Sobol;
-    options.maxDepth = kBounceDepth;
+    options.maxDepth = maxDepth;
     options.threads = 2;
     options.radiosity = radiosity;
     return Renderer(scene, aovs, options).render().film;
+}
+
+// `lights`: the emitters a bounce ends at (Heckbert's L: all of them, the ambient term and the sky included).
+Film renderBounces(const Scene& scene, const std::string& integrator, int spp, const RadiosityOptions& radiosity,
+                   const std::string& lights = "L") {
+    return renderAovs(scene,
+                      {{"b1", "ED" + lights}, {"b2", "EDD" + lights}, {"b3", "EDDD" + lights}, {"b4", "ED{4,}" + lights}},
+                      integrator, spp, kBounceDepth, radiosity);
 }
 
 BounceErrors bounceErrors(const Film& test, const Film& reference) {
@@ -819,16 +826,7 @@ Scene sunkBoxScene() {
 }
 
 Film renderSunkBox(const std::string& integrator, int spp, const RadiosityOptions& radiosity) {
-    const AovSet aovs(std::vector<lpe::NamedExpression>{{"b1", "E<.D'box'>L"}, {"b2", "E<.D'box'>DL"}});
-    RenderOptions options;
-    options.integrator = integrator;
-    options.writeBeauty = false;
-    options.samplesPerPixel = spp;
-    options.sampler = SamplerKind::Sobol;
-    options.maxDepth = 2;
-    options.threads = 2;
-    options.radiosity = radiosity;
-    return Renderer(sunkBoxScene(), aovs, options).render().film;
+    return renderAovs(sunkBoxScene(), {{"b1", "E<.D'box'>L"}, {"b2", "E<.D'box'>DL"}}, integrator, spp, 2, radiosity);
 }
 
 // The worst relative error of the box's light over its pixels, of bounces 1 and 2.
@@ -962,19 +960,9 @@ Scene shadowedSlabScene() {
 }
 
 Film renderShadowedSlab(const std::string& integrator, int spp, const RadiosityOptions& radiosity) {
-    const AovSet aovs(std::vector<lpe::NamedExpression>{{"b1", "E<.D'slab'>L"},
-                                                        {"b2", "E<.D'slab'>DL"},
-                                                        {"b3", "E<.D'slab'>DDL"},
-                                                        {"b4", "E<.D'slab'>DDDL"}});
-    RenderOptions options;
-    options.integrator = integrator;
-    options.writeBeauty = false;
-    options.samplesPerPixel = spp;
-    options.sampler = SamplerKind::Sobol;
-    options.maxDepth = 4;
-    options.threads = 2;
-    options.radiosity = radiosity;
-    return Renderer(shadowedSlabScene(), aovs, options).render().film;
+    return renderAovs(shadowedSlabScene(),
+                      {{"b1", "E<.D'slab'>L"}, {"b2", "E<.D'slab'>DL"}, {"b3", "E<.D'slab'>DDL"}, {"b4", "E<.D'slab'>DDDL"}},
+                      integrator, spp, 4, radiosity);
 }
 
 BounceErrors shadowedSlabErrors(const RadiosityOptions& options) {
