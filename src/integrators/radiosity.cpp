@@ -24,7 +24,7 @@ constexpr std::size_t kMaxPatches = std::size_t{1} << 18;
 // Refinement (preprocess): the first mesh is the budget's (or the size the user set); refining
 // may grow it to kRefineGrowth times its elements where the error estimate asks. Below
 // kRefineFloor of a bounce's mean radiosity, a patch's error is measured against that fraction
-// instead (patchesToRefine).
+// instead (refinementCuts).
 constexpr std::size_t kRefineGrowth = 4;
 // Bounces the refinement passes solve (of every light) to decide where to cut.
 constexpr int kRefineBounces = 4;
@@ -216,7 +216,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
         std::size_t room = elementCap > mesh_->clusters().size() ? elementCap - mesh_->clusters().size() : 0;
         std::vector<std::uint32_t> patchCuts, clusterCuts;
         capped = 0;
-        for (const RefineCut& c : patchesToRefine(context.threads)) {
+        for (const RefineCut& c : refinementCuts(context.threads)) {
             const std::size_t adds = c.cluster ? mesh_->clusterParts(c.id) - 1 : 3;
             if (adds > room) {
                 ++capped;
@@ -305,7 +305,7 @@ std::vector<float> RadiosityIntegrator::valueNoise(int threads) const {
     return noise;
 }
 
-std::vector<RadiosityIntegrator::RefineCut> RadiosityIntegrator::patchesToRefine(int threads) const {
+std::vector<RadiosityIntegrator::RefineCut> RadiosityIntegrator::refinementCuts(int threads) const {
     // The error estimate: Gouraud shading shows, over a triangle, the plane through its vertices'
     // values (each the area-weighted mean of the patches around the vertex), whose mean over the
     // triangle is the mean of those values. Where the light varies linearly, that mean is the
@@ -434,7 +434,7 @@ void RadiosityIntegrator::clustersToRefine(const std::vector<float>& floors, std
     // parts receive (the eighths of its cell, RadiosityMesh::splitClusters) is from it: each part's
     // own estimate, from the samples that started on it (the direct light's for bounce 1, the
     // form-factor rays' rho B_{k-1}(target) for bounce k > 1), against the cluster's value B. The
-    // Gouraud estimate of patchesToRefine sees none of this (a curved mesh's vertices weld with no
+    // Gouraud estimate of refinementCuts sees none of this (a curved mesh's vertices weld with no
     // neighbour, so they show B). A cluster is cut when some part differs from B by more than the
     // tolerance (against max(B, floor), as for patches) and by more than refineNoiseSigmas standard
     // deviations of the part's mean (its samples' spread over their count: a part has a fraction

@@ -103,9 +103,9 @@ private:
         bool cluster;
     };
     // The patches and clusters the error estimate asks to cut, most urgent first.
-    std::vector<RefineCut> patchesToRefine(int threads) const;
+    std::vector<RefineCut> refinementCuts(int threads) const;
     // The clusters' part of it: each part's (eighth's) own estimate against the cluster's value,
-    // per light, bounce and side, floors[light * bounces_ + bounce - 1] as in patchesToRefine.
+    // per light, bounce and side, floors[light * bounces_ + bounce - 1] as in refinementCuts.
     void clustersToRefine(const std::vector<float>& floors, std::vector<RefineCut>& out) const;
 
     std::optional<RadiosityMesh> mesh_;

@@ -659,16 +659,14 @@ void RadiosityMesh::buildClusters(const std::vector<Clustering>& clustering) {
     }
     members_.assign(patches_.size(), 0);
     memberCdf_.assign(patches_.size(), 0.0f);
-    std::vector<float> areaSoFar(clusters_.size(), 0.0f);
     for (std::uint32_t i = 0; i < patches_.size(); ++i) {
         RadiosityCluster& c = clusters_[patches_[i].cluster];
-        const std::uint32_t slot = c.firstMember + c.memberCount++;
-        members_[slot] = i;
-        areaSoFar[patches_[i].cluster] += patches_[i].area;
-        memberCdf_[slot] = areaSoFar[patches_[i].cluster] / c.area;
+        members_[c.firstMember + c.memberCount++] = i;
     }
-    for (const RadiosityCluster& c : clusters_) memberCdf_[c.firstMember + c.memberCount - 1] = 1.0f;
-    for (std::uint32_t c = 0; c < clusters_.size(); ++c) tightenCluster(c);
+    for (std::uint32_t c = 0; c < clusters_.size(); ++c) {
+        setMemberCdf(c);
+        tightenCluster(c);
+    }
 }
 
 std::uint32_t RadiosityMesh::octant(std::uint32_t patch, std::uint32_t depth) const {

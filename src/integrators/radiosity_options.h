@@ -25,7 +25,7 @@ struct RadiosityOptions {
     double refineTolerance = 0.05;
     // A patch is cut only where that difference also exceeds this many standard deviations of its
     // own sampling noise (the form factors' and the light samples', estimated from the rays
-    // themselves: radiosity.cpp, patchesToRefine), so refinement chases the mesh's error, not the
+    // themselves: radiosity.cpp, refinementCuts), so refinement chases the mesh's error, not the
     // noise. 0: noise-blind, as before (the tests' control). Not a command-line option.
     double refineNoiseSigmas = 4.0;
     // Refinement also cuts clusters (RadiosityMesh::splitClusters) where the light their parts
