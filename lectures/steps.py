@@ -255,6 +255,13 @@ def noise_layer(options):
     return options[options.index("--lpe") + 1].split("=", 1)[0]
 
 
+def reference_key(argv, scene):
+    """A cached reference's name: its command after the binary (so a reference serves the same
+    command from any build tree, as it already serves a rebuilt binary at the same path) and the
+    scene's text."""
+    return hashlib.sha256("\0".join([*argv[1:], Path(scene).read_text()]).encode()).hexdigest()[:16]
+
+
 def measure_noise(run, argv, exr):
     """The render's relative RMSE against its cached higher-spp reference, as against one at
     NOISE_REFERENCE_FACTOR times its samples (reference_noise), or None for a render that is
@@ -271,7 +278,7 @@ def measure_noise(run, argv, exr):
     ref_options = list(options)
     ref_options[ref_options.index("--spp") + 1] = "*"
     ref_argv = [argv[0], "render", argv[2], "--seed", "2", "--quiet", *ref_options]
-    key = hashlib.sha256("\0".join([*ref_argv, Path(argv[2]).read_text()]).encode()).hexdigest()[:16]
+    key = reference_key(ref_argv, argv[2])
     folder = run.out / "references"
     folder.mkdir(parents=True, exist_ok=True)
     cached = [int(m.group(1)) for f in folder.glob(f"{key}-*spp.exr")
@@ -304,7 +311,7 @@ def cached_render(run, scene, *options):
     """A render of scene (seed 2, --quiet) that is the same in every run, a converged reference:
     cached in out/references/ by command and scene text, made when missing. Returns its path."""
     argv = [run.lightpath, "render", str(scene), "--seed", "2", "--quiet", *[str(o) for o in options]]
-    key = hashlib.sha256("\0".join([*argv, Path(scene).read_text()]).encode()).hexdigest()[:16]
+    key = reference_key(argv, scene)
     path = run.out / "references" / f"{key}.exr"
     path.parent.mkdir(parents=True, exist_ok=True)
     run.commands.append(run.shown(argv[:3] + ["-o", str(path)] + argv[3:]))

@@ -198,6 +198,23 @@ class References(unittest.TestCase):
                          ["16spp.exr", "8spp.exr"])
         self.assertEqual((self.run.references_made, self.run.references_cached), (2, 1))
 
+    def test_a_reference_serves_the_same_command_from_another_build_tree(self):
+        def noise(run, calls_dir):
+            exr = checks.write_exr(np.full((4, 4, 3), 1.0), self.dir / "r.exr")
+            argv = [run.lightpath, "render", str(self.scene), "-o", str(exr), "--seed", "1",
+                    "--quiet", "--integrator", "path", "--spp", "2"]
+            steps.measure_noise(run, argv, exr)
+            log = calls_dir / "CALLS"
+            return len(log.read_text().splitlines()) if log.is_file() else 0
+        self.assertEqual(noise(self.run, self.lightpath.parent), 1)
+        other = self.dir / "other-build" / "lightpath"
+        other.parent.mkdir()
+        other.write_text(self.lightpath.read_text())
+        other.chmod(0o755)
+        run = steps.Run(other, self.dir / "out", quick=False)
+        self.assertEqual(noise(run, other.parent), 0)
+        self.assertEqual((run.references_made, run.references_cached), (0, 1))
+
     def test_a_render_two_worker_processes_ask_for_is_made_once(self):
         import multiprocessing
         run = self.run
