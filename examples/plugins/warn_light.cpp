@@ -72,6 +72,13 @@ public:
     float pdfEmissionDirection(const Vec3&, const Vec3& direction) const override {
         return (warn_.exponent + 1.0f) / (2.0f * kPi) * warn_.lobe(direction);
     }
+    EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const override {
+        EmittedRay e = from;
+        e.ray.direction = direction;
+        e.radiance = axisIntensity() * warn_.lobe(direction);
+        e.pdfDirection = pdfEmissionDirection(Vec3{0.0f}, direction);
+        return e;
+    }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
     // Intensity times the lobe's solid angle: the integral of cos^n over the hemisphere, 2 pi / (n + 1).
     Rgb power() const override { return axisIntensity() * (2.0f * kPi / (warn_.exponent + 1.0f)); }

@@ -57,7 +57,7 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
     const Vec2 uPoint = sampler.next2D(), uDirection = sampler.next2D();
     if (chosen.light == nullptr || !(chosen.probability > 0.0f)) return 0;
     const Light& light = *chosen.light;
-    const EmittedRay e = light.sampleEmission(uPoint, uDirection);
+    const EmittedRay e = ctx.lights.emissionGuide().sample(light, uPoint, uDirection);
     if (!(e.pdfPosition > 0.0f) || !(e.pdfDirection > 0.0f) || isBlack(e.radiance)) return 0;
     v[0] = lightVertex(light, e.ray.origin, e.normal, e.pdfPosition, e.pdfPosition);
     v[0].pdfFwd = chosen.probability * e.pdfPosition;
@@ -83,7 +83,9 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
                 v[0].pdfPosition = lightSamplingAreaDensity(light, hit->point, v[0].point, v[0].normal);
             // An area light's ray left from an offset origin: x1's density from x0 -> x1, as the
             // other strategies' views compute it (linkThrough says why).
-            if (!light.isDelta()) pdf = light.pdfEmissionDirection(v[0].normal, glm::normalize(hit->point - v[0].point));
+            if (!light.isDelta())
+                pdf = ctx.lights.emissionGuide().pdfDirection(light, v[0].point, v[0].normal,
+                                                              glm::normalize(hit->point - v[0].point));
         }
         BdptVertex& here = v[count];
         here = surfaceVertex(*hit, ray, beta, v[count - 1], pdf, delta, ctx, TransportMode::Importance);

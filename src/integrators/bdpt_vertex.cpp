@@ -128,7 +128,7 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, 
         const Vec3 yz = directionTo(y, z);
         p.connectible[s - 1] = p.connectible[s] = true;
         if (s == 1) {
-            p.fromLight[s] = toAreaDensity(y.light->pdfEmissionDirection(y.normal, yz), y, z);
+            p.fromLight[s] = toAreaDensity(context.lights.emissionGuide().pdfDirection(*y.light, y.point, y.normal, yz), y, z);
         } else {
             // Directions between the points, as linkThrough takes them (not the traced rays').
             const Vec3 back = directionTo(y, light[s - 2]);
@@ -145,7 +145,9 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, 
     } else if (s == 0 && t >= 2) {
         // An eye walk that hit a light: the light's first step as a light walk would take it.
         const BdptVertex& x0 = eye[t - 1];
-        p.fromLight[1] = toAreaDensity(x0.light->pdfEmissionDirection(x0.normal, directionTo(x0, eye[t - 2])), x0, eye[t - 2]);
+        const Vec3 leaving = directionTo(x0, eye[t - 2]);
+        p.fromLight[1] = toAreaDensity(context.lights.emissionGuide().pdfDirection(*x0.light, x0.point, x0.normal, leaving),
+                                       x0, eye[t - 2]);
     }
 
     const BdptVertex& origin = s >= 1 ? light[0] : eye[t - 1];

@@ -159,6 +159,17 @@ float AreaLightSource::pdfEmissionDirection(const Vec3& normal, const Vec3& dire
     return cosine > 0.0f ? cosineHemispherePdf(cosine) : 0.0f;
 }
 
+EmittedRay AreaLightSource::emitAlong(const EmittedRay& from, const Vec3& direction) const {
+    EmittedRay e = from;
+    e.ray.direction = direction;
+    // A sphere emits the same radiance from both sides of its surface: it leaves by the side that
+    // faces the direction; an open surface only by its normal's side.
+    if (spheres_ && glm::dot(e.normal, direction) < 0.0f) e.normal = -e.normal;
+    if (!(glm::dot(e.normal, direction) > 0.0f)) e.radiance = Rgb{0.0f};
+    e.pdfDirection = pdfEmissionDirection(e.normal, direction);
+    return e;
+}
+
 Rgb AreaLightSource::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
     if (!spheres_ && glm::dot(hit.normal, towardViewer) <= 0.0f) return Rgb{0.0f};
     if (!emission_.textured()) return emission_.constant();

@@ -32,6 +32,7 @@ public:
     EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const override;
     float pdfEmissionPosition() const override { return 1.0f / area_; }
     float pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const override;
+    EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const override;
     Rgb radiance(const SurfaceHit& hit, const Vec3& towardViewer) const override;
     Rgb power() const override;
     bool isDelta() const override { return false; }

@@ -69,6 +69,14 @@ public:
     float pdfEmissionDirection(const Vec3&, const Vec3& direction) const override {
         return glm::dot(direction, light_.direction) > kParallel ? diskDensity() : 0.0f;
     }
+    // Its rays are parallel: along any other direction it sends nothing.
+    EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const override {
+        EmittedRay e = from;
+        e.ray.direction = direction;
+        e.pdfDirection = pdfEmissionDirection(e.normal, direction);
+        if (!(e.pdfDirection > 0.0f)) e.radiance = Rgb{0.0f};
+        return e;
+    }
     // Within the cylinder the disk sweeps along the rays.
     bool emitsTowards(const Vec3& receiver) const override {
         const Vec3 offset = receiver - centre_;

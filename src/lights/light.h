@@ -49,6 +49,10 @@ public:
     virtual bool samplesByArea(const Vec3& /*receiver*/) const { return true; }
     // A ray leaving the light: a point by area, a direction by cosine (area) or uniformly (point).
     virtual EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const = 0;
+    // The ray leaving `from`'s point along unit `direction` instead: its radiance that way (zero
+    // where the light sends none), the normal of the side it leaves by, and pdfDirection as
+    // pdfEmissionDirection gives it. Light walks aimed elsewhere (lights/emission_guide.h) take it.
+    virtual EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const = 0;
     // The density per unit area of sampleEmission()'s points (1 for a point light: a delta).
     virtual float pdfEmissionPosition() const { return 1.0f; }
     // The density per steradian with which sampleEmission() leaves a point of outward normal

@@ -9,7 +9,8 @@
 namespace lightpath {
 
 LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
-    : ofObject_(scene.objects.size(), nullptr), areaChoiceOfObject_(scene.objects.size(), 0.0f) {
+    : ofObject_(scene.objects.size(), nullptr), areaChoiceOfObject_(scene.objects.size(), 0.0f),
+      guide_(specularTargets(scene)) {
     // What a light at infinity must cover: the bounded shapes and the eye (planes have no bounds).
     Bounds bounds = sceneBounds(scene);
     bounds.grow(scene.camera.eye);

@@ -10,6 +10,7 @@
 
 #include "accel/scene_geometry.h"
 #include "lights/area_light.h"
+#include "lights/emission_guide.h"
 #include "lights/light.h"
 #include "scene/scene.h"
 
@@ -49,6 +50,8 @@ public:
     // The solid-angle density with which chooseAreaLight + Light::sample reach `hit` from
     // `receiver`: what MIS weighs a BSDF-sampled hit on an emitter against.
     float pdf(const Vec3& receiver, const SurfaceHit& hit) const;
+    // Where light walks leave a light: a share aimed at the scene's specular objects.
+    const EmissionGuide& emissionGuide() const { return guide_; }
 
 private:
     struct Choice {
@@ -64,6 +67,7 @@ private:
     std::vector<Choice> areaChoices_, emitterChoices_;
     std::vector<const Light*> ofObject_;       // by scene object
     std::vector<float> areaChoiceOfObject_;    // chooseAreaLight's probability, by scene object
+    EmissionGuide guide_;
 };
 
 }  // namespace lightpath

@@ -36,6 +36,11 @@ public:
     LightSample sample(const Vec3& receiver, Vec2 u) const override;
     float pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0f; }
     EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const override;
+    EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const override {
+        EmittedRay e = from;
+        e.ray.direction = direction;  // the same intensity every way
+        return e;
+    }
     float pdfEmissionDirection(const Vec3&, const Vec3&) const override { return 1.0f / (4.0f * kPi); }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
     float falloff(float distance) const override { return description_.attenuationAt(distance); }

@@ -76,6 +76,13 @@ public:
     float pdfEmissionDirection(const Vec3&, const Vec3& direction) const override {
         return glm::dot(direction, spot_.axis) > spot_.cosOuter ? coneDensity() : 0.0f;
     }
+    EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const override {
+        EmittedRay e = from;
+        e.ray.direction = direction;
+        e.radiance = axisIntensity() * spot_.cone(direction);
+        e.pdfDirection = pdfEmissionDirection(e.normal, direction);
+        return e;
+    }
     Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
     float intensityShare(const Vec3& leaving) const override { return spot_.cone(leaving); }
     // Intensity times the cone's solid angle: the full 2 pi (1 - cos inner) and, under the ramp

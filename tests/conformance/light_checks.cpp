@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "monte_carlo.h"
@@ -166,25 +167,31 @@ CheckResult checkDeltaLightIntensity(const Light& light) {
     return result;
 }
 
-CheckResult checkLightPower(const Light& light) {
+namespace {
+
+// power() against the flux that emitted rays estimate, E[Le |cos| / (pdfPosition pdfDirection)],
+// and each ray's densities against `pdfDirection` and pdfEmissionPosition().
+template <typename Emit, typename DirectionDensity>
+CheckResult checkEmittedFlux(const Light& light, const char* emitter, Emit emit, DirectionDensity pdfDirection) {
     CheckResult result;
     std::mt19937_64 rng(73);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     std::vector<double> flux;
     for (int i = 0; i < kSamples; ++i) {
-        const EmittedRay e = light.sampleEmission({uniform(rng), uniform(rng)}, {uniform(rng), uniform(rng)});
+        const EmittedRay e = emit(Vec2{uniform(rng), uniform(rng)}, Vec2{uniform(rng), uniform(rng)});
         if (!(finiteNonNegative(e.radiance) && std::isfinite(e.pdfPosition) && std::isfinite(e.pdfDirection) &&
               finite(e.ray.origin) && std::fabs(glm::length(e.ray.direction) - 1.0f) < 1e-4f)) {
-            result.fail("an emitted ray has radiance ", e.radiance.g, ", densities ", e.pdfPosition, " and ",
+            result.fail(emitter, ": an emitted ray has radiance ", e.radiance.g, ", densities ", e.pdfPosition, " and ",
                         e.pdfDirection, ", |direction| ", glm::length(e.ray.direction));
             flux.push_back(0.0);
             continue;
         }
-        if (!close(e.pdfDirection, light.pdfEmissionDirection(e.normal, e.ray.direction), 1e-3f))
-            result.fail("an emitted ray's direction density is ", e.pdfDirection, " but pdfEmissionDirection says ",
-                        light.pdfEmissionDirection(e.normal, e.ray.direction));
+        const float expectedDensity = pdfDirection(e);
+        if (!close(e.pdfDirection, expectedDensity, 1e-3f))
+            result.fail(emitter, ": an emitted ray's direction density is ", e.pdfDirection, " but its density function says ",
+                        expectedDensity);
         if (!close(e.pdfPosition, light.pdfEmissionPosition(), 1e-4f))
-            result.fail("an emitted ray's position density is ", e.pdfPosition, " but pdfEmissionPosition says ",
+            result.fail(emitter, ": an emitted ray's position density is ", e.pdfPosition, " but pdfEmissionPosition says ",
                         light.pdfEmissionPosition());
         if (!(e.pdfPosition > 0.0f && e.pdfDirection > 0.0f)) {
             flux.push_back(0.0);
@@ -197,8 +204,32 @@ CheckResult checkLightPower(const Light& light) {
     const double expected = sum(light.power());
     double p = 0.0;
     if (!(finiteNonNegative(light.power()) && estimates(flux, expected, p)))
-        result.fail("power() is ", expected, " W but sampleEmission() estimates ", momentsOf(flux).mean, " W (p = ", p, ")");
+        result.fail("power() is ", expected, " W but ", emitter, " estimates ", momentsOf(flux).mean, " W (p = ", p, ")");
     return result;
+}
+
+}  // namespace
+
+CheckResult checkLightPower(const Light& light) {
+    return checkEmittedFlux(light, "sampleEmission()",
+                            [&](Vec2 uPoint, Vec2 uDirection) { return light.sampleEmission(uPoint, uDirection); },
+                            [&](const EmittedRay& e) { return light.pdfEmissionDirection(e.normal, e.ray.direction); });
+}
+
+CheckResult checkAimedEmission(const Light& light) {
+    // Two targets in the light's own field, one near and one a few times its size away, and one
+    // behind it (against an emitted ray), so that aimed rays leave where the light sends little.
+    const float size = 1.0f / std::sqrt(light.pdfEmissionPosition());
+    std::vector<EmissionGuide::Target> targets;
+    for (const auto& [u, distance, radius] : {std::tuple{Vec2{0.3f, 0.7f}, 1.5f, 0.4f}, std::tuple{Vec2{0.8f, 0.25f}, 4.0f, 0.5f},
+                                               std::tuple{Vec2{0.55f, 0.45f}, -3.0f, 1.0f}}) {
+        const EmittedRay e = light.sampleEmission(u, Vec2{u.y, u.x});
+        targets.push_back({e.ray.at(distance * size), radius * size});
+    }
+    const EmissionGuide guide(targets);
+    return checkEmittedFlux(light, "EmissionGuide::sample (emitAlong)",
+                            [&](Vec2 uPoint, Vec2 uDirection) { return guide.sample(light, uPoint, uDirection); },
+                            [&](const EmittedRay& e) { return guide.pdfDirection(light, e.ray.origin, e.normal, e.ray.direction); });
 }
 
 std::vector<Vec3> receiversOf(const Light& light) {
@@ -217,6 +248,7 @@ CheckResult checkLightCase(const LightCase& c) {
     if (world.lights.all().empty()) result.fail("the case's scene has no light");
     for (const auto& light : world.lights.all()) {
         result.merge(checkLightPower(*light));
+        result.merge(checkAimedEmission(*light));
         if (light->isDelta()) result.merge(checkDeltaLightIntensity(*light));
         for (const Vec3& receiver : receiversOf(*light)) {
             result.merge(checkLightSamples(*light, world, receiver));

@@ -42,6 +42,9 @@ CheckResult checkDeltaLightIntensity(const Light& light);
 // E[Le |cos| / (pdfPosition pdfDirection)], and sampleEmission()'s densities against
 // pdfEmissionPosition() and pdfEmissionDirection().
 CheckResult checkLightPower(const Light& light);
+// The same flux through light walks aimed at three targets around the light (EmissionGuide, which
+// leaves by emitAlong()), each ray's density against EmissionGuide::pdfDirection.
+CheckResult checkAimedEmission(const Light& light);
 
 // Points that receive the light, found from the light alone: along three of its emitted rays, near
 // it and a few times its size away (1 / sqrt(pdfEmissionPosition()) is the square root of its area).

@@ -44,5 +44,9 @@ TEST_CASE("lights: power() is the flux sampleEmission() estimates") {
     forEveryLight([](const Light& light, const LightWorld&, const LightCase&) { return checkLightPower(light); });
 }
 
+TEST_CASE("lights: light walks aimed at targets (emitAlong) estimate the same flux, with the mixture's density") {
+    forEveryLight([](const Light& light, const LightWorld&, const LightCase&) { return checkAimedEmission(light); });
+}
+
 }  // namespace
 }  // namespace lightpath::conformance

@@ -178,6 +178,7 @@ TEST_CASE("light set: a shapeless light that is not a delta is indexed as a ligh
         LightSample sample(const Vec3&, Vec2) const override { return {}; }
         float pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0f; }
         EmittedRay sampleEmission(Vec2, Vec2) const override { return {}; }
+        EmittedRay emitAlong(const EmittedRay&, const Vec3&) const override { return {}; }
         float pdfEmissionDirection(const Vec3&, const Vec3&) const override { return 0.0f; }
         Rgb radiance(const SurfaceHit&, const Vec3&) const override { return Rgb{0.0f}; }
         Rgb power() const override { return Rgb{1.0f}; }
