@@ -58,16 +58,17 @@ class Run:
         # 0.019 at 16 spp, at most ~0.04 at 4, and the solve is 90% of the render's time.
         self.spp_radiosity = 1 if quick else 4
         # bdpt's taxonomy render, whose caustic AOV alone is shown (recipes.BDPT_TAXONOMY_LEVEL):
-        # 0.368 and 0.426 at 16 spp against two 64-spp references (caustic fireflies make the
-        # figure vary), so 32: ~0.30.
-        self.spp_bdpt_taxonomy = 1 if quick else 32
+        # its beauty's fireflies are the caustics seen in and through the balls (E S+ D S+ L), which
+        # only the eye's walk finds. With light walks aimed at the balls (lights/emission_guide.h)
+        # the pilot takes more walks per sample: 0.30-0.31 at 16 spp, 20 CPU s (0.29 at 32 before).
+        self.spp_bdpt_taxonomy = 1 if quick else 16
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
-        # The caustics slide: bdpt's beauty 0.044 at 256 spp against its 1024-spp reference, and
-        # 0.060 over the caustic's brightest 1% of pixels (the zoomed panels); each light walk
-        # the pilot adds per sample makes a sample costly (191 CPU s at 256). At 128: ~0.059 and
-        # ~0.081 there (the reference's share of the noise taken out, then put back). The path
-        # tracer's beauty (no caustic to find) 0.010 at 64, so 16: ~0.020.
-        self.spp_caustic = 16 if quick else 128
+        # The caustics slide: bdpt's beauty against its 1024-spp reference, and over the caustic's
+        # brightest 1% of pixels (the zoomed panels): 0.063 and 0.082 at 128 spp (94.5 CPU s) while
+        # light walks left the lamp uniformly, one in 200 through the ball; with half of them
+        # aimed at it, 0.038 and 0.044 at 32 (15.5 CPU s; the reference's own noise is in both).
+        # The path tracer's beauty (no caustic to find) 0.010 at 64, so 16: ~0.020.
+        self.spp_caustic = 16 if quick else 32
         self.spp_caustic_path = 4 if quick else 16
         self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
