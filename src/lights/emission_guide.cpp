@@ -40,34 +40,34 @@ int EmissionGuide::conesFrom(const Vec3& point, const Vec3& direction, double& d
 
 EmittedRay EmissionGuide::sample(const Light& light, Vec2 uPoint, Vec2 uDirection) const {
     if (!(aimedShare_ > 0.0f) || light.atInfinity()) return light.sampleEmission(uPoint, uDirection);
-    // The point first (the light picks it from uPoint alone), to know which targets it lies outside.
-    const EmittedRay unaimed = light.sampleEmission(uPoint, uDirection);
+    // uDirection.x picks the branch and, rescaled to [0, 1), serves within it. The light picks its
+    // point from uPoint alone, so one call gives the point (which targets it lies outside) and the
+    // light's own direction.
+    const bool aimed = uDirection.x < aimedShare_;
+    Vec2 u = uDirection;
+    u.x = std::min(aimed ? u.x / aimedShare_ : (u.x - aimedShare_) / (1.0f - aimedShare_), kBelowOne);
+    EmittedRay e = light.sampleEmission(uPoint, u);
     double unused = 0.0;
-    const int count = conesFrom(unaimed.ray.origin, Vec3{0.0f, 0.0f, 1.0f}, unused);
-    if (count == 0) return unaimed;
-
-    EmittedRay e;
-    if (uDirection.x >= aimedShare_) {
-        uDirection.x = std::min((uDirection.x - aimedShare_) / (1.0f - aimedShare_), kBelowOne);
-        e = light.sampleEmission(uPoint, uDirection);
-    } else {
+    const int count = conesFrom(e.ray.origin, Vec3{0.0f, 0.0f, 1.0f}, unused);
+    if (count == 0) return e;  // no target to aim at from here: the mixture is the light's own
+    if (aimed) {
         // The k-th target the point lies outside, then a direction uniform in its cone (pbrt-v4
-        // 6.2.4), both from the one number uDirection.x.
-        const float scaled = uDirection.x / aimedShare_ * float(count);
+        // 6.2.4), both from u.x.
+        const float scaled = u.x * float(count);
         const int k = std::min(int(scaled), count - 1);
         const float uCone = std::min(scaled - float(k), kBelowOne);
         std::optional<SphereCone> cone;
         for (int i = 0, seen = 0; i < int(targets_.size()); ++i) {
-            cone = sphereCone(Sphere{targets_[i].centre, targets_[i].radius}, unaimed.ray.origin);
+            cone = sphereCone(Sphere{targets_[i].centre, targets_[i].radius}, e.ray.origin);
             if (cone && seen++ == k) break;
         }
         const double oneMinusCos = double(uCone) * cone->oneMinusCosThetaMax;
         const double sin2Theta = oneMinusCos * (2.0 - oneMinusCos);
         const float cosTheta = float(1.0 - oneMinusCos), sinTheta = float(std::sqrt(sin2Theta));
-        const float phi = 2.0f * kPi * uDirection.y;
+        const float phi = 2.0f * kPi * u.y;
         const Vec3 direction = glm::normalize(
             Frame(-cone->axis).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta}));
-        e = light.emitAlong(unaimed, direction);
+        e = light.emitAlong(e, direction);
     }
     e.pdfDirection = pdfDirection(light, e.ray.origin, e.normal, e.ray.direction);
     return e;
