@@ -591,9 +591,10 @@ TEST_CASE("control: the same planes clipped to the scene (no rings) fail the sam
 // Refinement (issue 27): the error estimate cuts patches where the light changes faster than they
 // resolve. scenes/cornell-original.toml at 64 x 64: the lights radiosity solves (its ambient term
 // and black background are no light of radiosity's), against the path tracer at 1024 spp. At the
-// default settings the refined solve's worst 4 x 4 region over the four bounces is 4.4% (mean
-// 1.0%); the uniform mesh at the same first budget, unrefined, is 8.4% off in a region (the floor
-// in front of the short block, bounces 2-4).
+// default settings the refined solve's worst 4 x 4 region over the four bounces is 1.7% (mean
+// 0.6%; 4.4% and 1.0% under unscaled Gouraud, before the display kept each element's mean); the
+// uniform mesh at the same first budget, unrefined, is 6.9% off in a region (8.4% under Gouraud;
+// the floor in front of the short block, bounces 2-4).
 constexpr const char* kRadiosityLights = "(<L.[^'ambient']>|O)";
 
 Scene cornellOriginal64() {
@@ -922,8 +923,8 @@ TEST_CASE("control: radiosity mesh of the same plane uncut has patches straddlin
 // shadowed triangles, so the 4 x 4 regions along the edges are off. Refinement cuts the clusters
 // the error estimate flags (RadiosityMesh::splitClusters, radiosity.cpp, clustersToRefine) towards
 // their triangles. Measured on the slab's own pixels per bounce (E<.D'slab'>D{k-1}L, k = 1..4)
-// against the path tracer at 1024 spp: worst 4 x 4 region 0.28 (the shadow's edge at bounce 1,
-// still blurred by Gouraud over the triangles that straddle it), mean 2.7%; clusters never cut
+// against the path tracer at 1024 spp: worst 4 x 4 region 0.19 (0.28 under unscaled Gouraud; the
+// shadow's edge at bounce 1, across the triangles that straddle it), mean 2.2%; clusters never cut
 // (the control) 0.51. Issue 27's 5% per region is NOT met by a hard shadow's edge on triangles of
 // this size; the test holds what cutting clusters buys.
 constexpr float kSlabLow = 0.05f, kSlabHigh = 0.25f;
