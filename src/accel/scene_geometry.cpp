@@ -210,14 +210,16 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
     }
     const PackedRay packed(ray);
     Vec4 edges{0.0f};
-    const std::optional<PrimitiveHit> found = closestAccelerated(ray, packed, &edges);
+    std::optional<PrimitiveHit> found = closestAccelerated(ray, packed, &edges);
+    if (!planePacks_.empty()) found = withPlanes(ray, found);
     if (!found) return std::nullopt;
     return describeHit(ray, found->t, found->primitive, nullptr, &edges, &packed.sheared);
 }
 
 std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) return closestBruteForce(ray);
-    return closestAccelerated(ray, PackedRay(ray));
+    const std::optional<PrimitiveHit> found = closestAccelerated(ray, PackedRay(ray));
+    return planePacks_.empty() ? found : withPlanes(ray, found);
 }
 
 LIGHTPATH_HOT_PATH
@@ -243,12 +245,6 @@ std::optional<PrimitiveHit> SceneGeometry::closestAccelerated(const Ray& ray, co
         };
         bvh_.closest(ray, best.t,
                      [&](std::uint32_t first, std::uint32_t count) { intersectLeaf(probe, packed, first, count, keep); });
-        // keep takes the smallest (t, id), in whatever order candidates come: the planes' own
-        // smallest stands for them all.
-        if (!planePacks_.empty()) {
-            const PrimitiveHit plane = nearestPlane(probe);
-            keep(plane.t, plane.primitive, [] { return Vec4(0.0f); });
-        }
         for (const std::uint32_t id : unbounded_) keep(intersectPrimitive(probe, id), id, [] { return Vec4(0.0f); });
 #ifdef LIGHTPATH_HAS_EMBREE
         if (embree_) {
@@ -283,8 +279,9 @@ std::optional<PrimitiveHit> SceneGeometry::closestBruteForce(const Ray& ray) con
     return PrimitiveHit{closest.tMax, found};
 }
 
-// Out of line: inlined, the planes' code (empty in a scene without planes) moved GCC's inlining
-// of the closest-hit search and cost a mesh scene's rays 1% more (callgrind, cornell-original).
+// The planes apart from the closest-hit search and out of line: inside it, their code (idle in a
+// scene without planes) changed GCC's inlining of the search and cost a mesh scene's rays 1% more
+// (callgrind, cornell-original).
 LIGHTPATH_HOT_PATH
 PrimitiveHit SceneGeometry::nearestPlane(const Ray& ray) const {
     PrimitiveHit best{kNoHit, kNoPrimitive};
@@ -297,6 +294,23 @@ PrimitiveHit SceneGeometry::nearestPlane(const Ray& ray) const {
         }
     }
     return best;
+}
+
+LIGHTPATH_HOT_PATH
+std::optional<PrimitiveHit> SceneGeometry::withPlanes(const Ray& ray, std::optional<PrimitiveHit> found) const {
+    // The planes' nearest within the limit the search would have tested them against, one ulp
+    // beyond its hit; the smaller (t, id) of the two is the search's answer over all primitives
+    // (its keep takes the smallest in whatever order candidates come).
+    Ray probe = ray;
+    if (found) {
+        const float t = found->t;  // the next float up, as the search's keep computes it
+        probe.tMax = t > 0.0f ? std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1u)
+                              : std::nextafter(t, std::numeric_limits<float>::infinity());
+    }
+    const PrimitiveHit plane = nearestPlane(probe);
+    if (plane.primitive == kNoPrimitive) return found;
+    if (!found || plane.t < found->t || (plane.t == found->t && plane.primitive < found->primitive)) return plane;
+    return found;
 }
 
 LIGHTPATH_HOT_PATH

@@ -120,6 +120,9 @@ private:
     // The planes' nearest hit in (ray.tMin, ray.tMax), ties to the smaller id ({kNoHit,
     // kNoPrimitive}: none), and whether any plane is hit there.
     PrimitiveHit nearestPlane(const Ray& ray) const;
+    // `found`, the accelerated search's closest hit among the other primitives, or the planes'
+    // nearest where it is nearer (at equal t, where its id is smaller). Called only with planes.
+    std::optional<PrimitiveHit> withPlanes(const Ray& ray, std::optional<PrimitiveHit> found) const;
     bool anyPlane(const Ray& ray) const;
     std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
     bool occludedBruteForce(const Ray& ray) const;
