@@ -139,8 +139,8 @@ private:
 
     std::vector<Triangle> triangles_;
     std::vector<ShapeRecord> shapes_;
-    // The records no box holds, tested apart on every ray: the planes (the constructor's `planes`)
-    // two at once in packs, and the ids of any other unbounded kind.
+    // The records no box holds, tested apart on every ray: the constructor's `planes`, when there
+    // are two or more, two at once in packs; the ids of the others (a single plane, other kinds).
     std::vector<PlanePack> planePacks_;
     std::vector<std::uint32_t> unbounded_;
     bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
