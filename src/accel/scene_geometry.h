@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "accel/plane_pack.h"
 #include "accel/triangle_pack.h"
 #include "geometry/intersect.h"
 #include "geometry/numerics.h"
@@ -116,6 +117,13 @@ private:
     // hit, Moller-Trumbore); testing the triangle again, with the ray's `sheared` set-up if given.
     SurfaceHit describeHit(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics,
                            const Vec4* edges, const WatertightRay* sheared) const;
+    // The planes' nearest hit in (ray.tMin, ray.tMax), ties to the smaller id ({kNoHit,
+    // kNoPrimitive}: none), and whether any plane is hit there.
+    PrimitiveHit nearestPlane(const Ray& ray) const;
+    // `found`, the accelerated search's closest hit among the other primitives, or the planes'
+    // nearest where it is nearer (at equal t, where its id is smaller). Called only with planes.
+    std::optional<PrimitiveHit> withPlanes(const Ray& ray, std::optional<PrimitiveHit> found) const;
+    bool anyPlane(const Ray& ray) const;
     std::optional<PrimitiveHit> closestBruteForce(const Ray& ray) const;
     bool occludedBruteForce(const Ray& ray) const;
     // Calls keep(t, id, edges) for every primitive of the BVH leaf at `firstSlot` that `ray`
@@ -131,7 +139,10 @@ private:
 
     std::vector<Triangle> triangles_;
     std::vector<ShapeRecord> shapes_;
-    std::vector<std::uint32_t> unbounded_;  // ids of the records no box holds (planes): tested apart
+    // The records no box holds, tested apart on every ray: the constructor's `planes`, when there
+    // are two or more, two at once in packs; the ids of the others (a single plane, other kinds).
+    std::vector<PlanePack> planePacks_;
+    std::vector<std::uint32_t> unbounded_;
     bool shapesInBvh_ = false;              // some record is in the BVH (bounded)
     // Each triangle's unit geometric normal (triangleNormal), computed once: every hit reads it.
     std::vector<Vec3> geometricNormals_;

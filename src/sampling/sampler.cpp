@@ -18,20 +18,32 @@ float toUnitFloat(std::uint32_t bits) { return static_cast<float>(bits >> 8) * 0
     return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
 }
 
-// A hash in which each bit depends only on the bits below it (Laine and Karras 2011); applied to
-// reversed bits it permutes each binary digit given the digits before it: Owen's nested uniform
-// scrambling (Burley 2020, sec. 3). This one takes the value with its bits already reversed.
-[[gnu::always_inline]] inline std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed) {
+// reverseBits of a and b at once, in the two halves of one 64-bit word: the same steps, each
+// applied to both (next2D's two dimensions): one byte swap and three steps for the pair.
+[[gnu::always_inline]] inline void reverseBitsPair(std::uint32_t& a, std::uint32_t& b) {
+    std::uint64_t x = __builtin_bswap64((std::uint64_t{a} << 32) | b);  // bytes of a now low, of b high
+    x = ((x & 0x0f0f0f0f0f0f0f0full) << 4) | ((x & 0xf0f0f0f0f0f0f0f0ull) >> 4);
+    x = ((x & 0x3333333333333333ull) << 2) | ((x & 0xccccccccccccccccull) >> 2);
+    x = ((x & 0x5555555555555555ull) << 1) | ((x & 0xaaaaaaaaaaaaaaaaull) >> 1);
+    a = static_cast<std::uint32_t>(x);
+    b = static_cast<std::uint32_t>(x >> 32);
+}
+
+// A hash in which each bit depends only on the bits below it (Laine and Karras 2011; Burley 2020,
+// listing 2); applied to reversed bits it permutes each binary digit given the digits before it:
+// Owen's nested uniform scrambling (Burley 2020, sec. 3). Its result is still reversed.
+[[gnu::always_inline]] inline std::uint32_t laineKarras(std::uint32_t reversed, std::uint32_t seed) {
     std::uint32_t x = reversed + seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return reverseBits(x);
+    return x;
 }
 
-std::uint32_t owenScramble(std::uint32_t value, std::uint32_t seed) {
-    return owenScrambleReversed(reverseBits(value), seed);
+// Owen's scrambling of a value given with its bits reversed; the result in the usual order.
+[[gnu::always_inline]] inline std::uint32_t owenScrambleReversed(std::uint32_t reversed, std::uint32_t seed) {
+    return reverseBits(laineKarras(reversed, seed));
 }
 
 // Sobol's first two dimensions with their bits reversed (digit m at bit m), as the scrambling
@@ -101,6 +113,7 @@ Sampler::Sampler(SamplerKind kind, std::uint64_t seed, int sampleIndex, int samp
     : kind_(kind), seed_(seed), index_(static_cast<std::uint32_t>(sampleIndex)),
       count_(static_cast<std::uint32_t>(samplesPerPixel)),
       gridSide_(kind == SamplerKind::Stratified ? squareSide(count_) : 0),
+      reversedIndex_(kind == SamplerKind::Sobol ? reverseBits(index_) : 0),
       rng_(usesRng() ? Pcg32(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(sampleIndex))) : Pcg32::unseeded()) {}
 
 LIGHTPATH_HOT_PATH
@@ -117,7 +130,7 @@ float Sampler::next1D() {
         case SamplerKind::Stratified:
             return (static_cast<float>(permute(index_, count_, seed)) + rng_.nextFloat()) / static_cast<float>(count_);
         case SamplerKind::Sobol: {
-            const std::uint32_t shuffled = owenScramble(index_, static_cast<std::uint32_t>(seed));
+            const std::uint32_t shuffled = owenScrambleReversed(reversedIndex_, static_cast<std::uint32_t>(seed));
             return toUnitFloat(owenScrambleReversed(sobolDimension0Reversed(shuffled), static_cast<std::uint32_t>(seed >> 32)));
         }
     }
@@ -150,9 +163,11 @@ Vec2 Sampler::next2D() {
         }
         case SamplerKind::Sobol: {
             const auto scrambleSeed = static_cast<std::uint32_t>(seed >> 32);
-            const std::uint32_t shuffled = owenScramble(index_, static_cast<std::uint32_t>(seed));
-            return {toUnitFloat(owenScrambleReversed(sobolDimension0Reversed(shuffled), scrambleSeed)),
-                    toUnitFloat(owenScrambleReversed(sobolDimension1Reversed(shuffled), scrambleSeed ^ 0x5bd1e995u))};
+            const std::uint32_t shuffled = owenScrambleReversed(reversedIndex_, static_cast<std::uint32_t>(seed));
+            std::uint32_t u = laineKarras(sobolDimension0Reversed(shuffled), scrambleSeed);
+            std::uint32_t v = laineKarras(sobolDimension1Reversed(shuffled), scrambleSeed ^ 0x5bd1e995u);
+            reverseBitsPair(u, v);  // owenScrambleReversed's last step, for both
+            return {toUnitFloat(u), toUnitFloat(v)};
         }
     }
     const float u = rng_.nextFloat();

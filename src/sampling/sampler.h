@@ -48,6 +48,9 @@ private:
     std::uint32_t index_;
     std::uint32_t count_;
     std::uint32_t gridSide_;  // stratified: sqrt(count_) when count_ is a square, else 0
+    // sobol: index_ with its bits reversed, as the index's Owen scramble takes it (Burley 2020,
+    // listing 3: reverse, hash, reverse): once per sampler, not once per dimension.
+    std::uint32_t reversedIndex_;
     int dimension_ = 0;
     Pcg32 rng_;  // independent and stratified only (left unseeded for sobol)
 };

@@ -267,6 +267,47 @@ TEST_CASE("coincident primitives (no centroid spread) still build a shallow, com
     });
 }
 
+TEST_CASE("planes tested two at once = the scalar plane test: ties, an odd count, parallel rays, short segments") {
+    // Five planes (two packs and a padding lane): p0 and p1 coincide (their tie goes to p0, the
+    // smaller id), p2 is a floor, p3 leans, p4 faces p0 from behind the origin. A sphere and a
+    // triangle share the scene so that planes compete with the BVH's hits.
+    const std::vector<Plane> planes{{Vec3(0, 0, 5), Vec3(0, 0, -1), 0},
+                                    {Vec3(0, 0, 5), Vec3(0, 0, -1), 1},
+                                    {Vec3(0, -1, 0), Vec3(0, 1, 0), 2},
+                                    {Vec3(3, 0, 0), glm::normalize(Vec3(1.0f, 0.2f, 0.1f)), 3},
+                                    {Vec3(0, 0, -7), Vec3(0, 0, 1), 4}};
+    const std::vector<Sphere> spheres{{Vec3(0.5f, 0.0f, 2.0f), 0.75f, 5}};
+    const std::vector<Triangle> triangles{{Vec3(-2, -0.5f, 3), Vec3(2, -0.5f, 3), Vec3(0, 2, 3), 6}};
+    Pcg32 rng(17, 3);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 4000; ++i) {
+        Ray ray;
+        ray.origin = Vec3(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()) * 4.0f - 2.0f;
+        // Every fourth ray runs parallel to p0 and p1 (direction z = 0), and every third is a
+        // segment ending at a random distance, as a shadow ray does.
+        const float z = i % 4 == 0 ? 0.0f : rng.nextFloat() * 2.0f - 1.0f;
+        ray.direction = glm::normalize(Vec3(rng.nextFloat() * 2.0f - 1.0f, rng.nextFloat() * 2.0f - 1.0f, z));
+        if (i % 3 == 0) ray.tMax = rng.nextFloat() * 8.0f;
+        rays.push_back(ray);
+    }
+    onEverySimdPath([&] {
+        const SceneGeometry brute(spheres, planes, triangles, {}, Accelerator::BruteForce);
+        const SceneGeometry bvh(spheres, planes, triangles, {}, Accelerator::Bvh);
+        expectSameAnswers(brute, bvh, rays, "five planes, a sphere and a triangle");
+        // The coincident pair: the smaller id wins, and with it ignored the other is hit.
+        Ray ray;
+        ray.origin = Vec3(-1.5f, 1.5f, 0.0f);
+        const auto first = bvh.intersect(ray);
+        REQUIRE(first);
+        CHECK(first->primitive == bvh.shapeId(1));  // p0: after the sphere's id 0
+        ray.ignoredPrimitive = first->primitive;
+        const auto second = bvh.intersect(ray);
+        REQUIRE(second);
+        CHECK(second->primitive == bvh.shapeId(2));
+        CHECK(second->t == first->t);
+    });
+}
+
 TEST_CASE("an empty scene and a planes-only scene") {
     onEverySimdPath([&] {
         const SceneGeometry empty({}, {}, {}, {}, Accelerator::Bvh);
