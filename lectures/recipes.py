@@ -73,12 +73,12 @@ def method_renders(fig):
 
 
 # bdpt's taxonomy render shows only its caustic AOV (x4 on slide 2), a focused spot checked
-# non-zero; its beauty, on no slide, holds caustic fireflies (87% of the squared error in 1% of
-# the pixels): 0.368 and 0.426 at 16 spp against two references (steps.Run.spp_bdpt_taxonomy),
-# so 0.1 would take about 300 spp, some 130 CPU seconds.
+# non-zero; its beauty, on no slide, holds the fireflies of the caustics seen in and through the
+# balls, which only the eye's walk finds: 0.30 at 16 spp (steps.Run.spp_bdpt_taxonomy), so 0.1
+# would take about 150 spp, some 175 CPU seconds.
 BDPT_TAXONOMY_LEVEL = 0.4
 BDPT_TAXONOMY_WHY = ("its beauty is on no slide; only its caustic AOV is, a focused spot checked "
-                     "non-zero (0.1 would cost ~300 spp, 130 CPU s)")
+                     "non-zero (0.1 would cost ~150 spp, 175 CPU s)")
 
 
 def check_panel_lpes(fig, panels):
