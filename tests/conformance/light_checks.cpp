@@ -220,7 +220,7 @@ CheckResult checkAimedEmission(const Light& light) {
     // Two targets in the light's own field, one near and one a few times its size away, and one
     // behind it (against an emitted ray), so that aimed rays leave where the light sends little.
     const float size = 1.0f / std::sqrt(light.pdfEmissionPosition());
-    std::vector<EmissionGuide::Target> targets;
+    std::vector<SpecularTarget> targets;
     for (const auto& [u, distance, radius] : {std::tuple{Vec2{0.3f, 0.7f}, 1.5f, 0.4f}, std::tuple{Vec2{0.8f, 0.25f}, 4.0f, 0.5f},
                                                std::tuple{Vec2{0.55f, 0.45f}, -3.0f, 1.0f}}) {
         const EmittedRay e = light.sampleEmission(u, Vec2{u.y, u.x});
