@@ -42,6 +42,34 @@ def _read_layers(exr):
     return layers
 
 
+def read_layer(exr, name):
+    """One layer of an EXR ('' is the beauty) as a float64 (h, w, 3) array, reading only its three
+    channels unless the whole EXR is cached already: a noise reference has a dozen layers, and
+    the noise is measured on one (five times faster than reading them all)."""
+    key = (str(exr), Path(exr).stat().st_mtime_ns)
+    if key in _layers_cache:
+        return layer(exr, name)
+    import OpenImageIO as oiio
+    inp = oiio.ImageInput.open(str(exr))
+    if inp is None:
+        raise FigureError(f"{exr}: {oiio.geterror()}")
+    names = list(inp.spec().channelnames)
+    dot = name + "." if name else ""
+    wanted = [dot + c for c in "RGB"]
+    if not all(c in names for c in wanted):
+        inp.close()
+        return layer(exr, name)  # the error that names the layers it has
+    first = names.index(wanted[0])
+    if names[first:first + 3] != wanted:
+        inp.close()
+        return read_layers(exr)[name]
+    pixels = inp.read_image(0, 0, first, first + 3, oiio.FLOAT)
+    inp.close()
+    if pixels is None:
+        raise FigureError(f"{exr}: {oiio.geterror()}")
+    return pixels.astype(np.float64)
+
+
 def write_exr(rgb, path):
     """An (h, w, 3) array as a float EXR, so the compositor tone-maps it as it does renders."""
     import OpenImageIO as oiio

@@ -309,6 +309,8 @@ def compose(out_png, title, panels, cols=None, aspect=None, side=None, grid_w=No
         if s and not oiio.ImageBufAlgo.render_text(buf, x, y, s, px, FONT, color):
             raise FigureError(f"{out_png}: drawing '{s}': {buf.geterror()}")
     buf.set_write_format(oiio.UINT8)
+    # zlib level 3 instead of 6: half the CPU of writing a slide, 5% larger files
+    buf.specmod().attribute("png:compressionLevel", 3)
     if not buf.write(str(out_png)):
         raise FigureError(f"{out_png}: {buf.geterror()}")
     return empty

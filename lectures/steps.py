@@ -243,8 +243,8 @@ def relative_rmse(exr, reference, name=""):
     AOV its panel shows). Against an independent reference with k times the samples the noise
     of both counts: this overstates the image's own error by sqrt(1 + 1/k)."""
     import numpy as np
-    from checks import layer
-    a, b = layer(exr, name), layer(reference, name)
+    from checks import layer, read_layer
+    a, b = layer(exr, name), read_layer(reference, name)
     return float(np.sqrt(((a - b) ** 2).mean()) / max(float(b.mean()), 1e-9))
 
 

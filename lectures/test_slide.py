@@ -122,6 +122,24 @@ class NoiseLevel(unittest.TestCase):
         ref = exr(self.dir, "ref", 8, 4, 1.0)
         self.assertAlmostEqual(steps.relative_rmse(a, ref), 0.3, places=5)
 
+    def test_a_reference_s_layer_read_alone_is_the_layer_read_with_all(self):
+        import OpenImageIO as oiio
+        names = ["R", "G", "B", "caustic.R", "caustic.G", "caustic.B", "rest.R", "rest.G", "rest.B"]
+        pixels = np.arange(4 * 5 * 9, dtype=np.float32).reshape(4, 5, 9) / 7.0
+        spec = oiio.ImageSpec(5, 4, 9, oiio.FLOAT)
+        spec.channelnames = names
+        buf = oiio.ImageBuf(spec)
+        buf.set_pixels(oiio.ROI(0, 5, 0, 4, 0, 1, 0, 9), pixels)
+        path = self.dir / "layers.exr"
+        self.assertTrue(buf.write(str(path)))
+        layers = (("", 0), ("caustic", 3), ("rest", 6))
+        alone = {name: checks.read_layer(path, name) for name, _ in layers}  # nothing cached yet
+        for name, first in layers:
+            np.testing.assert_array_equal(alone[name], pixels[..., first:first + 3].astype(np.float64))
+            np.testing.assert_array_equal(alone[name], checks.read_layers(path)[name])
+        with self.assertRaisesRegex(FigureError, r"no layer 'direct' \(has , caustic, rest\)"):
+            checks.read_layer(self.dir / "layers.exr", "direct")
+
     def test_a_render_above_its_level_fails_and_a_stated_level_holds(self):
         a, b, c, d = (Path(f"/x/{n}.exr") for n in "abcd")
         noise = {a: 0.05, b: 0.244, c: 0.3, d: float("nan")}
