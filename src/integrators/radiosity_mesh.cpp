@@ -10,6 +10,7 @@
 
 #include "geometry/spawn_ray.h"
 #include "math/random.h"
+#include "sampling/sampler.h"
 #include "sampling/warp.h"
 #include "util/parallel_chunks.h"
 
@@ -763,7 +764,7 @@ PatchPoint RadiosityMesh::sampleClusterPoint(std::uint32_t cluster, Vec2 u) cons
     const auto it = std::min(std::upper_bound(begin, end, u.x), end - 1);
     const float low = it == begin ? 0.0f : *(it - 1);
     const float width = *it - low;
-    u.x = width > 0.0f ? std::clamp((u.x - low) / width, 0.0f, 0x1.fffffep-1f) : 0.5f;
+    u.x = width > 0.0f ? std::clamp((u.x - low) / width, 0.0f, kBelowOne) : 0.5f;
     return samplePoint(members_[c.firstMember + std::uint32_t(it - memberCdf_.begin() - c.firstMember)], u);
 }
 

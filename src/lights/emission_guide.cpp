@@ -2,13 +2,9 @@
 
 #include <algorithm>
 
+#include "sampling/sampler.h"
+
 namespace lightpath {
-namespace {
-
-// The largest float below 1: a remapped sample stays in [0, 1) as the sampler's do.
-constexpr float kBelowOne = 0x1.fffffep-1f;
-
-}  // namespace
 
 EmissionGuide::EmissionGuide(std::vector<SpecularTarget> targets, float aimedShare)
     : targets_(std::move(targets)), aimedShare_(targets_.empty() ? 0.0f : aimedShare) {}

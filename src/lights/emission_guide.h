@@ -3,14 +3,14 @@
 // E D S+ L, is made only by a light walk through the S vertices (no join passes a delta vertex),
 // and a ball of radius r at distance d from a point light catches r^2 / (4 d^2) of its rays: 0.5%
 // for the lecture's glass ball. So a share of the walks leaves into the cone of a mirror's or a
-// glass's bounding sphere (scene/specular_targets.h), the rest as the light emits: the walk's
+// glass's bounding sphere (lights/specular_targets.h), the rest as the light emits: the walk's
 // weight and every strategy's MIS weight read the mixture's density, so the estimate stays
 // unbiased whatever the share.
 #include <span>
 #include <vector>
 
 #include "lights/light.h"
-#include "scene/specular_targets.h"
+#include "lights/specular_targets.h"
 
 namespace lightpath {
 

@@ -18,6 +18,10 @@ namespace lightpath {
 
 enum class SamplerKind { Independent, Stratified, Sobol };
 
+// The largest float below 1: a sample remapped into a sub-range (a mixture's branch, a stratum)
+// stays in [0, 1), as the sampler's own numbers do.
+inline constexpr float kBelowOne = 0x1.fffffep-1f;
+
 // "independent", "stratified", "sobol"; false for another name.
 bool parseSamplerKind(std::string_view name, SamplerKind& kind);
 const char* samplerName(SamplerKind kind);

@@ -1,4 +1,4 @@
-// The targets light walks are aimed at (scene/specular_targets.h): every bounded mirror or glass
+// The targets light walks are aimed at (lights/specular_targets.h): every bounded mirror or glass
 // object and nothing else, bounded by its own sphere or its box's, and at most the largest
 // kMaxSpecularTargets of them.
 #include <doctest/doctest.h>
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "scene/scene_loader.h"
-#include "scene/specular_targets.h"
+#include "lights/specular_targets.h"
 
 using lightpath::SpecularTarget;
 

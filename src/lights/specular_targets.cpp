@@ -1,4 +1,4 @@
-#include "scene/specular_targets.h"
+#include "lights/specular_targets.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,15 +7,10 @@
 #include <glm/geometric.hpp>
 
 #include "geometry/bounds.h"
+#include "sampling/sampler.h"
 #include "sampling/warp.h"
 
 namespace lightpath {
-namespace {
-
-// The largest float below 1: a remapped sample stays in [0, 1) as the sampler's do.
-constexpr float kBelowOne = 0x1.fffffep-1f;
-
-}  // namespace
 
 std::vector<SpecularTarget> specularTargets(const Scene& scene) {
     std::vector<bool> specular(scene.objects.size(), false);
