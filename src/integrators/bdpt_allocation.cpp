@@ -99,9 +99,11 @@ std::size_t LightWalkPilot::choice() const {
     const std::size_t b = best();
     const Estimate least = estimate(b);
     // Candidates are ordered by fewer walks last, and work falls with q: the last within reach.
+    // Strictly within: where the difference has no spread (a scene without variance: every cost 0)
+    // best()'s choice stands.
     for (std::size_t k = kLightWalkFractions.size(); k-- > b + 1;) {
         const Estimate e = estimate(k);
-        if (e.variance * e.work - least.variance * least.work <= kChoiceStandardErrors * differenceError(k)) return k;
+        if (e.variance * e.work - least.variance * least.work < kChoiceStandardErrors * differenceError(k)) return k;
     }
     return b;
 }

@@ -84,8 +84,8 @@ public:
     // The candidate of least variance x work (Veach 1997, 9.2: a technique's efficiency); on a tie
     // the nearest to one light walk per sample (a scene without variance keeps q = 1).
     std::size_t best() const;
-    // The render's choice: the fewest light walks whose variance x work exceeds best()'s by at most
-    // kChoiceStandardErrors standard errors of the difference (below); best() where none does.
+    // The render's choice: the fewest light walks whose variance x work exceeds best()'s by less
+    // than kChoiceStandardErrors standard errors of the difference (below); best() where none does.
     std::size_t choice() const;
     // The standard error of candidate k's variance x work minus best()'s, from the spread of that
     // difference over the pilot's pixels (the same samples at every candidate: a paired comparison).

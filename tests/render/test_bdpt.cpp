@@ -307,6 +307,10 @@ TEST_CASE("bdpt: the light-walk pilot takes fewer walks when one pixel alone mak
     CHECK(even.estimate(sixteenth).variance * even.estimate(sixteenth).work == doctest::Approx(25.875));
     CHECK(even.differenceError(sixteenth) == doctest::Approx(0.0).epsilon(1e-6));
     CHECK(kLightWalkFractions[even.choice()] == 1.0);
+    // No variance at all: every difference is 0 with no spread, and one walk per sample is kept.
+    LightWalkPilot flat(2);
+    for (int i = 0; i < 8; ++i) pixel(flat, 0.0, 0.0);
+    CHECK(kLightWalkFractions[flat.choice()] == 1.0);
 }
 
 TEST_CASE("splat film: sums faint and bright splats with a relative step, in any order") {
