@@ -74,11 +74,11 @@ def method_renders(fig):
 
 # bdpt's taxonomy render shows only its caustic AOV (x4 on slide 2), a focused spot checked
 # non-zero; its beauty, on no slide, holds the fireflies of the caustics seen in and through the
-# balls, which only the eye's walk finds: 0.30 at 16 spp (steps.Run.spp_bdpt_taxonomy), so 0.1
-# would take about 150 spp, some 175 CPU seconds.
+# balls, which only the eye's walk finds: 0.31 at 24 spp (steps.Run.spp_bdpt_taxonomy), so 0.1
+# would take about 230 spp, some 100 CPU seconds.
 BDPT_TAXONOMY_LEVEL = 0.4
 BDPT_TAXONOMY_WHY = ("its beauty is on no slide; only its caustic AOV is, a focused spot checked "
-                     "non-zero (0.1 would cost ~150 spp, 175 CPU s)")
+                     "non-zero (0.1 would cost ~230 spp, 100 CPU s)")
 
 
 def check_panel_lpes(fig, panels):

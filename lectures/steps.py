@@ -60,8 +60,10 @@ class Run:
         # bdpt's taxonomy render, whose caustic AOV alone is shown (recipes.BDPT_TAXONOMY_LEVEL):
         # its beauty's fireflies are the caustics seen in and through the balls (E S+ D S+ L), which
         # only the eye's walk finds. With light walks aimed at the balls (lights/emission_guide.h)
-        # the pilot takes more walks per sample: 0.30-0.31 at 16 spp, 20 CPU s (0.29 at 32 before).
-        self.spp_bdpt_taxonomy = 1 if quick else 16
+        # the pilot took 1 walk per sample at this seed (0.30-0.31 at 16 spp, 20 CPU s); taking the
+        # fewest walks within one standard error of the best (integrators/bdpt_allocation.h) it
+        # takes 1/16, the most efficient here: 0.38 at 16 spp, 0.345 at 20, 0.307 at 24 (10.8 CPU s).
+        self.spp_bdpt_taxonomy = 1 if quick else 24
         self.patches = 1024 if quick else 4096   # radiosity's patch budget
         # The caustics slide: bdpt's beauty against its 1024-spp reference, and over the caustic's
         # brightest 1% of pixels (the zoomed panels): 0.063 and 0.082 at 128 spp (94.5 CPU s) while

@@ -94,11 +94,12 @@ void printStats(const RenderStats& stats, const WriteStats& write, const std::st
 void printBdptStats(const BdptStats& b) {
     std::printf("bdpt          light walks per camera sample: %.4g (%s)\n", b.lightWalkFraction, b.reason.c_str());
     if (b.candidates.empty()) return;
-    std::printf("              pilot of %llu samples in %.3f s; per sample, variance x work (rays):\n",
+    std::printf("              pilot of %llu samples in %.3f s; per sample, variance x work (rays), and the standard\n"
+                "              error of its difference from the least:\n",
                 static_cast<unsigned long long>(b.pilotSamples), b.seconds);
     for (const BdptStats::Candidate& c : b.candidates)
-        std::printf("              %-8.4g %.4g x %.3g = %.4g%s\n", c.fraction, c.variance, c.work, c.variance * c.work,
-                    c.fraction == b.lightWalkFraction ? "  <- chosen" : "");
+        std::printf("              %-8.4g %.4g x %.3g = %.4g (+- %.2g)%s\n", c.fraction, c.variance, c.work,
+                    c.variance * c.work, c.error, c.fraction == b.lightWalkFraction ? "  <- chosen" : "");
 }
 
 void printRadiosityStats(const RadiosityStats& r) {

@@ -543,15 +543,16 @@ void BdptIntegrator::chooseLightWalkFraction(const RenderContext& ctx) {
         return;
     }
     const LightWalkPilot pilot = runPilot(ctx, strategies_);
-    const std::size_t best = pilot.best();
+    const std::size_t best = pilot.choice();
     fraction_ = kLightWalkFractions[best];
     stats_.lightWalkFraction = fraction_;
     stats_.pilotSamples = pilot.samples();
     for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
         const LightWalkPilot::Estimate e = pilot.estimate(k);
-        stats_.candidates.push_back({kLightWalkFractions[k], e.variance, e.work});
+        stats_.candidates.push_back({kLightWalkFractions[k], e.variance, e.work, pilot.differenceError(k)});
     }
-    stats_.reason = "least variance x work in a pilot";
+    stats_.reason = best == pilot.best() ? "least variance x work in a pilot"
+                                         : "the fewest within one standard error of the least variance x work in a pilot";
     stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 

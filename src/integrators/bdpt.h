@@ -25,6 +25,7 @@ struct BdptStats {
     std::uint64_t pilotSamples = 0;
     struct Candidate {
         double fraction, variance, work;  // variance and work (rays) per camera sample
+        double error;  // standard error of its variance x work minus the least's (0 for the least)
     };
     std::vector<Candidate> candidates;  // the pilot's estimates, when one chose
     double seconds = 0.0;               // the pilot's

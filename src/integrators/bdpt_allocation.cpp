@@ -33,6 +33,7 @@ void LightWalkPilot::add(const PilotSample& sample) {
         sumX2_[k] += x * x;
         sumY_[k] += sample.eye[k] * sample.eye[k] + 2.0 * sample.eye[k] * sample.join[k] + sample.join[k] * sample.join[k] / p;
         splatMoment_[k] += sample.splatSquares[k] / q;
+        pixelSplat_[k] += sample.splatSquares[k] / q;
     }
     eyeWork_ += sample.eyeWork;
     lightWalkWork_ += sample.lightWalkWork;
@@ -42,10 +43,14 @@ void LightWalkPilot::add(const PilotSample& sample) {
     // The pixel's variance per sample, E[Y] - E[X]^2, with E[X]^2 estimated without bias from
     // its n samples: ((sum X)^2 - sum X^2) / (n (n - 1)).
     const double n = samplesPerPixel_;
+    std::array<double, kLightWalkFractions.size()> share{};
     for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k) {
-        pixelVariance_[k] += sumY_[k] / n - (sumX_[k] * sumX_[k] - sumX2_[k]) / (n * (n - 1.0));
-        sumX_[k] = sumX2_[k] = sumY_[k] = 0.0;
+        const double variance = sumY_[k] / n - (sumX_[k] * sumX_[k] - sumX2_[k]) / (n * (n - 1.0));
+        pixelVariance_[k] += variance;
+        share[k] = variance + pixelSplat_[k] / n;
+        sumX_[k] = sumX2_[k] = sumY_[k] = pixelSplat_[k] = 0.0;
     }
+    pixelShares_.push_back(share);
     ++pixels_;
 }
 
@@ -67,6 +72,40 @@ std::size_t LightWalkPilot::best() const {
         if (k == 0 || cost < bestCost || (cost == bestCost && nearerOne)) best = k, bestCost = cost;
     }
     return best;
+}
+
+}  // namespace lightpath
+
+namespace lightpath {
+
+double LightWalkPilot::differenceError(std::size_t k) const {
+    const std::size_t b = best();
+    const double pixels = static_cast<double>(pixelShares_.size());
+    if (pixels < 2.0) return 0.0;
+    // Per pixel d = W_k v_k - W_b v_b, its variance shares weighed by each candidate's work per
+    // sample (the work, summed over every sample, is known far better than the variance).
+    const double wk = estimate(k).work, wb = estimate(b).work;
+    double sum = 0.0, sum2 = 0.0;
+    for (const auto& share : pixelShares_) {
+        const double d = wk * share[k] - wb * share[b];
+        sum += d;
+        sum2 += d * d;
+    }
+    const double variance = std::max(0.0, (sum2 - sum * sum / pixels) / (pixels - 1.0));
+    return std::sqrt(variance / pixels);
+}
+
+std::size_t LightWalkPilot::choice() const {
+    const std::size_t b = best();
+    const Estimate least = estimate(b);
+    // Candidates are ordered by fewer walks last, and work falls with q: the last within reach.
+    // Strictly within: where the difference has no spread (a scene without variance: every cost 0)
+    // best()'s choice stands.
+    for (std::size_t k = kLightWalkFractions.size(); k-- > b + 1;) {
+        const Estimate e = estimate(k);
+        if (e.variance * e.work - least.variance * least.work < kChoiceStandardErrors * differenceError(k)) return k;
+    }
+    return b;
 }
 
 }  // namespace lightpath

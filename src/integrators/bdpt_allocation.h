@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "integrators/bdpt_vertex.h"
 
@@ -31,6 +32,17 @@ inline constexpr std::array<double, 8> kLightWalkFractions = {8.0, 4.0, 2.0, 1.0
 // box under its lamp (64 x 64, 16 spp, q = 1 against 1/8): this model puts the light walk's work at
 // 2.1x the eye walk's, the CPU time at 1.8x, so it errs towards fewer light walks by ~15%.
 inline constexpr double kJoinCost = 0.5;
+
+// How far, in standard errors of the pilot's comparison, a candidate with fewer light walks may
+// be above the least variance x work and still be chosen: the one-standard-error rule (Breiman et
+// al. 1984, Classification and Regression Trees, 3.4.3; Hastie, Tibshirani and Friedman 2009,
+// 7.10): among the candidates the pilot cannot tell from the best, the cheapest. The pilot's
+// pixel variance is carried by a few fireflies (the taxonomy scene, 4,080 samples: 84-98% of it
+// in 5 of 2,040 pixels), so its choice swung between 2 and 1/16 with the seed while a 32x pilot
+// chose 1/16 at every seed and the render agreed (docs/integrators.md); light walks are the
+// technique that must earn its work, as in Grittmann et al. 2022, which starts from the eye's
+// strategies alone and adds light subpaths where their estimated efficiency pays.
+inline constexpr double kChoiceStandardErrors = 1.0;
 
 // Where one contribution of a camera sample lands.
 enum class PilotTerm : std::uint8_t {
@@ -72,6 +84,12 @@ public:
     // The candidate of least variance x work (Veach 1997, 9.2: a technique's efficiency); on a tie
     // the nearest to one light walk per sample (a scene without variance keeps q = 1).
     std::size_t best() const;
+    // The render's choice: the fewest light walks whose variance x work exceeds best()'s by less
+    // than kChoiceStandardErrors standard errors of the difference (below); best() where none does.
+    std::size_t choice() const;
+    // The standard error of candidate k's variance x work minus best()'s, from the spread of that
+    // difference over the pilot's pixels (the same samples at every candidate: a paired comparison).
+    double differenceError(std::size_t k) const;
     std::uint64_t samples() const { return samples_; }
 
 private:
@@ -82,6 +100,11 @@ private:
     std::array<double, kLightWalkFractions.size()> sumX_{}, sumX2_{}, sumY_{};
     // Over finished pixels: their variance estimates; over all samples: splats' second moments.
     std::array<double, kLightWalkFractions.size()> pixelVariance_{}, splatMoment_{};
+    // Per finished pixel, its share of the variance at each candidate: its own estimate plus its
+    // samples' splat moments / n (their mean over the pixels is estimate()'s variance), for
+    // differenceError; the current pixel's splat moments.
+    std::vector<std::array<double, kLightWalkFractions.size()>> pixelShares_;
+    std::array<double, kLightWalkFractions.size()> pixelSplat_{};
     double eyeWork_ = 0.0, lightWalkWork_ = 0.0, joinWork_ = 0.0;
 };
 

@@ -268,6 +268,51 @@ TEST_CASE("bdpt: the light-walk pilot's variance at each fraction is the closed 
     CHECK(kLightWalkFractions[flat.best()] == 1.0);
 }
 
+// The render's choice: the fewest light walks the pilot cannot tell from the least variance x work.
+TEST_CASE("bdpt: the light-walk pilot takes fewer walks when one pixel alone makes them look worse") {
+    // Eight pixels of two samples, eye values a and b: a pixel's variance (a - b)^2 / 2 at every
+    // fraction, no joins, no splats; work 4 + 8 q per sample (W = 12 at q = 1, 4.5 at 1/16).
+    auto pixel = [](LightWalkPilot& pilot, double atLeastOne, double belowOne) {
+        for (double value : {0.0, 1.0}) {
+            PilotSample p;
+            for (std::size_t k = 0; k < kLightWalkFractions.size(); ++k)
+                p.eye[k] = value * (kLightWalkFractions[k] < 1.0 ? belowOne : atLeastOne);
+            p.eyeWork = 4.0;
+            p.lightWalkWork = 8.0;
+            pilot.add(p);
+        }
+    };
+    const std::size_t one = 3, sixteenth = kLightWalkFractions.size() - 1;
+    REQUIRE(kLightWalkFractions[one] == 1.0);
+    REQUIRE(kLightWalkFractions[sixteenth] == 0.0625);
+    // A firefly: seven pixels of variance 2 at every fraction, one of 2 at q >= 1 and 32 below.
+    // Below one walk the variance is (7 * 2 + 32) / 8 = 5.75, so variance x work is 2 x 12 = 24 at
+    // q = 1 (the least) and 5.75 x 4.5 = 25.875 at 1/16. Their difference per pixel, 4.5 u - 24:
+    // -15 seven times and 120 once, mean 1.875: deviations -16.875 seven times and 7 x 16.875
+    // once, sample variance 16.875^2 (7 + 49) / 7 = 8 x 16.875^2, so the standard error
+    // sqrt(8 x 16.875^2 / 8) = 16.875: 1/16, 1.875 above, is well within one of it.
+    LightWalkPilot firefly(2);
+    for (int i = 0; i < 7; ++i) pixel(firefly, 2.0, 2.0);
+    pixel(firefly, 2.0, 8.0);
+    CHECK(firefly.estimate(one).variance * firefly.estimate(one).work == doctest::Approx(24.0));
+    CHECK(firefly.estimate(sixteenth).variance * firefly.estimate(sixteenth).work == doctest::Approx(25.875));
+    CHECK(firefly.best() == one);
+    CHECK(firefly.differenceError(sixteenth) == doctest::Approx(16.875));
+    CHECK(firefly.differenceError(one) == 0.0);
+    CHECK(kLightWalkFractions[firefly.choice()] == 0.0625);
+    // The control: the same estimates at every fraction, every pixel alike (variance 5.75 below one
+    // walk in each), so the difference has no spread and the least variance x work is kept.
+    LightWalkPilot even(2);
+    for (int i = 0; i < 8; ++i) pixel(even, 2.0, std::sqrt(11.5));
+    CHECK(even.estimate(sixteenth).variance * even.estimate(sixteenth).work == doctest::Approx(25.875));
+    CHECK(even.differenceError(sixteenth) == doctest::Approx(0.0).epsilon(1e-6));
+    CHECK(kLightWalkFractions[even.choice()] == 1.0);
+    // No variance at all: every difference is 0 with no spread, and one walk per sample is kept.
+    LightWalkPilot flat(2);
+    for (int i = 0; i < 8; ++i) pixel(flat, 0.0, 0.0);
+    CHECK(kLightWalkFractions[flat.choice()] == 1.0);
+}
+
 TEST_CASE("splat film: sums faint and bright splats with a relative step, in any order") {
     // 2^-20 absolute steps lost every splat below 5e-7 and overflowed above 8.8e12.
     SplatFilm film(2, 1, 1);
