@@ -91,6 +91,8 @@ private:
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
     void computeVertexValues();
+    // displayScale_ from values_ and vertexValues_ (the smooth display's per-element scale).
+    void computeDisplayScale();
     void computeReflectance(const RenderContext& context);
     // The variance of each solved value's luminance (valueIndex order) from its own samples: the
     // direct light's (directNoise_) and, for later bounces, the form-factor rays' (rayTargets_).
@@ -120,6 +122,9 @@ private:
     std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
     std::vector<Rgb> values_;         // valueIndex(light, bounce, element)
     std::vector<Rgb> vertexValues_;   // vertexValueIndex(light, bounce, vertex, side)
+    // The smooth display's scale of the interpolated value, per channel, valueIndex order: the
+    // element's radiosity over the mean Gouraud shows across it (computeDisplayScale).
+    std::vector<Rgb> displayScale_;
     // For the refinement's noise estimate (filled by the refinement passes' solves only): the
     // variance of each element's direct light, valueIndex(light, 1, element), and each form-factor
     // ray's target element (kNoTarget: it met nothing), rayTargets_[element * raysPerElement_ + k]
