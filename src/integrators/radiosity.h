@@ -91,6 +91,9 @@ private:
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
     void computeVertexValues();
+    // displayScale_ from values_ and vertexValues_ (the smooth display's per-element scale), its
+    // correction shrunk by the elements' sampling noise (noise: valueNoise's, of this solve).
+    void computeDisplayScale(const std::vector<float>& noise);
     void computeReflectance(const RenderContext& context);
     // The variance of each solved value's luminance (valueIndex order) from its own samples: the
     // direct light's (directNoise_) and, for later bounces, the form-factor rays' (rayTargets_).
@@ -120,7 +123,12 @@ private:
     std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
     std::vector<Rgb> values_;         // valueIndex(light, bounce, element)
     std::vector<Rgb> vertexValues_;   // vertexValueIndex(light, bounce, vertex, side)
-    // For the refinement's noise estimate (filled by the refinement passes' solves only): the
+    // The smooth display's scale of the interpolated value, per channel, valueIndex order: the
+    // element's radiosity over the mean Gouraud shows across it, shrunk towards 1 where that
+    // difference is within the sampling noise (computeDisplayScale).
+    std::vector<Rgb> displayScale_;
+    // For the noise estimate (filled by the refinement passes' solves, and by the last solve under
+    // the smooth display, whose scale uses it; freed after preprocess): the
     // variance of each element's direct light, valueIndex(light, 1, element), and each form-factor
     // ray's target element (kNoTarget: it met nothing), rayTargets_[element * raysPerElement_ + k]
     // for ray k of its stratified pattern.

@@ -6,8 +6,11 @@
 namespace lightpath {
 
 enum class RadiosityDisplay : std::uint8_t {
-    Smooth,  // vertex radiosities interpolated across each patch (Gouraud)
-    Flat,    // each patch's own radiosity: the mesh is visible
+    Smooth,   // Gouraud scaled per element so each element shows its own mean (radiosity.cpp,
+              // computeVertexValues): smooth where the mesh resolves the light, exact in the mean everywhere
+    Gouraud,  // vertex radiosities interpolated across each patch, unscaled (before issue 27's
+              // display fix: a patch beside a steep change shows its neighbours' light)
+    Flat,     // each patch's own radiosity: the mesh is visible
 };
 
 struct RadiosityOptions {
