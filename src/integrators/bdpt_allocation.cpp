@@ -74,10 +74,6 @@ std::size_t LightWalkPilot::best() const {
     return best;
 }
 
-}  // namespace lightpath
-
-namespace lightpath {
-
 double LightWalkPilot::differenceError(std::size_t k) const {
     const std::size_t b = best();
     const double pixels = static_cast<double>(pixelShares_.size());
