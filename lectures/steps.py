@@ -68,9 +68,11 @@ class Run:
         # The caustics slide: bdpt's beauty against its 1024-spp reference, and over the caustic's
         # brightest 1% of pixels (the zoomed panels): 0.063 and 0.082 at 128 spp (94.5 CPU s) while
         # light walks left the lamp uniformly, one in 200 through the ball; with half of them
-        # aimed at it, 0.038 and 0.044 at 32 (15.5 CPU s; the reference's own noise is in both).
-        # The path tracer's beauty (no caustic to find) 0.010 at 64, so 16: ~0.020.
-        self.spp_caustic = 16 if quick else 32
+        # aimed at it, 0.038 and 0.044 at 32 (15.5 CPU s; the reference's own noise is in both),
+        # so 16: ~0.054 and ~0.062, under the level with margin at half the time.
+        # The path tracer's beauty (no caustic to find) 0.010 at 64, so 16: ~0.020 (at 8 the gold
+        # ball's speckles in the zoomed shadow distract from the missing caustic).
+        self.spp_caustic = 16
         self.spp_caustic_path = 4 if quick else 16
         self.passes_sppm = 4 if quick else 32    # sppm's photon passes (mirror-caustic-sppm)
         self.commands = []                       # commands of the figure being made
