@@ -8,6 +8,11 @@ LIGHTPATH_HOT_PATH
 const std::array<float, kMaxLobes>& Bsdf::lobeProbabilities(const Vec3& wo) const {
     if (wo == first_.wo) return first_.probabilities;
     if (wo == last_.wo) return last_.probabilities;
+    if (first_.wo != Vec3{0.0f}) {
+        if (woDependence_ == WoDependence::Unknown)
+            woDependence_ = material_.lobeAlbedosIgnoreWo(side_) ? WoDependence::Ignored : WoDependence::Used;
+        if (woDependence_ == WoDependence::Ignored) return first_.probabilities;
+    }
     LobeChoice& choice = first_.wo == Vec3{0.0f} ? first_ : last_;
     choice.wo = wo;
     computeLobeProbabilities(choice);

@@ -5,6 +5,7 @@
 // implies. Results name their lobe (its index in the material's lobes()), and so its event
 // (materials/lobe.h): an integrator never maps lobes to events by hand.
 #include <array>
+#include <cstdint>
 #include <optional>
 
 #include "materials/material.h"
@@ -64,7 +65,8 @@ private:
     // for the same wo again and again (pdf per lobe in next-event estimation, then sample), so
     // answers are kept: for Fresnel glass it costs a Fresnel evaluation. Two of them: the first
     // wo asked (the hit's own) and the last other one, so bdpt's joins, which alternate the
-    // hit's wo with the reverse density's wo (wo and wi swapped), keep the first.
+    // hit's wo with the reverse density's wo (wo and wi swapped), keep the first. Where the
+    // material's lobe albedos ignore wo (Material::lobeAlbedosIgnoreWo), the first serves every wo.
     const std::array<float, kMaxLobes>& lobeProbabilities(const Vec3& wo) const;
 
     struct LobeChoice {
@@ -77,6 +79,8 @@ private:
     Lobes lobes_;  // asked once per hit: integrators read a lobe's event at every step
     SurfaceSide side_;
     mutable LobeChoice first_, last_;
+    enum class WoDependence : std::uint8_t { Unknown, Ignored, Used };
+    mutable WoDependence woDependence_ = WoDependence::Unknown;  // asked on the first miss only
 };
 
 }  // namespace lightpath

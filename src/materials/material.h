@@ -44,6 +44,12 @@ public:
     virtual std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const = 0;
     // A smooth lobe's (estimated) albedo from wo: lobes are chosen in proportion to it.
     virtual float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const = 0;
+    // Whether albedo() and the specular branches' albedos are the same for every wo on this side:
+    // the Bsdf then chooses lobes once per hit, where bdpt's reverse densities ask from many wo.
+    virtual bool lobeAlbedosIgnoreWo(const SurfaceSide& side) const {
+        (void)side;
+        return false;
+    }
     // Whether the material chooses among its lobes itself, after sampling what the choice depends
     // on (Walter et al. 2007 choose reflection or refraction by the Fresnel factor at the sampled
     // microfacet): the Bsdf then asks it for every sample and density, and not albedo().

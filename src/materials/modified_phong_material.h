@@ -31,6 +31,7 @@ public:
     float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
     std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
     float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    bool lobeAlbedosIgnoreWo(const SurfaceSide&) const override { return true; }  // constants, no delta lobe
     int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
     Rgb diffuseReflectance() const override { return kd.mean(); }

@@ -44,6 +44,8 @@ public:
     float pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
     std::optional<LobeSample> sample(int lobe, const SurfaceSide& side, const Vec3& wo, Vec2 u) const override;
     float albedo(int lobe, const SurfaceSide& side, const Vec3& wo) const override;
+    // Without a mirror or glass term: the smooth lobes' albedos are constants.
+    bool lobeAlbedosIgnoreWo(const SurfaceSide&) const override { return kr.black() && kt.black(); }
     int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const override;
     int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;

@@ -258,6 +258,34 @@ TEST_CASE("Bsdf::pdf answers as a fresh Bsdf does, whatever wo was asked before"
         changed += std::fabs(atOwn - fresh.pdf(PhongMaterial::kDiffuse, wos[1], wi)) > 1e-3f * atOwn;
     }
     CHECK(changed > 100);
+    CHECK_FALSE(material.lobeAlbedosIgnoreWo({{0, 0, 1}, true, TransportMode::Radiance}));
+}
+
+// Materials whose lobe albedos are constants let Bsdf keep one lobe choice for every wo
+// (Material::lobeAlbedosIgnoreWo): their kept answers too are a fresh Bsdf's.
+TEST_CASE("Bsdf::pdf of a material with constant lobe albedos: one lobe choice serves every wo") {
+    const PhongMaterial phong = makeMaterial(Rgb{0.5f, 0.2f, 0.1f}, Rgb{0.3f}, 20);
+    const ModifiedPhongMaterial modified = makeMaterial<ModifiedPhongMaterial>({0.5f, 0.3f, 0.1f}, Rgb{0.4f}, 10);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<float> cosine(-1.0f, 1.0f), azimuth(0.0f, 6.2831853f);
+    auto direction = [&] {
+        const float c = cosine(rng), s = std::sqrt(1.0f - c * c), phi = azimuth(rng);
+        return Vec3{s * std::cos(phi), s * std::sin(phi), c};
+    };
+    for (const Material* material : {static_cast<const Material*>(&phong), static_cast<const Material*>(&modified)}) {
+        CHECK(material->lobeAlbedosIgnoreWo({{0, 0, 1}, true, TransportMode::Radiance}));
+        const Bsdf kept(*material, {0, 0, 1}, true);
+        for (int i = 0; i < 200; ++i) {
+            const Vec3 wo = direction(), wi = direction();
+            for (int lobe = 0; lobe < int(kept.lobes().size()); ++lobe) {
+                if (kept.lobe(lobe).delta()) continue;
+                const Bsdf fresh(*material, {0, 0, 1}, true);
+                CAPTURE(i);
+                CAPTURE(lobe);
+                CHECK(kept.pdf(lobe, wo, wi) == fresh.pdf(lobe, wo, wi));
+            }
+        }
+    }
 }
 }  // namespace
 }  // namespace lightpath
