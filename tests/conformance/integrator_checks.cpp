@@ -122,7 +122,7 @@ Scene brighter(Scene scene, float factor) {
     return scene;
 }
 
-Agreement agreementWithPath(const IntegratorInfo& integrator, const Scene& scene, const Scene& pathScene) {
+Agreements agreementsWithPath(const IntegratorInfo& integrator, const Scene& scene, const Scene& control) {
     const AovSet shared(std::vector<lpe::NamedExpression>{{"shared", integrator.pathLanguage}});
     // Independent samples, so that the renders' means are independent estimates, as Welch's test
     // needs. An integrator that sees each pixel at its centre takes one sample per render; the
@@ -137,32 +137,37 @@ Agreement agreementWithPath(const IntegratorInfo& integrator, const Scene& scene
     pathOptions.integrator = "path";
     pathOptions.samplesPerPixel = centres ? 1 : 64;  // the path tracer is the reference: less noise
     options.integrator = integrator.name;
-    const Renderer renderer(scene, shared, options), pathRenderer(pathScene, shared, pathOptions);
+    const Renderer pathRenderer(scene, shared, pathOptions);
     const int passes = centres ? 16 : 1, pathPasses = centres ? 48 : 1;
     const auto estimate = [](const Renderer& r, int count, std::uint64_t seed) {
         double mean = 0.0;
         for (int pass = 0; pass < count; ++pass) mean += imageMean(r.render(seed + pass).film, 0) / count;
         return mean;
     };
-    std::vector<double> means, pathMeans;
-    for (int r = 0; r < kAgreementRenders; ++r) {
-        means.push_back(estimate(renderer, passes, 1000 + 100 * r));
-        pathMeans.push_back(estimate(pathRenderer, pathPasses, 1000 + 100 * r));
-    }
     const auto moments = [](const std::vector<double>& v, double& mean, double& variance) {
         mean = variance = 0.0;
         for (double x : v) mean += x / double(v.size());
         for (double x : v) variance += (x - mean) * (x - mean) / double(v.size() - 1);
     };
-    Agreement a;
-    double variance = 0.0, pathVariance = 0.0;
-    moments(means, a.mean, variance);
-    moments(pathMeans, a.pathMean, pathVariance);
-    // The difference the integrator's approximation allows is taken off before the test.
-    const double allowed = agreementAllowance(integrator) * a.pathMean, difference = a.mean - a.pathMean;
-    const double beyond = std::copysign(std::max(0.0, std::fabs(difference) - allowed), difference);
-    a.pValue = test::welchTTest(a.pathMean + beyond, variance, kAgreementRenders, a.pathMean, pathVariance, kAgreementRenders);
-    return a;
+    std::vector<double> pathMeans;
+    for (int r = 0; r < kAgreementRenders; ++r) pathMeans.push_back(estimate(pathRenderer, pathPasses, 1000 + 100 * r));
+    double pathMean = 0.0, pathVariance = 0.0;
+    moments(pathMeans, pathMean, pathVariance);
+    const auto against = [&](const Scene& rendered) {
+        const Renderer renderer(rendered, shared, options);
+        std::vector<double> means;
+        for (int r = 0; r < kAgreementRenders; ++r) means.push_back(estimate(renderer, passes, 1000 + 100 * r));
+        Agreement a;
+        a.pathMean = pathMean;
+        double variance = 0.0;
+        moments(means, a.mean, variance);
+        // The difference the integrator's approximation allows is taken off before the test.
+        const double allowed = agreementAllowance(integrator) * pathMean, difference = a.mean - pathMean;
+        const double beyond = std::copysign(std::max(0.0, std::fabs(difference) - allowed), difference);
+        a.pValue = test::welchTTest(pathMean + beyond, variance, kAgreementRenders, pathMean, pathVariance, kAgreementRenders);
+        return a;
+    };
+    return {against(scene), against(control)};
 }
 
 CheckResult checkDegenerateScenes(const IntegratorInfo& integrator) {

@@ -30,8 +30,12 @@ struct Agreement {
     double pValue = 1.0;
     double mean = 0.0, pathMean = 0.0;  // of the image's R + G + B per pixel
 };
-// `pathScene` is rendered by the path tracer, `scene` by `integrator` (the control: a brighter copy).
-Agreement agreementWithPath(const IntegratorInfo& integrator, const Scene& scene, const Scene& pathScene);
+// `scene` rendered by `integrator` and by the path tracer, and `control` (a brighter copy) by
+// `integrator` against the same path-traced renders, which are made once.
+struct Agreements {
+    Agreement same, control;
+};
+Agreements agreementsWithPath(const IntegratorInfo& integrator, const Scene& scene, const Scene& control);
 // Every light and emitter `factor` times brighter.
 Scene brighter(Scene scene, float factor);
 
