@@ -17,6 +17,7 @@
 // A patch's reflectance is its material's diffuse kd (the Lambert lobe of the shared Bsdf). Glossy
 // (ks), mirror (kr) and glass (kt) parts take no part, as in classic radiosity, and neither does
 // the ambient term ka Ia. Emitters' own radiance is what the other integrators show for E L / E O.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -90,7 +91,12 @@ private:
     void computeFormFactors(const RenderContext& context, ProgressBar& progress, bool keepRays);
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
+    // The vertex radiosities (vertexValues_) of every solved light and bounce, or of one.
     void computeVertexValues();
+    void computeVertexValues(std::size_t light, int bounce);
+    // Per element, the area-weighted mean over its patches of their vertex values' mean: what
+    // Gouraud shows across it, on average (light, bounce: its vertex values must be computed).
+    void gouraudMeans(std::size_t light, int bounce, std::vector<Rgb>& shown) const;
     // displayScale_ from values_ and vertexValues_ (the smooth display's per-element scale), its
     // correction shrunk by the elements' sampling noise (noise: valueNoise's, of this solve).
     void computeDisplayScale(const std::vector<float>& noise);
@@ -119,6 +125,15 @@ private:
     std::vector<std::uint64_t> rowStart_;
     std::vector<std::uint32_t> targets_;
     std::vector<float> factors_;
+    // The same rays by the patch side they hit (RadiosityOptions::reconstructGather): per element
+    // gatherStart_[e] .. gatherStart_[e+1] of gatherHits_, each a hit side 2 * patch + side and the
+    // sum over the rays that met it of their vertex weights there, over the element's rays.
+    struct GatherHit {
+        std::uint32_t side;
+        std::array<float, 4> weights;
+    };
+    std::vector<std::uint64_t> gatherStart_;
+    std::vector<GatherHit> gatherHits_;
     int bounces_ = 0;                 // bounces kept (1..bounces_), the same for every light
     std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
     std::vector<Rgb> values_;         // valueIndex(light, bounce, element)
