@@ -284,7 +284,10 @@ std::vector<float> RadiosityIntegrator::valueNoise(int threads) const {
     // estimated from those rays: pairs of neighbouring direction strata (k, k + 1), each pair's
     // squared difference over N^2 (the collapsed-strata estimator, as for the direct light), plus
     // the noise the targets' own values carry, sum_j F_ej^2 var(B_j) times rho_e's luminance
-    // squared (the colour's mix neglected: an estimate, not a bound).
+    // squared (the colour's mix neglected: an estimate, not a bound). Each ray is read at its
+    // target element's value B_j, as the constant gather read it: the reconstructed gather (solve)
+    // reads the plane at the hit, which varies over the element too, so this slightly
+    // underestimates the spread between the rays.
     std::vector<float> noise(values_.size(), 0.0f);
     const std::uint32_t elements = elementCount();
     const std::uint32_t rays = raysPerElement_;

@@ -6,7 +6,9 @@
 // cosine-weighted hemisphere rays from every side of every patch through the scene's BVH (so
 // F_ij is the fraction of patch i's rays that land on patch j's facing side, and visibility is the
 // tracer's own), gathers every light's direct light at sample points of each patch with shadow rays
-// (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k). Iteration k holds
+// (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k), each ray of F reading
+// bounce k at its hit point (the hit patch's Gouraud plane scaled to its element's mean, so each
+// element sends its own flux, spread as the light around it varies: solve). Iteration k holds
 // exactly the light that has been reflected k times, kept per bounce and per light, so a camera ray
 // can hand each to the automaton as its own path E D{k} L. Then it refines (RadiosityOptions::
 // refineRounds): the patches whose vertex radiosities' mean (the mean of what the display
