@@ -6,7 +6,9 @@
 // cosine-weighted hemisphere rays from every side of every patch through the scene's BVH (so
 // F_ij is the fraction of patch i's rays that land on patch j's facing side, and visibility is the
 // tracer's own), gathers every light's direct light at sample points of each patch with shadow rays
-// (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k). Iteration k holds
+// (bounce 1), then solves by Jacobi iteration: bounce k+1 = rho F (bounce k), each ray of F reading
+// bounce k at its hit point (the hit patch's Gouraud plane scaled to its element's mean, so each
+// element sends its own flux, spread as the light around it varies: solve). Iteration k holds
 // exactly the light that has been reflected k times, kept per bounce and per light, so a camera ray
 // can hand each to the automaton as its own path E D{k} L. Then it refines (RadiosityOptions::
 // refineRounds): the patches whose vertex radiosities' mean (the mean of what the display
@@ -17,6 +19,7 @@
 // A patch's reflectance is its material's diffuse kd (the Lambert lobe of the shared Bsdf). Glossy
 // (ks), mirror (kr) and glass (kt) parts take no part, as in classic radiosity, and neither does
 // the ambient term ka Ia. Emitters' own radiance is what the other integrators show for E L / E O.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -90,7 +93,12 @@ private:
     void computeFormFactors(const RenderContext& context, ProgressBar& progress, bool keepRays);
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
+    // The vertex radiosities (vertexValues_) of every solved light and bounce, or of one.
     void computeVertexValues();
+    void computeVertexValues(std::size_t light, int bounce);
+    // Per element, the area-weighted mean over its patches of their vertex values' mean: what
+    // Gouraud shows across it, on average (light, bounce: its vertex values must be computed).
+    void gouraudMeans(std::size_t light, int bounce, std::vector<Rgb>& shown) const;
     // displayScale_ from values_ and vertexValues_ (the smooth display's per-element scale), its
     // correction shrunk by the elements' sampling noise (noise: valueNoise's, of this solve).
     void computeDisplayScale(const std::vector<float>& noise);
@@ -119,6 +127,15 @@ private:
     std::vector<std::uint64_t> rowStart_;
     std::vector<std::uint32_t> targets_;
     std::vector<float> factors_;
+    // The same rays by the patch side they hit (RadiosityOptions::reconstructGather): per element
+    // gatherStart_[e] .. gatherStart_[e+1] of gatherHits_, each a hit side 2 * patch + side and the
+    // sum over the rays that met it of their vertex weights there, over the element's rays.
+    struct GatherHit {
+        std::uint32_t side;
+        std::array<float, 4> weights;
+    };
+    std::vector<std::uint64_t> gatherStart_;
+    std::vector<GatherHit> gatherHits_;
     int bounces_ = 0;                 // bounces kept (1..bounces_), the same for every light
     std::vector<int> solvedBounces_;  // per light: bounces 1..solvedBounces_[l] hold its light
     std::vector<Rgb> values_;         // valueIndex(light, bounce, element)

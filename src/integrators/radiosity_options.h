@@ -52,6 +52,12 @@ struct RadiosityOptions {
     // foot on a floor plane), so no patch straddles one (RadiosityMesh). false: whole, as before
     // (its patches run under the walls: the tests' control). Not a command-line option.
     bool cutPlanes = true;
+    // Later bounces gather each form-factor ray's light from the radiosity reconstructed at its hit
+    // point (the Gouraud plane of the hit patch, scaled to its element's own mean: radiosity.cpp,
+    // solve) rather than from the element's constant value. false: the constant, as before (where
+    // an element's light is brighter on the side its receivers see, a ball's contact with a floor,
+    // later bounces came out low: the tests' control). Not a command-line option.
+    bool reconstructGather = true;
 };
 
 }  // namespace lightpath

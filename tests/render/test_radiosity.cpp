@@ -1041,5 +1041,44 @@ TEST_CASE("control: the same solve shown by unscaled Gouraud fails the same chec
     CHECK((errors.mean > kContactMean || errors.region > kContactRegion));
 }
 
+// Later bounces gather from the light reconstructed at each form-factor ray's hit (RadiosityOptions::
+// reconstructGather: the hit patch's Gouraud plane, scaled to its element's own mean), not from the
+// element's constant value. With constants, a receiver that sees mostly the bright part of an
+// element (a ball's underside and the floor beside its contact, a pyramid's face and the floor at
+// its foot) got the element's mean, and the light between them leaked away bounce by bounce in an
+// open scene: scenes/szymczak-one-light.toml's ED{4,}L was 0.960 of the path tracer's. Issue 27's
+// 2% is NOT met yet (measured 0.976: the pyramid's faces at their foot, 0.80 of path, docs/
+// integrators.md); the test holds the 3% the reconstruction reaches and the constants miss.
+// The reference is frozen: the sum over the image's 64 x 64 pixels of ED{4,}L's luminance (the
+// lights radiosity solves), `lightpath render scenes/szymczak-one-light.toml --integrator path
+// --resolution 64x64 --max-depth 6 --spp 16384 --sampler sobol --lpe "b4=ED{4,}(<L.[^'ambient']>|O)"`
+// (1024 spp: 1.77266, within 0.1%).
+constexpr double kSzymczakPathB4 = 1.771165;
+constexpr double kLaterBounceMean = 0.03;
+
+TEST_CASE("radiosity's later bounces: szymczak-one-light's ED{4,}L mean within 3% of path; constant elements (the control) fall short" *
+          doctest::test_suite("statistical")) {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/scenes/szymczak-one-light.toml");
+    scene.camera.width = scene.camera.height = 64;
+    const std::vector<lpe::NamedExpression> b4{{"b4", std::string("ED{4,}") + kRadiosityLights}};
+    const auto ratio = [&](const RadiosityOptions& options) {
+        const Film film = renderAovs(scene, b4, "radiosity", 16, kBounceDepth, options);
+        double sum = 0.0;
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x) {
+                const Rgb c = film.at(0, x, y);
+                sum += 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+            }
+        return sum / kSzymczakPathB4;
+    };
+    RadiosityOptions constant;
+    constant.reconstructGather = false;
+    const double reconstructed = ratio({}), control = ratio(constant);
+    CAPTURE(reconstructed);
+    CAPTURE(control);
+    CHECK(std::fabs(reconstructed - 1.0) < kLaterBounceMean);
+    CHECK(std::fabs(control - 1.0) > kLaterBounceMean);
+}
+
 }  // namespace
 }  // namespace lightpath
