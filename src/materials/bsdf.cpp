@@ -19,7 +19,7 @@ void Bsdf::computeLobeProbabilities(LobeChoice& choice) const {
     std::array<float, kMaxLobes>& weights = choice.probabilities;
     weights.fill(0.0f);
     for (int l = 0; l < int(lobes_.size()); ++l)
-        if (!lobes_[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, choice.wo);
+        if (!lobes_[l].delta() && has(l)) weights[l] = material_.albedo(l, side_, choice.wo);
     SpecularBranches branches;
     const int count = material_.specularBranches(side_, choice.wo, branches);
     for (int b = 0; b < count; ++b) weights[branches[b].lobe] = branches[b].albedo;
