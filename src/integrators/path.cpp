@@ -34,7 +34,9 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         // scattering there is a V vertex, else the throughput carries the segment's transmittance.
         if (const Medium* medium = ctx.scene.medium(mediumIndex)) {
             const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
-            const float uChannel = sampler.next1D();
+            float uChannel = 0.0f;  // unread by a medium that chooses no channel: not computed
+            if (medium->choosesChannel()) uChannel = sampler.next1D();
+            else sampler.skip1D();
             const float uDistance = sampler.next1D();
             const MediumSample flight = medium->sampleDistance(ray, tMax, uChannel, uDistance);
             ++path.counters.mediumSegments;
