@@ -98,7 +98,13 @@ Ray RayOrigins::leave(const Vec3& direction) {
 
 LIGHTPATH_HOT_PATH
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics) {
-    Ray ray = RayOrigins(hit, numerics).leave(direction);
+    RayOrigins origins(hit, numerics);
+    return spawnRay(origins, direction);
+}
+
+LIGHTPATH_HOT_PATH
+Ray spawnRay(RayOrigins& origins, const Vec3& direction) {
+    Ray ray = origins.leave(direction);
     ray.direction = direction;
     return ray;
 }

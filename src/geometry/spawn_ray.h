@@ -30,6 +30,10 @@ private:
 
 // A ray leaving `hit` in unit `direction`; it leaves on the side of the surface `direction` points to.
 Ray spawnRay(const SurfaceHit& hit, const Vec3& direction, const NumericsOptions& numerics);
+// The same from origins the hit's shadow rays already used: a bounce on the side they left from
+// reuses their offset origin instead of computing it again (the path tracer's next-event
+// estimation and its sampled bounce; docs/performance.md, Shading share, sixth pass).
+Ray spawnRay(RayOrigins& origins, const Vec3& direction);
 
 // The `targetNormal` of a target on no surface: a point light, the camera.
 inline const Vec3 kNoSurfaceNormal{0.0f};

@@ -255,11 +255,10 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
 }
 
 LIGHTPATH_HOT_PATH
-void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, const Rgb& throughput,
+void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path,
                     const Medium* medium = nullptr) {
     const LightSet& lights = path.context.lights;
-    RayOrigins origins(point.hit, path.context.geometry.numerics());  // shared by the shadow rays of every light
     for (const Light* light : lights.deltaLights())
         addLightSample(point, lobes, origins, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light,
                        weighting, path, medium);
@@ -353,7 +352,14 @@ float powerHeuristic(float pdf, float otherPdf) {
 LIGHTPATH_HOT_PATH
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium) {
-    addDirectLight(point, SmoothLobeEvents(point, path), throughput, u, weighting, path, medium);
+    RayOrigins origins(point.hit, path.context.geometry.numerics());  // shared by the shadow rays of every light
+    addDirectLight(point, SmoothLobeEvents(point, path), origins, throughput, u, weighting, path, medium);
+}
+
+LIGHTPATH_HOT_PATH
+void addDirectLight(const ShadingPoint& point, RayOrigins& origins, const Rgb& throughput, const LightChoiceSample& u,
+                    DirectLightWeighting weighting, PathState& path, const Medium* medium) {
+    addDirectLight(point, SmoothLobeEvents(point, path), origins, throughput, u, weighting, path, medium);
 }
 
 void addMediumDirectLight(const MediumPoint& point, const Rgb& throughput, const LightChoiceSample& u,
@@ -473,7 +479,8 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
         u.uChoice = vertex.next1D();
         u.uPoint = vertex.next2D();
     }
-    addDirectLight(point, lobes, throughput, u, DirectLightWeighting::Alone, path, medium);
+    RayOrigins origins(point.hit, path.context.geometry.numerics());  // shared by the shadow rays of every light
+    addDirectLight(point, lobes, origins, throughput, u, DirectLightWeighting::Alone, path, medium);
 }
 
 LIGHTPATH_HOT_PATH

@@ -3,6 +3,7 @@
 // sum over point lights (each with one shadow ray) plus one sampled point on an area light, through
 // each smooth lobe of the BSDF. For ray casting this is the illumination formula itself; the path
 // tracer calls it as next-event estimation and weighs it against BSDF sampling (MIS, Veach 1997 ch. 9).
+#include "geometry/spawn_ray.h"
 #include "integrators/path_state.h"
 #include "media/medium.h"
 #include "integrators/shading_point.h"
@@ -24,6 +25,10 @@ struct LightChoiceSample {
 // `medium`: what fills the space on the shading point's side (wo's), which attenuates every shadow
 // ray by its transmittance; null in vacuum.
 void addDirectLight(const ShadingPoint& point, const Rgb& throughput, const LightChoiceSample& u,
+                    DirectLightWeighting weighting, PathState& path, const Medium* medium = nullptr);
+// The same with the shadow rays leaving from `origins` (point.hit's), which the caller keeps to
+// spawn its next ray from: the offset origin on a side is computed once per hit.
+void addDirectLight(const ShadingPoint& point, RayOrigins& origins, const Rgb& throughput, const LightChoiceSample& u,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium = nullptr);
 
 // A scattering inside a medium (the event <V'NAME'>): where, the direction back along the path,

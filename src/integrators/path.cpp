@@ -34,7 +34,9 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         // scattering there is a V vertex, else the throughput carries the segment's transmittance.
         if (const Medium* medium = ctx.scene.medium(mediumIndex)) {
             const float tMax = hit ? hit->t : std::numeric_limits<float>::infinity();
-            const float uChannel = sampler.next1D();
+            float uChannel = 0.0f;  // unread by a medium that chooses no channel: not computed
+            if (medium->choosesChannel()) uChannel = sampler.next1D();
+            else sampler.skip1D();
             const float uDistance = sampler.next1D();
             const MediumSample flight = medium->sampleDistance(ray, tMax, uChannel, uDistance);
             ++path.counters.mediumSegments;
@@ -82,11 +84,14 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         if (depth >= ctx.maxDepth) break;
 
         const ShadingPoint point = makeShadingPoint(*hit, ray, ctx);
+        // One set of offset origins for the shadow rays and the bounce (a diffuse bounce leaves on
+        // the lit side, from the origin the shadow rays computed).
+        RayOrigins origins(point.hit, ctx.geometry.numerics());
         if (point.bsdf.hasSmoothLobe()) {
             const float uChoice = sampler.next1D();
             const Vec2 uPoint = sampler.next2D();
-            addDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance, path,
-                           ctx.scene.medium(mediumIndex));
+            addDirectLight(point, origins, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance,
+                           path, ctx.scene.medium(mediumIndex));
         }
 
         const float uLobe = sampler.next1D();
@@ -105,7 +110,7 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         if (transmitted) mediumIndex = ctx.scene.mediumBeyond(point.hit.object, point.entering, mediumIndex);
         previousPdf = sample->pdf;
         previousDelta = lobe.delta();
-        ray = spawnRay(point.hit, sample->wi, ctx.geometry.numerics());
+        ray = spawnRay(origins, sample->wi);
         lastVertex = ray.origin;
         ++depth;
     }

@@ -81,8 +81,8 @@ ShadingPoint makeShadingPoint(const SurfaceHit& hit, const Ray& ray, const Rende
     Vec3 shadingNormal = hit.shadingNormal;
     if (m.textured) shadingNormal = textured(hit, m, context, texture);
     const Vec3 normal = entering ? shadingNormal : -shadingNormal;
-    return {hit,    -ray.direction, normal, entering, m, context.analysis.materials[material],
-            Bsdf(m, normal, entering, mode, texture)};
+    const MaterialTerms& terms = context.analysis.materials[material];
+    return {hit, -ray.direction, normal, entering, m, terms, Bsdf(m, normal, entering, mode, texture, &terms.lobes)};
 }
 
 }  // namespace lightpath

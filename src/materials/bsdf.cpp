@@ -23,11 +23,19 @@ LIGHTPATH_HOT_PATH
 void Bsdf::computeLobeProbabilities(LobeChoice& choice) const {
     std::array<float, kMaxLobes>& weights = choice.probabilities;
     weights.fill(0.0f);
-    for (int l = 0; l < int(lobes_.size()); ++l)
-        if (!lobes_[l].delta() && material_.has(l)) weights[l] = material_.albedo(l, side_, choice.wo);
-    SpecularBranches branches;
-    const int count = material_.specularBranches(side_, choice.wo, branches);
-    for (int b = 0; b < count; ++b) weights[branches[b].lobe] = branches[b].albedo;
+    bool anyDelta = false;
+    for (int l = 0; l < int(lobes_.size()); ++l) {
+        if (!has(l)) continue;
+        if (lobes_[l].delta()) anyDelta = true;
+        else weights[l] = material_.albedo(l, side_, choice.wo);
+    }
+    // Without a delta lobe present a material has no specular branch (Material::specularBranches):
+    // a diffuse or glossy hit does not ask.
+    if (anyDelta) {
+        SpecularBranches branches;
+        const int count = material_.specularBranches(side_, choice.wo, branches);
+        for (int b = 0; b < count; ++b) weights[branches[b].lobe] = branches[b].albedo;
+    }
     float total = 0.0f;
     for (float w : weights) total += w;
     if (total > 0.0f)

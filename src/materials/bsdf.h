@@ -24,17 +24,20 @@ public:
     // `normal`: unit shading normal on the side of the path's outgoing direction. `entering`: that
     // side is the outside of the material (it refracts from 1 into its index of refraction).
     // `texture`: where its textured parameters are looked up (zero when it has none).
+    // `present`: the material's has(l) for every lobe, when the caller knows them (the scene's
+    // analysis, MaterialTerms::lobes): read instead of one virtual call per lobe and question.
     Bsdf(const Material& material, const Vec3& normal, bool entering,
-         TransportMode mode = TransportMode::Radiance, const TextureFootprint& texture = {})
-        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode, texture} {}
+         TransportMode mode = TransportMode::Radiance, const TextureFootprint& texture = {},
+         const std::array<bool, kMaxLobes>* present = nullptr)
+        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode, texture}, present_(present) {}
 
     Lobes lobes() const { return lobes_; }
     const LobeInfo& lobe(int index) const { return lobes_[index]; }
-    bool has(int lobe) const { return material_.has(lobe); }
+    bool has(int lobe) const { return present_ != nullptr ? (*present_)[lobe] : material_.has(lobe); }
     // Whether a smooth (non-delta) lobe scatters anything: light sampling can reach this point.
     bool hasSmoothLobe() const {
         for (int l = 0; l < int(lobes_.size()); ++l)
-            if (!lobes_[l].delta() && material_.has(l)) return true;
+            if (!lobes_[l].delta() && has(l)) return true;
         return false;
     }
 
@@ -78,6 +81,7 @@ private:
     const Material& material_;
     Lobes lobes_;  // asked once per hit: integrators read a lobe's event at every step
     SurfaceSide side_;
+    const std::array<bool, kMaxLobes>* present_;
     mutable LobeChoice first_, last_;
     enum class WoDependence : std::uint8_t { Unknown, Ignored, Used };
     mutable WoDependence woDependence_ = WoDependence::Unknown;  // asked on the first miss only

@@ -65,7 +65,8 @@ public:
         (void)lobe, (void)side, (void)wo, (void)wi;
         return 0.0f;
     }
-    // The delta lobes' branches from wo, mirror ray first. Returns how many were written.
+    // The delta lobes' branches from wo, mirror ray first. Returns how many were written: none
+    // when no delta lobe is present (has() false for each), as Bsdf does not ask then.
     virtual int specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
         (void)side, (void)wo, (void)branches;
         return 0;

@@ -11,7 +11,10 @@ namespace {
 
 // exp(-sigma d) per channel, with a channel of sigma = 0 fully transmitting even over an infinite
 // distance (0 · inf would be NaN).
+// A grey sigma (every channel the same, as most fog is) takes one exp for all three: the same
+// operation on the same operands, so the same bits (docs/performance.md, Shading share, sixth pass).
 Rgb beerLambert(const Rgb& sigma, float distance) {
+    if (sigma.r == sigma.g && sigma.g == sigma.b) return Rgb{sigma.r == 0.0f ? 1.0f : std::exp(-sigma.r * distance)};
     Rgb t;
     for (int c = 0; c < 3; ++c) t[c] = sigma[c] == 0.0f ? 1.0f : std::exp(-sigma[c] * distance);
     return t;
@@ -40,6 +43,11 @@ MediumSample HomogeneousMedium::sampleDistance(const Ray&, float tMax, float uCh
     const float probability = mean(transmitted);
     if (!(probability > 0.0f)) return {false, tMax, Rgb{0.0f}};
     return {false, tMax, transmitted / probability};
+}
+
+bool HomogeneousMedium::choosesChannel() const {
+    const Rgb sigma = sigmaT();
+    return !isBlack(sigmaS) && !(sigma.r == sigma.g && sigma.g == sigma.b);
 }
 
 Rgb HomogeneousMedium::transmittance(const Ray&, float t0, float t1) const {

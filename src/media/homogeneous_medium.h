@@ -23,6 +23,9 @@ public:
     Rgb sigmaT() const { return sigmaA + sigmaS; }
     MediumSample sampleDistance(const Ray& ray, float tMax, float uChannel, float uDistance) const override;
     Rgb transmittance(const Ray& ray, float t0, float t1) const override;
+    // False for a grey sigma_t (every channel drives the same distance) and for a medium that
+    // scatters nothing (no distance is drawn).
+    bool choosesChannel() const override;
     HenyeyGreensteinPhase phase(const Vec3&) const override { return HenyeyGreensteinPhase(g); }
 };
 

@@ -39,6 +39,9 @@ public:
     // infinite: then it always scatters unless the medium is vacuum). uChannel chooses the
     // colour channel that drives the distance, uDistance the distance.
     virtual MediumSample sampleDistance(const Ray& ray, float tMax, float uChannel, float uDistance) const = 0;
+    // Whether sampleDistance reads uChannel: false when no channel choice can change its result,
+    // so the caller may skip computing that number (Sampler::skip1D keeps later ones the same).
+    virtual bool choosesChannel() const { return true; }
     // T between distances t0 <= t1 along the ray, per channel.
     virtual Rgb transmittance(const Ray& ray, float t0, float t1) const = 0;
     virtual HenyeyGreensteinPhase phase(const Vec3& p) const = 0;

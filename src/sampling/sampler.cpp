@@ -146,6 +146,12 @@ void Sampler::skip2D() {
 }
 
 LIGHTPATH_HOT_PATH
+void Sampler::skip1D() {
+    ++dimension_;
+    if (usesRng()) rng_.nextUint();  // next1D draws one number for either kind that uses the generator
+}
+
+LIGHTPATH_HOT_PATH
 Vec2 Sampler::next2D() {
     const std::uint64_t seed = dimensionSeed();
     switch (kind_) {

@@ -37,6 +37,9 @@ public:
     // Passes over the next dimension pair without computing it, so later dimensions keep their
     // numbers (the single sample of a pixel goes through its centre and needs none).
     void skip2D();
+    // The same for one dimension: what next1D would have drawn is not computed (a free flight's
+    // colour channel in a grey medium; docs/performance.md, Shading share, sixth pass).
+    void skip1D();
 
     // The sampler of one vertex of a branching path, keyed by the path that leads to it: its
     // numbers do not depend on which other branches were traced (or skipped) before it, and

@@ -290,6 +290,11 @@ CheckResult checkSpecularBranches(const Material& material) {
                 result.fail(count, " branches");
                 continue;
             }
+            // Bsdf asks for branches only when a delta lobe is present: none may come without one.
+            bool deltaPresent = false;
+            for (int l = 0; l < int(material.lobes().size()); ++l)
+                deltaPresent = deltaPresent || (material.lobes()[l].delta() && material.has(l));
+            if (count > 0 && !deltaPresent) result.fail(count, " branches, but no delta lobe is present (has())");
             for (int b = 0; b < count; ++b) {
                 const SpecularBranch& branch = branches[b];
                 if (!close(branch.albedo, maxComponent(branch.weight), 1e-5f))

@@ -48,7 +48,8 @@ CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool ent
 CheckResult checkFiniteNonNegative(const Material& material);
 // Delta branches: the mirror ray is the mirror direction of wo; the refracted ray is on the other
 // side, in the plane of wo and the normal, and refracting it back gives wo (Snell's law both ways);
-// a branch's albedo is its weight's largest channel under importance transport.
+// a branch's albedo is its weight's largest channel under importance transport; no branch comes
+// from a material none of whose delta lobes is present (Bsdf does not ask it).
 CheckResult checkSpecularBranches(const Material& material);
 
 // Every check above, over outgoingDirections() and the case's claims.

@@ -116,6 +116,36 @@ TEST_CASE("homogeneous transmittance is exp(-sigma_t d) per channel (Beer-Lamber
     CHECK(far == Rgb{1.0f, 0.0f, 0.0f});
 }
 
+// A grey sigma_t takes one exp for its three channels (beerLambert): the same bits as exp per
+// channel; and a free flight through it reads no channel choice (choosesChannel), which the path
+// tracer then does not draw. The control: a coloured sigma_t's flight does depend on the choice.
+TEST_CASE("a grey medium's transmittance is exp(-sigma_t d) in every channel and its flights ignore the channel") {
+    const HomogeneousMedium grey = medium(Rgb{0.01f}, Rgb{0.06f}), coloured = medium(Rgb{0.1f}, {1.0f, 0.9f, 0.8f});
+    const Ray ray{{1, 2, 3}, {0, 0, 1}};
+    for (const float d : {0.5f, 2.0f, 37.0f}) {
+        const float sigma = 0.01f + 0.06f;
+        CHECK(grey.transmittance(ray, 0.0f, d) == Rgb{std::exp(-sigma * d)});
+    }
+    CHECK(!grey.choosesChannel());
+    CHECK(coloured.choosesChannel());
+    CHECK(!medium(Rgb{0.1f, 0.2f, 0.3f}, Rgb{0.0f}).choosesChannel());  // scatters nothing: draws no distance
+    int colouredDiffers = 0;
+    for (const float uDistance : {0.05f, 0.3f, 0.6f, 0.9f}) {
+        for (const float tMax : {1.0f, 10.0f, INFINITY}) {
+            const MediumSample first = grey.sampleDistance(ray, tMax, 0.0f, uDistance);
+            for (const float uChannel : {0.4f, 0.9f}) {
+                const MediumSample other = grey.sampleDistance(ray, tMax, uChannel, uDistance);
+                CHECK(other.scattered == first.scattered);
+                CHECK(other.t == first.t);
+                CHECK(other.weight == first.weight);
+                colouredDiffers += coloured.sampleDistance(ray, tMax, uChannel, uDistance).t !=
+                                   coloured.sampleDistance(ray, tMax, 0.0f, uDistance).t;
+            }
+        }
+    }
+    CHECK(colouredDiffers > 0);
+}
+
 struct FlightCase {
     const char* name;
     HomogeneousMedium medium;

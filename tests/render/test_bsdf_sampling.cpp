@@ -287,5 +287,39 @@ TEST_CASE("Bsdf::pdf of a material with constant lobe albedos: one lobe choice s
         }
     }
 }
+
+// makeShadingPoint hands the Bsdf the scene analysis's has(l) per lobe: with the material's own
+// answers it must sample and weigh exactly as a Bsdf that asks the material; the control, a list
+// that claims the highlight absent, must change both (or the list is not read).
+TEST_CASE("a Bsdf given its lobes' presence answers as one that asks the material") {
+    PhongMaterial material = makeMaterial(Rgb{0.5f}, Rgb{0.3f}, 20);
+    material.kr = Rgb{0.2f};
+    std::array<bool, kMaxLobes> present{}, wrong{};
+    for (int l = 0; l < int(material.lobes().size()); ++l) present[l] = wrong[l] = material.has(l);
+    wrong[PhongMaterial::kHighlight] = false;
+    const Bsdf asking(material, {0, 0, 1}, true), told(material, {0, 0, 1}, true, TransportMode::Radiance, {}, &present),
+        misled(material, {0, 0, 1}, true, TransportMode::Radiance, {}, &wrong);
+    CHECK(told.hasSmoothLobe() == asking.hasSmoothLobe());
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    int differs = 0;
+    for (int i = 0; i < 500; ++i) {
+        const Vec3 wo = glm::normalize(Vec3{uniform(rng) - 0.5f, uniform(rng) - 0.5f, 0.1f + uniform(rng)});
+        const float uLobe = uniform(rng);
+        const Vec2 u{uniform(rng), uniform(rng)};
+        const auto a = asking.sample(wo, uLobe, u), t = told.sample(wo, uLobe, u);
+        CAPTURE(i);
+        REQUIRE(a.has_value() == t.has_value());
+        if (a) {
+            CHECK(a->lobe == t->lobe);
+            CHECK(a->wi == t->wi);
+            CHECK(a->weight == t->weight);
+            CHECK(a->pdf == t->pdf);
+            CHECK(asking.pdf(PhongMaterial::kDiffuse, wo, a->wi) == told.pdf(PhongMaterial::kDiffuse, wo, a->wi));
+            differs += asking.pdf(PhongMaterial::kDiffuse, wo, a->wi) != misled.pdf(PhongMaterial::kDiffuse, wo, a->wi);
+        }
+    }
+    CHECK(differs > 400);
+}
 }  // namespace
 }  // namespace lightpath

@@ -96,6 +96,24 @@ TEST_CASE("skipping a dimension pair leaves every later number as drawing it wou
     }
 }
 
+TEST_CASE("skipping one dimension leaves every later number as drawing it would") {
+    for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
+        for (int spp : {1, 9, 12}) {
+            CAPTURE(samplerName(kind));
+            CAPTURE(spp);
+            Sampler drawn = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
+            Sampler skipped = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
+            drawn.next2D();
+            skipped.next2D();
+            drawn.next1D();
+            skipped.skip1D();
+            CHECK(drawn.next1D() == skipped.next1D());
+            CHECK(drawn.next2D() == skipped.next2D());
+            CHECK(drawn.forVertex(99).next1D() == skipped.forVertex(99).next1D());
+        }
+    }
+}
+
 TEST_CASE("stratified: one sample per stratum, grid for square counts, Latin hypercube otherwise") {
     const auto grid = firstPoints(SamplerKind::Stratified, 16, 1, 9);
     std::set<int> cells;
