@@ -245,24 +245,31 @@ const Film& pathTracedCornell() {
     return film;
 }
 
+// The L1 error over 8 x 8 blocks falls as the patches shrink (measured: 3.7%, 1.7%, 0.59% at 64,
+// 256 and 1024 first elements; 0.36% at 4096) and is within issue 27's 2% at 1024; the same box
+// 10% darker (the control) is 14% off.
+constexpr double kCornellConverged = 0.02;
+
 TEST_CASE("the Cornell box: radiosity's ED*L converges to the path tracer's as patches shrink; control: radiosity of a Cornell box 10% darker fails the same tolerance" *
           doctest::test_suite("statistical")) {
     SUBCASE("the Cornell box: radiosity's ED*L converges to the path tracer's as patches shrink") {
         const Film& reference = pathTracedCornell();
         std::vector<double> errors;
-        for (std::size_t patches : {256, 1024, 4096})
+        for (std::size_t patches : {64, 256, 1024})
             errors.push_back(blockError(cornellDiffuse(cornellBox(kCornellSize), "radiosity", 16, patches), reference, 8));
-        CAPTURE(errors);
+        CAPTURE(errors[0]);
+        CAPTURE(errors[1]);
+        CAPTURE(errors[2]);
         CHECK(errors[0] > errors[1]);
         CHECK(errors[1] > errors[2]);
-        CHECK(errors[2] < kCornellTolerance);
+        CHECK(errors[2] < kCornellConverged);
     }
     SUBCASE("control: radiosity of a Cornell box 10% darker fails the same tolerance") {
         Scene darker = cornellBox(kCornellSize);
         for (MaterialSlot& m : darker.materials) phongOf(m).kd = phongOf(m).kd.constant() * 0.9f;
-        const double error = blockError(cornellDiffuse(darker, "radiosity", 16, 4096), pathTracedCornell(), 8);
+        const double error = blockError(cornellDiffuse(darker, "radiosity", 16, 1024), pathTracedCornell(), 8);
         CAPTURE(error);
-        CHECK(error > kCornellTolerance);
+        CHECK(error > kCornellConverged);
     }
 }
 
@@ -531,22 +538,18 @@ const Film& pathTracedHeavyMesh() {
     return film;
 }
 
-// Issue 27's bar is 2% in the mean and 5% per region. The mean is met (0.5% at the default 4096
-// elements, 0.2% at 16384); the regions are NOT yet: the ceiling's direct light, which changes
-// fast near the walls, is 29% too bright in a top region at 4096 uniform elements and 6.3% at
-// 16384. With refinement (16384 first elements, up to 4x) the worst region measured 1.4% (mean
-// 0.2%); the test still holds the 10% region bound it held before refinement.
-constexpr double kHeavyMeshRegion = 0.10;
+// Issue 27's bar, 2% in the mean and 5% per 4x4 region, at the default settings (4096 first
+// elements, refined where the error estimate asks). Measured: mean 0.4%, worst region 2.2% (bounce
+// 4); the old budget's mesh (the control) is off by far more.
+constexpr double kHeavyMeshMean = 0.02, kHeavyMeshRegion = 0.05;
 
-TEST_CASE("a mesh with more triangles than the element budget: radiosity per bounce within 2% (mean) and 10% (4x4 regions) of path; control: the old budget's mesh of that scene (patch size 1e6, walls of two patches) fails the same check" *
+TEST_CASE("a mesh with more triangles than the element budget: radiosity per bounce within 2% (mean) and 5% (4x4 regions) of path; control: the old budget's mesh of that scene (patch size 1e6, walls of two patches) fails the same check" *
           doctest::test_suite("statistical")) {
-    SUBCASE("a mesh with more triangles than the element budget: radiosity per bounce within 2% (mean) and 10% (4x4 regions) of path") {
-        RadiosityOptions options;
-        options.patchBudget = 16384;
-        const BounceErrors errors = bounceErrors(renderBounces(heavyMesh(), "radiosity", 16, options), pathTracedHeavyMesh());
+    SUBCASE("a mesh with more triangles than the element budget: radiosity per bounce within 2% (mean) and 5% (4x4 regions) of path") {
+        const BounceErrors errors = bounceErrors(renderBounces(heavyMesh(), "radiosity", 16, {}), pathTracedHeavyMesh());
         CAPTURE(errors.mean);
         CAPTURE(errors.region);
-        CHECK(errors.mean < 0.02);
+        CHECK(errors.mean < kHeavyMeshMean);
         CHECK(errors.region < kHeavyMeshRegion);
     }
     SUBCASE("control: the old budget's mesh of that scene (patch size 1e6, walls of two patches) fails the same check") {
@@ -555,7 +558,7 @@ TEST_CASE("a mesh with more triangles than the element budget: radiosity per bou
         const BounceErrors errors = bounceErrors(renderBounces(heavyMesh(), "radiosity", 16, options), pathTracedHeavyMesh());
         CAPTURE(errors.mean);
         CAPTURE(errors.region);
-        CHECK((errors.mean > 0.02 || errors.region > kHeavyMeshRegion));
+        CHECK((errors.mean > kHeavyMeshMean || errors.region > kHeavyMeshRegion));
     }
 }
 
@@ -567,31 +570,28 @@ const Film& pathTracedOpenPlanes() {
     return film;
 }
 
-// Issue 27's bar (2% mean, 5% per region) is NOT met here yet: with uniform patches the floor and
-// the wall are resolved too coarsely along the line where they meet, and the error grows with the
-// bounce (measured at 16384 elements: mean 3.1%, worst regions 5.7% / 8.5% / 12% / 15% for
-// bounces 1-4; at 4096: 8.1% mean). What this test holds is that the light from beyond the scene
-// is no longer lost: clipped, the same planes are 39% low in the mean and 65% in a region.
-constexpr double kOpenPlanesMean = 0.05;
+// Issue 27's bar, 2% in the mean and 5% per 4x4 region, at the default settings: the planes are
+// cut into rings beyond the scene, and refinement resolves the line where the floor and the wall
+// meet. Measured: mean 0.4%, worst region 3.1% (bounce 4). Clipped to the scene (the control), the
+// light from beyond it is lost: 39% low in the mean.
+constexpr double kOpenPlanesMean = 0.02, kOpenPlanesRegion = 0.05;
 
-TEST_CASE("infinite planes: radiosity's per-bounce mean within 5% of path (rings, not clipped); control: the same planes clipped to the scene (no rings) fail the same check" *
+TEST_CASE("infinite planes: radiosity per bounce within 2% (mean) and 5% (4x4 regions) of path (rings, not clipped); control: the same planes clipped to the scene (no rings) fail the same check" *
           doctest::test_suite("statistical")) {
-    SUBCASE("infinite planes: radiosity's per-bounce mean within 5% of path (rings, not clipped)") {
-        RadiosityOptions options;
-        options.patchBudget = 16384;
-        const BounceErrors errors = bounceErrors(renderBounces(openPlanes(), "radiosity", 16, options), pathTracedOpenPlanes());
+    SUBCASE("infinite planes: radiosity per bounce within 2% (mean) and 5% (4x4 regions) of path (rings, not clipped)") {
+        const BounceErrors errors = bounceErrors(renderBounces(openPlanes(), "radiosity", 16, {}), pathTracedOpenPlanes());
         CAPTURE(errors.mean);
         CAPTURE(errors.region);
         CHECK(errors.mean < kOpenPlanesMean);
+        CHECK(errors.region < kOpenPlanesRegion);
     }
     SUBCASE("control: the same planes clipped to the scene (no rings) fail the same check") {
         RadiosityOptions clipped;
-        clipped.patchBudget = 16384;
         clipped.planeRings = 0;
         const BounceErrors errors = bounceErrors(renderBounces(openPlanes(), "radiosity", 16, clipped), pathTracedOpenPlanes());
         CAPTURE(errors.mean);
         CAPTURE(errors.region);
-        CHECK(errors.mean > kOpenPlanesMean);
+        CHECK((errors.mean > kOpenPlanesMean || errors.region > kOpenPlanesRegion));
     }
 }
 
@@ -1025,11 +1025,17 @@ Scene taxonomy64() {
     return scene;
 }
 
+// EDL alone is rendered: with no later bounce requested, the path tracer stops at the first and
+// radiosity solves the direct light only.
+Film directLight(const std::string& integrator, int spp, const RadiosityOptions& options) {
+    return renderAovs(taxonomy64(), {{"b1", std::string("ED") + kRadiosityLights}}, integrator, spp, kBounceDepth, options);
+}
+
 BounceErrors contactErrors(RadiosityDisplay display) {
-    static const Film path = renderBounces(taxonomy64(), "path", 1024, {}, kRadiosityLights);
+    static const Film path = directLight("path", 1024, {});
     RadiosityOptions options;
     options.display = display;
-    return bounceErrors(renderBounces(taxonomy64(), "radiosity", 16, options, kRadiosityLights), path, 1);
+    return bounceErrors(directLight("radiosity", 16, options), path, 1);
 }
 
 TEST_CASE("radiosity's smooth display: the direct light's shadows and contacts within 2% (mean) and 5% (4x4 regions) of path; control: the same solve shown by unscaled Gouraud fails the same check" *
