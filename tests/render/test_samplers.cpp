@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "film/aov_set.h"
@@ -97,7 +98,8 @@ TEST_CASE("skipping a dimension pair or one dimension leaves every later number 
             for (int spp : {1, 9, 12}) {
                 // Skipped first, and after a pair drawn by both.
                 for (int drawnBefore : {0, 1}) {
-                    CAPTURE(skip.what);
+                    const std::string what = skip.what;
+                    CAPTURE(what);
                     CAPTURE(samplerName(kind));
                     CAPTURE(spp);
                     CAPTURE(drawnBefore);
