@@ -10,6 +10,7 @@
 #include "lpe/path_string.h"
 #include "materials/bsdf.h"
 #include "monte_carlo.h"
+#include "sanitizer.h"
 #include "statistics.h"
 #include "uniform_real.h"
 
@@ -18,7 +19,9 @@ namespace {
 
 constexpr Vec3 kNormal{0.0f, 0.0f, 1.0f};
 constexpr int kChiSquareSamples = 100000;
-constexpr int kWeightSamples = 20000;
+// Each sample's weight is checked exactly (no statistic): the sanitizer stage runs a fifth of them
+// (support/sanitizer.h).
+constexpr int kWeightSamples = test::sanitizedCount(20000);
 constexpr int kMonteCarloSamples = 200000;
 
 SurfaceSide sideOf(bool entering, TransportMode mode = TransportMode::Radiance) { return {kNormal, entering, mode}; }
