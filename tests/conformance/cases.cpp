@@ -19,6 +19,7 @@
 #include "materials/material_type.h"
 #include "scene/scene_loader.h"
 #include "schema/format.h"
+#include "uniform_real.h"
 
 namespace lightpath::conformance {
 namespace {
@@ -63,7 +64,7 @@ std::optional<Value> draw(const Parameter& p, std::mt19937& rng) {
     const auto within = [&](double low, double high, bool lowExclusive) {
         const double from = std::isfinite(p.range.low) ? std::max(low, p.range.low) : low;
         const double to = std::isfinite(p.range.high) ? std::min(high, p.range.high) : high;
-        double x = std::uniform_real_distribution<double>(from, to)(rng);
+        double x = test::UniformReal<double>(from, to)(rng);
         if (lowExclusive && x <= from) x = from + 0.01 * (to - from);
         return x;
     };

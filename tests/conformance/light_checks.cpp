@@ -7,6 +7,7 @@
 
 #include "monte_carlo.h"
 #include "statistics.h"
+#include "uniform_real.h"
 
 namespace lightpath::conformance {
 namespace {
@@ -52,7 +53,7 @@ LightWorld::LightWorld(const Scene& s)
 CheckResult checkLightDensity(const Light& light, const LightWorld& world, const Vec3& receiver) {
     CheckResult result;
     std::mt19937_64 rng(61);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     // pdf() over uniform directions: its integral over the solid angle where the receiver sees
     // the light's emitting side (radiance() towards it; the back of an open emitter, e.g. a
     // cylinder's inside seen through its end, is no part of what sample() draws from).
@@ -96,7 +97,7 @@ CheckResult checkLightDensity(const Light& light, const LightWorld& world, const
 CheckResult checkLightSamples(const Light& light, const LightWorld& world, const Vec3& receiver) {
     CheckResult result;
     std::mt19937_64 rng(67);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (int i = 0; i < 4000; ++i) {
         const LightSample s = light.sample(receiver, {uniform(rng), uniform(rng)});
         if (!(finiteNonNegative(s.weight) && std::isfinite(s.pdf) && s.pdf >= 0.0f && finite(s.point) &&
@@ -175,7 +176,7 @@ template <typename Emit, typename DirectionDensity>
 CheckResult checkEmittedFlux(const Light& light, const char* emitter, Emit emit, DirectionDensity pdfDirection) {
     CheckResult result;
     std::mt19937_64 rng(73);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     std::vector<double> flux;
     for (int i = 0; i < kSamples; ++i) {
         const EmittedRay e = emit(Vec2{uniform(rng), uniform(rng)}, Vec2{uniform(rng), uniform(rng)});

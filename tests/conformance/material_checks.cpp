@@ -10,14 +10,18 @@
 #include "lpe/path_string.h"
 #include "materials/bsdf.h"
 #include "monte_carlo.h"
+#include "sanitizer.h"
 #include "statistics.h"
+#include "uniform_real.h"
 
 namespace lightpath::conformance {
 namespace {
 
 constexpr Vec3 kNormal{0.0f, 0.0f, 1.0f};
 constexpr int kChiSquareSamples = 100000;
-constexpr int kWeightSamples = 20000;
+// Each sample's weight is checked exactly (no statistic): the sanitizer stage runs a fifth of them
+// (support/sanitizer.h).
+constexpr int kWeightSamples = test::sanitizedCount(20000);
 constexpr int kMonteCarloSamples = 200000;
 
 SurfaceSide sideOf(bool entering, TransportMode mode = TransportMode::Radiance) { return {kNormal, entering, mode}; }
@@ -69,7 +73,7 @@ CheckResult checkSamplingMatchesPdf(const Material& material, int lobe, const Ve
     // A GGX lobe of alpha 0.05 at grazing incidence is a few sub-cells wide at 12 per axis, where
     // the midpoint rule misses it by more than the test resolves; 24 integrates it.
     histogram.subdivisions = 24;
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     const double p = test::directionChiSquarePValue(
         histogram,
         [&](std::mt19937_64& rng) -> std::optional<Vec3> {
@@ -87,7 +91,7 @@ CheckResult checkSamplingMatchesPdf(const Material& material, int lobe, const Ve
 CheckResult checkSampleWeights(const Material& material, const Vec3& wo) {
     CheckResult result;
     std::mt19937_64 rng(99);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (const bool entering : {true, false}) {
         const SurfaceSide side = sideOf(entering);
         for (const Vec3& from : {wo, Vec3{wo.x, wo.y, -wo.z}}) {  // also from below the shading normal
@@ -128,7 +132,7 @@ CheckResult checkReciprocity(const Material& material, int lobe) {
     const float sign = material.lobes()[lobe].transmits() ? -1.0f : 1.0f;
     CheckResult result;
     std::mt19937_64 rng(4);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (const bool entering : {true, false}) {
         const SurfaceSide sides = sideOf(entering);
         for (int i = 0; i < 4000; ++i) {
@@ -149,7 +153,7 @@ CheckResult checkReciprocity(const Material& material, int lobe) {
 CheckResult checkEnergyConservation(const Material& material) {
     CheckResult result;
     std::mt19937_64 rng(17);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (const bool entering : {true, false}) {
         const Bsdf bsdf(material, kNormal, entering, TransportMode::Importance);
         for (float cosOut : {1.0f, 0.7f, 0.4f, 0.1f, 0.02f}) {
@@ -178,7 +182,7 @@ CheckResult checkLobeAlbedo(const Material& material, int lobe) {
     const SurfaceSide side = sideOf(true);
     const Vec3 wo = kNormal;
     std::mt19937_64 rng(23);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     // The lobe's reflectance by its own sampling (checkSampleWeights and the chi-square hold it to eval).
     Rgb reflectance{0.0f};
     for (int i = 0; i < kMonteCarloSamples; ++i)
@@ -215,7 +219,7 @@ CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool ent
     const Bsdf bsdf(material, kNormal, entering);
     const SurfaceSide side = sideOf(entering);
     std::mt19937_64 rng(31);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     std::vector<double> sampled, uniformEstimate;
     for (int i = 0; i < kMonteCarloSamples; ++i) {
         const auto s = bsdf.sample(wo, uniform(rng), {uniform(rng), uniform(rng)});
@@ -239,7 +243,7 @@ CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool ent
 CheckResult checkFiniteNonNegative(const Material& material) {
     CheckResult result;
     std::mt19937_64 rng(41);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (const TransportMode mode : {TransportMode::Radiance, TransportMode::Importance}) {
         for (const bool entering : {true, false}) {
             const SurfaceSide side = sideOf(entering, mode);
@@ -279,7 +283,7 @@ CheckResult checkFiniteNonNegative(const Material& material) {
 CheckResult checkSpecularBranches(const Material& material) {
     CheckResult result;
     std::mt19937_64 rng(53);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (const bool entering : {true, false}) {
         const SurfaceSide side = sideOf(entering, TransportMode::Importance);
         for (int i = 0; i < 2000; ++i) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/intersect.h"
+#include "uniform_real.h"
 
 namespace lightpath::conformance {
 namespace {
@@ -32,7 +33,7 @@ Ball ballOf(const ShapeRecord& shape) {
 }
 
 glm::dvec3 uniformDirection(std::mt19937& rng) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    test::UniformReal<double> u(0.0, 1.0);
     const double z = 1.0 - 2.0 * u(rng), phi = 2.0 * kPiD * u(rng);
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     return {r * std::cos(phi), r * std::sin(phi), z};
@@ -40,7 +41,7 @@ glm::dvec3 uniformDirection(std::mt19937& rng) {
 
 // An isotropic uniform line through the ball, as a ray starting outside it.
 Ray randomLine(const Ball& ball, std::mt19937& rng) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    test::UniformReal<double> u(0.0, 1.0);
     const glm::dvec3 d = uniformDirection(rng);
     const glm::dvec3 a = glm::normalize(glm::cross(d, std::fabs(d.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
     const glm::dvec3 b = glm::cross(d, a);
@@ -133,7 +134,7 @@ CheckResult checkShapeSampling(const ShapeRecord& shape) {
     if (checkedAsUnbounded(shape, result)) return result;
     const Ball ball = ballOf(shape);
     std::mt19937 rng(11);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    test::UniformReal<double> u(0.0, 1.0);
     constexpr int kSamples = 100000, kHalfSpaces = 4;
     std::vector<AreaSample> samples;
     for (int i = 0; i < kSamples; ++i) samples.push_back(shape.ops->sampleArea(shape, Vec2{float(u(rng)), float(u(rng))}));
@@ -264,7 +265,7 @@ CheckResult checkShapePatchGrid(const ShapeRecord& shape) {
 
     // Each cell's centre and samples locate to that cell and lie on the surface.
     std::mt19937 rng(17);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    test::UniformReal<double> u(0.0, 1.0);
     const float step = float(1e-3 * ball.radius);
     for (std::uint32_t row = 0; row < grid.rows; ++row) {
         for (std::uint32_t column = 0; column < grid.columns; ++column) {
@@ -368,7 +369,7 @@ CheckResult checkShapeDepthAlong(const ShapeRecord& shape) {
     const std::string_view name = shape.ops->name;
     const Ball ball = ballOf(shape);
     std::mt19937 rng(23);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+    test::UniformReal<double> u(0.0, 1.0);
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
         const Ray ray = randomLine(ball, rng);

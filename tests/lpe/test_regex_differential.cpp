@@ -10,6 +10,7 @@
 
 #include "lpe/automaton.h"
 #include "test_paths.h"
+#include "../support/sanitizer.h"
 
 namespace {
 
@@ -178,7 +179,10 @@ TEST_CASE("10,000 random expressions agree with std::regex_match on the compact 
     std::mt19937 rng(1968);  // Thompson's year
     Generator generator(rng);
     int matched = 0, checked = 0;
-    for (int i = 0; i < 10000; ++i) {
+    // Agreement is proven over all 10,000 in the Release build; the sanitizer stage runs the same
+    // parse, compile and match on the first 2,000 for their memory errors (support/sanitizer.h).
+    const int expressions = lightpath::test::sanitizedCount(10000);
+    for (int i = 0; i < expressions; ++i) {
         const Expr e = generator.expression(generator.pick(1, 4));
         const std::string text = print(e);
         const std::regex reference(text, kReferenceFlags);
@@ -193,7 +197,7 @@ TEST_CASE("10,000 random expressions agree with std::regex_match on the compact 
         }
     }
     // The sampled paths must make the test exercise acceptance, not only rejection.
-    CHECK(checked >= 200000);
+    CHECK(checked >= 20 * expressions);
     CHECK(matched > checked / 5);
 }
 

@@ -17,6 +17,7 @@
 #include "schema/schema_error.h"
 #include "../support/direction_chi_square.h"
 #include "../support/statistics.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace {
@@ -30,7 +31,7 @@ double phaseChiSquarePValue(const HenyeyGreensteinPhase& sampling, const HenyeyG
     // A strongly peaked lobe (g = 0.9) varies 100-fold over 1/8 in cos theta: narrow bins, fine integration.
     histogram.cosBins = 64;
     histogram.subdivisions = 48;
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     return test::directionChiSquarePValue(
         histogram,
         [&](std::mt19937_64& rng) -> std::optional<Vec3> {
@@ -169,7 +170,7 @@ TEST_CASE("free-flight sampling's estimators of transmittance and in-scattering 
         const std::string name = c.name;
         CAPTURE(name);
         std::mt19937_64 rng(2024);
-        std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+        test::UniformReal<float> uniform(0.0f, 1.0f);
         std::vector<double> passed[3], scattered[3], scatteredT[3];
         const Ray ray{{0, 0, 0}, {1, 0, 0}};
         for (int i = 0; i < kSamples; ++i) {

@@ -12,6 +12,7 @@
 #include "materials/phong_material.h"
 #include "sampling/warp.h"
 #include "../support/direction_chi_square.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace {
@@ -44,7 +45,7 @@ double chiSquarePValue(const Bsdf& sampling, const Bsdf& density, float cosOut) 
     histogram.cosBins = kCosBins;
     histogram.phiBins = kPhiBins;
     histogram.samples = kSamples;
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     return test::directionChiSquarePValue(
         histogram,
         [&](std::mt19937_64& rng) -> std::optional<Vec3> {
@@ -95,7 +96,7 @@ Rgb directionalAlbedo(const Material& material, float cosOut) {
     const Vec3 wo{std::sqrt(1.0f - cosOut * cosOut), 0, cosOut};
     const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
     std::mt19937_64 rng(7);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     constexpr int kDirections = 400000;
     Rgb sum{0.0f};
     for (int i = 0; i < kDirections; ++i) {
@@ -154,7 +155,7 @@ TEST_CASE("dielectric: reflection frequency is Fresnel's and refraction obeys Sn
             }
             const Vec3 wo{float(sinOut), 0, cosOut};
             std::mt19937_64 rng(5);
-            std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+            test::UniformReal<float> uniform(0.0f, 1.0f);
             constexpr int kTrials = 40000;
             int reflected = 0;
             for (int i = 0; i < kTrials; ++i) {
@@ -189,7 +190,7 @@ void checkSamplingMatchesEval(const M& material, const char* name) {
         INFO(name << ", cos theta_o " << cosOut);
         const Vec3 wo{std::sqrt(1.0f - cosOut * cosOut), 0, cosOut};
         std::mt19937_64 rng(99);
-        std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+        test::UniformReal<float> uniform(0.0f, 1.0f);
         constexpr int kDraws = 200000;
         Rgb sampled{0.0f}, integrated{0.0f};
         int mismatches = 0;
@@ -233,7 +234,7 @@ TEST_CASE("Bsdf::pdf answers as a fresh Bsdf does, whatever wo was asked before"
     material.fresnel = true;
     const Bsdf kept(material, {0, 0, 1}, true);
     std::mt19937_64 rng(7);
-    std::uniform_real_distribution<float> cosine(0.05f, 1.0f), azimuth(0.0f, 6.2831853f);
+    test::UniformReal<float> cosine(0.05f, 1.0f), azimuth(0.0f, 6.2831853f);
     auto direction = [&] {
         const float c = cosine(rng), s = std::sqrt(1.0f - c * c), phi = azimuth(rng);
         return Vec3{s * std::cos(phi), s * std::sin(phi), c};
@@ -267,7 +268,7 @@ TEST_CASE("Bsdf::pdf of a material with constant lobe albedos: one lobe choice s
     const PhongMaterial phong = makeMaterial(Rgb{0.5f, 0.2f, 0.1f}, Rgb{0.3f}, 20);
     const ModifiedPhongMaterial modified = makeMaterial<ModifiedPhongMaterial>({0.5f, 0.3f, 0.1f}, Rgb{0.4f}, 10);
     std::mt19937_64 rng(11);
-    std::uniform_real_distribution<float> cosine(-1.0f, 1.0f), azimuth(0.0f, 6.2831853f);
+    test::UniformReal<float> cosine(-1.0f, 1.0f), azimuth(0.0f, 6.2831853f);
     auto direction = [&] {
         const float c = cosine(rng), s = std::sqrt(1.0f - c * c), phi = azimuth(rng);
         return Vec3{s * std::cos(phi), s * std::sin(phi), c};
@@ -301,7 +302,7 @@ TEST_CASE("a Bsdf given its lobes' presence answers as one that asks the materia
         misled(material, {0, 0, 1}, true, TransportMode::Radiance, {}, &wrong);
     CHECK(told.hasSmoothLobe() == asking.hasSmoothLobe());
     std::mt19937_64 rng(11);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     int differs = 0;
     for (int i = 0; i < 500; ++i) {
         const Vec3 wo = glm::normalize(Vec3{uniform(rng) - 0.5f, uniform(rng) - 0.5f, 0.1f + uniform(rng)});

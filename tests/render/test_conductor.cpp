@@ -18,6 +18,7 @@
 #include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
 #include "../support/statistics.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace conductor_test {
@@ -101,7 +102,7 @@ TEST_CASE("conductor: white furnace, its albedo is the GGX single-scattering alb
             CAPTURE(cosOut);
             const Vec3 wo = test::outgoing(cosOut);
             std::mt19937_64 rng(29);
-            std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+            test::UniformReal<float> uniform(0.0f, 1.0f);
             constexpr int kDraws = 50000;
             Rgb byWeight{0.0f};
             double byEval = 0.0;
@@ -130,7 +131,7 @@ TEST_CASE("conductor: white furnace, its albedo is the GGX single-scattering alb
 TEST_CASE("conductor: eval is reciprocal, f(wo, wi) = f(wi, wo)") {
     const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
     std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    test::UniformReal<double> uniform(0.0, 1.0);
     for (const float roughness : {0.1f, 0.4f, 1.0f}) {
         const ConductorMaterial material({0.271f, 0.677f, 1.316f}, {3.609f, 2.625f, 2.292f}, roughness);
         for (int i = 0; i < 200; ++i) {
@@ -168,7 +169,7 @@ TEST_CASE("conductor: chi-square, its visible-normal sampling follows its densit
         const Vec3 wo = test::outgoing(c.cosOut, 4.0);
         test::DirectionHistogram histogram;
         histogram.subdivisions = 24;
-        std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+        test::UniformReal<float> uniform(0.0f, 1.0f);
         const double p = test::directionChiSquarePValue(
             histogram,
             [&](std::mt19937_64& rng) -> std::optional<Vec3> {

@@ -16,6 +16,7 @@
 #include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
 #include "../support/pinhole_reference.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace dielectric_test {
@@ -162,7 +163,7 @@ TEST_CASE("dielectric: white furnace, reflectance plus transmittance is Walter's
 
 TEST_CASE("dielectric: eval is Walter's BSDF and reciprocal with the eta^2 rule, f(wo, wi) / n_o^2 = f(wi, wo) / n_i^2") {
     std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    test::UniformReal<double> uniform(0.0, 1.0);
     const Rgb tint{0.9f, 0.7f, 0.4f};
     for (const float roughness : {0.1f, 0.4f, 1.0f}) {
         const DielectricMaterial material(1.5f, tint, roughness);
@@ -198,7 +199,7 @@ TEST_CASE("dielectric: eval is Walter's BSDF and reciprocal with the eta^2 rule,
 double chiSquareP(const Bsdf& sampled, const Bsdf& density, const Vec3& wo) {
     test::DirectionHistogram histogram;
     histogram.subdivisions = 24;
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     return test::directionChiSquarePValue(
         histogram,
         [&](std::mt19937_64& rng) -> std::optional<Vec3> {
@@ -238,7 +239,7 @@ TEST_CASE("dielectric: chi-square, reflection and transmission sampling follow t
 // before the facet, in proportion to the lobes' albedos, weighs F(m) / P(reflect): above 1 at grazing.
 TEST_CASE("dielectric: reflection or transmission is chosen by F at the sampled facet, each weight G2 / G1") {
     std::mt19937_64 rng(17);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     for (const float roughness : {0.3f, 0.7f})
         for (const double cosOut : {0.15, 0.8})
             for (const bool entering : {true, false}) {

@@ -19,6 +19,7 @@
 #include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
 #include "../support/statistics.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace {
@@ -71,7 +72,7 @@ TEST_CASE("microfacet: white furnace, a conductor with F = 1 reflects the single
             CAPTURE(cosOut);
             const Vec3 wo = test::outgoing(cosOut);
             std::mt19937_64 rng(17);
-            std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+            test::UniformReal<float> uniform(0.0f, 1.0f);
             constexpr int kDraws = 100000;
             double byWeight = 0.0, byEval = 0.0;
             for (int i = 0; i < kDraws; ++i) {
@@ -97,7 +98,7 @@ TEST_CASE("microfacet: white furnace, a conductor with F = 1 reflects the single
 TEST_CASE("microfacet: eval is reciprocal, f(wo, wi) = f(wi, wo)") {
     const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
     std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    test::UniformReal<double> uniform(0.0, 1.0);
     for (const float roughness : kRoughnessSweep) {
         const MicrofacetMaterial material({0.95f, 0.64f, 0.54f}, 0.3f, roughness);
         for (int i = 0; i < 200; ++i) {
@@ -121,7 +122,7 @@ Rgb blendAlbedo(const MicrofacetMaterial& material, float cosOut) {
     const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
     const Vec3 wo = test::outgoing(cosOut);
     std::mt19937_64 rng(23);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     constexpr int kDraws = 100000;
     Rgb glossy{0.0f}, base{0.0f};
     for (int i = 0; i < kDraws; ++i) {
@@ -186,7 +187,7 @@ double chiSquarePValue(const MicrofacetMaterial& material, float cosOut) {
     const Vec3 wo = test::outgoing(cosOut, 4.0);  // an azimuth off the frame's axes
     test::DirectionHistogram histogram;
     histogram.subdivisions = 24;  // 12 misses narrow grazing lobes: the midpoint rule, not the sampling
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     return test::directionChiSquarePValue(
         histogram,
         [&](std::mt19937_64& rng) -> std::optional<Vec3> {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "film/aov_set.h"
@@ -80,36 +81,42 @@ TEST_CASE("sobol: the second dimension is the index times Pascal's triangle mod 
     CHECK(sobolDimension1(3) == 0x40000000u);
 }
 
-TEST_CASE("skipping a dimension pair leaves every later number as drawing it would") {
-    for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
-        for (int spp : {1, 9, 12}) {
-            CAPTURE(samplerName(kind));
-            CAPTURE(spp);
-            Sampler drawn = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
-            Sampler skipped = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
-            drawn.next2D();
-            skipped.skip2D();
-            CHECK(drawn.next1D() == skipped.next1D());
-            CHECK(drawn.next2D() == skipped.next2D());
-            CHECK(drawn.forVertex(99).next2D() == skipped.forVertex(99).next2D());
-        }
-    }
-}
+// A number skipped (Sampler::skip2D, skip1D) and the same number drawn (next2D, next1D).
+struct Skip {
+    const char* what;
+    void (*draw)(Sampler&);
+    void (*skip)(Sampler&);
+};
 
-TEST_CASE("skipping one dimension leaves every later number as drawing it would") {
-    for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
-        for (int spp : {1, 9, 12}) {
-            CAPTURE(samplerName(kind));
-            CAPTURE(spp);
-            Sampler drawn = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
-            Sampler skipped = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
-            drawn.next2D();
-            skipped.next2D();
-            drawn.next1D();
-            skipped.skip1D();
-            CHECK(drawn.next1D() == skipped.next1D());
-            CHECK(drawn.next2D() == skipped.next2D());
-            CHECK(drawn.forVertex(99).next1D() == skipped.forVertex(99).next1D());
+TEST_CASE("skipping a dimension pair or one dimension leaves every later number as drawing it would") {
+    const Skip skips[] = {
+        {"a dimension pair", [](Sampler& s) { s.next2D(); }, [](Sampler& s) { s.skip2D(); }},
+        {"one dimension", [](Sampler& s) { s.next1D(); }, [](Sampler& s) { s.skip1D(); }},
+    };
+    for (const Skip& skip : skips) {
+        for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
+            for (int spp : {1, 9, 12}) {
+                // Skipped first, and after a pair drawn by both.
+                for (int drawnBefore : {0, 1}) {
+                    const std::string what = skip.what;
+                    CAPTURE(what);
+                    CAPTURE(samplerName(kind));
+                    CAPTURE(spp);
+                    CAPTURE(drawnBefore);
+                    Sampler drawn = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
+                    Sampler skipped = Sampler::forPixel(kind, 3, 5, spp - 1, spp, 77);
+                    for (int i = 0; i < drawnBefore; ++i) {
+                        drawn.next2D();
+                        skipped.next2D();
+                    }
+                    skip.draw(drawn);
+                    skip.skip(skipped);
+                    CHECK(drawn.next1D() == skipped.next1D());
+                    CHECK(drawn.next2D() == skipped.next2D());
+                    CHECK(drawn.forVertex(99).next1D() == skipped.forVertex(99).next1D());
+                    CHECK(drawn.forVertex(99).next2D() == skipped.forVertex(99).next2D());
+                }
+            }
         }
     }
 }

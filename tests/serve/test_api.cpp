@@ -470,7 +470,10 @@ TEST_CASE("serve: a change of settings cancels the render in flight") {
     // Hours of work at this size and sample count: it can only finish by being cancelled.
     const auto heavy = fixture.session.update(applySettings(fixture.session.job()->settings,
                                                             settingsFor(1024, 768, 4096, "path").dump()));
-    const Progress started = fixture.session.waitForProgress(heavy->generation, 0, 60.0);
+    // The worker has taken it (its empty progress is published just before its first pass): what
+    // follows cancels a render under way. Not waiting for that pass itself, 786,432 paths (most
+    // of this test's time under the sanitizers), which would only let the cancel land in a later one.
+    const Progress started = fixture.session.waitForProgress(heavy->generation, -1, 60.0);
     CHECK(started.job->generation == heavy->generation);
     const auto light = fixture.session.update(applySettings(heavy->settings, settingsFor(16, 12, 1).dump()));
     CHECK(heavy->cancelled());
@@ -520,10 +523,10 @@ TEST_CASE("serve: a change of settings runs the integrator's preprocess once: on
     fixture.waitUntilDone(small->generation);
     const std::uint64_t before = Renderer::preprocessesRun();
     // Pass 0 at the pixel centres, then jittered passes of kSamplesPerPass samples.
-    // Refinement off: this checks serve's passes, not the solve (whose refinement rounds take
-    // minutes under the sanitizers).
+    // A small budget without refinement: this checks serve's passes, not the solve (the default
+    // 4096 patches were most of this test's time under the sanitizers, refined rounds minutes).
     json settings = settingsFor(16, 12, 2 * kSamplesPerPass, "radiosity");
-    settings["parameters"] = {{"refine", 0}};
+    settings["parameters"] = {{"patches", 24}, {"refine", 0}};
     const auto job = fixture.session.update(applySettings(fixture.session.job()->settings, settings.dump()));
     const json done = fixture.waitUntilDone(job->generation);
     CHECK(done["passes"] == 3);
@@ -534,7 +537,7 @@ TEST_CASE("serve: progress reports the preparation (radiosity's solve) with its 
     ServerFixture fixture("cornell-original.toml");
     const auto started = std::chrono::steady_clock::now();
     json settings = settingsFor(16, 12, 1, "radiosity");
-    settings["parameters"] = {{"refine", 0}};  // as above: serve's report, not the refinement
+    settings["parameters"] = {{"patches", 24}, {"refine", 0}};  // as above: serve's report, not the solve
     const auto job = fixture.session.update(applySettings(fixture.session.job()->settings, settings.dump()));
     const json done = fixture.waitUntilDone(job->generation);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

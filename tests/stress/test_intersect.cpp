@@ -6,6 +6,7 @@
 
 #include "geometry/intersect.h"
 #include "reference.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace {
@@ -19,7 +20,7 @@ Ray rayTowards(Vec3 origin, Vec3 target) {
 
 TEST_CASE("stable sphere test: hit or miss as the exact answer, both roots within an ulp, to 1e6 radii") {
     std::mt19937_64 rng(0x5EED);
-    std::uniform_real_distribution<float> offset(-1.1f, 1.1f);
+    test::UniformReal<float> offset(-1.1f, 1.1f);
     const Sphere sphere{{0.0f, 0.0f, 0.0f}, 1.0f, 0};
     for (const float distance : {10.0f, 1e3f, 1e6f}) {
         CAPTURE(distance);
@@ -40,7 +41,7 @@ TEST_CASE("stable sphere test: hit or miss as the exact answer, both roots withi
 
 TEST_CASE("naive b^2 - 4ac gets silhouettes wrong at 1e3 radii, which the lecture figure shows") {
     std::mt19937_64 rng(0x5EED);
-    std::uniform_real_distribution<float> offset(-1.1f, 1.1f);
+    test::UniformReal<float> offset(-1.1f, 1.1f);
     const Sphere sphere{{0.0f, 0.0f, 0.0f}, 1.0f, 0};
     int wrong = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -67,7 +68,7 @@ TEST_CASE("watertight: rays through a shared edge and a shared vertex hit, where
     const Vec3 a{0.1f, 0.3f, 0.0f}, b{1.3f, -0.7f, 0.0f}, c{0.9f, 1.1f, 0.0f}, d{-0.4f, 1.7f, 0.0f};
     const Triangle left{a, b, c, 0}, right{a, c, d, 0};
     std::mt19937_64 rng(7);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    test::UniformReal<float> u(0.0f, 1.0f);
     int watertightMisses = 0, mollerMisses = 0;
     for (int i = 0; i < 20000; ++i) {
         const Vec3 onEdge = a + u(rng) * (c - a);
@@ -108,7 +109,7 @@ TEST_CASE("no scale-dependent threshold: a triangle scaled by 1e-3 stays visible
 TEST_CASE("watertight: a ray leaving a point of the triangle is not hit by it (t below its error bound)") {
     const Triangle tri{{1e3f, 2e3f, -5e2f}, {1.7e3f, 2.2e3f, -4e2f}, {1.1e3f, 2.9e3f, -9e2f}, 0};
     std::mt19937_64 rng(11);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    test::UniformReal<float> u(0.0f, 1.0f);
     int selfHits = 0;
     for (int i = 0; i < 20000; ++i) {
         float w1 = u(rng), w2 = u(rng);

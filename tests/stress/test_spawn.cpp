@@ -13,6 +13,7 @@
 #include "geometry/spawn_ray.h"
 #include "math/float_bits.h"
 #include "reference.h"
+#include "../support/uniform_real.h"
 
 namespace lightpath {
 namespace {
@@ -53,7 +54,7 @@ TEST_CASE("nextFloatUp and nextFloatDown are std::nextafter towards +inf and -in
 
 TEST_CASE("shadow rays from shared origins are the rays spawned one by one, under every offset method") {
     std::mt19937_64 rng(5);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    test::UniformReal<float> u(-1.0f, 1.0f);
     const Sphere sphere{{0.3f, -0.2f, 0.5f}, 0.7f, 0};
     for (const RayOffset offset : {RayOffset::Robust, RayOffset::WachterBinder, RayOffset::FixedEpsilon, RayOffset::None,
                                    RayOffset::OwnPrimitive}) {
@@ -89,7 +90,7 @@ struct ChordCount {
 };
 ChordCount castChords(const SceneGeometry& geometry, const Vec3& inside) {
     std::mt19937_64 rng(11);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    test::UniformReal<float> u(-1.0f, 1.0f);
     ChordCount count;
     for (int i = 0; i < 20000; ++i) {
         const Vec3 d = glm::normalize(Vec3{u(rng), u(rng), u(rng)});
@@ -141,7 +142,7 @@ TEST_CASE("a shadow ray ending on a surface is not blocked by that surface, alon
 
 TEST_CASE("the robust offset puts the origin on the leaving side of the exact plane, at every scale") {
     std::mt19937_64 rng(3);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    test::UniformReal<float> u(0.0f, 1.0f);
     for (const float scale : {1e-4f, 1.0f, 1e6f}) {
         CAPTURE(scale);
         const Triangle tri{scale * Vec3{0.3f, 0.1f, 0.2f}, scale * Vec3{1.1f, 0.4f, -0.3f}, scale * Vec3{0.2f, 0.9f, 0.7f}, 0};

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "math/types.h"
+#include "uniform_real.h"
 
 namespace lightpath::test {
 
@@ -25,7 +26,7 @@ inline Moments momentsOf(const std::vector<double>& values) {
 
 // A unit direction uniform over the sphere (Archimedes: z uniform in [-1, 1]).
 inline Vec3 uniformSphereDirection(std::mt19937_64& rng) {
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    test::UniformReal<float> uniform(0.0f, 1.0f);
     const float z = 2.0f * uniform(rng) - 1.0f, phi = 2.0f * kPi * uniform(rng);
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     return {r * std::cos(phi), r * std::sin(phi), z};
