@@ -401,7 +401,8 @@ def caustic_error_rows(fig):
     """RMSE of the beauty against seconds for path and bdpt on the mirror caustic: rows as
     bench error's CSV has them. The reference is bdpt at reference_spp with another seed; the
     seconds are each budget's samples at the rate of the largest budget's render on one thread
-    (render_seconds: its own time, without loading the scene or starting the process)."""
+    (render_seconds: its workers' CPU time, without loading the scene, the image module or
+    starting the process)."""
     run, scene = fig.run, fig.scene(0)
     reference_spp = reference_spp_of(run)
     # another seed than the budgets' (render() fixes seed 1); the same every run: cached
@@ -431,15 +432,17 @@ def reference_spp_of(run):
 
 
 def render_seconds(exr):
-    """The seconds the render itself took, as lightpath writes them into the EXR's header."""
+    """The CPU seconds of the render's workers, as lightpath writes them into the EXR's header:
+    not its wall seconds, which on one thread include loading the image module (0.25 s, more
+    than a 256-spp path-traced render of the mirror caustic itself)."""
     import OpenImageIO as oiio
     inp = oiio.ImageInput.open(str(exr))
     if inp is None:
         raise FigureError(f"{exr}: cannot open: {oiio.geterror()}")
-    value = inp.spec().getattribute("lightpath:seconds")
+    value = inp.spec().getattribute("lightpath:cpu_seconds")
     inp.close()
     if value is None:
-        raise FigureError(f"{exr}: no lightpath:seconds in its header")
+        raise FigureError(f"{exr}: no lightpath:cpu_seconds in its header")
     return max(float(value), 1e-4)
 
 

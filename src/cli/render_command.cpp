@@ -203,7 +203,10 @@ void run(const RenderCommand& command) {
                            {"lightpath:integrator", options.integrator},
                            {"lightpath:spp", std::to_string(options.samplesPerPixel)},
                            {"lightpath:max_depth", std::to_string(options.maxDepth)},
-                           {"lightpath:seconds", std::to_string(result.stats.seconds)}};
+                           {"lightpath:seconds", std::to_string(result.stats.seconds)},
+                           // the workers' own CPU time: without the image module's load, which
+                           // a 1-thread render otherwise counts in its wall seconds
+                           {"lightpath:cpu_seconds", std::to_string(result.stats.cpuSeconds)}};
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
     // A preset's AOV this integrator or this scene cannot fill is written black, so the set still
     // sums to the beauty; said here and in --stats, not as a warning (config/lpe_verdict.h).
