@@ -168,9 +168,29 @@ TEST_CASE("nesting: the emitters Whitted sees through mirrors and glass (ES+L) a
 // that hold any of that light (elsewhere both are zero: the fog's shafts cover part of the image,
 // the glass ball's refractions a small part), and the control, the lamp 5% brighter for the classic
 // integrator only, rejected by the mean's t-test.
-void checkMediaNesting(const std::string& classic, const std::string& expression, int width, int pathSpp) {
-    const std::filesystem::path file = std::filesystem::path(LIGHTPATH_SOURCE_DIR "/scenes") / "fog-shafts.toml";
-    REQUIRE(!loadScene(file).media.empty());
+Scene fogShafts(int width) {
+    Scene scene = smallScene(std::filesystem::path(LIGHTPATH_SOURCE_DIR "/scenes") / "fog-shafts.toml", width);
+    REQUIRE(!scene.media.empty());
+    return scene;
+}
+
+// The fog scene seen closer: the camera turned to the glass ball and its field of view narrowed to
+// frame it, so every pixel holds light through the glass. At the scene's own framing the ball
+// covers 3% of the image, and the path tracer spent 97% of its samples where E S+ V <L.> is zero.
+Scene glassBallCloseUp(int width) {
+    Scene scene = fogShafts(width);
+    const auto glass = std::find_if(scene.spheres.begin(), scene.spheres.end(), [&](const Sphere& s) {
+        return scene.objects[s.object].name == "glass-ball";
+    });
+    REQUIRE(glass != scene.spheres.end());
+    CameraDescription& camera = scene.camera;
+    camera.lookAt = glass->center;
+    const float halfAngle = std::asin(glass->radius / glm::length(glass->center - camera.eye));
+    camera.verticalFovDegrees = glm::degrees(2.0f * halfAngle) * 1.1f;
+    return scene;
+}
+
+void checkMediaNesting(const Scene& scene, const std::string& classic, const std::string& expression, int pathSpp) {
     const auto lit = [](const PixelEstimates& a, const PixelEstimates& b) {
         PixelEstimates x{{}, {}}, y{{}, {}};
         for (std::size_t i = 0; i < a.mean.size(); ++i) {
@@ -183,9 +203,8 @@ void checkMediaNesting(const std::string& classic, const std::string& expression
         REQUIRE(x.mean.size() >= 8);  // the light this expression names is seen
         return compare(x, y);
     };
-    // One resolution for the test and its control, so the comparison has the power the control
-    // shows, and the path tracer's estimate serves both.
-    const Scene scene = smallScene(file, width);
+    // One scene for the test and its control, so the comparison has the power the control shows,
+    // and the path tracer's estimate serves both.
     const PixelEstimates pathLight = estimate(scene, "path", pathSpp, expression);
     const Verdict v = lit(pathLight, estimate(scene, classic, 4, expression));
     CAPTURE(v.classicMean);
@@ -204,13 +223,13 @@ void checkMediaNesting(const std::string& classic, const std::string& expression
 }
 
 TEST_CASE("nesting with fog: ray casting's single scattering is the path tracer's E V <L.>" * doctest::test_suite("statistical")) {
-    checkMediaNesting("raycast", "EV<L.>", 32, 256);
+    checkMediaNesting(fogShafts(32), "raycast", "EV<L.>", 256);
 }
 
 TEST_CASE("nesting with fog: Whitted's single scattering seen through glass (E S+ V <L.>) is the path tracer's" * doctest::test_suite("statistical")) {
-    // The path tracer reaches these paths only on the glass ball's pixels (a camera ray that scatters
-    // before meeting glass is cut there), each a free flight behind it: many samples, cheaply.
-    checkMediaNesting("whitted", "ES+V<L.>", 64, 2048);
+    // The path tracer reaches these paths only through the glass ball (a camera ray that scatters
+    // before meeting glass is cut there), each a free flight behind it.
+    checkMediaNesting(glassBallCloseUp(32), "whitted", "ES+V<L.>", 512);
 }
 
 // The reference: tests/render/data/cornell-lamp.reference, one R G B line per pixel.
