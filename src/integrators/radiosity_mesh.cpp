@@ -545,6 +545,7 @@ RadiosityMesh::RadiosityMesh(const Scene& scene, const SceneGeometry& geometry, 
                     welder, clustering);
     }
     sourceStart_.back() = static_cast<std::uint32_t>(sources_.size());
+    indexSources();
     buildClusters(clustering);
     // Every patch is a root: node i holds patch i (node 0 is never a child, so firstChild 0 is "none").
     nodes_.resize(patches_.size());
@@ -853,6 +854,22 @@ PatchPoint RadiosityMesh::samplePoint(std::uint32_t patch, Vec2 u) const {
     return {s.point, s.normal, patch};
 }
 
+void RadiosityMesh::indexSources() {
+    sourceIndexOf_.assign(sourceStart_.size() - 1, 0);
+    std::vector<CoplanarTriangleIndex::Corners> corners;
+    for (std::size_t id = 0; id + 1 < sourceStart_.size(); ++id) {
+        const std::uint32_t first = sourceStart_[id], last = sourceStart_[id + 1];
+        if (last - first <= kScannedSources || sources_[first].grid.rows != 0) continue;
+        corners.clear();
+        for (std::uint32_t s = first; s < last; ++s) corners.push_back({sources_[s].a, sources_[s].b, sources_[s].c});
+        // lookupTriangle's slack reaches at most 2e-4 of a triangle's longest edge past it.
+        if (auto index = CoplanarTriangleIndex::build(corners, 1e-3f)) {
+            sourceIndexes_.push_back(std::move(*index));
+            sourceIndexOf_[id] = static_cast<std::uint32_t>(sourceIndexes_.size());
+        }
+    }
+}
+
 std::optional<PatchLookup> RadiosityMesh::lookup(const SurfaceHit& hit) const {
     if (hit.primitive + 1 >= sourceStart_.size()) return std::nullopt;
     const std::uint32_t first = sourceStart_[hit.primitive], last = sourceStart_[hit.primitive + 1];
@@ -861,8 +878,23 @@ std::optional<PatchLookup> RadiosityMesh::lookup(const SurfaceHit& hit) const {
     // One of a tessellation's triangles holds the point; the only triangle of a primitive takes
     // it even if the point rounds outside.
     const bool several = last - first > 1;
-    for (std::uint32_t s = first; s < last; ++s)
-        if (auto found = lookupTriangle(sources_[s], hit.point, several)) return found;
+    if (const std::uint32_t index = sourceIndexOf_[hit.primitive]; index != 0) {
+        // The first source in order that holds the point, as the scan below would find it: the
+        // index's candidates include every source that does.
+        std::uint32_t best = last;
+        std::optional<PatchLookup> found;
+        sourceIndexes_[index - 1].forEachCandidate(hit.point, [&](std::uint32_t i) {
+            if (first + i >= best) return;
+            if (auto f = lookupTriangle(sources_[first + i], hit.point, true)) {
+                best = first + i;
+                found = f;
+            }
+        });
+        if (found) return found;
+    } else {
+        for (std::uint32_t s = first; s < last; ++s)
+            if (auto found = lookupTriangle(sources_[s], hit.point, several)) return found;
+    }
     // A curved outline's hit may lie just outside its tessellation (between a chord and the
     // arc): the nearest piece's patch, its coordinates clamped onto it. An unbounded shape's hit
     // outside the region its triangles cover has none.

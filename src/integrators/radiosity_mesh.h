@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "accel/scene_geometry.h"
+#include "integrators/coplanar_triangle_index.h"
 #include "geometry/shape.h"
 #include "geometry/surface_hit.h"
 #include "math/types.h"
@@ -174,6 +175,9 @@ private:
                      std::vector<Clustering>& clustering);
     void addGrid(std::uint32_t shapeIndex, std::vector<Clustering>& clustering);
     void buildClusters(const std::vector<Clustering>& clustering);
+    // A primitive with more sources than this gets a CoplanarTriangleIndex for lookup, when they share a plane.
+    static constexpr std::uint32_t kScannedSources = 8;
+    void indexSources();
     // The eighth (0..7: x, y, z bits) of a cell at depth - 1 that holds `patch`'s centroid, as a cell at `depth`.
     std::uint32_t octant(std::uint32_t patch, std::uint32_t depth) const;
     // Deepens `cluster`'s cell while all its members share one eighth of it.
@@ -202,6 +206,10 @@ private:
     std::vector<std::uint32_t> leafNode_;  // per patch: its node
     // sources_[sourceStart_[id] .. sourceStart_[id + 1]) lie on scene-wide primitive id.
     std::vector<std::uint32_t> sourceStart_;
+    // Per primitive, 1 + its entry in sourceIndexes_ where it has many coplanar sources (a plane's
+    // rectangle and rings), 0 where lookup scans its few sources in order.
+    std::vector<std::uint32_t> sourceIndexOf_;
+    std::vector<CoplanarTriangleIndex> sourceIndexes_;
     std::size_t vertexCount_ = 0;
 };
 
