@@ -4,7 +4,9 @@
 // its Release cost. A few tests draw many random cases to find a logic error rarely hit; the
 // Release stage runs them all and proves that. Under the sanitizers the same code is run for its
 // memory errors and undefined behaviour, which the first cases already reach: those tests run one
-// case in kSanitizedDivisor there. One constant for every such test, seen in one place.
+// case in kSanitizedDivisor there. Likewise a few exact checks (counts, bit-identity) whose size
+// (a radiosity mesh's elements) only makes them slow. One constant for every such test, seen in
+// one place.
 namespace lightpath::test {
 
 #if defined(__has_feature)
@@ -22,10 +24,10 @@ inline constexpr bool kSanitized = true;
 inline constexpr bool kSanitized = false;
 #endif
 
-// The sanitizer stage runs one in this many of such a test's random cases (all in Release).
+// The sanitizer stage runs one in this many of such a test's random cases or elements (all in Release).
 inline constexpr int kSanitizedDivisor = kSanitized ? 5 : 1;
 
-// `count` random cases, or the first count / kSanitizedDivisor of them under the sanitizers.
+// `count` random cases (or elements), or the first count / kSanitizedDivisor of them under the sanitizers.
 constexpr int sanitizedCount(int count) { return count / kSanitizedDivisor; }
 
 }  // namespace lightpath::test
