@@ -6,10 +6,12 @@
 
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
+#include "integrators/photon.h"
 #include "lights/point_light.h"
 #include "scene/scene_loader.h"
 #include "cases.h"
 #include "film_checks.h"
+#include "sanitizer.h"
 #include "statistics.h"
 
 namespace lightpath::conformance {
@@ -61,11 +63,21 @@ namespace {
 // threads still split every pass of the solve. Its rays were the rest (3.7 s a render in Release,
 // about 10x that under the sanitizers): 16 form-factor rays and 4 light samples (2x2 strata, the
 // fewest the refinement's noise estimate pairs) still cut patches in every refinement pass.
+//
+// Under the sanitizers photon mapping's 200000 photons were then most of these checks' time (its
+// preprocess, shot again for each render): a fifth of them (test::sanitizedCount) still fills ten
+// of shootPhotons' 4096-photon chunks, which 3 threads split, and both maps. SPPM's passes keep
+// their default: its 20000 photons a pass are five chunks already.
 RenderOptions structuralOptions(const IntegratorInfo& integrator) {
     RenderOptions options = checkOptions(integrator);
     options.radiosity.patchBudget = 512;
     options.radiosity.formFactorRays = 16;
     options.radiosity.lightSamples = 4;
+    if (test::kSanitized && std::string_view(integrator.name) == "photon") {
+        ParameterValues parameters(integrator.schema);
+        parameters.set("photons", test::sanitizedCount(int(kDefaultPhotons)));
+        options.integratorParameters = std::move(parameters);
+    }
     return options;
 }
 
