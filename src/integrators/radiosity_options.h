@@ -58,6 +58,12 @@ struct RadiosityOptions {
     // an element's light is brighter on the side its receivers see, a ball's contact with a floor,
     // later bounces came out low: the tests' control). Not a command-line option.
     bool reconstructGather = true;
+    // With reconstructGather, a triangle patch solved on its own is read through its least-squares
+    // gradient (radiosity_gradients.h: its value at the centroid, sloped as its neighbours say,
+    // which rises to a peak at a contact line) rather than the scaled plane through its vertex
+    // means (which flattens it). false: the scaled plane everywhere, as before (the tests'
+    // control). Not a command-line option.
+    bool gatherGradients = true;
 };
 
 }  // namespace lightpath
