@@ -352,19 +352,9 @@ std::vector<RadiosityIntegrator::RefineCut> RadiosityIntegrator::refinementCuts(
     const std::vector<float> noise = sigmas > 0.0f ? valueNoise(threads) : std::vector<float>{};
     // The patches around each vertex, and per candidate patch its weights c_j.
     std::vector<float> vertexArea(mesh_->vertexCount(), 0.0f);
-    std::vector<std::uint32_t> aroundStart(mesh_->vertexCount() + 1, 0), around;
     for (const RadiosityPatch& p : patches)
-        for (int v = 0; v < p.vertexCount; ++v) {
-            vertexArea[p.vertices[v]] += p.area;
-            ++aroundStart[p.vertices[v] + 1];
-        }
-    for (std::size_t v = 0; v < mesh_->vertexCount(); ++v) aroundStart[v + 1] += aroundStart[v];
-    around.resize(aroundStart.back());
-    {
-        std::vector<std::uint32_t> fill(aroundStart.begin(), aroundStart.end() - 1);
-        for (std::uint32_t q = 0; q < patches.size(); ++q)
-            for (int v = 0; v < patches[q].vertexCount; ++v) around[fill[patches[q].vertices[v]]++] = q;
-    }
+        for (int v = 0; v < p.vertexCount; ++v) vertexArea[p.vertices[v]] += p.area;
+    const auto [aroundStart, around] = mesh_->patchesAroundVertices();
     struct Weight {
         std::uint32_t patch;
         float share;

@@ -19,17 +19,7 @@ PatchGradients::PatchGradients(const RadiosityMesh& mesh) {
     const auto& patches = mesh.patches();
     const auto& clusters = mesh.clusters();
     patchCount_ = patches.size();
-    // The patches around each vertex.
-    std::vector<std::uint32_t> aroundStart(mesh.vertexCount() + 1, 0), around;
-    for (const RadiosityPatch& p : patches)
-        for (int v = 0; v < p.vertexCount; ++v) ++aroundStart[p.vertices[v] + 1];
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) aroundStart[v + 1] += aroundStart[v];
-    around.resize(aroundStart.back());
-    {
-        std::vector<std::uint32_t> fill(aroundStart.begin(), aroundStart.end() - 1);
-        for (std::uint32_t q = 0; q < patches.size(); ++q)
-            for (int v = 0; v < patches[q].vertexCount; ++v) around[fill[patches[q].vertices[v]]++] = q;
-    }
+    const auto [aroundStart, around] = mesh.patchesAroundVertices();
     const auto centroid = [&](const RadiosityPatch& p) { return (p.a + p.b + p.c) / 3.0f; };
     std::vector<std::uint32_t> found;
     for (std::uint32_t p = 0; p < patches.size(); ++p) {

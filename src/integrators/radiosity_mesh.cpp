@@ -479,6 +479,19 @@ struct RadiosityMesh::VertexWelder {
     }
 };
 
+RadiosityMesh::VertexPatches RadiosityMesh::patchesAroundVertices() const {
+    VertexPatches around;
+    around.start.assign(vertexCount_ + 1, 0);
+    for (const RadiosityPatch& p : patches_)
+        for (int v = 0; v < p.vertexCount; ++v) ++around.start[p.vertices[v] + 1];
+    for (std::size_t v = 0; v < vertexCount_; ++v) around.start[v + 1] += around.start[v];
+    around.patches.resize(around.start.back());
+    std::vector<std::uint32_t> fill(around.start.begin(), around.start.end() - 1);
+    for (std::uint32_t q = 0; q < patches_.size(); ++q)
+        for (int v = 0; v < patches_[q].vertexCount; ++v) around.patches[fill[patches_[q].vertices[v]]++] = q;
+    return around;
+}
+
 std::size_t RadiosityMesh::countClusters(const Scene& scene, const SceneGeometry& geometry, float patchSize, int planeRings,
                                          std::span<const std::uint8_t> buried, bool cutPlanes) {
     return ClusterCounter(scene, geometry, planeRings, buried, cutPlanes).count(patchSize);

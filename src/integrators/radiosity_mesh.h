@@ -120,6 +120,13 @@ public:
     std::size_t vertexCount() const { return vertexCount_; }
     float patchSize() const { return patchSize_; }
 
+    // The patches around each vertex, in patch order: those of vertex v are
+    // patches[start[v] .. start[v + 1]) (compressed rows).
+    struct VertexPatches {
+        std::vector<std::uint32_t> start, patches;
+    };
+    VertexPatches patchesAroundVertices() const;
+
     // A point uniformly by area on patch `patch`, from u in [0,1)^2.
     PatchPoint samplePoint(std::uint32_t patch, Vec2 u) const;
     // A point uniformly by area over the members of cluster `cluster` (u.x picks the member and is
