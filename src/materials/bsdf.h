@@ -62,6 +62,8 @@ public:
     const Vec3& normal() const { return side_.normal; }
     // ka of the ambient term here (the material's, a texture read at this point).
     Rgb ambientReflectance() const { return material_.ambientReflectanceAt(side_); }
+    // The constant diffuse part's reflectance here (radiosity's; a texture read at this point).
+    Rgb diffuseReflectance() const { return material_.diffuseReflectanceAt(side_); }
 
 private:
     // Probability of choosing each lobe for wo, in proportion to its albedo. Integrators ask

@@ -78,6 +78,12 @@ public:
 
     // The reflectance of the constant diffuse part, for radiosity; black when there is none.
     virtual Rgb diffuseReflectance() const = 0;
+    // The same at one surface point (a textured kd varies; diffuseReflectance is then its mean):
+    // radiosity's display and final gather read the texture the patch averages.
+    virtual Rgb diffuseReflectanceAt(const SurfaceSide& side) const {
+        (void)side;
+        return diffuseReflectance();
+    }
     // ka of the illumination formula's ambient term, which only the classic integrators add.
     virtual Rgb ambientReflectance() const { return Rgb{0.0f}; }
     // ka at one surface point (a textured ka varies; ambientReflectance is then its mean).

@@ -18,6 +18,12 @@ constexpr float kDielectricF0 = 0.04f;
 // Visible normals per axis of the stratified grid that integrates the specular albedo table.
 constexpr int kAlbedoStrata = 64;
 
+// The base's albedo from wo is c (1 - E(wo)) (1 - averageAlbedo_); averaged over wo as well.
+Rgb meanDiffuseAlbedo(const Rgb& diffuse, const Rgb& averageAlbedo) {
+    const Rgb remaining = Rgb{1.0f} - averageAlbedo;
+    return diffuse * remaining * remaining;
+}
+
 }  // namespace
 
 MicrofacetMaterial::AlbedoTable MicrofacetMaterial::albedoTable(float roughness, int strata) {
@@ -141,13 +147,15 @@ Rgb MicrofacetMaterial::diffuseWeight(const Shading& shading, float cosOut, floa
 }
 
 Rgb MicrofacetMaterial::diffuseReflectance() const {
-    // The base's albedo from wo is c (1 - E(wo)) (1 - averageAlbedo_); averaged over wo as well:
-    // (A textured base: read as its image's mean times the tint.)
-    // (Textures: read as their images' means times their factors.)
+    // Textures: read as their images' means times their factors.
     const bool textured = baseColor_.textured() || metallic_.textured() || roughness_.textured();
     const Shading shading = textured ? shadingOf(baseColor_.mean(), metallic_.mean(), roughness_.mean()) : constant_;
-    const Rgb remaining = Rgb{1.0f} - shading.averageAlbedo;
-    return shading.diffuse * remaining * remaining;
+    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo);
+}
+
+Rgb MicrofacetMaterial::diffuseReflectanceAt(const SurfaceSide& side) const {
+    const Shading shading = shadingAt(side);
+    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo);
 }
 
 bool MicrofacetMaterial::has(int lobe) const {

@@ -51,6 +51,7 @@ public:
                 NamedFactors& factors) const override;
     // Radiosity's constant reading of the base: its albedo averaged over cosine-weighted wo.
     Rgb diffuseReflectance() const override;
+    Rgb diffuseReflectanceAt(const SurfaceSide& side) const override;
 
     // Schlick's F(cos) = F0 + (1 - F0)(1 - cos)^5 (Schlick 1994).
     static Rgb fresnel(const Rgb& f0, float cosine);

@@ -50,6 +50,7 @@ public:
     int factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                 NamedFactors& factors) const override;
     Rgb diffuseReflectance() const override { return kd.mean(); }
+    Rgb diffuseReflectanceAt(const SurfaceSide& side) const override { return kd.at(side); }
     Rgb ambientReflectance() const override { return ka.mean(); }
     Rgb ambientReflectanceAt(const SurfaceSide& side) const override { return ka.at(side); }
 };
