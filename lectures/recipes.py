@@ -568,7 +568,8 @@ def patch_mesh(fig):
     # five budgets, doubling up to the one the other radiosity figures use: square panels in
     # five columns fill the frame (flat above, smooth below). Uniform meshes (--refine 0): each
     # panel has the budget its label says; refinement would cut up to 4x as many patches where the
-    # light changes, and the label would not be true.
+    # light changes, and the label would not be true. No final gather: every bounce is read from
+    # the patches, so the mesh is what the panels show.
     budgets = [run.patches >> k for k in range(4, -1, -1)]
     flat_panels, smooth_panels, notes = [], [], []
     for budget in budgets:
@@ -576,7 +577,7 @@ def patch_mesh(fig):
         for display in ("flat", "smooth"):
             exrs[display] = render(run, fig.id, f"{display}-{budget}", fig.scene(0),
                                    "--integrator", "radiosity", "--patches", budget, "--refine", 0,
-                                   "--radiosity-display", display,
+                                   "--radiosity-display", display, "--final-gather", 0,
                                    "--resolution", run.res(512, 512),
                                    "--spp", run.spp_radiosity, "--aovs", "none")
             checks.check_nonzero(exrs[display], "", f"radiosity, {display}, {budget} patches")

@@ -12,6 +12,7 @@
 #include "integrators/direct_light.h"
 #include "integrators/radiosity_gradients.h"
 #include "integrators/registry.h"
+#include "integrators/shading_point.h"
 #include "math/random.h"
 #include "util/progress.h"
 #include "sampling/warp.h"
@@ -78,6 +79,34 @@ SurfaceHit surfacePoint(const RadiosityPatch& patch, const PatchPoint& p) {
     return hit;
 }
 
+// Radiance a Lambertian point `from` reflects from `light` on the side `normal` faces, over its kd:
+// (1/pi) cos(theta) times a light sample's weight, plus, for an area light, the emitter's radiance
+// met by a cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
+// heuristic (Veach 1997, ch. 9), so neither the 1/d^2 of points near the emitter nor small bright
+// emitters make the estimate noisy. Added to `sum` term by term; `cast` counts the rays.
+void addDirectOverKd(const Light& light, const RenderContext& context, const SurfaceHit& from, const Vec3& normal,
+                     Vec2 uLight, Vec2 uCosine, Rgb& sum, std::uint64_t& cast) {
+    const LightSample s = light.sample(from.point, uLight);
+    const float cosTheta = glm::dot(normal, s.wi);
+    if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
+        ++cast;
+        if (!context.geometry.occluded(spawnShadowRay(from, s.point, s.normal, context.geometry.numerics()))) {
+            const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
+            sum += (weight * cosTheta / kPi) * s.weight;
+        }
+    }
+    if (light.isDelta()) return;
+    const Vec3 local = sampleCosineHemisphere(uCosine);
+    const Vec3 direction = Frame(normal).toWorld(local);
+    ++cast;
+    const auto hit = context.geometry.intersect(spawnRay(from, direction, context.geometry.numerics()));
+    if (!hit || context.lights.lightOfObject(hit->object) != &light) return;
+    const Rgb emitted = light.radiance(*hit, -direction);
+    if (isBlack(emitted)) return;
+    const float lightPdf = light.pdf(from.point, hit->point, hit->normal);
+    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
+}
+
 // 0 when a ray travelling along `direction` meets the front side (the side the normal faces).
 int sideFacing(const Vec3& normal, const Vec3& direction) { return glm::dot(normal, direction) < 0.0f ? 0 : 1; }
 
@@ -130,6 +159,7 @@ RadiosityOptions radiosityOptions(const ParameterValues& parameters, RadiosityOp
     base.formFactorRays = parameters.integer("form-factor-rays");
     base.lightSamples = parameters.integer("light-samples");
     base.refineRounds = parameters.integer("refine");
+    base.finalGather = parameters.integer("final-gather");
     const std::string display = parameters.text("radiosity-display");
     base.display = display == "flat"      ? RadiosityDisplay::Flat
                    : display == "gouraud" ? RadiosityDisplay::Gouraud
@@ -248,6 +278,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     }
     solveFor(wanted, false);
     if (displayNoise) computeDisplayScale(valueNoise(context.threads));
+    computeGatherFields();
     directNoise_ = {};
     gatherStart_ = {};
     gatherHits_ = {};
@@ -507,23 +538,47 @@ std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context
     RayCounters counters;
     PathState path(context, sink, counters);
     if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, Vec3{0.0f}})) return wanted;
-    // Objects with a patch that reflects: radiosity shows light only on those.
+    // Objects with a patch that reflects: radiosity shows light only on those. One per automaton
+    // symbol is probed: objects the expressions cannot tell apart are accepted alike.
     std::vector<bool> reflects(context.scene.objects.size(), false);
     for (std::size_t c = 0; c < mesh_->clusters().size(); ++c)
         if (!isBlack(reflectance_[c])) reflects[mesh_->clusters()[c].object] = true;
+    const auto labelled = [](std::uint32_t object) {
+        return PathEvent{lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, object, Vec3{0.0f}};
+    };
+    std::vector<PathEvent> surfaces;
+    std::vector<lpe::Automaton::Symbol> symbols;
     for (std::uint32_t object = 0; object < reflects.size(); ++object) {
         if (!reflects[object]) continue;
-        if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, object, Vec3{0.0f}})) continue;
-        for (int k = 1; k <= context.maxDepth; ++k) {
-            for (std::size_t l = 0; l < lights.size(); ++l) {
-                const lpe::OutputMask accepted = path.acceptsAfter(path.state(), lights[l]->event());
-                if (!path.wanted(accepted)) continue;
-                wanted[l] = std::max(wanted[l], k);
-                outputs[std::size_t(k)] |= accepted;
-            }
-            if (k == context.maxDepth || !path.push(unlabelledDiffuse(Vec3{0.0f}))) break;
+        const lpe::Automaton::Symbol symbol = path.symbolOf(labelled(object));
+        if (std::find(symbols.begin(), symbols.end(), symbol) != symbols.end()) continue;
+        symbols.push_back(symbol);
+        surfaces.push_back(labelled(object));
+    }
+    const auto accept = [&](int k) {
+        for (std::size_t l = 0; l < lights.size(); ++l) {
+            const lpe::OutputMask accepted = path.acceptsAfter(path.state(), lights[l]->event());
+            if (!path.wanted(accepted)) continue;
+            wanted[l] = std::max(wanted[l], k);
+            outputs[std::size_t(k)] |= accepted;
         }
-        while (path.size() > 1) path.pop();
+    };
+    // The paths radiosity shows: E D_object D{k-1} L, the second reflection labelled by the object a
+    // final gather ray meets (traceCameraRay), the later ones unlabelled (sums over every patch).
+    const std::vector<PathEvent> seconds =
+        options_.finalGather > 0 ? surfaces : std::vector<PathEvent>{unlabelledDiffuse(Vec3{0.0f})};
+    for (const PathEvent& first : surfaces) {
+        if (!path.push(first)) continue;
+        accept(1);
+        for (const PathEvent& second : seconds) {
+            if (context.maxDepth < 2 || !path.push(second)) continue;
+            for (int k = 2; k <= context.maxDepth; ++k) {
+                accept(k);
+                if (k == context.maxDepth || !path.push(unlabelledDiffuse(Vec3{0.0f}))) break;
+            }
+            while (path.size() > 2) path.pop();
+        }
+        path.pop();
     }
     const std::size_t deepest = outputs.size() - 1;
     std::size_t from = deepest;
@@ -652,35 +707,13 @@ void RadiosityIntegrator::gatherDirectLight(const RenderContext& context, const 
                 order.resize(samples);
                 Pcg32 rng(mixBits(e ^ (std::uint64_t(l) << 40)), 0x1165u);
                 shuffle(order, rng);
-                // Radiance reflected by a Lambertian patch, over kd: (1/pi) cos(theta) times each
-                // light sample's weight, plus, for an area light, the emitter's radiance met by a
-                // cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
-                // heuristic, so neither the 1/d^2 of points near the emitter nor small bright
-                // emitters make the patch noisy.
                 const auto sampleDirect = [&](std::uint32_t k, Rgb& sum, std::uint32_t& origin) {
                     const PatchPoint point = mesh_->sampleClusterPoint(p, stratum(k, strata, rng));
                     origin = point.patch;
-                    const Vec3 normal = e % 2 == 0 ? point.normal : -point.normal;
-                    const SurfaceHit from = surfacePoint(patches[point.patch], point);
-                    const LightSample s = light.sample(point.point, stratum(order[k], strata, rng));
-                    const float cosTheta = glm::dot(normal, s.wi);
-                    if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
-                        ++cast;
-                        if (!context.geometry.occluded(spawnShadowRay(from, s.point, s.normal, context.geometry.numerics()))) {
-                            const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
-                            sum += (weight * cosTheta / kPi) * s.weight;
-                        }
-                    }
-                    if (light.isDelta()) return;
-                    const Vec3 local = sampleCosineHemisphere(Vec2{rng.nextFloat(), rng.nextFloat()});
-                    const Vec3 direction = Frame(normal).toWorld(local);
-                    ++cast;
-                    const auto hit = context.geometry.intersect(spawnRay(from, direction, context.geometry.numerics()));
-                    if (!hit || context.lights.lightOfObject(hit->object) != &light) return;
-                    const Rgb emitted = light.radiance(*hit, -direction);
-                    if (isBlack(emitted)) return;
-                    const float lightPdf = light.pdf(point.point, hit->point, hit->normal);
-                    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
+                    const Vec2 uLight = stratum(order[k], strata, rng);
+                    const Vec2 uCosine = light.isDelta() ? Vec2{0.0f} : Vec2{rng.nextFloat(), rng.nextFloat()};
+                    addDirectOverKd(light, context, surfacePoint(patches[point.patch], point),
+                                    e % 2 == 0 ? point.normal : -point.normal, uLight, uCosine, sum, cast);
                 };
                 // The noise estimate pairs samples of neighbouring point strata (k, k + 1: one row
                 // of the pattern), each pair's squared difference estimating the variance of their
@@ -969,38 +1002,176 @@ void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const 
     if (bounces_ == 0) return;
     const auto found = mesh_->lookup(*hit);
     if (!found) return;  // a clipped plane beyond its rectangle: no patch, no radiosity
-    const RadiosityPatch& patch = mesh_->patches()[found->patch];
-    const int side = sideFacing(hit->normal, ray.direction);
-    const std::size_t start = path.size();
     if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, hit->object, hit->point})) {
         ++path.counters.reflectionDead;
         return;
     }
-    const auto lights = ctx.lights.all();
-    for (int k = 1; k <= bounces_; ++k) {
+    const int side = sideFacing(hit->normal, ray.direction);
+    const std::uint32_t cluster = mesh_->patches()[found->patch].cluster;
+    const Rgb texture = textureRatio(*hit, ray, cluster, ctx);
+    if (options_.finalGather > 0) {
+        const Rgb albedo = reflectance_[cluster] * texture;
+        emitDirectLight(*hit, side, albedo, path);
+        if (bounces_ > 1) gatherLaterBounces(*hit, side, albedo, path);
+    } else {
+        emitSolution(hit->point, *found, side, bounces_, texture, false, path);
+    }
+    path.pop();
+}
+
+Rgb RadiosityIntegrator::shownRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const {
+    const RadiosityPatch& patch = mesh_->patches()[at.patch];
+    const std::size_t element = valueIndex(light, bounce, 2 * patch.cluster + std::uint32_t(side));
+    if (display_ == RadiosityDisplay::Flat) return values_[element];
+    Rgb value{0.0f};
+    for (int v = 0; v < patch.vertexCount; ++v)
+        value += at.weights[v] * vertexValues_[vertexValueIndex(light, bounce, patch.vertices[v], side)];
+    return display_ == RadiosityDisplay::Smooth ? value * displayScale_[element] : value;
+}
+
+void RadiosityIntegrator::computeGatherFields() {
+    gatherFields_.clear();
+    if (options_.finalGather <= 0 || bounces_ < 2) return;
+    // The solve's own reading of each bounce (solve): constant elements, or the scaled Gouraud
+    // plane with the triangles' fitted gradients.
+    gatherFields_.resize(solvedBounces_.size() * std::size_t(bounces_));
+    if (!options_.reconstructGather) return;
+    std::optional<PatchGradients> gradients;
+    if (options_.gatherGradients) gradients.emplace(*mesh_);
+    std::vector<Rgb> shown;
+    std::vector<std::array<Rgb, 3>> corners;
+    std::vector<std::uint8_t> fitted;
+    for (std::size_t l = 0; l < solvedBounces_.size(); ++l)
+        for (int k = 1; k < bounces_ && k <= solvedBounces_[l]; ++k) {
+            GatherField& field = gatherFields_[slot(l, k)];
+            gouraudMeans(l, k, shown);
+            const Rgb* value = &values_[valueIndex(l, k, 0)];
+            field.scale.resize(elementCount());
+            for (std::uint32_t e = 0; e < elementCount(); ++e)
+                for (int c = 0; c < 3; ++c) field.scale[e][c] = shown[e][c] > 0.0f ? value[e][c] / shown[e][c] : 0.0f;
+            if (!gradients) continue;
+            gradients->fit(std::span(value, elementCount()), corners, fitted);
+            field.cornerSlot.assign(fitted.size(), kNoTarget);
+            for (std::size_t s = 0; s < fitted.size(); ++s)
+                if (fitted[s] != 0) {
+                    field.cornerSlot[s] = static_cast<std::uint32_t>(field.corners.size());
+                    field.corners.push_back(corners[s]);
+                }
+        }
+}
+
+Rgb RadiosityIntegrator::gatheredRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const {
+    const RadiosityPatch& patch = mesh_->patches()[at.patch];
+    const std::uint32_t element = 2 * patch.cluster + std::uint32_t(side);
+    const GatherField& field = gatherFields_[slot(light, bounce)];
+    if (field.scale.empty()) return values_[valueIndex(light, bounce, element)];
+    if (!field.cornerSlot.empty()) {
+        const std::uint32_t s = field.cornerSlot[2 * std::size_t(at.patch) + std::size_t(side)];
+        if (s != kNoTarget) {
+            const std::array<Rgb, 3>& c = field.corners[s];
+            return at.weights[0] * c[0] + at.weights[1] * c[1] + at.weights[2] * c[2];
+        }
+    }
+    Rgb plane{0.0f};
+    for (int v = 0; v < patch.vertexCount; ++v)
+        plane += at.weights[v] * vertexValues_[vertexValueIndex(light, bounce, patch.vertices[v], side)];
+    return field.scale[element] * plane;
+}
+
+Rgb RadiosityIntegrator::textureRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster,
+                                      const RenderContext& context) const {
+    const Material& material = *context.scene.materials[context.scene.objects[hit.object].material];
+    if (!material.textured) return Rgb{1.0f};
+    const Rgb mean = reflectance_[cluster];
+    const Rgb here = makeShadingPoint(hit, ray, context).bsdf.diffuseReflectance();
+    Rgb ratio{0.0f};
+    for (int c = 0; c < 3; ++c) ratio[c] = mean[c] > 0.0f ? here[c] / mean[c] : 0.0f;
+    return ratio;
+}
+
+void RadiosityIntegrator::emitSolution(const Vec3& point, const PatchLookup& at, int side, int last, const Rgb& weight,
+                                       bool gathered, PathState& path) const {
+    const auto lights = path.context.lights.all();
+    const std::size_t start = path.size();
+    for (int k = 1; k <= last; ++k) {
         for (std::size_t l = 0; l < lights.size(); ++l) {
             if (k > solvedBounces_[l]) continue;
             const PathEvent& light = lights[l]->event();
             if (!path.wants(light)) continue;
-            Rgb value{0.0f};
-            const std::size_t element = valueIndex(l, k, 2 * patch.cluster + std::uint32_t(side));
-            if (display_ == RadiosityDisplay::Flat) {
-                value = values_[element];
-            } else {
-                for (int v = 0; v < patch.vertexCount; ++v)
-                    value += found->weights[v] * vertexValues_[vertexValueIndex(l, k, patch.vertices[v], side)];
-                if (display_ == RadiosityDisplay::Smooth) value = value * displayScale_[element];
-            }
-            if (!isBlack(value) || !ctx.skipEnabled) path.emit(light, value);
+            const Rgb value = weight * (gathered ? gatheredRadiance(l, k, at, side) : shownRadiance(l, k, at, side));
+            if (!isBlack(value) || !path.context.skipEnabled) path.emit(light, value);
         }
-        if (k == bounces_) break;
+        if (k == last) break;
         // The intermediate reflections are a sum over every patch: unlabelled D events.
-        if (!path.push(unlabelledDiffuse(hit->point))) {
+        if (!path.push(unlabelledDiffuse(point))) {
             ++path.counters.reflectionDead;
             break;
         }
     }
     while (path.size() > start) path.pop();
+}
+
+void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const {
+    const RenderContext& ctx = path.context;
+    const auto lights = ctx.lights.all();
+    const Vec3 normal = side == 0 ? hit.normal : -hit.normal;
+    // The patches' own estimator (addDirectOverKd), at the pixel's point: N stratified samples of
+    // an area light per camera sample, each pattern shifted as a whole by the pixel's sequence; a
+    // point light needs one. Each light draws from its own sampler (Sampler::forVertex), so its
+    // numbers, and an AOV rendered alone, do not depend on which other lights are wanted.
+    const std::uint32_t strata = strataPerSide(options_.finalGather);
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        if (solvedBounces_[l] < 1) continue;
+        const PathEvent& event = lights[l]->event();
+        if (!path.wants(event)) continue;
+        const Light& light = *lights[l];
+        const std::uint32_t n = light.isDelta() ? 1 : strata;
+        Sampler sampler = path.sampler->forVertex(path.key() ^ (0x9e3779b97f4a7c15ull * (l + 1)));
+        const Vec2 shiftLight = sampler.next2D();
+        const Vec2 shiftCosine = light.isDelta() ? Vec2{0.0f} : sampler.next2D();
+        Rgb sum{0.0f};
+        std::uint64_t cast = 0;
+        for (std::uint32_t k = 0; k < n * n; ++k) {
+            const Vec2 cell{float(k % n), float(k / n)};
+            addDirectOverKd(light, ctx, hit, normal, (cell + shiftLight) / float(n), (cell + shiftCosine) / float(n), sum,
+                            cast);
+        }
+        path.counters.shadow += cast;
+        const Rgb value = albedo * sum / float(n * n);
+        if (!isBlack(value) || !ctx.skipEnabled) path.emit(event, value);
+    }
+}
+
+void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo,
+                                             PathState& path) const {
+    const RenderContext& ctx = path.context;
+    // A Lambertian surface's bounce k is albedo times the mean of bounce k - 1's radiance over
+    // cosine-weighted directions. The directions are stratified, a square pattern shifted as a
+    // whole by one 2D sample per camera sample (Cranley and Patterson 1976), so a pixel's samples
+    // cover the strata too.
+    const std::uint32_t strata = strataPerSide(options_.finalGather);
+    const std::uint32_t rays = strata * strata;
+    const Vec2 shift = path.sampler->forVertex(path.key()).next2D();
+    const Frame frame(side == 0 ? hit.normal : -hit.normal);
+    const Rgb weight = albedo / float(rays);
+    for (std::uint32_t k = 0; k < rays; ++k) {
+        const Vec2 u{(float(k % strata) + shift.x) / float(strata), (float(k / strata) + shift.y) / float(strata)};
+        const Vec3 direction = frame.toWorld(sampleCosineHemisphere(u));
+        const Ray gatherRay = spawnRay(hit, direction, ctx.geometry.numerics());
+        ++path.counters.reflection;
+        const auto there = ctx.geometry.intersect(gatherRay);
+        if (!there) continue;
+        const auto found = mesh_->lookup(*there);
+        if (!found) continue;
+        if (!path.push({lpe::EventType::Reflection, lpe::Scatter::Diffuse, Subject::Object, there->object, there->point})) {
+            ++path.counters.reflectionDead;
+            continue;
+        }
+        const Rgb texture = textureRatio(*there, gatherRay, mesh_->patches()[found->patch].cluster, ctx);
+        emitSolution(there->point, *found, sideFacing(there->normal, direction), bounces_ - 1, weight * texture, true,
+                     path);
+        path.pop();
+    }
 }
 
 }  // namespace lightpath
@@ -1022,6 +1193,8 @@ LIGHTPATH_REGISTER_INTEGRATOR(lightpath::integratorRow(
       .doc = "shadow rays per side of each patch and light"},
      {.name = "refine", .type = lightpath::ParameterType::Integer, .defaultText = "3", .range = {0.0, 8.0},
       .doc = "refinement passes: cut into four the patches whose Gouraud mean differs from their radiosity by over 5% and over its sampling noise, solve again (0: uniform patches)"},
+     {.name = "final-gather", .type = lightpath::ParameterType::Integer, .defaultText = "16", .range = {0.0, 4096.0},
+      .doc = "per camera sample: samples of each area light for the direct light at the hit, and rays gathering bounces 2 and up from the solution over its hemisphere (0: every bounce read from the solution at the hit, the classic display)"},
      {.name = "radiosity-display", .type = lightpath::ParameterType::Name, .defaultText = "smooth",
       .doc = "smooth (vertex radiosities interpolated, scaled so each patch shows its own mean), gouraud (interpolated, unscaled) or flat (one value per patch)",
       .choices = "smooth|gouraud|flat"}}))

@@ -93,6 +93,30 @@ private:
     void computeFormFactors(const RenderContext& context, ProgressBar& progress, bool keepRays);
     void gatherDirectLight(const RenderContext& context, const std::vector<int>& wanted, ProgressBar& progress);
     void solve(const RenderContext& context, const std::vector<int>& wanted, int openFrom, ProgressBar& progress);
+    // What the display shows of (light, bounce) at a patch point on `side`: the element's value
+    // (flat) or the vertex values interpolated there (gouraud), scaled per element (smooth).
+    Rgb shownRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const;
+    // A textured material's kd at the hit over the mean kd its element was solved with, per
+    // channel (1: untextured): the texture a patch's radiosity averages, read back at the point.
+    Rgb textureRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster, const RenderContext& context) const;
+    // Emits bounces 1..last of every wanted light as shown at `at`, times `weight`, with an
+    // unlabelled D event between them; the path's last event is the point's own reflection.
+    // gathered: read as the solve's gather reads it (gatheredRadiance), else as the display shows it.
+    void emitSolution(const Vec3& point, const PatchLookup& at, int side, int last, const Rgb& weight, bool gathered,
+                      PathState& path) const;
+    // (light, bounce) at a patch point as the solve's own gather reads it (solve): the element's
+    // value, or the Gouraud plane scaled to exactly the element's mean, or a triangle's fitted
+    // gradient. The final gather reads this, so the image's later bounces average the same field
+    // the solve's bounces were made from (the display's smoothing, tuned to hide noise, is not).
+    Rgb gatheredRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const;
+    // gatherFields_ from the last solve (empty without a final gather).
+    void computeGatherFields();
+    // With the final gather, bounce 1 at a camera hit: every wanted light's direct light there,
+    // sampled as the patches' own is (radiosity.cpp, addDirectOverKd), times the hit's kd.
+    void emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const;
+    // The final gather (RadiosityOptions::finalGather): bounces 2..bounces_ at a camera hit, each
+    // ray labelled by the object it meets and reading the solution's bounces there.
+    void gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const;
     // The vertex radiosities (vertexValues_) of every solved light and bounce, or of one.
     void computeVertexValues();
     void computeVertexValues(std::size_t light, int bounce);
@@ -144,6 +168,15 @@ private:
     // element's radiosity over the mean Gouraud shows across it, shrunk towards 1 where that
     // difference is within the sampling noise (computeDisplayScale).
     std::vector<Rgb> displayScale_;
+    // Per (light, bounce) slot below bounces_, what gatheredRadiance reads: the exact scale per
+    // element (empty: constant elements) and the fitted triangles' corners, cornerSlot per patch
+    // side 2 * patch + side (kNoTarget in radiosity.cpp: none fitted; empty: no gradients).
+    struct GatherField {
+        std::vector<Rgb> scale;
+        std::vector<std::uint32_t> cornerSlot;
+        std::vector<std::array<Rgb, 3>> corners;
+    };
+    std::vector<GatherField> gatherFields_;
     // For the noise estimate (filled by the refinement passes' solves, and by the last solve under
     // the smooth display, whose scale uses it; freed after preprocess): the
     // variance of each element's direct light, valueIndex(light, 1, element), and each form-factor

@@ -40,6 +40,16 @@ struct RadiosityOptions {
     // that receive it (radiosity.cpp, solve), or at --max-depth.
     double tolerance = 1e-4;
     RadiosityDisplay display = RadiosityDisplay::Smooth;
+    // Final gather (the view pass of two-pass methods: Chen et al. 1991; Reichert 1992; Cohen and
+    // Wallace 1993, 9.2.2): at a camera hit, bounce 1 is the direct light sampled there with
+    // shadow rays (this many samples of an area light per camera sample) and bounces 2 and up are
+    // gathered over its hemisphere, this many cosine-weighted rays each reading the solution's
+    // previous bounce where it lands, rather than read from the hit's own element. The mesh's
+    // error then reaches the image only through an average over the hemisphere: a shadow's edge,
+    // a contact or a ball's underside, which a patch's value smears, shows as the path tracer
+    // shows it (issue 27's 5% per 4x4 region). 0: every bounce read from the solution at the hit,
+    // the classic display, noise-free and view-independent.
+    int finalGather = 16;
     // Coarser rings around an unbounded surface's rectangle over the scene (RadiosityMesh); 0 clips
     // it to the rectangle, as before issue 27 (the light it bounces from beyond is lost: the tests'
     // control). Not a command-line option.

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -146,15 +147,34 @@ TEST_CASE("a closed box of albedo rho emitting Le everywhere shows Le / (1 - rho
     options.integrator = "radiosity";
     options.maxDepth = kMaxDepth;
     options.radiosity.patchBudget = 1536;
-    const RenderResult result = Renderer(emissiveBox(kAlbedo, kEmission), aovs, options).render();
-    double worst = 0.0;
-    for (int y = 0; y < result.film.height(); ++y)
-        for (int x = 0; x < result.film.width(); ++x)
-            worst = std::max(worst, std::fabs(double(result.film.at(0, x, y).g) / expected - 1.0));
+    const auto errors = [&](int finalGather) {
+        options.radiosity.finalGather = finalGather;
+        options.samplesPerPixel = finalGather > 0 ? 16 : 1;
+        const RenderResult result = Renderer(emissiveBox(kAlbedo, kEmission), aovs, options).render();
+        double worst = 0.0, sum = 0.0;
+        for (int y = 0; y < result.film.height(); ++y)
+            for (int x = 0; x < result.film.width(); ++x) {
+                worst = std::max(worst, std::fabs(double(result.film.at(0, x, y).g) / expected - 1.0));
+                sum += result.film.at(0, x, y).g;
+            }
+        REQUIRE(result.stats.radiosity);
+        CHECK(result.stats.radiosity->residual < options.radiosity.tolerance);
+        return std::pair{std::fabs(sum / (result.film.width() * result.film.height()) / expected - 1.0), worst};
+    };
     CAPTURE(expected);
-    CHECK(worst < 0.01);
-    REQUIRE(result.stats.radiosity);
-    CHECK(result.stats.radiosity->residual < options.radiosity.tolerance);
+    // Read at the hit, each pixel shows its element's solution, its noise shrunk away (the smooth display).
+    const auto [classicMean, classicWorst] = errors(0);
+    CAPTURE(classicMean);
+    CAPTURE(classicWorst);
+    CHECK(classicWorst < 0.01);
+    // Gathered, a pixel's direct light is sampled there and its later bounces average the elements
+    // its rays meet, each with its form factors' noise: exact in the mean, within that noise per
+    // pixel (16 samples of 16 rays).
+    const auto [gatherMean, gatherWorst] = errors(16);
+    CAPTURE(gatherMean);
+    CAPTURE(gatherWorst);
+    CHECK(gatherMean < 0.002);
+    CHECK(gatherWorst < 0.01);
 }
 
 TEST_CASE("energy is conserved: rows of the form factors sum to 1 in a closed box, each bounce keeps rho of the last") {
@@ -871,9 +891,12 @@ double sunkBoxError(const RadiosityOptions& options) {
     return worst;
 }
 
+// Read at the camera's hit (no final gather, whose direct light per pixel and gather would hide
+// what the clustering does to the solution).
 RadiosityOptions sunkBoxOptions() {
     RadiosityOptions options;
     options.patchSize = 0.75f;
+    options.finalGather = 0;
     return options;
 }
 
@@ -1063,9 +1086,12 @@ BounceErrors shadowedSlabErrors(const RadiosityOptions& options) {
     return bounceErrors(renderShadowedSlab("radiosity", 4, options), path);
 }
 
+// The solution read at the camera's hit (no final gather): what the mesh resolves is what this
+// measures, and a gather would average it over the hemisphere.
 RadiosityOptions shadowedSlabOptions() {
     RadiosityOptions options;
     options.patchSize = 0.5f;
+    options.finalGather = 0;
     return options;
 }
 
@@ -1120,6 +1146,7 @@ BounceErrors contactErrors(RadiosityDisplay display) {
     static const Film path = directLight("path", 1024, {});
     RadiosityOptions options;
     options.display = display;
+    options.finalGather = 0;  // the display is what this measures: the final gather computes EDL per pixel
     return bounceErrors(directLight("radiosity", 16, options), path, 1);
 }
 
@@ -1181,6 +1208,95 @@ TEST_CASE("radiosity's later bounces: szymczak-one-light's ED{4,}L mean within 2
     CHECK(std::fabs(reconstructed - 1.0) < kLaterBounceMean);
     CHECK(std::fabs(control - 1.0) > kLaterBounceMean);
     CHECK(std::fabs(planeControl - 1.0) > kLaterBounceMean);
+}
+
+
+// Issue 27's bar on the lecture's scenes: every bounce within 2% (mean) and 5% (4x4 regions) of the
+// path tracer. Read from the solution at the camera's hit, bounce 2 was off by a quarter in places
+// (a ball's underside, the floor beside a contact: a patch's value averages a light that changes
+// across it); the final gather (RadiosityOptions::finalGather) averages the solution over the hit's
+// hemisphere instead, so the mesh's error reaches the image only through that average.
+// The references are frozen: per bounce, the image's luminance sum and its 4x4 regions' sums
+// (row by row), the mean of eight path renders `lightpath render SCENE --integrator path --resolution
+// 64x64 --max-depth 6 --spp 2048 --seed 0..7 --sampler sobol` with the four bounces' AOVs, as
+// bench/radiosity_bounces.py makes them. 0: a region not judged (under a twentieth of an average
+// region's light, or the eight renders' standard error over 1.25% of it).
+struct FrozenBounces {
+    const char* scene;
+    std::array<double, 4> total;
+    std::array<std::array<double, 16>, 4> regions;
+};
+
+constexpr std::array<FrozenBounces, 2> kFrozenBounces{{
+    {"szymczak-one-light",
+     {784.252, 56.7007, 7.69778, 1.75455},
+     {{{0, 0, 0, 0, 32.6806, 44.3618, 33.4845, 25.6409, 56.3629, 64.1667, 78.0736, 27.2077, 117.274, 110.475, 108.394, 86.0639},
+       {0, 0, 0, 0, 2.4397, 2.77752, 2.73991, 1.49963, 8.39496, 6.92097, 12.977, 7.13301, 1.0608, 1.83128, 6.52412, 2.40185},
+       {0, 0, 0, 0, 0.0490414, 0.187261, 0.202293, 0.0465377, 1.33391, 1.98355, 1.35899, 0.643995, 0.283231, 0.368143,
+        0.784057, 0.456772},
+       {0, 0, 0, 0, 0, 0, 0.0619231, 0, 0.383734, 0.479668, 0.412166, 0.171481, 0, 0, 0, 0}}}},
+    {"taxonomy",
+     {336.865, 37.4376, 5.55527, 1.88177},
+     {{{5.18202, 12.8772, 12.877, 5.18198, 10.8552, 22.3754, 26.0198, 13.0106, 15.9778, 32.4143, 17.2363, 12.6635, 36.7517,
+        42.8859, 40.2497, 30.3071},
+       {2.70209, 3.47957, 3.96934, 3.44001, 2.99159, 3.72116, 5.10409, 4.79967, 1.41812, 1.78785, 1.16243, 1.62175, 0.326278,
+        0.429999, 0.300994, 0.182695},
+       {0.207516, 0.256005, 0.265423, 0.224081, 0.363933, 0.489806, 0.603495, 0.468913, 0.429989, 0.531728, 0.231968,
+        0.507087, 0.276383, 0.271775, 0.21305, 0.214119},
+       {0.108501, 0.12631, 0.130586, 0.121328, 0.161643, 0.201198, 0.259009, 0.232729, 0.110307, 0.132403, 0.0668785,
+        0.124986, 0, 0, 0, 0}}}},
+}};
+
+constexpr double kGatherMean = 0.02, kGatherRegion = 0.05;
+
+BounceErrors frozenBounceErrors(const FrozenBounces& frozen, const RadiosityOptions& options) {
+    Scene scene = loadScene(std::string(LIGHTPATH_SOURCE_DIR "/scenes/") + frozen.scene + ".toml");
+    scene.camera.width = scene.camera.height = 64;
+    const Film film = renderBounces(scene, "radiosity", 64, options, kRadiosityLights);
+    BounceErrors worst;
+    for (std::size_t layer = 0; layer < 4; ++layer) {
+        std::array<double, 16> regions{};
+        double total = 0.0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const Rgb c = film.at(layer, x, y);
+                const double l = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+                regions[std::size_t(4 * (y / 16) + x / 16)] += l;
+                total += l;
+            }
+        worst.mean = std::max(worst.mean, std::fabs(total / frozen.total[layer] - 1.0));
+        for (std::size_t r = 0; r < 16; ++r)
+            if (frozen.regions[layer][r] > 0.0)
+                worst.region = std::max(worst.region, std::fabs(regions[r] / frozen.regions[layer][r] - 1.0));
+    }
+    return worst;
+}
+
+TEST_CASE("radiosity's final gather: the lecture's scenes, every bounce within 2% (mean) and 5% (4x4 regions) of path; control: the solution read at the camera's hit fails the same check" *
+          doctest::test_suite("statistical")) {
+    SUBCASE("radiosity's final gather: every bounce within 2% (mean) and 5% (4x4 regions) of path") {
+        for (const FrozenBounces& frozen : kFrozenBounces) {
+            const std::string scene = frozen.scene;
+            const BounceErrors errors = frozenBounceErrors(frozen, {});
+            CAPTURE(scene);
+            CAPTURE(errors.mean);
+            CAPTURE(errors.region);
+            CHECK(errors.mean < kGatherMean);
+            CHECK(errors.region < kGatherRegion);
+        }
+    }
+    SUBCASE("control: the solution read at the camera's hit fails the same check") {
+        RadiosityOptions classic;
+        classic.finalGather = 0;
+        for (const FrozenBounces& frozen : kFrozenBounces) {
+            const std::string scene = frozen.scene;
+            const BounceErrors errors = frozenBounceErrors(frozen, classic);
+            CAPTURE(scene);
+            CAPTURE(errors.mean);
+            CAPTURE(errors.region);
+            CHECK((errors.mean > kGatherMean || errors.region > kGatherRegion));
+        }
+    }
 }
 
 }  // namespace
