@@ -61,7 +61,7 @@ def main():
     parser.add_argument("--build", default="build")
     parser.add_argument("--out", default="out/radiosity-bounces")
     parser.add_argument("--spp", type=int, default=16384, help="the path tracer's samples per pixel, over all seeds")
-    parser.add_argument("--radiosity-spp", type=int, default=64,
+    parser.add_argument("--radiosity-spp", type=int, default=256,
                         help="radiosity's samples per pixel (its final gather's noise falls with them)")
     parser.add_argument("--seeds", type=int, default=8, help="independent path references the samples are split into")
     parser.add_argument("--resolve", type=float, default=0.0125,
