@@ -141,9 +141,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     const lpe::OutputMask* accepted = path.acceptsThrough(lobes.at, path.lightColumn(light.event()), stepped);
     // Bit l: lobe l's term reaches a requested output. A bit set, not a bool array: GCC made
     // the array a memset call per sample when `rest` keeps every path.
-    static_assert(kMaxLobes <= 32);
-    unsigned wanted = 0;
-    for (int l = 0; l < lobes.smooth.count; ++l) wanted |= unsigned{path.wanted(accepted[l])} << l;
+    const unsigned wanted = path.wantedLobes(accepted, lobes.smooth.count);
     const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
     if (wanted == 0) {
         ++counters.shadowDead;

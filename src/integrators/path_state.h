@@ -82,6 +82,15 @@ public:
             scratch[slot] = automaton_.accepts(automaton_.step(automaton_.step(at.state, at.lobes.symbol[slot]), light.symbol));
         return scratch;
     }
+    // Bit l set: accepted[l] reaches a requested output, for the `count` lobes of a term. All of
+    // them when every path is kept (the beauty or `rest` is written): no lookup then.
+    unsigned wantedLobes(const lpe::OutputMask* accepted, int count) const {
+        static_assert(kMaxLobes <= 32);
+        if (keepAllPaths_) return (1u << count) - 1u;
+        unsigned wanted = 0;
+        for (int l = 0; l < count; ++l) wanted |= unsigned{(accepted[l] & requested_) != 0} << l;
+        return wanted;
+    }
     // Ends the path in `light` (after `surface`) with radiance `value`. Non-finite values are
     // counted and dropped, never stored.
     void emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors = {});

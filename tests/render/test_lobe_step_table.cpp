@@ -2,7 +2,7 @@
 // the automaton stepped event by event, as EventSymbols names each event: for every state, every
 // object's every smooth lobe and every light (and the ambient term), on shipped scenes under real
 // LPE sets. Through PathState::acceptsThrough, both as the renderer builds it (tabled) and with
-// the table refused (maxMasks 0: PathState steps itself).
+// the table refused (maxMasks 0: PathState steps itself); and which lobes' terms are wanted.
 #include <doctest/doctest.h>
 
 #include <string>
@@ -61,6 +61,9 @@ void checkAgainstStepping(const test::RenderWorld& world, const PathState& path,
                 CHECK((column.column >= 0) == tabled);
                 lpe::OutputMask scratch[kMaxLobes];
                 const lpe::OutputMask* accepted = path.acceptsThrough(at, column, scratch);
+                const unsigned wanted = path.wantedLobes(accepted, smooth.count);
+                for (int s = 0; s < smooth.count; ++s)
+                    if (((wanted >> s & 1u) != 0) != path.wanted(accepted[s])) ++wrong;
                 for (int s = 0; s < smooth.count; ++s) {
                     const LobeInfo& lobe = all[smooth.lobe[s]];
                     const PathEvent surface{lobe.event.type, lobe.event.scatter, Subject::Object, object};
@@ -90,8 +93,11 @@ TEST_CASE("the lobe step table answers as the automaton stepped per lobe and lig
             // The same with no table: PathState steps the automaton itself.
             const LobeStepTable refused(world.scene, world.aovs.automaton(), world.symbols, world.lights, 0);
             const RenderContext& c = world.context;
-            const RenderContext steppingContext{c.scene,    c.geometry, c.automaton, c.symbols,
-                                                c.analysis, c.lights,   refused,     c.camera};
+            // Only the first output requested, no path kept for the beauty: wantedLobes looks.
+            RenderContext steppingContext{c.scene,    c.geometry, c.automaton, c.symbols,
+                                          c.analysis, c.lights,   refused,     c.camera};
+            steppingContext.requested = 1;
+            steppingContext.keepAllPaths = false;
             const PathState steppingPath(steppingContext, sink, counters);
             checkAgainstStepping(world, steppingPath, refused, false);
         }
