@@ -117,8 +117,7 @@ struct LightTerms {
                                                 const lpe::OutputMask* accepted, unsigned wanted, PathState& path);
 
 // One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
-LIGHTPATH_HOT_PATH
-void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
+[[gnu::always_inline]] inline void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
                     const LightSample& sample, float choiceProbability, const Light& light,
                     DirectLightWeighting weighting, PathState& path, const Medium* medium) {
     if (lobes.smooth.count == 0) return;
@@ -242,13 +241,17 @@ void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, Ra
                     const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path,
                     const Medium* medium = nullptr) {
     const LightSet& lights = path.context.lights;
-    for (const Light* light : lights.deltaLights())
-        addLightSample(point, lobes, origins, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light,
-                       weighting, path, medium);
+    // Every delta light, then the chosen area light, through one call site: the sample's code is
+    // inlined here once, the shading point's values kept in registers across the lights.
+    const std::span<const Light* const> delta = lights.deltaLights();
     const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
-    if (chosen.light == nullptr) return;
-    addLightSample(point, lobes, origins, throughput, chosen.light->sample(point.hit.point, u.uPoint),
-                   chosen.probability, *chosen.light, weighting, path, medium);
+    const std::size_t count = delta.size() + (chosen.light != nullptr ? 1 : 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool isDelta = i < delta.size();
+        const Light& light = isDelta ? *delta[i] : *chosen.light;
+        addLightSample(point, lobes, origins, throughput, light.sample(point.hit.point, u.uPoint),
+                       isDelta ? 1.0f : chosen.probability, light, weighting, path, medium);
+    }
 }
 
 // One light sample scattered at a medium point: one shadow ray, attenuated by the medium.
