@@ -116,10 +116,13 @@ struct LightTerms {
                                                 const Rgb* value, const float* weights,
                                                 const lpe::OutputMask* accepted, unsigned wanted, PathState& path);
 
-// One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
-[[gnu::always_inline]] inline void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
-                    const LightSample& sample, float choiceProbability, const Light& light,
-                    DirectLightWeighting weighting, PathState& path, const Medium* medium) {
+// One light sample through every smooth lobe, with one shadow ray from `origins` (p's). Inlined
+// into addDirectLight's one loop over the lights (docs/performance.md, seventh pass).
+[[gnu::always_inline]] inline void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                                  RayOrigins& origins, const Rgb& throughput, const LightSample& sample,
+                                                  float choiceProbability, const Light& light,
+                                                  DirectLightWeighting weighting, PathState& path,
+                                                  const Medium* medium) {
     if (lobes.smooth.count == 0) return;
     const RenderContext& ctx = path.context;
     const bool skip = ctx.skipEnabled;

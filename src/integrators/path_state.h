@@ -43,17 +43,12 @@ public:
     bool wants(const PathEvent& surface, const PathEvent& light) const {
         return wanted(acceptsAfter(step(state(), surface), light));
     }
-    // The same in two steps, for terms that share their surface event (one shading point's
-    // ambient term and its light samples): the state after `surface`, stepped once, then the
-    // outputs accepting a path that ends from there in `light`, and whether any is requested.
+    // The same in two steps (a medium point's light samples): the state after `surface`, then the
+    // outputs accepting a path that ends from there in `light`. A surface's smooth lobes read
+    // theirs from the per-render table instead (acceptsThrough, below).
     lpe::Automaton::State stateAfter(const PathEvent& surface) const { return step(state(), surface); }
     lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const {
         return automaton_.accepts(step(state, light));
-    }
-    // The same with the light's symbol looked up once, for a light sample seen through several lobes.
-    lpe::Automaton::Symbol symbolOf(const PathEvent& event) const { return symbols_(event); }
-    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, lpe::Automaton::Symbol light) const {
-        return automaton_.accepts(automaton_.step(state, light));
     }
     bool wanted(lpe::OutputMask accepted) const { return keepAllPaths_ || (accepted & requested_) != 0; }
 

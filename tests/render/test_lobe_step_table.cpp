@@ -15,15 +15,16 @@
 namespace lightpath {
 namespace {
 
-// Sets of the lecture and of the command line, and two that name this scene's labels, so label
-// classes other than 0 are in the symbols.
+// Sets of the lecture and of the command line, and one naming this scene's labels (and `lights`,
+// its lights'), so label classes other than 0 are in the symbols.
 std::vector<std::vector<lpe::NamedExpression>> lpeSets(const Scene& scene) {
     std::vector<std::vector<lpe::NamedExpression>> sets{classesSet(), taxonomySet(), bouncesSet(),
                                                         {{"diffuse", "E<RD>L"}}};
     sets.push_back(findAovPreset("lights")->expressions(&scene));
     sets.push_back({{"seen", "E<R.'" + scene.labelOf(0) + "'>L"},
                     {"through", "E.*<T.>.*L"},
-                    {"glossyThenLabel", "E<RG>.*<R.'" + scene.labelOf(std::uint32_t(scene.objects.size() - 1)) + "'>L"}});
+                    {"glossyThenLabel",
+                     "E<RG>.*<R.'" + scene.labelOf(std::uint32_t(scene.objects.size() - 1)) + "'>L"}});
     return sets;
 }
 
