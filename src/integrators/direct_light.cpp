@@ -55,29 +55,17 @@ std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& samp
 }
 
 // A shading point's smooth lobes (those light sampling can reach, any number the material
-// declares), their events and the automaton state after each, stepped once and shared by its
-// ambient term and every light sample (each term then costs one step per lobe, not two).
-// Plain arrays, filled up to `count`: this is made at every shading point.
+// declares) and where the path stands before them, shared by its ambient term and every light
+// sample: each term reads the outputs its lobes reach from the per-render table
+// (lobe_step_table.h) instead of stepping the automaton per lobe.
 struct SmoothLobeEvents {
-    int count = 0;
-    int lobes[kMaxLobes];  // each one's index in the material's lobes()
-    bool glossy[kMaxLobes];  // a glossy lobe, as the stats count them
-    lpe::Automaton::State after[kMaxLobes];
-    int ambient = -1;  // the slot whose event the ambient term ka Ia takes: the first diffuse reflection
     const ShadingPoint& point;
+    PathState::SurfaceLobes at;
+    const SmoothLobes& smooth;
 
-    SmoothLobeEvents(const ShadingPoint& p, const PathState& path) : point(p) {
-        const Lobes all = p.bsdf.lobes();
-        for (int l = 0; l < int(all.size()); ++l) {
-            if (all[l].delta()) continue;
-            lobes[count] = l;
-            glossy[count] = all[l].event.scatter == lpe::Scatter::Glossy;
-            after[count] = path.stateAfter(p.eventOf(l));
-            if (ambient < 0 && !all[l].transmits() && all[l].event.scatter == lpe::Scatter::Diffuse) ambient = count;
-            ++count;
-        }
-    }
-    PathEvent event(int slot) const { return point.eventOf(lobes[slot]); }
+    SmoothLobeEvents(const ShadingPoint& p, const PathState& path)
+        : point(p), at(path.surfaceLobes(p.hit.object)), smooth(at.lobes) {}
+    PathEvent event(int slot) const { return point.eventOf(smooth.lobe[slot]); }
 };
 
 // `explain`: why a light sample added nothing through any lobe.
@@ -85,9 +73,9 @@ std::string zeroReason(const ShadingPoint& p, const SmoothLobeEvents& lobes, con
     if (!litSide) return formatted("the light is behind the surface (N.L = %.3f)", glm::dot(p.normal, sample.wi));
     if (isBlack(sample.weight)) return "the light sends nothing this way (a one-sided emitter seen from behind, or dark)";
     std::string absent;  // "kd = 0 and ks = 0" when no smooth lobe scatters anything
-    for (int l = 0; l < lobes.count; ++l) {
-        if (p.terms.lobes[lobes.lobes[l]]) return "the term is zero here";
-        absent += std::string(absent.empty() ? "" : " and ") + p.bsdf.lobe(lobes.lobes[l]).coefficient + " = 0";
+    for (int l = 0; l < lobes.smooth.count; ++l) {
+        if (p.terms.lobes[lobes.smooth.lobe[l]]) return "the term is zero here";
+        absent += std::string(absent.empty() ? "" : " and ") + p.bsdf.lobe(lobes.smooth.lobe[l]).coefficient + " = 0";
     }
     return "the term is zero: " + absent;
 }
@@ -128,12 +116,14 @@ struct LightTerms {
                                                 const Rgb* value, const float* weights,
                                                 const lpe::OutputMask* accepted, unsigned wanted, PathState& path);
 
-// One light sample through every smooth lobe, with one shadow ray from `origins` (p's).
-LIGHTPATH_HOT_PATH
-void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOrigins& origins, const Rgb& throughput,
-                    const LightSample& sample, float choiceProbability, const Light& light,
-                    DirectLightWeighting weighting, PathState& path, const Medium* medium) {
-    if (lobes.count == 0) return;
+// One light sample through every smooth lobe, with one shadow ray from `origins` (p's). Inlined
+// into addDirectLight's one loop over the lights (docs/performance.md, seventh pass).
+[[gnu::always_inline]] inline void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes,
+                                                  RayOrigins& origins, const Rgb& throughput, const LightSample& sample,
+                                                  float choiceProbability, const Light& light,
+                                                  DirectLightWeighting weighting, PathState& path,
+                                                  const Medium* medium) {
+    if (lobes.smooth.count == 0) return;
     const RenderContext& ctx = path.context;
     const bool skip = ctx.skipEnabled;
     RayCounters& counters = path.counters;
@@ -149,16 +139,11 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
             rejectZero(p, lobes, sample, litSide, lightEvent, path);
         return;
     }
-    lpe::OutputMask accepted[kMaxLobes];
+    lpe::OutputMask stepped[kMaxLobes];
+    const lpe::OutputMask* accepted = path.acceptsThrough(lobes.at, path.lightColumn(light.event()), stepped);
     // Bit l: lobe l's term reaches a requested output. A bit set, not a bool array: GCC made
     // the array a memset call per sample when `rest` keeps every path.
-    static_assert(kMaxLobes <= 32);
-    unsigned wanted = 0;
-    const lpe::Automaton::Symbol lightSymbol = path.symbolOf(lightEvent);
-    for (int l = 0; l < lobes.count; ++l) {
-        accepted[l] = path.acceptsAfter(lobes.after[l], lightSymbol);
-        wanted |= unsigned{path.wanted(accepted[l])} << l;
-    }
+    const unsigned wanted = path.wantedLobes(accepted, lobes.smooth.count);
     const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
     if (wanted == 0) {
         ++counters.shadowDead;
@@ -179,12 +164,12 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
     Rgb value[kMaxLobes];
     float weights[kMaxLobes];
     bool anyValue = false;
-    for (int l = 0; l < lobes.count; ++l) {
-        const int lobe = lobes.lobes[l];
+    for (int l = 0; l < lobes.smooth.count; ++l) {
+        const int lobe = lobes.smooth.lobe[l];
         value[l] = Rgb{0.0f};
         weights[l] = 1.0f;
         const bool present = p.terms.lobes[lobe];
-        const bool glossy = lobes.glossy[l];
+        const bool glossy = lobes.smooth.glossy[l];
         if (!isWanted(l) || !(present || !skip)) {
             if (glossy && !present) ++counters.glossyAbsent;
             continue;
@@ -217,7 +202,7 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
         emitExplained(p, lobes, terms, lightEvent, value, weights, accepted, wanted, path);
         return;
     }
-    for (int l = 0; l < lobes.count; ++l) {
+    for (int l = 0; l < lobes.smooth.count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         path.addAccepted(value[l], accepted[l]);
     }
@@ -232,19 +217,19 @@ void addLightSample(const ShadingPoint& p, const SmoothLobeEvents& lobes, RayOri
                                                 const lpe::OutputMask* accepted, unsigned wanted, PathState& path) {
     const bool skip = path.context.skipEnabled;
     const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
-    for (int l = 0; l < lobes.count; ++l) {
+    for (int l = 0; l < lobes.smooth.count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
-            termFactors(p, lobes.lobes[l], terms.sample, terms.light, terms.incident, terms.transmittance,
+            termFactors(p, lobes.smooth.lobe[l], terms.sample, terms.light, terms.incident, terms.transmittance,
                         terms.lightPdf, weights[l], terms.weighting, terms.throughput, factors);
         path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
     // A lobe that is absent beside one that scatters, in the lecture's order (ks = 0 beside kd):
     // say so, as its term is part of the formula.
     bool earlierPresent = false;
-    for (int l = 0; l < lobes.count; ++l) {
-        const int lobe = lobes.lobes[l];
+    for (int l = 0; l < lobes.smooth.count; ++l) {
+        const int lobe = lobes.smooth.lobe[l];
         if (isWanted(l) && !p.terms.lobes[lobe] && earlierPresent) {
             const LobeInfo& info = p.bsdf.lobe(lobe);
             path.reject(lobes.event(l), lightEvent,
@@ -259,13 +244,17 @@ void addDirectLight(const ShadingPoint& point, const SmoothLobeEvents& lobes, Ra
                     const LightChoiceSample& u, DirectLightWeighting weighting, PathState& path,
                     const Medium* medium = nullptr) {
     const LightSet& lights = path.context.lights;
-    for (const Light* light : lights.deltaLights())
-        addLightSample(point, lobes, origins, throughput, light->sample(point.hit.point, u.uPoint), 1.0f, *light,
-                       weighting, path, medium);
+    // Every delta light, then the chosen area light, through one call site: the sample's code is
+    // inlined here once, the shading point's values kept in registers across the lights.
+    const std::span<const Light* const> delta = lights.deltaLights();
     const ChosenLight chosen = lights.chooseAreaLight(u.uChoice);
-    if (chosen.light == nullptr) return;
-    addLightSample(point, lobes, origins, throughput, chosen.light->sample(point.hit.point, u.uPoint),
-                   chosen.probability, *chosen.light, weighting, path, medium);
+    const std::size_t count = delta.size() + (chosen.light != nullptr ? 1 : 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool isDelta = i < delta.size();
+        const Light& light = isDelta ? *delta[i] : *chosen.light;
+        addLightSample(point, lobes, origins, throughput, light.sample(point.hit.point, u.uPoint),
+                       isDelta ? 1.0f : chosen.probability, light, weighting, path, medium);
+    }
 }
 
 // One light sample scattered at a medium point: one shadow ray, attenuated by the medium.
@@ -326,8 +315,9 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     const RenderContext& ctx = path.context;
     if (!point.terms.ambient && ctx.skipEnabled) return;
     const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
-    if (lobes.ambient < 0) return;  // no diffuse reflection to carry it
-    const lpe::OutputMask accepted = path.acceptsAfter(lobes.after[lobes.ambient], ambient);
+    if (lobes.smooth.ambient < 0) return;  // no diffuse reflection to carry it
+    lpe::OutputMask stepped[kMaxLobes];
+    const lpe::OutputMask accepted = path.acceptsThrough(lobes.at, path.ambientColumn(), stepped)[lobes.smooth.ambient];
     if (!path.wanted(accepted)) return;
     const Rgb ka = point.bsdf.ambientReflectance();
     const Rgb value = throughput * ka * ctx.scene.ambient;
@@ -336,7 +326,7 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
         return;
     }
     const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
-    path.emitAccepted(lobes.event(lobes.ambient), ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
+    path.emitAccepted(lobes.event(lobes.smooth.ambient), ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ constexpr std::size_t kEmitEvents = 2;  // emitAccepted() and reject() record a 
 }  // namespace
 
 PathState::PathState(const RenderContext& context, ContributionSink& sink, RayCounters& counters)
-    : context(context), counters(counters), automaton_(context.automaton), symbols_(context.symbols),
+    : context(context), counters(counters), automaton_(context.automaton), symbols_(context.symbols), lobeSteps_(context.lobeSteps),
       requested_(context.requested), keepAllPaths_(context.keepAllPaths), sink_(sink) {
     states_[0] = context.automaton.start();
 }

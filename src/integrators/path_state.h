@@ -11,6 +11,7 @@
 
 #include "integrators/contribution_sink.h"
 #include "integrators/event_symbols.h"
+#include "integrators/lobe_step_table.h"
 #include "integrators/path_record.h"
 #include "integrators/ray_counters.h"
 #include "lpe/automaton.h"
@@ -42,19 +43,49 @@ public:
     bool wants(const PathEvent& surface, const PathEvent& light) const {
         return wanted(acceptsAfter(step(state(), surface), light));
     }
-    // The same in two steps, for terms that share their surface event (one shading point's
-    // ambient term and its light samples): the state after `surface`, stepped once, then the
-    // outputs accepting a path that ends from there in `light`, and whether any is requested.
+    // The same in two steps (a medium point's light samples): the state after `surface`, then the
+    // outputs accepting a path that ends from there in `light`. A surface's smooth lobes read
+    // theirs from the per-render table instead (acceptsThrough, below).
     lpe::Automaton::State stateAfter(const PathEvent& surface) const { return step(state(), surface); }
     lpe::OutputMask acceptsAfter(lpe::Automaton::State state, const PathEvent& light) const {
         return automaton_.accepts(step(state, light));
     }
-    // The same with the light's symbol looked up once, for a light sample seen through several lobes.
-    lpe::Automaton::Symbol symbolOf(const PathEvent& event) const { return symbols_(event); }
-    lpe::OutputMask acceptsAfter(lpe::Automaton::State state, lpe::Automaton::Symbol light) const {
-        return automaton_.accepts(automaton_.step(state, light));
-    }
     bool wanted(lpe::OutputMask accepted) const { return keepAllPaths_ || (accepted & requested_) != 0; }
+
+    // A shading point's smooth lobes seen from the current state: the lobes of a hit on `object`
+    // and where the path stands before scattering there. Its ambient term and light samples ask
+    // acceptsThrough() for the outputs each lobe's term reaches.
+    struct SurfaceLobes {
+        const SmoothLobes& lobes;
+        lpe::Automaton::State state;
+        std::uint32_t shadingClass;
+    };
+    SurfaceLobes surfaceLobes(std::uint32_t object) const {
+        const std::uint32_t shadingClass = lobeSteps_.classOf(object);
+        return {lobeSteps_.lobes(shadingClass), state(), shadingClass};
+    }
+    LightColumn lightColumn(const PathEvent& light) const { return lobeSteps_.columnOf(light); }
+    LightColumn ambientColumn() const { return lobeSteps_.ambient(); }
+    // accepted[slot]: the outputs accepting a path that scatters through each smooth lobe of `at`
+    // and ends in `light`. Read from the per-render table (lobe_step_table.h), or, where it has no
+    // entry, stepped into `scratch` as the table was made: the same answer either way.
+    const lpe::OutputMask* acceptsThrough(const SurfaceLobes& at, LightColumn light,
+                                          lpe::OutputMask (&scratch)[kMaxLobes]) const {
+        if (light.column >= 0) [[likely]]
+            return lobeSteps_.accepts(at.state, light.column, at.shadingClass);
+        for (int slot = 0; slot < at.lobes.count; ++slot)
+            scratch[slot] = automaton_.accepts(automaton_.step(automaton_.step(at.state, at.lobes.symbol[slot]), light.symbol));
+        return scratch;
+    }
+    // Bit l set: accepted[l] reaches a requested output, for the `count` lobes of a term. All of
+    // them when every path is kept (the beauty or `rest` is written): no lookup then.
+    unsigned wantedLobes(const lpe::OutputMask* accepted, int count) const {
+        static_assert(kMaxLobes <= 32);
+        if (keepAllPaths_) return (1u << count) - 1u;
+        unsigned wanted = 0;
+        for (int l = 0; l < count; ++l) wanted |= unsigned{(accepted[l] & requested_) != 0} << l;
+        return wanted;
+    }
     // Ends the path in `light` (after `surface`) with radiance `value`. Non-finite values are
     // counted and dropped, never stored.
     void emit(const PathEvent& light, const Rgb& value, std::span<const TermFactor> factors = {});
@@ -110,6 +141,7 @@ private:
     // RenderContext (integrator.h includes this header).
     const lpe::Automaton& automaton_;
     const EventSymbols& symbols_;
+    const LobeStepTable& lobeSteps_;
     lpe::OutputMask requested_;
     bool keepAllPaths_;
     ContributionSink& sink_;

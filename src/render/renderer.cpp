@@ -51,10 +51,11 @@ Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& 
       symbols_(scene, aovs.automaton()),
       analysis_(scene),
       lights_(scene_, *geometry_),
+      lobeSteps_(scene_, aovs.automaton(), symbols_, lights_),
       camera_(scene.camera),
       filter_(options.filter),
       integrator_(makeIntegrator(options.integrator)),
-      context_{scene_, *geometry_, aovs_.automaton(), symbols_, analysis_, lights_, camera_, options.maxDepth,
+      context_{scene_, *geometry_, aovs_.automaton(), symbols_, analysis_, lights_, lobeSteps_, camera_, options.maxDepth,
                aovs.automaton().allOutputs(), options.writeBeauty || !options.skip, options.skip, options.radiosity,
                options.threads, options.progress, options.cancel} {
     if (!integrator_) {

@@ -195,6 +195,7 @@ private:
     EventSymbols symbols_;
     SceneAnalysis analysis_;
     LightSet lights_;
+    LobeStepTable lobeSteps_;
     PinholeCamera camera_;
     PixelFilter filter_;
     // Indices into AovSet::layerNames(): every layer, or all but beauty and rest.

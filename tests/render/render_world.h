@@ -23,8 +23,9 @@ struct RenderWorld {
           symbols(scene, aovs.automaton()),
           analysis(scene),
           lights(scene, geometry),
+          lobeSteps(scene, aovs.automaton(), symbols, lights),
           camera(scene.camera),
-          context{scene, geometry, aovs.automaton(), symbols, analysis, lights, camera, maxDepth,
+          context{scene, geometry, aovs.automaton(), symbols, analysis, lights, lobeSteps, camera, maxDepth,
                   aovs.automaton().allOutputs(), true, true, radiosity, threads} {
         context.eyeMedium = cameraMedium(context);
     }
@@ -37,6 +38,7 @@ struct RenderWorld {
     EventSymbols symbols;
     SceneAnalysis analysis;
     LightSet lights;
+    LobeStepTable lobeSteps;
     PinholeCamera camera;
     RenderContext context;
 };
