@@ -550,7 +550,7 @@ std::vector<int> RadiosityIntegrator::wantedBounces(const RenderContext& context
     std::vector<lpe::Automaton::Symbol> symbols;
     for (std::uint32_t object = 0; object < reflects.size(); ++object) {
         if (!reflects[object]) continue;
-        const lpe::Automaton::Symbol symbol = path.symbolOf(labelled(object));
+        const lpe::Automaton::Symbol symbol = context.symbols(labelled(object));
         if (std::find(symbols.begin(), symbols.end(), symbol) != symbols.end()) continue;
         symbols.push_back(symbol);
         surfaces.push_back(labelled(object));
