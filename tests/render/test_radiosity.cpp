@@ -147,6 +147,9 @@ TEST_CASE("a closed box of albedo rho emitting Le everywhere shows Le / (1 - rho
     options.integrator = "radiosity";
     options.maxDepth = kMaxDepth;
     options.radiosity.patchBudget = 1536;
+    struct BoxErrors {
+        double mean, worst;
+    };
     const auto errors = [&](int finalGather) {
         options.radiosity.finalGather = finalGather;
         options.samplesPerPixel = finalGather > 0 ? 16 : 1;
@@ -159,22 +162,22 @@ TEST_CASE("a closed box of albedo rho emitting Le everywhere shows Le / (1 - rho
             }
         REQUIRE(result.stats.radiosity);
         CHECK(result.stats.radiosity->residual < options.radiosity.tolerance);
-        return std::pair{std::fabs(sum / (result.film.width() * result.film.height()) / expected - 1.0), worst};
+        return BoxErrors{std::fabs(sum / (result.film.width() * result.film.height()) / expected - 1.0), worst};
     };
     CAPTURE(expected);
     // Read at the hit, each pixel shows its element's solution, its noise shrunk away (the smooth display).
-    const auto [classicMean, classicWorst] = errors(0);
-    CAPTURE(classicMean);
-    CAPTURE(classicWorst);
-    CHECK(classicWorst < 0.01);
+    const BoxErrors classic = errors(0);
+    CAPTURE(classic.mean);
+    CAPTURE(classic.worst);
+    CHECK(classic.worst < 0.01);
     // Gathered, a pixel's direct light is sampled there and its later bounces average the elements
     // its rays meet, each with its form factors' noise: exact in the mean, within that noise per
     // pixel (16 samples of 16 rays).
-    const auto [gatherMean, gatherWorst] = errors(16);
-    CAPTURE(gatherMean);
-    CAPTURE(gatherWorst);
-    CHECK(gatherMean < 0.002);
-    CHECK(gatherWorst < 0.01);
+    const BoxErrors gathered = errors(16);
+    CAPTURE(gathered.mean);
+    CAPTURE(gathered.worst);
+    CHECK(gathered.mean < 0.002);
+    CHECK(gathered.worst < 0.01);
 }
 
 TEST_CASE("energy is conserved: rows of the form factors sum to 1 in a closed box, each bounce keeps rho of the last") {
