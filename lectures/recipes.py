@@ -565,12 +565,12 @@ def bounce_by_bounce(fig):
 
 def patch_mesh(fig):
     run = fig.run
-    # five budgets, doubling up to the one the other radiosity figures use: square panels in
-    # five columns fill the frame (flat above, smooth below). Uniform meshes (--refine 0): each
+    # five budgets, doubling up to half the one the other radiosity figures use (256 to 4096 at full
+    # quality): square panels in five columns fill the frame (flat above, smooth below). Uniform meshes (--refine 0): each
     # panel has the budget its label says; refinement would cut up to 4x as many patches where the
     # light changes, and the label would not be true. No final gather: every bounce is read from
     # the patches, so the mesh is what the panels show.
-    budgets = [run.patches >> k for k in range(4, -1, -1)]
+    budgets = [run.patches >> k for k in range(5, 0, -1)]
     flat_panels, smooth_panels, notes = [], [], []
     for budget in budgets:
         exrs = {}

@@ -68,7 +68,7 @@ class Run:
         # fewest walks within one standard error of the best (integrators/bdpt_allocation.h) it
         # takes 1/16, the most efficient here: 0.38 at 16 spp, 0.345 at 20, 0.307 at 24 (10.8 CPU s).
         self.spp_bdpt_taxonomy = 1 if quick else 24
-        self.patches = 1024 if quick else 4096   # radiosity's patch budget
+        self.patches = 1024 if quick else 8192   # radiosity's patch budget (at full quality the default)
         # The caustics slide: bdpt's beauty against its 1024-spp reference, and over the caustic's
         # brightest 1% of pixels (the zoomed panels): 0.063 and 0.082 at 128 spp (94.5 CPU s) while
         # light walks left the lamp uniformly, one in 200 through the ball; with half of them

@@ -567,7 +567,7 @@ TEST_CASE("serve: an integrator's own parameters reach it, as the command line's
     const json& patches = scene["integratorParameters"]["radiosity"][1];
     CHECK(patches["name"] == "patches");
     CHECK(patches["type"] == "integer");
-    CHECK(patches["default"] == "4096");
+    CHECK(patches["default"] == "8192");
     CHECK(patches["low"] == 1.0);
     CHECK(scene["integratorParameters"]["path"] == json::array());
 
