@@ -278,7 +278,7 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
     }
     solveFor(wanted, false);
     if (displayNoise) computeDisplayScale(valueNoise(context.threads));
-    computeGatherFields();
+    completeGatherFields();
     directNoise_ = {};
     gatherStart_ = {};
     gatherHits_ = {};
@@ -786,13 +786,14 @@ void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<
     // (options_.gatherGradients, radiosity_gradients.h): the plane through vertex means cannot rise
     // to a peak at an element's edge (the foot of szymczak's pyramid over the floor, where the two
     // exchange light at close range), since a vertex there averages only the patches beside it.
-    std::vector<Rgb> shown, scale;
     const auto& patches = mesh_->patches();
     const bool reconstruct = gatherStart_.size() == std::size_t(elementCount()) + 1 && !gatherHits_.empty();
     std::optional<PatchGradients> gradients;
     if (reconstruct && options_.gatherGradients) gradients.emplace(*mesh_);
-    std::vector<std::array<Rgb, 3>> corners;
-    std::vector<std::uint8_t> fitted;
+    // The final gather reads the same fields (gatheredRadiance): kept, not made twice.
+    const bool keepFields = reconstruct && options_.finalGather > 0;
+    gatherFields_.assign(keepFields ? wanted.size() * std::size_t(bounces_) : 0, GatherField{});
+    GatherField field;
     for (int k = 2; k <= bounces_; ++k) {
         if (context.cancel != nullptr && context.cancel->load(std::memory_order_relaxed)) return;
         // Jacobi: bounce k = rho F (bounce k-1), per light (Cohen and Wallace 1993, 5.3).
@@ -802,11 +803,7 @@ void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<
             Rgb* next = &values_[valueIndex(l, k, 0)];
             if (reconstruct) {
                 computeVertexValues(l, k - 1);
-                gouraudMeans(l, k - 1, shown);
-                scale.assign(elementCount(), Rgb{0.0f});
-                for (std::uint32_t e = 0; e < elementCount(); ++e)
-                    for (int c = 0; c < 3; ++c) scale[e][c] = shown[e][c] > 0.0f ? previous[e][c] / shown[e][c] : 0.0f;
-                if (gradients) gradients->fit(std::span(previous, elementCount()), corners, fitted);
+                field = makeGatherField(l, k - 1, gradients ? &*gradients : nullptr);
             }
             const Rgb* vertex = reconstruct ? &vertexValues_[vertexValueIndex(l, k - 1, 0, 0)] : nullptr;
             solveInChunks(elementCount(), context.threads, context.cancel, progress,
@@ -816,18 +813,8 @@ void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<
                                    if (reconstruct) {
                                        for (std::uint64_t i = gatherStart_[e]; i < gatherStart_[e + 1]; ++i) {
                                            const GatherHit& h = gatherHits_[i];
-                                           const RadiosityPatch& p = patches[h.side / 2];
-                                           const std::uint32_t side = h.side % 2;
-                                           if (!fitted.empty() && fitted[h.side] != 0) {
-                                               const std::array<Rgb, 3>& at = corners[h.side];
-                                               gathered += h.weights[0] * at[0] + h.weights[1] * at[1] +
-                                                           h.weights[2] * at[2];
-                                               continue;
-                                           }
-                                           Rgb plane{0.0f};
-                                           for (int v = 0; v < p.vertexCount; ++v)
-                                               plane += h.weights[v] * vertex[2 * std::size_t(p.vertices[v]) + side];
-                                           gathered += scale[2 * p.cluster + side] * plane;
+                                           gathered += field.at(patches[h.side / 2], h.side / 2, int(h.side % 2),
+                                                                h.weights, vertex);
                                        }
                                    } else {
                                        for (std::uint64_t i = rowStart_[e]; i < rowStart_[e + 1]; ++i)
@@ -836,6 +823,7 @@ void RadiosityIntegrator::solve(const RenderContext& context, const std::vector<
                                    next[e] = reflectance_[e / 2] * gathered;
                                }
                            });
+            if (keepFields) gatherFields_[slot(l, k - 1)] = std::move(field);
             solvedBounces_[l] = k;
             ++stats_.lightBouncesSolved;
         }
@@ -1029,53 +1017,62 @@ Rgb RadiosityIntegrator::shownRadiance(std::size_t light, int bounce, const Patc
     return display_ == RadiosityDisplay::Smooth ? value * displayScale_[element] : value;
 }
 
-void RadiosityIntegrator::computeGatherFields() {
-    gatherFields_.clear();
-    if (options_.finalGather <= 0 || bounces_ < 2) return;
-    // The solve's own reading of each bounce (solve): constant elements, or the scaled Gouraud
-    // plane with the triangles' fitted gradients.
-    gatherFields_.resize(solvedBounces_.size() * std::size_t(bounces_));
-    if (!options_.reconstructGather) return;
-    std::optional<PatchGradients> gradients;
-    if (options_.gatherGradients) gradients.emplace(*mesh_);
+RadiosityIntegrator::GatherField RadiosityIntegrator::makeGatherField(std::size_t light, int bounce,
+                                                                       const PatchGradients* gradients) const {
+    GatherField field;
     std::vector<Rgb> shown;
+    gouraudMeans(light, bounce, shown);
+    const Rgb* value = &values_[valueIndex(light, bounce, 0)];
+    field.scale.resize(elementCount());
+    for (std::uint32_t e = 0; e < elementCount(); ++e)
+        for (int c = 0; c < 3; ++c) field.scale[e][c] = shown[e][c] > 0.0f ? value[e][c] / shown[e][c] : 0.0f;
+    if (gradients == nullptr) return field;
     std::vector<std::array<Rgb, 3>> corners;
     std::vector<std::uint8_t> fitted;
-    for (std::size_t l = 0; l < solvedBounces_.size(); ++l)
-        for (int k = 1; k < bounces_ && k <= solvedBounces_[l]; ++k) {
-            GatherField& field = gatherFields_[slot(l, k)];
-            gouraudMeans(l, k, shown);
-            const Rgb* value = &values_[valueIndex(l, k, 0)];
-            field.scale.resize(elementCount());
-            for (std::uint32_t e = 0; e < elementCount(); ++e)
-                for (int c = 0; c < 3; ++c) field.scale[e][c] = shown[e][c] > 0.0f ? value[e][c] / shown[e][c] : 0.0f;
-            if (!gradients) continue;
-            gradients->fit(std::span(value, elementCount()), corners, fitted);
-            field.cornerSlot.assign(fitted.size(), kNoTarget);
-            for (std::size_t s = 0; s < fitted.size(); ++s)
-                if (fitted[s] != 0) {
-                    field.cornerSlot[s] = static_cast<std::uint32_t>(field.corners.size());
-                    field.corners.push_back(corners[s]);
-                }
+    gradients->fit(std::span(value, elementCount()), corners, fitted);
+    field.cornerSlot.assign(fitted.size(), kNoTarget);
+    for (std::size_t s = 0; s < fitted.size(); ++s)
+        if (fitted[s] != 0) {
+            field.cornerSlot[s] = static_cast<std::uint32_t>(field.corners.size());
+            field.corners.push_back(corners[s]);
         }
+    return field;
+}
+
+Rgb RadiosityIntegrator::GatherField::at(const RadiosityPatch& patch, std::uint32_t patchIndex, int side,
+                                         const std::array<float, 4>& weights, const Rgb* vertex) const {
+    if (!cornerSlot.empty()) {
+        const std::uint32_t s = cornerSlot[2 * std::size_t(patchIndex) + std::size_t(side)];
+        if (s != kNoTarget) {
+            const std::array<Rgb, 3>& c = corners[s];
+            return weights[0] * c[0] + weights[1] * c[1] + weights[2] * c[2];
+        }
+    }
+    Rgb plane{0.0f};
+    for (int v = 0; v < patch.vertexCount; ++v) plane += weights[v] * vertex[2 * std::size_t(patch.vertices[v]) + side];
+    return scale[2 * patch.cluster + std::uint32_t(side)] * plane;
+}
+
+void RadiosityIntegrator::completeGatherFields() {
+    if (options_.finalGather <= 0 || bounces_ < 2) {
+        gatherFields_.clear();
+        return;
+    }
+    gatherFields_.resize(solvedBounces_.size() * std::size_t(bounces_));
+    if (!options_.reconstructGather) return;  // constant elements: gatheredRadiance reads the values
+    std::optional<PatchGradients> gradients;
+    if (options_.gatherGradients) gradients.emplace(*mesh_);
+    for (std::size_t l = 0; l < solvedBounces_.size(); ++l)
+        for (int k = 1; k < bounces_ && k <= solvedBounces_[l]; ++k)
+            if (gatherFields_[slot(l, k)].scale.empty())
+                gatherFields_[slot(l, k)] = makeGatherField(l, k, gradients ? &*gradients : nullptr);
 }
 
 Rgb RadiosityIntegrator::gatheredRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const {
     const RadiosityPatch& patch = mesh_->patches()[at.patch];
-    const std::uint32_t element = 2 * patch.cluster + std::uint32_t(side);
     const GatherField& field = gatherFields_[slot(light, bounce)];
-    if (field.scale.empty()) return values_[valueIndex(light, bounce, element)];
-    if (!field.cornerSlot.empty()) {
-        const std::uint32_t s = field.cornerSlot[2 * std::size_t(at.patch) + std::size_t(side)];
-        if (s != kNoTarget) {
-            const std::array<Rgb, 3>& c = field.corners[s];
-            return at.weights[0] * c[0] + at.weights[1] * c[1] + at.weights[2] * c[2];
-        }
-    }
-    Rgb plane{0.0f};
-    for (int v = 0; v < patch.vertexCount; ++v)
-        plane += at.weights[v] * vertexValues_[vertexValueIndex(light, bounce, patch.vertices[v], side)];
-    return field.scale[element] * plane;
+    if (field.scale.empty()) return values_[valueIndex(light, bounce, 2 * patch.cluster + std::uint32_t(side))];
+    return field.at(patch, at.patch, side, at.weights, &vertexValues_[vertexValueIndex(light, bounce, 0, 0)]);
 }
 
 Rgb RadiosityIntegrator::textureRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster,

@@ -31,6 +31,7 @@
 
 namespace lightpath {
 
+class PatchGradients;
 class ProgressBar;
 
 struct RadiosityStats {
@@ -109,8 +110,25 @@ private:
     // gradient. The final gather reads this, so the image's later bounces average the same field
     // the solve's bounces were made from (the display's smoothing, tuned to hide noise, is not).
     Rgb gatheredRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const;
-    // gatherFields_ from the last solve (empty without a final gather).
-    void computeGatherFields();
+    // Per (light, bounce) slot below bounces_, what the solve's gather reads (and gatheredRadiance):
+    // the exact scale of the Gouraud plane per element (empty: constant elements) and the fitted
+    // triangles' corners, cornerSlot per patch side 2 * patch + side (kNoTarget in radiosity.cpp:
+    // none fitted; empty: no gradients).
+    struct GatherField {
+        std::vector<Rgb> scale;
+        std::vector<std::uint32_t> cornerSlot;
+        std::vector<std::array<Rgb, 3>> corners;
+        // The light at a point of patch side (patch, side), vertex weights `weights`, of the bounce
+        // whose vertex values start at `vertex` (vertexValueIndex(light, bounce, 0, 0)).
+        Rgb at(const RadiosityPatch& patch, std::uint32_t patchIndex, int side, const std::array<float, 4>& weights,
+               const Rgb* vertex) const;
+    };
+    // The field of (light, bounce) from its values and vertex values (computed before);
+    // gradients: the triangles' fits, or nullptr for the scaled plane alone.
+    GatherField makeGatherField(std::size_t light, int bounce, const PatchGradients* gradients) const;
+    // After the last solve: the fields the final gather reads that the solve's own gather did not
+    // make (each light's last solved bounce); none without a final gather.
+    void completeGatherFields();
     // With the final gather, bounce 1 at a camera hit: every wanted light's direct light there,
     // sampled as the patches' own is (radiosity.cpp, addDirectOverKd), times the hit's kd.
     void emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const;
@@ -168,14 +186,8 @@ private:
     // element's radiosity over the mean Gouraud shows across it, shrunk towards 1 where that
     // difference is within the sampling noise (computeDisplayScale).
     std::vector<Rgb> displayScale_;
-    // Per (light, bounce) slot below bounces_, what gatheredRadiance reads: the exact scale per
-    // element (empty: constant elements) and the fitted triangles' corners, cornerSlot per patch
-    // side 2 * patch + side (kNoTarget in radiosity.cpp: none fitted; empty: no gradients).
-    struct GatherField {
-        std::vector<Rgb> scale;
-        std::vector<std::uint32_t> cornerSlot;
-        std::vector<std::array<Rgb, 3>> corners;
-    };
+    // The final gather's fields (RadiosityOptions::finalGather; empty without it), slot order: the
+    // last solve's own, completed by completeGatherFields.
     std::vector<GatherField> gatherFields_;
     // For the noise estimate (filled by the refinement passes' solves, and by the last solve under
     // the smooth display, whose scale uses it; freed after preprocess): the
