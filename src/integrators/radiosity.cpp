@@ -39,6 +39,14 @@ constexpr std::uint32_t kChunk = 256;
 // from Gouraud's: far beyond any threshold (computeDisplayScale), kept finite so sums stay finite.
 constexpr float kUnboundedZ = 1e6f;
 
+// Gouraud's plane at a point of a patch side: its vertex values (`vertex`, one bounce's,
+// vertexValueIndex order) weighed by the point's vertex weights.
+Rgb gouraudPlane(const RadiosityPatch& patch, int side, const std::array<float, 4>& weights, const Rgb* vertex) {
+    Rgb plane{0.0f};
+    for (int v = 0; v < patch.vertexCount; ++v) plane += weights[v] * vertex[2 * std::size_t(patch.vertices[v]) + side];
+    return plane;
+}
+
 // Runs work(begin, end) over [0, count) in chunks of kChunk on `threads` workers (0: all), one
 // progress step per chunk; once `cancel` is set, the chunks left are skipped.
 template <class Work>
@@ -1011,9 +1019,7 @@ Rgb RadiosityIntegrator::shownRadiance(std::size_t light, int bounce, const Patc
     const RadiosityPatch& patch = mesh_->patches()[at.patch];
     const std::size_t element = valueIndex(light, bounce, 2 * patch.cluster + std::uint32_t(side));
     if (display_ == RadiosityDisplay::Flat) return values_[element];
-    Rgb value{0.0f};
-    for (int v = 0; v < patch.vertexCount; ++v)
-        value += at.weights[v] * vertexValues_[vertexValueIndex(light, bounce, patch.vertices[v], side)];
+    const Rgb value = gouraudPlane(patch, side, at.weights, &vertexValues_[vertexValueIndex(light, bounce, 0, 0)]);
     return display_ == RadiosityDisplay::Smooth ? value * displayScale_[element] : value;
 }
 
@@ -1048,9 +1054,7 @@ Rgb RadiosityIntegrator::GatherField::at(const RadiosityPatch& patch, std::uint3
             return weights[0] * c[0] + weights[1] * c[1] + weights[2] * c[2];
         }
     }
-    Rgb plane{0.0f};
-    for (int v = 0; v < patch.vertexCount; ++v) plane += weights[v] * vertex[2 * std::size_t(patch.vertices[v]) + side];
-    return scale[2 * patch.cluster + std::uint32_t(side)] * plane;
+    return scale[2 * patch.cluster + std::uint32_t(side)] * gouraudPlane(patch, side, weights, vertex);
 }
 
 void RadiosityIntegrator::completeGatherFields() {
