@@ -13,50 +13,32 @@ bool isUsable(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && glm::dot(v, v) > 0.0f;
 }
 
-// The point a ray leaving `point` along unit `side` starts from, by the chosen method.
-Vec3 offsetOrigin(const SurfaceHit& hit, const Vec3& side, const NumericsOptions& numerics) {
-    switch (numerics.offset) {
-        case RayOffset::Robust: return offsetRayOrigin(hit.point, side, hit.t);
-        case RayOffset::WachterBinder: return offsetRayOriginWachterBinder(hit.point, side);
-        case RayOffset::FixedEpsilon:
-        case RayOffset::None:
-        case RayOffset::OwnPrimitive: break;
-    }
-    return hit.point;
+// The point a ray leaving `point` along unit `side` starts from, by the method that moves it.
+[[gnu::always_inline]] inline Vec3 offsetOrigin(const SurfaceHit& hit, const Vec3& side, const NumericsOptions& numerics) {
+    return numerics.offset == RayOffset::WachterBinder ? offsetRayOriginWachterBinder(hit.point, side)
+                                                       : offsetRayOrigin(hit.point, side, hit.t);
 }
 
 }  // namespace
 
+// Flattened: the offset's arithmetic inline, not a call with its arguments through memory.
 LIGHTPATH_HOT_PATH
-Ray RayOrigins::leaveFirst(const Vec3& direction) {
+[[gnu::flatten]] Vec3 RayOrigins::firstOrigin(int side, const Vec3& direction) {
+    if (!isUsable(hit_.normal)) {
+        // No side to name: the ray is pushed along its own direction instead.
+        const Vec3 along = isUsable(direction) ? glm::normalize(direction) : Vec3{0.0f};
+        return offsetOrigin(hit_, along, numerics_);
+    }
+    origins_[side] = offsetOrigin(hit_, side == 0 ? hit_.normal : -hit_.normal, numerics_);
+    made_ |= 1u << side;
+    return origins_[side];
+}
+
+Ray RayOrigins::leaveWithoutOffset() const {
     Ray ray;
     ray.origin = hit_.point;
-    switch (numerics_.offset) {
-        case RayOffset::Robust:
-        case RayOffset::WachterBinder: {
-            if (!isUsable(hit_.normal)) {
-                // A zero or non-finite normal names no side: the ray is pushed along its own
-                // direction instead, and nothing is kept.
-                const Vec3 along = isUsable(direction) ? glm::normalize(direction) : Vec3{0.0f};
-                ray.origin = offsetOrigin(hit_, along, numerics_);
-                break;
-            }
-            const bool normalSide = glm::dot(direction, hit_.normal) >= 0.0f;
-            const int side = normalSide ? 0 : 1;
-            origins_[side] = offsetOrigin(hit_, normalSide ? hit_.normal : -hit_.normal, numerics_);
-            made_ |= 1u << side;
-            ray.origin = origins_[side];
-            break;
-        }
-        case RayOffset::FixedEpsilon:
-            ray.tMin = numerics_.epsilon;
-            break;
-        case RayOffset::None:
-            break;
-        case RayOffset::OwnPrimitive:
-            ray.ignoredPrimitive = hit_.primitive;
-            break;
-    }
+    if (numerics_.offset == RayOffset::FixedEpsilon) ray.tMin = numerics_.epsilon;
+    if (numerics_.offset == RayOffset::OwnPrimitive) ray.ignoredPrimitive = hit_.primitive;
     return ray;
 }
 

@@ -22,26 +22,24 @@ public:
 
     // A ray (origin, tMin, ignored primitive; no direction) leaving on the side `direction` points to.
     Ray leave(const Vec3& direction) {
-        if (offsetsAlongNormal()) {
-            const int side = glm::dot(direction, hit_.normal) >= 0.0f ? 0 : 1;  // [0] on the normal's side
-            if (made_ >> side & 1u) {
-                Ray ray;
-                ray.origin = origins_[side];
-                return ray;
-            }
-        }
-        return leaveFirst(direction);
+        if (numerics_.offset != RayOffset::Robust && numerics_.offset != RayOffset::WachterBinder)
+            return leaveWithoutOffset();
+        const int side = glm::dot(direction, hit_.normal) >= 0.0f ? 0 : 1;  // [0] on the normal's side
+        Ray ray;
+        ray.origin = made_ >> side & 1u ? origins_[side] : firstOrigin(side, direction);
+        return ray;
     }
     const SurfaceHit& hit() const { return hit_; }
     const NumericsOptions& numerics() const { return numerics_; }
 
 private:
-    bool offsetsAlongNormal() const {
-        return numerics_.offset == RayOffset::Robust || numerics_.offset == RayOffset::WachterBinder;
-    }
-    // The first ray on a side: computes its origin and keeps it (unless the normal names no side),
-    // or starts the ray by a method that offsets no origin.
-    Ray leaveFirst(const Vec3& direction);
+    // The origin of the first ray on `side` (Robust or WachterBinder offsets), kept for the next
+    // ones; or, when the normal names no side (zero or not finite), the ray's own origin pushed
+    // along `direction`, not kept.
+    Vec3 firstOrigin(int side, const Vec3& direction);
+    // A ray from the hit point itself, by the methods that move no origin (FixedEpsilon, None,
+    // OwnPrimitive).
+    Ray leaveWithoutOffset() const;
 
     const SurfaceHit& hit_;
     const NumericsOptions& numerics_;
