@@ -1,4 +1,8 @@
 #pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "math/float_bits.h"
 #include "math/types.h"
 
 namespace lightpath {
@@ -17,11 +21,31 @@ namespace lightpath {
 // ch. 6) does in scenes of size 0.01 and below. Its limit: a point of a triangle far larger than
 // both the point's distance from the origin and the ray's length (a huge floor through the origin
 // seen from close by) carries its vertices' error, which this bound does not see.
-Vec3 offsetRayOrigin(const Vec3& point, const Vec3& n, float travelled);
+// Inline: it runs for the first shadow ray on each side of every shading point.
+inline Vec3 offsetRayOrigin(const Vec3& point, const Vec3& n, float travelled);
 
 // e / (max_i |p_i| + 2 t) of offsetRayOrigin: 2^-18, 64 units of float roundoff, about ten times
 // the gamma_5 of pbrt-v4's bounds for these points.
 inline constexpr float kPointErrorScale = 0x1p-18f;
+
+namespace detail {
+// One float further along the normal's sign, so rounding of p + offset cannot undo the move.
+inline float roundAway(float moved, float normal) {
+    if (normal > 0.0f) return nextFloatUp(moved);
+    if (normal < 0.0f) return nextFloatDown(moved);
+    return moved;
+}
+}  // namespace detail
+
+inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n, float travelled) {
+    const Vec3 magnitude = glm::abs(p);
+    const float t = std::isfinite(travelled) ? std::fabs(travelled) : 0.0f;
+    const float error = kPointErrorScale * (std::max({magnitude.x, magnitude.y, magnitude.z}) + 2.0f * t);
+    const float distance = error * (std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z));
+    const Vec3 offset = distance * n;
+    const Vec3 moved = p + offset;
+    return {detail::roundAway(moved.x, n.x), detail::roundAway(moved.y, n.y), detail::roundAway(moved.z, n.z)};
+}
 
 // Wachter and Binder's integer-ulp offset: 256 ulps per unit of normal, and 1/65536 absolute for
 // coordinates below 1/32. Kept selectable (RayOffset::WachterBinder) to show that limit.

@@ -9,90 +9,36 @@
 namespace lightpath {
 namespace {
 
-// Shadow segments end this fraction short of the light, so a light placed on a surface does not
-// shadow itself (pbrt-v4's ShadowEpsilon plays the same role).
-constexpr float kShadowShortening = 1e-5f;
-
 bool isUsable(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && glm::dot(v, v) > 0.0f;
 }
 
-// The point a ray leaving `point` along unit `side` starts from, by the chosen method.
-Vec3 offsetOrigin(const SurfaceHit& hit, const Vec3& side, const NumericsOptions& numerics) {
-    switch (numerics.offset) {
-        case RayOffset::Robust: return offsetRayOrigin(hit.point, side, hit.t);
-        case RayOffset::WachterBinder: return offsetRayOriginWachterBinder(hit.point, side);
-        case RayOffset::FixedEpsilon:
-        case RayOffset::None:
-        case RayOffset::OwnPrimitive: break;
-    }
-    return hit.point;
-}
-
-// Points `ray` from its origin at `target`, stopping just short of it. When `target` lies on a
-// surface (unit `normal`; zero: none), the segment also ends off that surface by the bound that
-// moves ray origins off theirs (pbrt-v4's SpawnRayTo offsets both ends): the surface as the shadow
-// ray's own intersection computes it then lies beyond the segment's end at any angle. The fixed
-// shortening alone fails along grazing chords, where an ulp across the surface is many along the
-// ray (a closed emissive sphere lost 0.03% of its self-light). The robust bound is applied along
-// the ray, `across / |cos|`: the clearance of moving the target, for less work per shadow ray.
-LIGHTPATH_HOT_PATH
-void aimShadowRay(Ray& ray, Vec3 target, const Vec3& normal, const NumericsOptions& numerics) {
-    if (numerics.offset == RayOffset::WachterBinder && glm::dot(normal, normal) > 0.0f)
-        target = offsetRayOriginWachterBinder(target, glm::dot(ray.origin - target, normal) >= 0.0f ? normal : -normal);
-    const Vec3 toTarget = target - ray.origin;
-    const float distance = glm::length(toTarget);
-    if (!(distance > 0.0f) || !std::isfinite(distance)) {
-        // The light sits on the origin (or something is not finite): nothing can lie between.
-        ray.tMax = 0.0f;
-        return;
-    }
-    ray.direction = toTarget / distance;
-    ray.tMax = distance * (1.0f - kShadowShortening);
-    // Zero for no surface (and for a segment along one, which carries no light).
-    const float cosine = std::fabs(glm::dot(ray.direction, normal));
-    if (numerics.offset == RayOffset::Robust && cosine > 0.0f) {
-        // offsetRayOrigin's error per coordinate, times sqrt(3) >= |n_x| + |n_y| + |n_z|.
-        const float largest = std::max(std::max(std::fabs(target.x), std::fabs(target.y)), std::fabs(target.z));
-        const float across = kPointErrorScale * 1.7320508f * (largest + 2.0f * distance);
-        ray.tMax = std::max(std::min(ray.tMax, distance - across / cosine), 0.0f);
-    }
+// The point a ray leaving `point` along unit `side` starts from, by the method that moves it.
+[[gnu::always_inline]] inline Vec3 offsetOrigin(const SurfaceHit& hit, const Vec3& side, const NumericsOptions& numerics) {
+    return numerics.offset == RayOffset::WachterBinder ? offsetRayOriginWachterBinder(hit.point, side)
+                                                       : offsetRayOrigin(hit.point, side, hit.t);
 }
 
 }  // namespace
 
+// Flattened: the offset's arithmetic inline, not a call with its arguments through memory.
 LIGHTPATH_HOT_PATH
-RayOrigins::RayOrigins(const SurfaceHit& hit, const NumericsOptions& numerics)
-    : hit_(hit), numerics_(numerics), normalUsable_(isUsable(hit.normal)) {}
+[[gnu::flatten]] Vec3 RayOrigins::firstOrigin(int side, const Vec3& direction) {
+    if (!isUsable(hit_.normal)) {
+        // No side to name: the ray is pushed along its own direction instead.
+        const Vec3 along = isUsable(direction) ? glm::normalize(direction) : Vec3{0.0f};
+        return offsetOrigin(hit_, along, numerics_);
+    }
+    origins_[side] = offsetOrigin(hit_, side == 0 ? hit_.normal : -hit_.normal, numerics_);
+    made_ |= 1u << side;
+    return origins_[side];
+}
 
-LIGHTPATH_HOT_PATH
-Ray RayOrigins::leave(const Vec3& direction) {
+Ray RayOrigins::leaveWithoutOffset() const {
     Ray ray;
     ray.origin = hit_.point;
-    switch (numerics_.offset) {
-        case RayOffset::Robust:
-        case RayOffset::WachterBinder: {
-            if (!normalUsable_) {
-                // No side to name: the ray is pushed along its own direction instead.
-                const Vec3 along = isUsable(direction) ? glm::normalize(direction) : Vec3{0.0f};
-                ray.origin = offsetOrigin(hit_, along, numerics_);
-                break;
-            }
-            const bool normalSide = glm::dot(direction, hit_.normal) >= 0.0f;
-            std::optional<Vec3>& origin = origins_[normalSide ? 0 : 1];
-            if (!origin) origin = offsetOrigin(hit_, normalSide ? hit_.normal : -hit_.normal, numerics_);
-            ray.origin = *origin;
-            break;
-        }
-        case RayOffset::FixedEpsilon:
-            ray.tMin = numerics_.epsilon;
-            break;
-        case RayOffset::None:
-            break;
-        case RayOffset::OwnPrimitive:
-            ray.ignoredPrimitive = hit_.primitive;
-            break;
-    }
+    if (numerics_.offset == RayOffset::FixedEpsilon) ray.tMin = numerics_.epsilon;
+    if (numerics_.offset == RayOffset::OwnPrimitive) ray.ignoredPrimitive = hit_.primitive;
     return ray;
 }
 
@@ -122,13 +68,6 @@ Ray spawnShadowRay(const Vec3& origin, const Vec3& target, const Vec3& targetNor
     Ray ray;
     ray.origin = origin;
     aimShadowRay(ray, target, targetNormal, numerics);
-    return ray;
-}
-
-LIGHTPATH_HOT_PATH
-Ray spawnShadowRay(RayOrigins& origins, const Vec3& target, const Vec3& targetNormal) {
-    Ray ray = origins.leave(target - origins.hit().point);
-    aimShadowRay(ray, target, targetNormal, origins.numerics());
     return ray;
 }
 

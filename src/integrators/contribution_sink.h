@@ -66,10 +66,8 @@ public:
             for (lpe::OutputMask m = accepted; m != 0; m &= m - 1)
                 layers_[1 + static_cast<std::size_t>(std::countr_zero(m))] += value;
         }
-        if (log_ == nullptr) return;
-        LoggedContribution& logged = log_->emplace_back(LoggedContribution{value, accepted, path, false, strategyS_, strategyT_});
-        logged.factorCount = std::min(factors.size(), kMaxTermFactors);
-        std::copy_n(factors.begin(), logged.factorCount, logged.factors.begin());
+        if (log_ != nullptr) [[unlikely]]
+            logContribution(value, accepted, path, factors);
     }
 
     void reject(const PathRecord& path, std::string reason) {
@@ -105,6 +103,16 @@ public:
     }
 
 private:
+    // `explain`'s part of add, out of line: inline, it made add too large for GCC to inline into
+    // the light loop (addDirectLight), whose every term comes here (docs/performance.md, Shading
+    // share, eighth pass).
+    [[gnu::cold, gnu::noinline]] void logContribution(const Rgb& value, lpe::OutputMask accepted,
+                                                      const PathRecord& path, std::span<const TermFactor> factors) {
+        LoggedContribution& logged = log_->emplace_back(LoggedContribution{value, accepted, path, false, strategyS_, strategyT_});
+        logged.factorCount = std::min(factors.size(), kMaxTermFactors);
+        std::copy_n(factors.begin(), logged.factorCount, logged.factors.begin());
+    }
+
     std::span<Rgb> layers_;
     SplatFilm* splats_;
     std::vector<LoggedContribution>* log_;

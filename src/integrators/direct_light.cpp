@@ -131,12 +131,16 @@ struct LightTerms {
     // unless a smooth lobe transmits: light from behind then passes through (its eval says how much).
     const float cosTheta = glm::dot(p.normal, sample.wi);
     const bool litSide = (cosTheta > 0.0f || p.terms.smoothTransmission) && sample.distance > 0.0f;
-    PathEvent lightEvent = light.event();
-    lightEvent.position = sample.point;
+    // The light's event at the sample, for `explain`'s records only: made where they are.
+    const auto lightEvent = [&] {
+        PathEvent event = light.event();
+        event.position = sample.point;
+        return event;
+    };
     if (!litSide && skip) {
         ++counters.shadowBehind;
         if (path.explaining()) [[unlikely]]
-            rejectZero(p, lobes, sample, litSide, lightEvent, path);
+            rejectZero(p, lobes, sample, litSide, lightEvent(), path);
         return;
     }
     lpe::OutputMask stepped[kMaxLobes];
@@ -183,7 +187,7 @@ struct LightTerms {
     if (skip && !anyValue) {
         ++counters.shadowZero;
         if (path.explaining()) [[unlikely]]
-            rejectZero(p, lobes, sample, litSide, lightEvent, path);
+            rejectZero(p, lobes, sample, litSide, lightEvent(), path);
         return;
     }
 
@@ -193,13 +197,13 @@ struct LightTerms {
         const Ray shadowRay = spawnShadowRay(origins, sample.point, sample.normal);
         if (throughInterfaces ? isBlack(transmittance) : ctx.geometry.occluded(shadowRay)) {
             if (path.explaining()) [[unlikely]]
-                rejectBlocked(lobes, shadowRay, lightEvent, sample.distance, path);
+                rejectBlocked(lobes, shadowRay, lightEvent(), sample.distance, path);
             return;
         }
     }
     if (path.explaining()) [[unlikely]] {
         const LightTerms terms{sample, light, incident, transmittance, lightPdf, weighting, throughput};
-        emitExplained(p, lobes, terms, lightEvent, value, weights, accepted, wanted, path);
+        emitExplained(p, lobes, terms, lightEvent(), value, weights, accepted, wanted, path);
         return;
     }
     for (int l = 0; l < lobes.smooth.count; ++l) {

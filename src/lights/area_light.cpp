@@ -93,7 +93,8 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     if (!sampleable_) return s;
     SolidAngleSample byAngle;
     Vec2 uv{0.0f};
-    if (solidAngle_ && solidAngle_->ops->sampleSolidAngle(*solidAngle_, receiver, u, byAngle)) {
+    const bool byArea = !(solidAngle_ && solidAngle_->ops->sampleSolidAngle(*solidAngle_, receiver, u, byAngle));
+    if (!byArea) {
         if (!(byAngle.pdf > 0.0f)) return s;
         s.point = byAngle.point;
         s.normal = byAngle.normal;
@@ -103,11 +104,14 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
         const SurfacePoint p = samplePoint(u);
         s.point = p.point;
         s.normal = p.normal;
-        s.pdf = areaToSolidAngle(1.0f / area_, receiver, p.point, p.normal);
         uv = p.uv;
     }
+    // The vector to the light, its length and (by area) the density's conversion share one
+    // computation (docs/performance.md, Shading share, eighth pass).
     const Vec3 toLight = s.point - receiver;
-    s.distance = std::sqrt(glm::dot(toLight, toLight));
+    const float distance2 = glm::dot(toLight, toLight);
+    s.distance = std::sqrt(distance2);
+    if (byArea) s.pdf = areaToSolidAngle(1.0f / area_, distance2, s.distance, glm::dot(s.normal, toLight));
     if (!(s.distance > 0.0f)) {
         s.pdf = 0.0f;
         return s;
@@ -115,7 +119,7 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     s.wi = toLight / s.distance;
     // The receiver behind a one-sided emitter sees nothing of it (spheres emit on both sides).
     if (!spheres_ && -glm::dot(s.normal, s.wi) <= 0.0f) s.pdf = 0.0f;
-    if (s.pdf > 0.0f) s.weight = emissionAt(uv) / s.pdf;
+    if (s.pdf > 0.0f) s.weight = (emission_.textured() ? emissionAt(uv) : emission_.constant()) / s.pdf;
     return s;
 }
 
@@ -187,9 +191,7 @@ LIGHTPATH_HOT_PATH
 float areaToSolidAngle(float pdfArea, const Vec3& receiver, const Vec3& point, const Vec3& normal) {
     const Vec3 toPoint = point - receiver;
     const float distance2 = glm::dot(toPoint, toPoint);
-    const float cosEmitter = std::fabs(glm::dot(normal, toPoint)) / std::sqrt(distance2);
-    const float pdf = cosEmitter > 0.0f ? pdfArea * distance2 / cosEmitter : 0.0f;
-    return std::isfinite(pdf) ? pdf : 0.0f;
+    return areaToSolidAngle(pdfArea, distance2, std::sqrt(distance2), glm::dot(normal, toPoint));
 }
 
 }  // namespace lightpath

@@ -7,6 +7,7 @@
 // for a sphere of any size at any distance. A textured emission (materials/texture.h) is read at
 // the texture coordinates of the point a ray hits or a sample picks (SceneGeometry::uvAt); the
 // light's power, which only steers the choice of lights, takes the texture's mean.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -72,6 +73,14 @@ private:
 // Solid-angle density at `receiver` of a point sampled with `pdfArea` on a surface with `normal`;
 // 0 where it would not be a finite float (a point seen edge-on, or a tiny light).
 float areaToSolidAngle(float pdfArea, const Vec3& receiver, const Vec3& point, const Vec3& normal);
+// The same from the vector `toPoint` (receiver to point) already measured: its squared length,
+// its length and normal . toPoint. pdf_omega = pdf_area d^2 / |cos theta_light| (Pharr, Jakob and
+// Humphreys, pbrt 4th ed., 4.2.3), with |cos theta_light| = |normal . toPoint| / d.
+inline float areaToSolidAngle(float pdfArea, float distance2, float distance, float normalDotToPoint) {
+    const float cosEmitter = std::fabs(normalDotToPoint) / distance;
+    const float pdf = cosEmitter > 0.0f ? pdfArea * distance2 / cosEmitter : 0.0f;
+    return std::isfinite(pdf) ? pdf : 0.0f;
+}
 
 
 }  // namespace lightpath

@@ -44,9 +44,18 @@ public:
     // The sampler of one vertex of a branching path, keyed by the path that leads to it: its
     // numbers do not depend on which other branches were traced (or skipped) before it, and
     // samples of the pixel that reach the same vertex stay stratified among themselves.
-    Sampler forVertex(std::uint64_t pathKey) const { return Sampler(kind_, mixBits(seed_ ^ pathKey), index_, count_); }
+    // What depends only on the kind, index and count (the stratified grid's side, the reversed
+    // index) is copied, not recomputed per vertex (docs/performance.md, Shading share, eighth pass).
+    Sampler forVertex(std::uint64_t pathKey) const { return Sampler(*this, mixBits(seed_ ^ pathKey)); }
 
 private:
+    // `parent`'s kind, index and count with `seed`: the same sampler as Sampler(parent's kind,
+    // seed, parent's index, parent's count).
+    Sampler(const Sampler& parent, std::uint64_t seed)
+        : kind_(parent.kind_), seed_(seed), index_(parent.index_), count_(parent.count_), gridSide_(parent.gridSide_),
+          reversedIndex_(parent.reversedIndex_),
+          rng_(usesRng() ? Pcg32(mixBits(seed), mixBits(seed ^ static_cast<std::uint64_t>(index_))) : Pcg32::unseeded()) {}
+
     bool usesRng() const { return kind_ != SamplerKind::Sobol; }
     std::uint64_t dimensionSeed() { return mixBits(seed_ + 0x9e3779b97f4a7c15ull * static_cast<std::uint64_t>(++dimension_)); }
 

@@ -121,6 +121,31 @@ TEST_CASE("skipping a dimension pair or one dimension leaves every later number 
     }
 }
 
+TEST_CASE("a vertex's sampler is the sampler made from the pixel's kind, index and count with the vertex's seed") {
+    // forVertex copies what depends only on the kind, index and count; the reference builds it anew.
+    for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
+        for (int spp : {1, 7, 9, 16}) {
+            for (int index : {0, spp / 2, spp - 1}) {
+                for (const std::uint64_t key : {0ull, 99ull, 0x9e3779b97f4a7c15ull}) {
+                    CAPTURE(samplerName(kind));
+                    CAPTURE(spp);
+                    CAPTURE(index);
+                    CAPTURE(key);
+                    const std::uint64_t seed = 0x1234567ull + static_cast<std::uint64_t>(index);
+                    Sampler parent(kind, seed, index, spp);
+                    parent.next2D();  // the parent's own dimensions do not move the vertex's
+                    Sampler vertex = parent.forVertex(key);
+                    Sampler reference(kind, mixBits(seed ^ key), index, spp);
+                    for (int d = 0; d < 6; ++d) {
+                        CHECK(vertex.next1D() == reference.next1D());
+                        CHECK(vertex.next2D() == reference.next2D());
+                    }
+                }
+            }
+        }
+    }
+}
+
 TEST_CASE("stratified: one sample per stratum, grid for square counts, Latin hypercube otherwise") {
     const auto grid = firstPoints(SamplerKind::Stratified, 16, 1, 9);
     std::set<int> cells;
