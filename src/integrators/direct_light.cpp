@@ -61,11 +61,10 @@ std::size_t termFactors(const ShadingPoint& p, int lobe, const LightSample& samp
 struct SmoothLobeEvents {
     const ShadingPoint& point;
     PathState::SurfaceLobes at;
-    const SmoothLobes& smooth;
 
-    SmoothLobeEvents(const ShadingPoint& p, const PathState& path)
-        : point(p), at(path.surfaceLobes(p.hit.object)), smooth(at.lobes) {}
-    PathEvent event(int slot) const { return point.eventOf(smooth.lobe[slot]); }
+    SmoothLobeEvents(const ShadingPoint& p, const PathState& path) : point(p), at(path.surfaceLobes(p.hit.object)) {}
+    const SmoothLobes& smooth() const { return at.lobes; }
+    PathEvent event(int slot) const { return point.eventOf(at.lobes.lobe[slot]); }
 };
 
 // `explain`: why a light sample added nothing through any lobe.
@@ -73,9 +72,9 @@ std::string zeroReason(const ShadingPoint& p, const SmoothLobeEvents& lobes, con
     if (!litSide) return formatted("the light is behind the surface (N.L = %.3f)", glm::dot(p.normal, sample.wi));
     if (isBlack(sample.weight)) return "the light sends nothing this way (a one-sided emitter seen from behind, or dark)";
     std::string absent;  // "kd = 0 and ks = 0" when no smooth lobe scatters anything
-    for (int l = 0; l < lobes.smooth.count; ++l) {
-        if (p.terms.lobes[lobes.smooth.lobe[l]]) return "the term is zero here";
-        absent += std::string(absent.empty() ? "" : " and ") + p.bsdf.lobe(lobes.smooth.lobe[l]).coefficient + " = 0";
+    for (int l = 0; l < lobes.smooth().count; ++l) {
+        if (p.terms.lobes[lobes.smooth().lobe[l]]) return "the term is zero here";
+        absent += std::string(absent.empty() ? "" : " and ") + p.bsdf.lobe(lobes.smooth().lobe[l]).coefficient + " = 0";
     }
     return "the term is zero: " + absent;
 }
@@ -123,7 +122,7 @@ struct LightTerms {
                                                   float choiceProbability, const Light& light,
                                                   DirectLightWeighting weighting, PathState& path,
                                                   const Medium* medium) {
-    if (lobes.smooth.count == 0) return;
+    if (lobes.smooth().count == 0) return;
     const RenderContext& ctx = path.context;
     const bool skip = ctx.skipEnabled;
     RayCounters& counters = path.counters;
@@ -147,7 +146,7 @@ struct LightTerms {
     const lpe::OutputMask* accepted = path.acceptsThrough(lobes.at, path.lightColumn(light.event()), stepped);
     // Bit l: lobe l's term reaches a requested output. A bit set, not a bool array: GCC made
     // the array a memset call per sample when `rest` keeps every path.
-    const unsigned wanted = path.wantedLobes(accepted, lobes.smooth.count);
+    const unsigned wanted = path.wantedLobes(accepted, lobes.smooth().count);
     const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
     if (wanted == 0) {
         ++counters.shadowDead;
@@ -168,12 +167,12 @@ struct LightTerms {
     Rgb value[kMaxLobes];
     float weights[kMaxLobes];
     bool anyValue = false;
-    for (int l = 0; l < lobes.smooth.count; ++l) {
-        const int lobe = lobes.smooth.lobe[l];
+    for (int l = 0; l < lobes.smooth().count; ++l) {
+        const int lobe = lobes.smooth().lobe[l];
         value[l] = Rgb{0.0f};
         weights[l] = 1.0f;
         const bool present = p.terms.lobes[lobe];
-        const bool glossy = lobes.smooth.glossy[l];
+        const bool glossy = lobes.smooth().glossy[l];
         if (!isWanted(l) || !(present || !skip)) {
             if (glossy && !present) ++counters.glossyAbsent;
             continue;
@@ -206,7 +205,7 @@ struct LightTerms {
         emitExplained(p, lobes, terms, lightEvent(), value, weights, accepted, wanted, path);
         return;
     }
-    for (int l = 0; l < lobes.smooth.count; ++l) {
+    for (int l = 0; l < lobes.smooth().count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         path.addAccepted(value[l], accepted[l]);
     }
@@ -221,19 +220,19 @@ struct LightTerms {
                                                 const lpe::OutputMask* accepted, unsigned wanted, PathState& path) {
     const bool skip = path.context.skipEnabled;
     const auto isWanted = [&](int l) { return (wanted >> l & 1u) != 0; };
-    for (int l = 0; l < lobes.smooth.count; ++l) {
+    for (int l = 0; l < lobes.smooth().count; ++l) {
         if (!isWanted(l) || (skip && isBlack(value[l]))) continue;
         std::array<TermFactor, kMaxTermFactors> factors;
         const std::size_t count =
-            termFactors(p, lobes.smooth.lobe[l], terms.sample, terms.light, terms.incident, terms.transmittance,
+            termFactors(p, lobes.smooth().lobe[l], terms.sample, terms.light, terms.incident, terms.transmittance,
                         terms.lightPdf, weights[l], terms.weighting, terms.throughput, factors);
         path.emitAccepted(lobes.event(l), lightEvent, value[l], accepted[l], std::span(factors.data(), count));
     }
     // A lobe that is absent beside one that scatters, in the lecture's order (ks = 0 beside kd):
     // say so, as its term is part of the formula.
     bool earlierPresent = false;
-    for (int l = 0; l < lobes.smooth.count; ++l) {
-        const int lobe = lobes.smooth.lobe[l];
+    for (int l = 0; l < lobes.smooth().count; ++l) {
+        const int lobe = lobes.smooth().lobe[l];
         if (isWanted(l) && !p.terms.lobes[lobe] && earlierPresent) {
             const LobeInfo& info = p.bsdf.lobe(lobe);
             path.reject(lobes.event(l), lightEvent,
@@ -319,9 +318,9 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
     const RenderContext& ctx = path.context;
     if (!point.terms.ambient && ctx.skipEnabled) return;
     const PathEvent ambient{lpe::EventType::Emitter, lpe::Scatter::None, Subject::Ambient, 0, point.hit.point};
-    if (lobes.smooth.ambient < 0) return;  // no diffuse reflection to carry it
+    if (lobes.smooth().ambient < 0) return;  // no diffuse reflection to carry it
     lpe::OutputMask stepped[kMaxLobes];
-    const lpe::OutputMask accepted = path.acceptsThrough(lobes.at, path.ambientColumn(), stepped)[lobes.smooth.ambient];
+    const lpe::OutputMask accepted = path.acceptsThrough(lobes.at, path.ambientColumn(), stepped)[lobes.smooth().ambient];
     if (!path.wanted(accepted)) return;
     const Rgb ka = point.bsdf.ambientReflectance();
     const Rgb value = throughput * ka * ctx.scene.ambient;
@@ -330,7 +329,7 @@ void addAmbient(const ShadingPoint& point, const SmoothLobeEvents& lobes, const 
         return;
     }
     const TermFactor factors[] = {{"ka", ka}, {"Ia", ctx.scene.ambient}, {"throughput", throughput}};
-    path.emitAccepted(lobes.event(lobes.smooth.ambient), ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
+    path.emitAccepted(lobes.event(lobes.smooth().ambient), ambient, value, accepted, std::span(factors, throughput == Rgb{1.0f} ? 2 : 3));
 }
 
 }  // namespace
