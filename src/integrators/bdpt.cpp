@@ -382,12 +382,11 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
         if (t - 1 > ctx.maxDepth) break;
         const ShadingPoint& sp = *z.surface;
         if (z.smoothLobes != 0) {
-            const float uChoice = sampler.next1D();
-            const Vec2 uPoint = sampler.next2D();
-            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, uPoint, path, weights);
-            const ChosenLight chosen = ctx.lights.chooseAreaLight(uChoice);
+            const LightChoiceSample u = drawLightChoice(sampler, ctx.lights);
+            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, u.uPoint, path, weights);
+            const ChosenLight chosen = ctx.lights.chooseAreaLight(u.uChoice);
             if (chosen.light != nullptr)
-                joinToLightSample(eye, t, *chosen.light, chosen.probability, uPoint, path, weights);
+                joinToLightSample(eye, t, *chosen.light, chosen.probability, u.uPoint, path, weights);
             const int longestLight = std::min(lightCount, ctx.maxDepth + 2 - t);
             const std::uint64_t shadowBefore = path.counters.shadow;
             for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, path, weights);

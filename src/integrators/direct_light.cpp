@@ -469,8 +469,7 @@ void addLocalIllumination(const ShadingPoint& point, const Rgb& throughput, Path
     LightChoiceSample u{0.0f, Vec2{0.0f}};
     if (path.context.lights.hasAreaLights()) {
         Sampler vertex = path.sampler->forVertex(path.key());
-        u.uChoice = vertex.next1D();
-        u.uPoint = vertex.next2D();
+        u = drawLightChoice(vertex, path.context.lights);
     }
     RayOrigins origins(point.hit, path.context.geometry.numerics());  // shared by the shadow rays of every light
     addDirectLight(point, lobes, origins, throughput, u, DirectLightWeighting::Alone, path, medium);

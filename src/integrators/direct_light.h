@@ -7,6 +7,7 @@
 #include "integrators/path_state.h"
 #include "media/medium.h"
 #include "integrators/shading_point.h"
+#include "lights/light_set.h"
 #include "math/ray.h"
 
 namespace lightpath {
@@ -21,6 +22,20 @@ struct LightChoiceSample {
     float uChoice;
     Vec2 uPoint;
 };
+
+// The numbers of one next-event estimate, drawn from `sampler` in a fixed order (the choice of an
+// area light, then the point on it), each only when something reads it: the choice when there are
+// two or more area lights, the point when there is any (delta lights read neither). A number no
+// one reads is skipped, not drawn, so the sampler's later numbers are the same either way
+// (docs/performance.md, Shading share, ninth pass).
+inline LightChoiceSample drawLightChoice(Sampler& sampler, const LightSet& lights) {
+    LightChoiceSample u{0.0f, Vec2{0.0f}};
+    if (lights.choosesAmongAreaLights()) u.uChoice = sampler.next1D();
+    else sampler.skip1D();
+    if (lights.hasAreaLights()) u.uPoint = sampler.next2D();
+    else sampler.skip2D();
+    return u;
+}
 
 // `medium`: what fills the space on the shading point's side (wo's), which attenuates every shadow
 // ray by its transmittance; null in vacuum.

@@ -45,9 +45,8 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
             if (flight.scattered) {
                 if (depth >= ctx.maxDepth) break;
                 const MediumPoint point{ray.at(flight.t), -ray.direction, *medium, mediumIndex};
-                const float uChoice = sampler.next1D();
-                const Vec2 uPoint = sampler.next2D();
-                addMediumDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance, path);
+                addMediumDirectLight(point, throughput, drawLightChoice(sampler, ctx.lights),
+                                     DirectLightWeighting::MultipleImportance, path);
                 const PhaseSample scattered = medium->phase(point.point).sample(point.wo, sampler.next2D());
                 if (!path.push(point.event())) {
                     ++path.counters.volumeDead;
@@ -88,10 +87,8 @@ void PathIntegrator::traceCameraRay(const Ray& cameraRay, PathState& path) const
         // the lit side, from the origin the shadow rays computed).
         RayOrigins origins(point.hit, ctx.geometry.numerics());
         if (point.bsdf.hasSmoothLobe()) {
-            const float uChoice = sampler.next1D();
-            const Vec2 uPoint = sampler.next2D();
-            addDirectLight(point, origins, throughput, {uChoice, uPoint}, DirectLightWeighting::MultipleImportance,
-                           path, ctx.scene.medium(mediumIndex));
+            addDirectLight(point, origins, throughput, drawLightChoice(sampler, ctx.lights),
+                           DirectLightWeighting::MultipleImportance, path, ctx.scene.medium(mediumIndex));
         }
 
         const float uLobe = sampler.next1D();

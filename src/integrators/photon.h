@@ -53,9 +53,8 @@ void traceEyeToPhotons(const Ray& cameraRay, PathState& path, const Gather& gath
         if (bounces >= ctx.maxDepth) break;
         const ShadingPoint point = makeShadingPoint(*hit, ray, ctx);
         if (point.bsdf.hasSmoothLobe()) {
-            const float uChoice = sampler.next1D();
-            const Vec2 uPoint = sampler.next2D();
-            addDirectLight(point, throughput, {uChoice, uPoint}, DirectLightWeighting::Alone, path);
+            addDirectLight(point, throughput, drawLightChoice(sampler, path.context.lights), DirectLightWeighting::Alone,
+                           path);
             gather(point, throughput, bounces);
         }
         // The lobe is chosen by albedo as the path tracer does; a smooth one ends the walk, since

@@ -31,6 +31,9 @@ public:
     std::span<const std::unique_ptr<Light>> all() const { return lights_; }
     std::span<const Light* const> deltaLights() const { return delta_; }
     bool hasAreaLights() const { return !area_.empty(); }
+    // Whether chooseAreaLight has a choice to make: with one area light it returns that light,
+    // whatever its number.
+    bool choosesAmongAreaLights() const { return area_.size() > 1; }
 
     // One area light in proportion to its power.
     ChosenLight chooseAreaLight(float u) const;
