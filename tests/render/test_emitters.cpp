@@ -306,4 +306,63 @@ radius = 1
     }
 }
 
+TEST_CASE("next-event estimation's numbers: drawn where a light reads them, skipped without moving the rest") {
+    // The premise: with one area light the choice ignores its number. The check: drawLightChoice
+    // returns the numbers a full draw (choice, then point) gives where a light reads them, and
+    // leaves the sampler where the full draw does, for 0, 1 and 2 area lights and every kind.
+    const std::string room = R"(
+[camera]
+eye = [0, 0, 5]
+look_at = [0, 0, 0]
+[materials.grey]
+kd = 0.5
+[[lights]]
+position = [0, 3, 0]
+[[spheres]]
+center = [0, -101, 0]
+radius = 100
+material = "grey"
+)";
+    const std::string lamp = R"(
+[[lights]]
+type = "sphere"
+center = [1, 2, 0]
+radius = 0.2
+radiance = 3
+)";
+    const std::string bulb = R"(
+[[lights]]
+type = "sphere"
+center = [-1, 2, 0]
+radius = 0.1
+radiance = 5
+)";
+    for (int areaLights = 0; areaLights <= 2; ++areaLights) {
+        const std::string text = room + (areaLights >= 1 ? lamp : "") + (areaLights >= 2 ? bulb : "");
+        const test::RenderWorld world(loadSceneFromText(text, "lights.toml"));
+        CAPTURE(areaLights);
+        REQUIRE(world.lights.hasAreaLights() == (areaLights > 0));
+        REQUIRE(world.lights.choosesAmongAreaLights() == (areaLights > 1));
+        if (areaLights == 1) {
+            const ChosenLight first = world.lights.chooseAreaLight(0.0f), last = world.lights.chooseAreaLight(kBelowOne);
+            CHECK(first.light == last.light);
+            CHECK(first.probability == 1.0f);
+        }
+        for (SamplerKind kind : {SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol}) {
+            for (int index : {0, 3}) {
+                CAPTURE(samplerName(kind));
+                CAPTURE(index);
+                Sampler drawn(kind, 0xabcdefull, index, 4), full(kind, 0xabcdefull, index, 4);
+                const LightChoiceSample u = drawLightChoice(drawn, world.lights);
+                const float uChoice = full.next1D();
+                const Vec2 uPoint = full.next2D();
+                if (areaLights > 1) CHECK(u.uChoice == uChoice);
+                if (areaLights > 0) CHECK(u.uPoint == uPoint);
+                CHECK(drawn.next2D() == full.next2D());
+                CHECK(drawn.next1D() == full.next1D());
+            }
+        }
+    }
+}
+
 }  // namespace lightpath
