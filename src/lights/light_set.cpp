@@ -71,6 +71,8 @@ std::vector<LightSet::Choice> LightSet::distribution(std::span<const Light* cons
 LIGHTPATH_HOT_PATH
 ChosenLight LightSet::choose(const std::vector<Choice>& choices, float u) {
     if (choices.empty()) return {};
+    // One light (every Cornell box's lamp): the search would return it for any u.
+    if (choices.size() == 1) return {choices.front().light, choices.front().probability};
     auto it = std::upper_bound(choices.begin(), choices.end(), u,
                                [](float value, const Choice& c) { return value < c.cumulative; });
     if (it == choices.end()) --it;
