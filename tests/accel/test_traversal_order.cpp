@@ -18,12 +18,13 @@
 namespace lightpath {
 namespace {
 
-using Place = void (*)(const BvhNode&, int, const float*, bvh_detail::Pending*);
+using Place = std::uint32_t (*)(const BvhNode&, int, const float*, bvh_detail::Pending*);
 
 std::uint32_t bitsOf(float x) { return std::bit_cast<std::uint32_t>(x); }
 
 // Every mask of two or more lanes, with `entries` as the lanes' entry distances: counts the masks
-// whose first popcount(mask) slots are not the stable sort's (child, entry bits).
+// whose first popcount(mask) slots are not the stable sort's (child, entry bits), or whose
+// returned child (visited next) is not the last of them.
 int wrongOrders(Place place, const float (&entries)[kBvhWidth]) {
     BvhNode node{};
     for (int lane = 0; lane < kBvhWidth; ++lane) node.children[lane] = 1000u + static_cast<std::uint32_t>(lane);
@@ -38,8 +39,8 @@ int wrongOrders(Place place, const float (&entries)[kBvhWidth]) {
         std::stable_sort(expected.begin(), expected.end(), [&](int a, int b) { return entry[a] > entry[b]; });
         bvh_detail::Pending out[kBvhWidth];
         std::memset(out, 0xff, sizeof(out));
-        place(node, mask, entry, out);
-        bool same = true;
+        const std::uint32_t nearest = place(node, mask, entry, out);
+        bool same = nearest == node.children[expected.back()];
         for (std::size_t i = 0; i < expected.size(); ++i)
             same = same && out[i].child == node.children[expected[i]] && bitsOf(out[i].entry) == bitsOf(entry[expected[i]]);
         wrong += !same;
@@ -74,7 +75,7 @@ void checkOrders(Place place) {
 
 TEST_CASE("closest-hit push order = stable sort by decreasing entry, baseline path") {
     checkOrders([](const BvhNode& node, int mask, const float* entry, bvh_detail::Pending* out) {
-        bvh_baseline::placeFarToNear(node, mask, entry, out);
+        return bvh_baseline::placeFarToNear(node, mask, entry, out);
     });
 }
 
@@ -85,7 +86,7 @@ TEST_CASE("closest-hit push order = stable sort by decreasing entry, AVX2 path")
         return;
     }
     checkOrders([](const BvhNode& node, int mask, const float* entry, bvh_detail::Pending* out) {
-        bvh_avx2::placeFarToNear(node, mask, entry, out);
+        return bvh_avx2::placeFarToNear(node, mask, entry, out);
     });
 }
 #endif
