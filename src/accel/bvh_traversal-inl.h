@@ -98,8 +98,10 @@ struct RaySetup {
 
 // Two lanes a < b, the common case, with their entries t[]: one comparison, a first on a tie.
 // A branch, on both paths: coherent rays predict it, and the processor runs ahead to the nearest
-// child; a branch-free select puts the comparison on that path (tried: primary rays 5-8% slower
-// on Zen 5, random rays no faster, though 0.6 fewer mispredictions per random ray).
+// child; a branch-free select puts the comparison on that path (tried, with the prefetches'
+// leaf test also branch-free: 0.6 fewer mispredictions per random ray, but primary rays 5-8%
+// slower on Zen 5 and random rays no faster; docs/performance.md, "Entered lanes ordered
+// without branches").
 inline std::uint32_t placeTwoFarToNear(const BvhNode& node, int a, int b, const float t[kBvhWidth],
                                        bvh_detail::Pending out[2]) {
     if (t[a] >= t[b]) {
