@@ -94,7 +94,12 @@ struct RaySetup {
 // equal entries the lower lane first (a stable sort of the lanes by decreasing entry). Either
 // path gives this same order, so both visit the same nodes in the same sequence.
 // placeFarToNear(node, mask, entry, out) writes the n = popcount(mask) >= 2 entered lanes'
-// (child, entry) pairs to out[0..n) in that order and returns the nearest child, out[n - 1]'s.
+// (child, entry) pairs to out[0..n) in that order and returns n and the nearest child, out[n - 1]'s
+// (n counted as it goes: the baseline has no popcnt instruction).
+struct Placed {
+    std::uint32_t nearest;
+    int count;
+};
 
 // Two lanes a < b, the common case, with their entries t[]: one comparison, a first on a tie.
 // A branch, on both paths: coherent rays predict it, and the processor runs ahead to the nearest
@@ -102,16 +107,15 @@ struct RaySetup {
 // leaf test also branch-free: 0.6 fewer mispredictions per random ray, but primary rays 5-8%
 // slower on Zen 5 and random rays no faster; docs/performance.md, "Entered lanes ordered
 // without branches").
-inline std::uint32_t placeTwoFarToNear(const BvhNode& node, int a, int b, const float t[kBvhWidth],
-                                       bvh_detail::Pending out[2]) {
+inline Placed placeTwoFarToNear(const BvhNode& node, int a, int b, const float t[kBvhWidth], bvh_detail::Pending out[2]) {
     if (t[a] >= t[b]) {
         out[0] = {node.children[a], t[a]};
         out[1] = {node.children[b], t[b]};
-        return node.children[b];
+        return {node.children[b], 2};
     }
     out[0] = {node.children[b], t[b]};
     out[1] = {node.children[a], t[a]};
-    return node.children[a];
+    return {node.children[a], 2};
 }
 
 #if LIGHTPATH_BVH_AVX2
@@ -137,7 +141,7 @@ template <int s>
 // Three or more lanes take no branch on their entries: the ranks come from compares
 // (addLanesBefore) and the pairs move in registers. out[n..8) get garbage, so out[] needs all
 // 8 slots. Inlined: as a call, the traversal loop's ray registers would be spilled around it.
-[[gnu::always_inline]] inline std::uint32_t placeFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
+[[gnu::always_inline]] inline Placed placeFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
     const int rest = mask & (mask - 1);
     if ((rest & (rest - 1)) == 0) {
         alignas(32) float t[kBvhWidth];
@@ -170,7 +174,8 @@ template <int s>
     const __m256i source = _mm256_srlv_epi32(_mm256_broadcastd_epi32(gathered), _mm256_slli_epi32(lane, 2));
     // The nearest child, read from the ranks rather than from the gathered fields: the next
     // node's loads wait for it, and this way is a few operations shorter.
-    const int last = __builtin_popcount(static_cast<unsigned>(mask)) - 1;
+    const int count = __builtin_popcount(static_cast<unsigned>(mask));
+    const int last = count - 1;
     const int nearest = simd::firstLane(
         _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(rank, _mm256_set1_epi32(last)))));
     const __m256 children = _mm256_load_ps(reinterpret_cast<const float*>(node.children));
@@ -182,22 +187,22 @@ template <int s>
     const __m256 high = _mm256_unpackhi_ps(sortedChildren, sortedEntries);
     _mm256_storeu_ps(reinterpret_cast<float*>(out), _mm256_permute2f128_ps(low, high, 0x20));
     _mm256_storeu_ps(reinterpret_cast<float*>(out + 4), _mm256_permute2f128_ps(low, high, 0x31));
-    return node.children[nearest];
+    return {node.children[nearest], count};
 }
 
 #else
 
 // The baseline keeps an insertion sort for three or more lanes: it runs only where AVX2 is
 // missing, and gives the same order as the AVX2 path's ranks.
-inline std::uint32_t placeFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
+inline Placed placeFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
     alignas(32) float t[kBvhWidth];
     entry.store(t);
     const int a = simd::firstLane(mask);
     mask &= mask - 1;
     const int b = simd::firstLane(mask);
     mask &= mask - 1;
-    const std::uint32_t nearestOfTwo = placeTwoFarToNear(node, a, b, t, out);
-    if (mask == 0) return nearestOfTwo;
+    const Placed two = placeTwoFarToNear(node, a, b, t, out);
+    if (mask == 0) return two;
     int n = 2;
     for (; mask != 0; mask &= mask - 1) {
         const int lane = simd::firstLane(mask);
@@ -206,13 +211,13 @@ inline std::uint32_t placeFarToNear(const BvhNode& node, int mask, const Float8&
         for (; i > 0 && out[i - 1].entry < p.entry; --i) out[i] = out[i - 1];
         out[i] = p;
     }
-    return out[n - 1].child;
+    return {out[n - 1].child, n};
 }
 
 #endif
 
 // The same for entries in memory (tests): entry[lane] for each lane of `mask` (two or more).
-inline std::uint32_t placeFarToNear(const BvhNode& node, int mask, const float entry[kBvhWidth], bvh_detail::Pending out[kBvhWidth]) {
+inline Placed placeFarToNear(const BvhNode& node, int mask, const float entry[kBvhWidth], bvh_detail::Pending out[kBvhWidth]) {
     return placeFarToNear(node, mask, Float8::load(entry), out);
 }
 
@@ -224,13 +229,35 @@ inline void prefetchNode(const BvhNode* nodes, std::uint32_t child) {
     for (std::size_t line = 0; line < sizeof(BvhNode); line += 64) __builtin_prefetch(bytes + line);
 }
 
+// Pushes the entered lanes of `mask` (two or more) farthest first, asks for the pushed nodes'
+// lines, and returns the nearest child, visited next. The AVX2 path places them on the stack
+// in place (all eight slots written); the baseline sorts in a local array and copies, as before
+// the AVX2 ranks: in place, its insertion sort took 4-5% more instructions per ray.
+[[gnu::always_inline]] inline std::uint32_t pushFarToNear(const BvhNode* nodes, const BvhNode& node, int mask, const Float8& entry,
+                                                          bvh_detail::Pending* stack, int& top) {
+#if LIGHTPATH_BVH_AVX2
+    const Placed placed = placeFarToNear(node, mask, entry, stack + top);
+    const int pushed = placed.count - 1;
+    for (int i = 0; i < pushed; ++i) prefetchNode(nodes, stack[top + i].child);
+    top += pushed;
+#else
+    bvh_detail::Pending sorted[kBvhWidth];
+    const Placed placed = placeFarToNear(node, mask, entry, sorted);
+    for (int i = 0; i < placed.count - 1; ++i) {
+        prefetchNode(nodes, sorted[i].child);
+        stack[top++] = sorted[i];
+    }
+#endif
+    return placed.nearest;
+}
+
 // All children are tested at their parent; those entered are pushed farthest first with their
 // entry distances, the nearest is visited at once, and a popped child is skipped when a hit
 // found since is nearer than its entry.
 template <typename Test>
 void closest(const Bvh& bvh, const Ray& ray, const float& tLimit, Test& test) {
     const RaySetup setup(ray);
-    // placeFarToNear writes a node's eight slots above the top, whatever it pushes.
+    // pushFarToNear may write a node's eight slots above the top, whatever it pushes.
     bvh_detail::Pending stack[bvh_detail::kStackSize + kBvhWidth];
     int top = 0;
     std::uint32_t current = bvh.root();
@@ -245,13 +272,7 @@ void closest(const Bvh& bvh, const Ray& ray, const float& tLimit, Test& test) {
                     current = node.children[simd::firstLane(mask)];
                     continue;
                 }
-                // Pushed in place: the farthest at stack[top], the nearest (visited now) just
-                // above the new top.
-                const std::uint32_t nearest = placeFarToNear(node, mask, entry, stack + top);
-                const int pushed = __builtin_popcount(static_cast<unsigned>(mask)) - 1;
-                for (int i = 0; i < pushed; ++i) prefetchNode(nodes, stack[top + i].child);
-                top += pushed;
-                current = nearest;
+                current = pushFarToNear(nodes, node, mask, entry, stack, top);
                 continue;
             }
         } else {

@@ -18,13 +18,13 @@
 namespace lightpath {
 namespace {
 
-using Place = std::uint32_t (*)(const BvhNode&, int, const float*, bvh_detail::Pending*);
-
 std::uint32_t bitsOf(float x) { return std::bit_cast<std::uint32_t>(x); }
 
 // Every mask of two or more lanes, with `entries` as the lanes' entry distances: counts the masks
 // whose first popcount(mask) slots are not the stable sort's (child, entry bits), or whose
-// returned child (visited next) is not the last of them.
+// returned count or child (visited next, the last of them) is not the stable sort's.
+// `place` is a path's placeFarToNear.
+template <typename Place>
 int wrongOrders(Place place, const float (&entries)[kBvhWidth]) {
     BvhNode node{};
     for (int lane = 0; lane < kBvhWidth; ++lane) node.children[lane] = 1000u + static_cast<std::uint32_t>(lane);
@@ -39,8 +39,9 @@ int wrongOrders(Place place, const float (&entries)[kBvhWidth]) {
         std::stable_sort(expected.begin(), expected.end(), [&](int a, int b) { return entry[a] > entry[b]; });
         bvh_detail::Pending out[kBvhWidth];
         std::memset(out, 0xff, sizeof(out));
-        const std::uint32_t nearest = place(node, mask, entry, out);
-        bool same = nearest == node.children[expected.back()];
+        const auto placed = place(node, mask, entry, out);
+        bool same = placed.nearest == node.children[expected.back()] &&
+                    placed.count == static_cast<int>(expected.size());
         for (std::size_t i = 0; i < expected.size(); ++i)
             same = same && out[i].child == node.children[expected[i]] && bitsOf(out[i].entry) == bitsOf(entry[expected[i]]);
         wrong += !same;
@@ -48,6 +49,7 @@ int wrongOrders(Place place, const float (&entries)[kBvhWidth]) {
     return wrong;
 }
 
+template <typename Place>
 void checkOrders(Place place) {
     const float inf = std::numeric_limits<float>::infinity();
     const float patterns[][kBvhWidth] = {
