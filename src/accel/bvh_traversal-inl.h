@@ -90,22 +90,119 @@ struct RaySetup {
     }
 };
 
-// The lanes of `mask` (two or more) in out[], farthest entry first; returns how many. Two, the
-// common case, take one comparison.
-inline int sortFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
+// The order in which closest() pushes a node's entered lanes: farthest entry first, and among
+// equal entries the lower lane first (a stable sort of the lanes by decreasing entry). Either
+// path gives this same order, so both visit the same nodes in the same sequence.
+// placeFarToNear(node, mask, entry, out) writes the n = popcount(mask) >= 2 entered lanes'
+// (child, entry) pairs to out[0..n) in that order and returns n and the nearest child, out[n - 1]'s
+// (n counted as it goes: the baseline has no popcnt instruction).
+struct Placed {
+    std::uint32_t nearest;
+    int count;
+};
+
+// Two lanes a < b, the common case, with their entries t[]: one comparison, a first on a tie.
+// A branch, on both paths: coherent rays predict it, and the processor runs ahead to the nearest
+// child; a branch-free select puts the comparison on that path (tried, with the prefetches'
+// leaf test also branch-free: 0.6 fewer mispredictions per random ray, but primary rays 5-8%
+// slower on Zen 5 and random rays no faster; docs/performance.md, "Entered lanes ordered
+// without branches").
+inline Placed placeTwoFarToNear(const BvhNode& node, int a, int b, const float t[kBvhWidth], bvh_detail::Pending out[2]) {
+    if (t[a] >= t[b]) {
+        out[0] = {node.children[a], t[a]};
+        out[1] = {node.children[b], t[b]};
+        return {node.children[b], 2};
+    }
+    out[0] = {node.children[b], t[b]};
+    out[1] = {node.children[a], t[a]};
+    return {node.children[a], 2};
+}
+
+#if LIGHTPATH_BVH_AVX2
+
+// How many entered lanes go before lane j, for every j at once: lane i does when its entry is
+// larger, or equal and i < j. Comparing the entries with their rotation by s lanes (i = j + s mod
+// 8) for s = 1..7 covers every pair without a branch, where an insertion sort takes a
+// data-dependent branch per lane that an incoherent ray mispredicts about half the time. For a
+// rotation by s, i < j holds exactly in lanes j >= 8 - s, so those lanes count a tie (>=), the
+// others only a larger entry (>). Lanes not entered hold NaN, which compares false both ways.
+template <int s>
+[[gnu::always_inline]] inline __m256i addLanesBefore(__m256 key, __m256i rank) {
+    const __m256i rotation = _mm256_setr_epi32(s & 7, (1 + s) & 7, (2 + s) & 7, (3 + s) & 7,
+                                               (4 + s) & 7, (5 + s) & 7, (6 + s) & 7, (7 + s) & 7);
+    const __m256 other = _mm256_permutevar8x32_ps(key, rotation);
+    const __m256 larger = _mm256_cmp_ps(other, key, _CMP_GT_OQ);
+    const __m256 notSmaller = _mm256_cmp_ps(other, key, _CMP_GE_OQ);
+    constexpr int kTieLanes = (0xff << (8 - s)) & 0xff;
+    const __m256 before = _mm256_blend_ps(larger, notSmaller, kTieLanes);
+    return _mm256_sub_epi32(rank, _mm256_castps_si256(before));  // a true lane is -1
+}
+
+// Three or more lanes take no branch on their entries: the ranks come from compares
+// (addLanesBefore) and the pairs move in registers. out[n..8) get garbage, so out[] needs all
+// 8 slots. Inlined: as a call, the traversal loop's ray registers would be spilled around it.
+[[gnu::always_inline]] inline Placed placeFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
+    const int rest = mask & (mask - 1);
+    if ((rest & (rest - 1)) == 0) {
+        alignas(32) float t[kBvhWidth];
+        entry.store(t);
+        return placeTwoFarToNear(node, simd::firstLane(mask), simd::firstLane(rest), t, out);
+    }
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    const __m256i laneBit = _mm256_sllv_epi32(_mm256_set1_epi32(1), lane);
+    const __m256i entered = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(mask), laneBit), laneBit);
+    const __m256 key = _mm256_blendv_ps(_mm256_set1_ps(std::numeric_limits<float>::quiet_NaN()), entry.v,
+                                        _mm256_castsi256_ps(entered));
+    __m256i rank = _mm256_setzero_si256();
+    rank = addLanesBefore<1>(key, rank);
+    rank = addLanesBefore<2>(key, rank);
+    rank = addLanesBefore<3>(key, rank);
+    rank = addLanesBefore<4>(key, rank);
+    rank = addLanesBefore<5>(key, rank);
+    rank = addLanesBefore<6>(key, rank);
+    rank = addLanesBefore<7>(key, rank);
+    // A lane not entered counted nothing (NaN): it goes to slot 7, which is garbage when any
+    // lane is not entered (n < 8).
+    rank = _mm256_or_si256(rank, _mm256_andnot_si256(entered, _mm256_set1_epi32(kBvhWidth - 1)));
+    // The inverse permutation, slot -> lane, as eight 4-bit fields of one integer: each lane
+    // puts its index in field rank (lanes sharing slot 7 leave garbage there), an OR across
+    // the lanes gathers them, and each slot shifts its field down (vpermps reads 3 bits).
+    const __m256i field = _mm256_sllv_epi32(lane, _mm256_slli_epi32(rank, 2));
+    __m128i gathered = _mm_or_si128(_mm256_castsi256_si128(field), _mm256_extracti128_si256(field, 1));
+    gathered = _mm_or_si128(gathered, _mm_shuffle_epi32(gathered, _MM_SHUFFLE(1, 0, 3, 2)));
+    gathered = _mm_or_si128(gathered, _mm_shuffle_epi32(gathered, _MM_SHUFFLE(2, 3, 0, 1)));
+    const __m256i source = _mm256_srlv_epi32(_mm256_broadcastd_epi32(gathered), _mm256_slli_epi32(lane, 2));
+    // The nearest child, read from the ranks rather than from the gathered fields: the next
+    // node's loads wait for it, and this way is a few operations shorter.
+    const int count = __builtin_popcount(static_cast<unsigned>(mask));
+    const int last = count - 1;
+    const int nearest = simd::firstLane(
+        _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(rank, _mm256_set1_epi32(last)))));
+    const __m256 children = _mm256_load_ps(reinterpret_cast<const float*>(node.children));
+    const __m256 sortedChildren = _mm256_permutevar8x32_ps(children, source);
+    const __m256 sortedEntries = _mm256_permutevar8x32_ps(entry.v, source);
+    // Interleaved as Pending's (child, entry): unpack pairs up within each 128-bit half (slots
+    // 0 1 4 5 and 2 3 6 7), the half permutes put them back in order.
+    const __m256 low = _mm256_unpacklo_ps(sortedChildren, sortedEntries);
+    const __m256 high = _mm256_unpackhi_ps(sortedChildren, sortedEntries);
+    _mm256_storeu_ps(reinterpret_cast<float*>(out), _mm256_permute2f128_ps(low, high, 0x20));
+    _mm256_storeu_ps(reinterpret_cast<float*>(out + 4), _mm256_permute2f128_ps(low, high, 0x31));
+    return {node.children[nearest], count};
+}
+
+#else
+
+// The baseline keeps an insertion sort for three or more lanes: it runs only where AVX2 is
+// missing, and gives the same order as the AVX2 path's ranks.
+inline Placed placeFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh_detail::Pending out[kBvhWidth]) {
     alignas(32) float t[kBvhWidth];
     entry.store(t);
     const int a = simd::firstLane(mask);
     mask &= mask - 1;
     const int b = simd::firstLane(mask);
     mask &= mask - 1;
-    if (t[a] >= t[b]) {
-        out[0] = {node.children[a], t[a]};
-        out[1] = {node.children[b], t[b]};
-    } else {
-        out[0] = {node.children[b], t[b]};
-        out[1] = {node.children[a], t[a]};
-    }
+    const Placed two = placeTwoFarToNear(node, a, b, t, out);
+    if (mask == 0) return two;
     int n = 2;
     for (; mask != 0; mask &= mask - 1) {
         const int lane = simd::firstLane(mask);
@@ -114,7 +211,14 @@ inline int sortFarToNear(const BvhNode& node, int mask, const Float8& entry, bvh
         for (; i > 0 && out[i - 1].entry < p.entry; --i) out[i] = out[i - 1];
         out[i] = p;
     }
-    return n;
+    return {out[n - 1].child, n};
+}
+
+#endif
+
+// The same for entries in memory (tests): entry[lane] for each lane of `mask` (two or more).
+inline Placed placeFarToNear(const BvhNode& node, int mask, const float entry[kBvhWidth], bvh_detail::Pending out[kBvhWidth]) {
+    return placeFarToNear(node, mask, Float8::load(entry), out);
 }
 
 // Asks for a pushed node's four cache lines ahead of its visit, so that incoherent rays, whose
@@ -125,13 +229,36 @@ inline void prefetchNode(const BvhNode* nodes, std::uint32_t child) {
     for (std::size_t line = 0; line < sizeof(BvhNode); line += 64) __builtin_prefetch(bytes + line);
 }
 
+// Pushes the entered lanes of `mask` (two or more) farthest first, asks for the pushed nodes'
+// lines, and returns the nearest child, visited next. The AVX2 path places them on the stack
+// in place (all eight slots written); the baseline sorts in a local array and copies, as before
+// the AVX2 ranks: in place, its insertion sort took 4-5% more instructions per ray.
+[[gnu::always_inline]] inline std::uint32_t pushFarToNear(const BvhNode* nodes, const BvhNode& node, int mask, const Float8& entry,
+                                                          bvh_detail::Pending* stack, int& top) {
+#if LIGHTPATH_BVH_AVX2
+    const Placed placed = placeFarToNear(node, mask, entry, stack + top);
+    const int pushed = placed.count - 1;
+    for (int i = 0; i < pushed; ++i) prefetchNode(nodes, stack[top + i].child);
+    top += pushed;
+#else
+    bvh_detail::Pending sorted[kBvhWidth];
+    const Placed placed = placeFarToNear(node, mask, entry, sorted);
+    for (int i = 0; i < placed.count - 1; ++i) {
+        prefetchNode(nodes, sorted[i].child);
+        stack[top++] = sorted[i];
+    }
+#endif
+    return placed.nearest;
+}
+
 // All children are tested at their parent; those entered are pushed farthest first with their
 // entry distances, the nearest is visited at once, and a popped child is skipped when a hit
 // found since is nearer than its entry.
 template <typename Test>
 void closest(const Bvh& bvh, const Ray& ray, const float& tLimit, Test& test) {
     const RaySetup setup(ray);
-    bvh_detail::Pending stack[bvh_detail::kStackSize];
+    // pushFarToNear may write a node's eight slots above the top, whatever it pushes.
+    bvh_detail::Pending stack[bvh_detail::kStackSize + kBvhWidth];
     int top = 0;
     std::uint32_t current = bvh.root();
     const BvhNode* nodes = bvh.nodes().data();
@@ -145,13 +272,7 @@ void closest(const Bvh& bvh, const Ray& ray, const float& tLimit, Test& test) {
                     current = node.children[simd::firstLane(mask)];
                     continue;
                 }
-                bvh_detail::Pending sorted[kBvhWidth];
-                const int n = sortFarToNear(node, mask, entry, sorted);
-                for (int i = 0; i < n - 1; ++i) {
-                    prefetchNode(nodes, sorted[i].child);
-                    stack[top++] = sorted[i];
-                }
-                current = sorted[n - 1].child;
+                current = pushFarToNear(nodes, node, mask, entry, stack, top);
                 continue;
             }
         } else {
