@@ -7,6 +7,19 @@
 
 namespace lightpath {
 
+// e / (max_i |p_i| + 2 t) of offsetRayOrigin: 2^-18, 64 units of float roundoff, about ten times
+// the gamma_5 of pbrt-v4's bounds for these points.
+inline constexpr float kPointErrorScale = 0x1p-18f;
+
+namespace detail {
+// One float further along the normal's sign, so rounding of p + offset cannot undo the move.
+inline float roundAway(float moved, float normal) {
+    if (normal > 0.0f) return nextFloatUp(moved);
+    if (normal < 0.0f) return nextFloatDown(moved);
+    return moved;
+}
+}  // namespace detail
+
 // Moves a computed hit point off its surface along the unit normal n (pointing to the side the
 // new ray leaves into), so a secondary ray cannot hit the surface it starts on.
 //
@@ -22,21 +35,6 @@ namespace lightpath {
 // both the point's distance from the origin and the ray's length (a huge floor through the origin
 // seen from close by) carries its vertices' error, which this bound does not see.
 // Inline: it runs for the first shadow ray on each side of every shading point.
-inline Vec3 offsetRayOrigin(const Vec3& point, const Vec3& n, float travelled);
-
-// e / (max_i |p_i| + 2 t) of offsetRayOrigin: 2^-18, 64 units of float roundoff, about ten times
-// the gamma_5 of pbrt-v4's bounds for these points.
-inline constexpr float kPointErrorScale = 0x1p-18f;
-
-namespace detail {
-// One float further along the normal's sign, so rounding of p + offset cannot undo the move.
-inline float roundAway(float moved, float normal) {
-    if (normal > 0.0f) return nextFloatUp(moved);
-    if (normal < 0.0f) return nextFloatDown(moved);
-    return moved;
-}
-}  // namespace detail
-
 inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n, float travelled) {
     const Vec3 magnitude = glm::abs(p);
     const float t = std::isfinite(travelled) ? std::fabs(travelled) : 0.0f;
