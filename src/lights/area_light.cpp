@@ -55,6 +55,7 @@ AreaLightSource::AreaLightSource(const PathEvent& event, ColorParameter emission
             solidAngle_ = shape;
     }
     sampleable_ = area_ >= kMinSampledEmitterArea;
+    pdfArea_ = 1.0f / area_;
 }
 
 LIGHTPATH_HOT_PATH
@@ -111,7 +112,7 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
     const Vec3 toLight = s.point - receiver;
     const float distance2 = glm::dot(toLight, toLight);
     s.distance = std::sqrt(distance2);
-    if (byArea) s.pdf = areaToSolidAngle(1.0f / area_, distance2, s.distance, glm::dot(s.normal, toLight));
+    if (byArea) s.pdf = areaToSolidAngle(pdfArea_, distance2, s.distance, glm::dot(s.normal, toLight));
     if (!(s.distance > 0.0f)) {
         s.pdf = 0.0f;
         return s;
@@ -127,7 +128,7 @@ float AreaLightSource::pdf(const Vec3& receiver, const Vec3& point, const Vec3& 
     if (!sampleable_) return 0.0f;
     float byAngle = 0.0f;
     if (solidAngle_ && solidAngle_->ops->pdfSolidAngle(*solidAngle_, receiver, byAngle)) return byAngle;
-    return areaToSolidAngle(1.0f / area_, receiver, point, normal);
+    return areaToSolidAngle(pdfArea_, receiver, point, normal);
 }
 
 bool AreaLightSource::samplesByArea(const Vec3& receiver) const {
@@ -151,7 +152,7 @@ EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     e.ray.direction = Frame(normal).toWorld(local);
     e.normal = normal;
     e.radiance = emissionAt(p.uv);
-    e.pdfPosition = 1.0f / area_;
+    e.pdfPosition = pdfArea_;
     e.pdfDirection = cosineHemispherePdf(local.z) * (spheres_ ? 0.5f : 1.0f);
     return e;
 }

@@ -31,7 +31,7 @@ public:
     float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const override;
     bool samplesByArea(const Vec3& receiver) const override;
     EmittedRay sampleEmission(Vec2 uPoint, Vec2 uDirection) const override;
-    float pdfEmissionPosition() const override { return 1.0f / area_; }
+    float pdfEmissionPosition() const override { return pdfArea_; }
     float pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const override;
     EmittedRay emitAlong(const EmittedRay& from, const Vec3& direction) const override;
     Rgb radiance(const SurfaceHit& hit, const Vec3& towardViewer) const override;
@@ -64,6 +64,7 @@ private:
     const SceneGeometry& geometry_;
     std::vector<Shape> shapes_;
     float area_ = 0.0f;
+    float pdfArea_ = 0.0f;  // 1 / area_: the density of a point chosen by area, per unit area
     bool sampleable_ = false;
     bool spheres_ = false;          // its shapes are closed (spheres): they emit on both sides
     // The light's one shape when its kind samples by solid angle (a sphere: its visible cone).
