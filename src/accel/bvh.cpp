@@ -27,6 +27,12 @@ float blocks(std::size_t count) {
 // Below this depth splits follow the SAH; deeper (only in pathological inputs) they halve the
 // range, so the depth stays within what bvh_detail::kStackSize allows.
 constexpr int kSahDepthLimit = 64;
+// A range that fits one block is still split when its two sides' areas sum to less than this
+// share of its own: two flat leaves (a room's floor and a wall) then take the rays one L-shaped
+// leaf's box would. The rest of 1 is the cost of the step to the extra leaf against a leaf's
+// test: the two leaves are lanes of a wide node tested anyway, or stay one leaf where the collapse
+// has no lanes for them (Collapser::oneBlock; docs/performance.md, Small leaves split).
+constexpr float kSmallSplitAreaShare = 0.9f;
 // A subtree at least this large goes to the shared queue, where an idle thread may take it;
 // smaller ones are built depth-first by the thread that split their parent.
 constexpr std::size_t kParallelGrain = 4096;
@@ -175,6 +181,34 @@ Split findSplit(const Bins& bins, std::size_t count, const Binning& binning) {
             const float cost = left.nonEmptyHalfArea() * blocks(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
             if (cost < best.cost) best = {axis, b, cost};
         }
+    }
+    return best;
+}
+
+// The best SAH split of a range that fits one block, over every way to cut its items in two (at
+// most seven for four): each side is one block, so a cut costs its two boxes' half areas. The
+// boxes of all subsets are built up from smaller ones, a grow each.
+struct SmallSplit {
+    unsigned left = 0;  // bit i: item i goes left; 0: no split
+    float cost = std::numeric_limits<float>::infinity();
+};
+
+SmallSplit findSmallSplit(const Item* items, std::size_t count) {
+    constexpr unsigned kSubsets = 1u << kBvhLeafSize;
+    std::array<Box, kSubsets> boxes;  // boxes[0] is empty
+    std::array<float, kSubsets> area;
+    const unsigned all = (1u << count) - 1u;
+    for (unsigned m = 1; m <= all; ++m) {
+        const int item = std::countr_zero(m);
+        boxes[m] = boxes[m & (m - 1u)];
+        boxes[m].grow(items[item].corner(), items[item].high());
+        area[m] = boxes[m].nonEmptyHalfArea();
+    }
+    // Each cut once (the last item stays right); ties keep the first mask, so the build is deterministic.
+    SmallSplit best;
+    for (unsigned m = 1; m < (1u << (count - 1)); ++m) {
+        const float cost = area[m] + area[all ^ m];
+        if (cost < best.cost) best = {m, cost};
     }
     return best;
 }
@@ -370,13 +404,17 @@ private:
         }
         node.count = 0;
         const std::size_t count = t.end - t.begin;
-        // A range that fits one block is a leaf: splitting it would cost a node visit (1) plus
-        // a non-negative area ratio, never less than the one block it costs as a leaf. Larger
-        // ranges are always split (a leaf holds one block), so no leaf cost is weighed.
+        // Larger ranges are always split (a leaf holds one block); one that fits a block is a
+        // leaf unless its best split's two sides are much smaller than it.
+        SmallSplit small;
         if (count <= kBvhLeafSize) {
-            node.first = static_cast<std::uint32_t>(t.begin);
-            node.count = static_cast<std::uint32_t>(count);
-            return false;
+            const float limit = kSmallSplitAreaShare * t.box.nonEmptyHalfArea();
+            if (count > 1 && t.depth < kSahDepthLimit) small = findSmallSplit(&items_[t.begin], count);
+            if (!(small.cost < limit)) {
+                node.first = static_cast<std::uint32_t>(t.begin);
+                node.count = static_cast<std::uint32_t>(count);
+                return false;
+            }
         }
         if (block.next == block.end) {
             block.next = nextNode_.fetch_add(kNodeBlock, std::memory_order_relaxed);
@@ -387,6 +425,17 @@ private:
         node.first = first;
         children[0] = {t.begin, 0, first, t.depth + 1, {}, {}};
         children[1] = {0, t.end, first + 1, t.depth + 1, {}, {}};
+        Item* const range = &items_[t.begin];
+        if (small.left != 0) {
+            // The left items first, each side in its order.
+            std::array<Item, kBvhLeafSize> sides;
+            std::size_t left = 0, right = count;
+            for (std::size_t i = 0; i < count; ++i) (small.left >> i & 1u ? sides[left++] : sides[--right]) = range[i];
+            std::reverse(sides.begin() + static_cast<std::ptrdiff_t>(left), sides.begin() + static_cast<std::ptrdiff_t>(count));
+            std::copy(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(count), range);
+            splitAt(t.begin + left, children);
+            return true;
+        }
 
         alignas(16) float extent[4];
         (t.centroids.hi - t.centroids.lo).store(extent);
@@ -416,12 +465,16 @@ private:
         }
         // Coincident centroids, or too deep: halve the range along the widest axis by centroid
         // (ties in id order, so the build is deterministic).
-        const std::size_t middle = t.begin + count / 2;
-        Item* const range = &items_[t.begin];
         std::nth_element(range, range + count / 2, range + count, [&](const Item& a, const Item& b) {
             const float ca = a.lo[widest] + a.hi[widest], cb = b.lo[widest] + b.hi[widest];
             return ca < cb || (ca == cb && a.id() < b.id());
         });
+        splitAt(t.begin + count / 2, children);
+        return true;
+    }
+
+    // The children's ranges end and begin at `middle`; their boxes from their items.
+    void splitAt(std::size_t middle, Task (&children)[2]) const {
         children[0].end = children[1].begin = middle;
         for (Task& child : children) {
             for (std::size_t i = child.begin; i < child.end; ++i) {
@@ -429,7 +482,6 @@ private:
                 child.centroids.grow(items_[i].doubledCentroid());
             }
         }
-        return true;
     }
 
     // In place, swapping from both ends in the order std::partition takes for bidirectional
@@ -530,7 +582,7 @@ public:
     // How many wide nodes and leaf blocks the subtree under binary node `index` becomes.
     std::array<std::uint32_t, 2> size(std::uint32_t index) const {
         const BinaryNode& b = binary_.node(index);
-        if (b.count > 0) return {0, 1};
+        if (oneBlock(index).count > 0) return {0, 1};
         std::array<std::uint32_t, kBvhWidth> open;
         const int n = lanes(b, open);
         std::array<std::uint32_t, 2> total{1, 0};
@@ -546,11 +598,11 @@ public:
     // reference.
     std::uint32_t collapse(std::uint32_t index, WideCursor& at) const {
         const BinaryNode& b = binary_.node(index);
-        if (b.count > 0) {
+        if (const ItemRange leaf = oneBlock(index); leaf.count > 0) {
             const std::uint32_t block = at.block++;
             for (std::uint32_t i = 0; i < kBvhLeafSize; ++i)
-                at.ids[kBvhLeafSize * block + i] = i < b.count ? binary_.items()[b.first + i].id() : kBvhEmptySlot;
-            return BvhChild::leaf(block, b.count);
+                at.ids[kBvhLeafSize * block + i] = i < leaf.count ? binary_.items()[leaf.first + i].id() : kBvhEmptySlot;
+            return BvhChild::leaf(block, leaf.count);
         }
         const std::uint32_t wide = at.node++;
         std::array<std::uint32_t, kBvhWidth> open;
@@ -574,6 +626,26 @@ public:
     }
 
 private:
+    struct ItemRange {
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;  // 0: more than one block
+    };
+    // The items under binary node `index` when they fit one block: a leaf's, or a small split's
+    // (findSmallSplit) that reached here unopened. Its two leaves pay only as lanes
+    // of a wide node tested anyway; as a wide node of their own they would cost a node test more
+    // than the one leaf. A subtree's items are adjacent (the partition is in place), and a split
+    // of one block's items is at most kBvhLeafSize - 1 levels deep.
+    ItemRange oneBlock(std::uint32_t index, std::uint32_t levels = kBvhLeafSize - 1) const {
+        const BinaryNode& b = binary_.node(index);
+        if (b.count > 0) return {b.first, b.count};
+        if (levels == 0) return {};
+        const ItemRange left = oneBlock(b.first, levels - 1);
+        if (left.count == 0) return {};
+        const ItemRange right = oneBlock(b.first + 1, levels - 1);
+        if (right.count == 0 || left.count + right.count > kBvhLeafSize) return {};
+        return {left.first, left.count + right.count};
+    }
+
     float interiorArea(std::uint32_t index) const {
         const BinaryNode& c = binary_.node(index);
         return c.count == 0 ? c.bounds().halfArea() : -1.0f;
@@ -606,7 +678,7 @@ Bvh::Bvh(std::size_t count, const PrimitiveSource& source, unsigned threads) : p
         binary.build(source, threads);
         const Collapser collapser(binary);
         const BinaryNode& top = binary.node(0);
-        if (top.count > 0) {
+        if (count <= kBvhLeafSize) {  // one leaf, even where the SAH split it (Collapser::oneBlock)
             ids_.resize(kBvhLeafSize);
             WideCursor at{nullptr, ids_.data(), 0, 0};
             root_ = collapser.collapse(0, at);

@@ -263,6 +263,56 @@ TEST_CASE("BVH layout: 8-wide nodes, every primitive in exactly one leaf, boxes 
     CHECK(usedLanes * 2 > lanes);
 }
 
+TEST_CASE("a block's worth of primitives is two leaves only where they are much smaller: a floor and a wall") {
+    // Boxes of a unit quad's two triangles (each spans the quad). Half areas by hand: a unit
+    // quad's box 1, the unit cube 3, a 2 x 1 strip 2. The builder splits a block when its two
+    // sides sum to less than 0.9 of the whole (the step to a second leaf costs the rest), and keeps
+    // the two leaves only as lanes of a wide node that is there anyway.
+    const auto quad = [](Vec3 lo, Vec3 hi, std::uint32_t id) {
+        return std::vector<BvhPrimitive>{{{lo, hi}, id}, {{lo, hi}, id + 1}};
+    };
+    const auto join = [](std::vector<BvhPrimitive> a, const std::vector<BvhPrimitive>& b) {
+        a.insert(a.end(), b.begin(), b.end());
+        return a;
+    };
+    const auto floor = quad({0, 0, 0}, {1, 0, 1}, 0);
+    const auto wall = quad({0, 0, 0}, {0, 1, 1}, 2);
+    const auto nextToFloor = quad({1, 0, 0}, {2, 0, 1}, 2);
+    const auto farAway = quad({10, 0, 0}, {11, 0, 1}, 4);
+    // The root's leaves, each as its sorted ids.
+    const auto leavesOf = [](const Bvh& bvh) {
+        std::vector<std::uint32_t> children{bvh.root()};
+        if (!BvhChild::isLeaf(bvh.root())) {
+            children.clear();
+            for (const std::uint32_t child : bvh.nodes()[bvh.root()].children)
+                if (child != BvhChild::kEmpty) children.push_back(child);
+        }
+        std::vector<std::vector<std::uint32_t>> leaves;
+        for (const std::uint32_t child : children) {
+            REQUIRE(BvhChild::isLeaf(child));
+            std::vector<std::uint32_t> ids;
+            for (std::uint32_t i = 0; i < BvhChild::count(child); ++i) ids.push_back(bvh.slotIds()[BvhChild::firstSlot(child) + i]);
+            std::sort(ids.begin(), ids.end());
+            leaves.push_back(ids);
+        }
+        std::sort(leaves.begin(), leaves.end());
+        return leaves;
+    };
+    using Leaves = std::vector<std::vector<std::uint32_t>>;
+    SUBCASE("a floor and a wall beside other geometry: 1 + 1 < 0.9 x 3, two flat leaves, not one cube") {
+        CHECK(leavesOf(Bvh(join(join(floor, wall), farAway))) == Leaves{{0, 1}, {2, 3}, {4, 5}});
+    }
+    SUBCASE("a flat 2 x 1 strip: 1 + 1 is not below 0.9 x 2, one leaf") {
+        CHECK(leavesOf(Bvh(join(join(floor, nextToFloor), farAway))) == Leaves{{0, 1, 2, 3}, {4, 5}});
+    }
+    SUBCASE("the floor and the wall alone: one leaf, as a node of two leaves would cost a node test more") {
+        const Bvh bvh(join(floor, wall));
+        CHECK(BvhChild::isLeaf(bvh.root()));
+        CHECK(leavesOf(bvh) == Leaves{{0, 1, 2, 3}});
+        CHECK(bvh.stats().nodes == 0);
+    }
+}
+
 TEST_CASE("a BVH traverses on the SIMD path active when it was built") {
     const std::vector<BvhPrimitive> primitives = soupPrimitives(test::randomSoup(6, 100, 0));
     onEverySimdPath([&] { CHECK(Bvh(primitives).simdPath() == simd::activePath()); });
