@@ -427,13 +427,14 @@ private:
         children[1] = {0, t.end, first + 1, t.depth + 1, {}, {}};
         Item* const range = &items_[t.begin];
         if (small.left != 0) {
-            // The left items first, each side in its order.
+            // The left items first, then the right ones, each side in its order.
             std::array<Item, kBvhLeafSize> sides;
-            std::size_t left = 0, right = count;
-            for (std::size_t i = 0; i < count; ++i) (small.left >> i & 1u ? sides[left++] : sides[--right]) = range[i];
-            std::reverse(sides.begin() + static_cast<std::ptrdiff_t>(left), sides.begin() + static_cast<std::ptrdiff_t>(count));
+            std::size_t placed = 0;
+            for (const unsigned goesLeft : {1u, 0u})
+                for (std::size_t i = 0; i < count; ++i)
+                    if ((small.left >> i & 1u) == goesLeft) sides[placed++] = range[i];
             std::copy(sides.begin(), sides.begin() + static_cast<std::ptrdiff_t>(count), range);
-            splitAt(t.begin + left, children);
+            splitAt(t.begin + static_cast<std::size_t>(std::popcount(small.left)), children);
             return true;
         }
 
