@@ -88,7 +88,7 @@ int walkFromLight(Sampler& sampler, Vertices& v, PathState& path) {
                                                               glm::normalize(hit->point - v[0].point));
         }
         BdptVertex& here = v[count];
-        here = surfaceVertex(*hit, ray, beta, v[count - 1], pdf, delta, ctx, TransportMode::Importance);
+        setSurfaceVertex(here, *hit, ray, beta, v[count - 1], pdf, delta, ctx, TransportMode::Importance);
         if (count >= 2) linkThrough(v[count - 2], v[count - 1], here);
         ++count;
         if (count > ctx.maxDepth) break;  // a vertex deeper could not be joined within maxDepth
@@ -134,20 +134,21 @@ PathEvent eventOfLight(const BdptVertex& origin) {
 // A shadow ray's answer, cast at most once per join and only when a contribution needs it.
 class Visibility {
 public:
-    // `toNormal`: the unit normal of the surface `to` lies on; zero for the camera and a point light.
-    Visibility(const SurfaceHit& from, const Vec3& to, const Vec3& toNormal) : from_(from), to_(to), toNormal_(toNormal) {}
+    // `from`: the offset origins of the vertex the ray leaves, shared by all its joins and its
+    // bounce. `toNormal`: the unit normal of the surface `to` lies on; zero for the camera and a
+    // point light.
+    Visibility(RayOrigins& from, const Vec3& to, const Vec3& toNormal) : from_(from), to_(to), toNormal_(toNormal) {}
     bool operator()(PathState& path) {
         if (!known_) {
             ++path.counters.shadow;
-            const RenderContext& ctx = path.context;
-            visible_ = !ctx.geometry.occluded(spawnShadowRay(from_, to_, toNormal_, ctx.geometry.numerics()));
+            visible_ = !path.context.geometry.occluded(spawnShadowRay(from_, to_, toNormal_));
             known_ = true;
         }
         return visible_;
     }
 
 private:
-    const SurfaceHit& from_;
+    RayOrigins& from_;
     Vec3 to_, toNormal_;
     bool known_ = false, visible_ = false;
 };
@@ -196,7 +197,8 @@ void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& 
     const float cameraTerm = importance * glm::dot(-w, ctx.camera.forward()) / distance2;
     const PathEvent lightEvent = eventOfLight(light[0]);
     const BdptVertex eye[1] = {cameraVertex(ctx.camera.eye())};
-    Visibility visible(sp.hit, ctx.camera.eye(), kNoSurfaceNormal);
+    RayOrigins origins(sp.hit, ctx.geometry.numerics());
+    Visibility visible(origins, ctx.camera.eye(), kNoSurfaceNormal);
     const std::size_t before = path.size();
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
         if (!y.scattersSmoothly(lobe)) continue;
@@ -235,8 +237,8 @@ void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& 
 
 // s = 1: light sampling at eye vertex z_t-1, through every delta light and one area light chosen
 // by power, as the path tracer's next-event estimation does.
-void joinToLightSample(const Vertices& eye, int t, const Light& light, float choice, Vec2 uPoint, PathState& path,
-                       const Weights& weights) {
+void joinToLightSample(const Vertices& eye, int t, RayOrigins& origins, const Light& light, float choice, Vec2 uPoint,
+                       PathState& path, const Weights& weights) {
     const RenderContext& ctx = path.context;
     const BdptVertex& z = eye[t - 1];
     const ShadingPoint& sp = *z.surface;
@@ -249,7 +251,7 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
     BdptVertex y[1] = {lightVertex(light, sample.point, sample.normal, pdfPosition, pdfEmission)};
     y[0].pdfFwd = choice * pdfPosition;
     const PathEvent lightEvent = eventOfLight(y[0]);
-    Visibility visible(sp.hit, sample.point, sample.normal);
+    Visibility visible(origins, sample.point, sample.normal);
     for (int lobe = 0; lobe < int(sp.bsdf.lobes().size()); ++lobe) {
         if (!z.scattersSmoothly(lobe) || !path.wants(sp.eventOf(lobe), lightEvent)) continue;
         const Rgb f = sp.bsdf.eval(lobe, sp.wo, sample.wi);
@@ -269,7 +271,8 @@ void joinToLightSample(const Vertices& eye, int t, const Light& light, float cho
 
 // s, t >= 2: light vertex y_s-1 joined to eye vertex z_t-1, one contribution per pair of their
 // smooth lobes (each pair is a different path: E..D D..L and E..G D..L land in different AOVs).
-void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, PathState& path, const Weights& weights) {
+void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, RayOrigins& origins, PathState& path,
+                  const Weights& weights) {
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[s - 1];
     const BdptVertex& z = eye[t - 1];
@@ -281,7 +284,7 @@ void joinVertices(const Vertices& light, int s, const Vertices& eye, int t, Path
     if (!(distance2 > 0.0f)) return;
     const Vec3 w = d / std::sqrt(distance2);  // from z to y
     const PathEvent lightEvent = eventOfLight(light[0]);
-    Visibility visible(ez.hit, y.point, y.normal);
+    Visibility visible(origins, y.point, y.normal);
     const std::size_t before = path.size();
     for (int eyeLobe = 0; eyeLobe < int(ez.bsdf.lobes().size()); ++eyeLobe) {
         if (!z.scattersSmoothly(eyeLobe)) continue;
@@ -356,7 +359,7 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
             break;
         }
         BdptVertex& z = eye[t - 1];
-        z = surfaceVertex(*hit, ray, beta, eye[t - 2], pdf, delta, ctx, TransportMode::Radiance);
+        setSurfaceVertex(z, *hit, ray, beta, eye[t - 2], pdf, delta, ctx, TransportMode::Radiance);
         if (t >= 3) linkThrough(eye[t - 3], eye[t - 2], z);
 
         // s = 0: an emitter found by the eye's walk.
@@ -381,15 +384,17 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
         // Joins at z scatter once more; the path may have at most maxDepth scattering events.
         if (t - 1 > ctx.maxDepth) break;
         const ShadingPoint& sp = *z.surface;
+        // One set of offset origins for z's shadow rays and its bounce (as the path tracer's).
+        RayOrigins origins(sp.hit, ctx.geometry.numerics());
         if (z.smoothLobes != 0) {
             const LightChoiceSample u = drawLightChoice(sampler, ctx.lights);
-            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, *l, 1.0f, u.uPoint, path, weights);
+            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, origins, *l, 1.0f, u.uPoint, path, weights);
             const ChosenLight chosen = ctx.lights.chooseAreaLight(u.uChoice);
             if (chosen.light != nullptr)
-                joinToLightSample(eye, t, *chosen.light, chosen.probability, u.uPoint, path, weights);
+                joinToLightSample(eye, t, origins, *chosen.light, chosen.probability, u.uPoint, path, weights);
             const int longestLight = std::min(lightCount, ctx.maxDepth + 2 - t);
             const std::uint64_t shadowBefore = path.counters.shadow;
-            for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, path, weights);
+            for (int s = 2; s <= longestLight; ++s) joinVertices(light, s, eye, t, origins, path, weights);
             joinRays += path.counters.shadow - shadowBefore;
         }
 
@@ -409,7 +414,7 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
         ++(transmitted ? path.counters.refraction : path.counters.reflection);
         pdf = step->pdf;
         delta = step->delta;
-        ray = spawnRay(sp.hit, step->wi, ctx.geometry.numerics());
+        ray = spawnRay(origins, step->wi);
     }
     popTo(path, pathStart);
     if (weights.pilot != nullptr) {

@@ -65,9 +65,9 @@ float lightSamplingAreaDensity(const Light& light, const Vec3& receiver, const V
                             : 0.0f;
 }
 
-BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
-                         float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode) {
-    BdptVertex v;
+void setSurfaceVertex(BdptVertex& v, const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
+                      float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode) {
+    v = BdptVertex{};  // every other field as a new vertex has it (no shading point to copy)
     v.kind = VertexKind::Surface;
     v.point = hit.point;
     v.normal = hit.normal;
@@ -77,7 +77,6 @@ BdptVertex surfaceVertex(const SurfaceHit& hit, const Ray& ray, const Rgb& beta,
     for (int l = 0; l < int(bsdf.lobes().size()); ++l)
         if (!bsdf.lobe(l).delta() && bsdf.has(l)) v.smoothLobes |= 1u << l;
     v.pdfFwd = delta ? 1.0f : toAreaDensity(pdfSolidAngle, previous, v);
-    return v;
 }
 
 void markEmitter(BdptVertex& z, const Light& emitter, const BdptVertex& previous) {

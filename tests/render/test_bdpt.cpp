@@ -486,8 +486,8 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
                 bool delta = false;
                 for (int i = 1; i < s; ++i) {
                     const Vec3 w = glm::normalize(points[i] - points[i - 1]);
-                    lightPath[i] = surfaceVertex(hits[i], Ray{points[i - 1], w}, Rgb{1.0f}, lightPath[i - 1], pdf, delta, ctx,
-                                                 TransportMode::Importance);
+                    setSurfaceVertex(lightPath[i], hits[i], Ray{points[i - 1], w}, Rgb{1.0f}, lightPath[i - 1], pdf, delta,
+                                     ctx, TransportMode::Importance);
                     if (i >= 2) linkThrough(lightPath[i - 2], lightPath[i - 1], lightPath[i]);
                     if (i + 1 < s) {
                         const ScatterStep step =
@@ -507,8 +507,8 @@ TEST_CASE("bdpt: the MIS weights of all strategies of a path sum to 1 over rando
                 const int i = n - 1 - j;
                 const Vec3 w = glm::normalize(points[i] - points[i + 1]);
                 const SurfaceHit hit = i == 0 ? SurfaceHit{1.0f, points[0], e.normal, e.normal, 0} : hits[i];
-                eyePath[j] = surfaceVertex(hit, Ray{points[i + 1], w}, Rgb{1.0f}, eyePath[j - 1], pdf, delta, ctx,
-                                           TransportMode::Radiance);
+                setSurfaceVertex(eyePath[j], hit, Ray{points[i + 1], w}, Rgb{1.0f}, eyePath[j - 1], pdf, delta, ctx,
+                                 TransportMode::Radiance);
                 if (j >= 2) linkThrough(eyePath[j - 2], eyePath[j - 1], eyePath[j]);
                 if (j + 1 < t) {
                     const ScatterStep step = prescribedStep(*eyePath[j].surface, lobes[i], glm::normalize(points[i - 1] - points[i]));
