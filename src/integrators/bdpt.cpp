@@ -388,7 +388,8 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
         RayOrigins origins(sp.hit, ctx.geometry.numerics());
         if (z.smoothLobes != 0) {
             const LightChoiceSample u = drawLightChoice(sampler, ctx.lights);
-            for (const Light* l : ctx.lights.deltaLights()) joinToLightSample(eye, t, origins, *l, 1.0f, u.uPoint, path, weights);
+            for (const Light* l : ctx.lights.deltaLights())
+                joinToLightSample(eye, t, origins, *l, 1.0f, u.uPoint, path, weights);
             const ChosenLight chosen = ctx.lights.chooseAreaLight(u.uChoice);
             if (chosen.light != nullptr)
                 joinToLightSample(eye, t, origins, *chosen.light, chosen.probability, u.uPoint, path, weights);

@@ -120,7 +120,7 @@ float lightSamplingAreaDensity(const Light& light, const Vec3& receiver, const V
 // Makes `v` the vertex where a walk's `ray`, leaving `previous` with solid-angle density
 // `pdfSolidAngle` (through a delta lobe when `delta`), hits `hit`. When `previous` is a surface
 // vertex, linkThrough then sets the density from the points. In place: a vertex returned and
-// assigned copied its shading point twice (about 1% of a bdpt render's instructions).
+// assigned copied its shading point twice (2% of a bdpt render's instructions, more of its time).
 void setSurfaceVertex(BdptVertex& v, const SurfaceHit& hit, const Ray& ray, const Rgb& beta, const BdptVertex& previous,
                       float pdfSolidAngle, bool delta, const RenderContext& context, TransportMode mode);
 // Once a walk has gone `before` -> `at` -> `here` through `at`'s lobe: here's area density as the
