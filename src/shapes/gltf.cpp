@@ -17,11 +17,41 @@
 namespace lightpath {
 namespace {
 
-// glTF gives luminous intensity (candela) and illuminance (lux); lightpath's lights are
-// radiometric and colour is RGB, so the number is read as radiant intensity (W/sr) or irradiance
-// (W/m^2) unchanged: the ratio of the lights of a file is kept, and no 683 lm/W factor is applied.
+// What a file's light intensities mean: Blender's glTF exporter writes them in one of three
+// "Lighting Modes" (io_scene_gltf2, gather_lights), and the file does not say which.
+//   standard  candela (point, spot) and lux (directional), as KHR_lights_punctual specifies,
+//             converted by Blender at 683 lm/W (the candela's definition, at 540 THz): a lamp of
+//             P watts is P / (4 pi) * 683 cd, a sun of E W/m^2 is 683 E lux. Blender's default.
+//   unitless  the same without the 683: W/sr and W/m^2.
+//   raw       Blender's own strengths: a lamp's watts, a sun's W/m^2.
+// Emission (emissiveFactor times KHR_materials_emissive_strength) is radiance as written in every
+// mode: Blender exports its emission strength unconverted.
+enum class LightingMode { standard, unitless, raw };
+constexpr float kLumensPerWatt = 683.0f;
+
+LightingMode lightingModeOf(const ParameterValues& values) {
+    const std::string mode = values.text("lighting");
+    if (mode == "standard") return LightingMode::standard;
+    if (mode == "unitless") return LightingMode::unitless;
+    if (mode == "raw") return LightingMode::raw;
+    values.fail("lighting", "expected \"standard\", \"unitless\" or \"raw\" (Blender's glTF Lighting Mode), got \"" +
+                                mode + "\"");
+}
+
+// The file's number as lightpath's: radiant intensity (W/sr) of a point or spot light,
+// irradiance (W/m^2) of a directional one.
+Rgb radiometric(const GltfLight& light, LightingMode mode) {
+    switch (mode) {
+        case LightingMode::standard: return light.intensity / kLumensPerWatt;
+        case LightingMode::unitless: return light.intensity;
+        case LightingMode::raw:
+            return light.kind == GltfLightKind::directional ? light.intensity : light.intensity / (4.0f * kPi);
+    }
+    return light.intensity;
+}
+
 // A "point" light's radiant intensity is pi times its `intensity` (lights/point_light.h).
-void addLight(const GltfLight& light, const MeshPlacement& placement, const ParameterValues& values,
+void addLight(const GltfLight& light, LightingMode mode, const MeshPlacement& placement, const ParameterValues& values,
               SceneBuilder& scene) {
     const char* typeName = light.kind == GltfLightKind::point ? "point"
                            : light.kind == GltfLightKind::spot ? "spot"
@@ -34,7 +64,7 @@ void addLight(const GltfLight& light, const MeshPlacement& placement, const Para
     }
     ParameterValues lightValues(type->schema);
     lightValues.set("name", light.label);
-    const Vec3 intensity = Vec3(light.intensity.r, light.intensity.g, light.intensity.b);
+    const Vec3 intensity = radiometric(light, mode);
     if (light.kind == GltfLightKind::directional) {
         lightValues.set("direction", placement.direction(light.direction));
         lightValues.set("irradiance", intensity);
@@ -117,8 +147,9 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
         if (!model.uvs.empty() && model.uvs[i].given) scene.setTriangleUvs(model.uvs[i]);
         if (!model.tangents.empty()) scene.setTriangleTangents(placement.tangents(model.tangents[i]));
     }
+    const LightingMode lighting = lightingModeOf(values);
     if (values.boolean("lights"))
-        for (const GltfLight& light : model.lights) addLight(light, placement, values, scene);
+        for (const GltfLight& light : model.lights) addLight(light, lighting, placement, values, scene);
     addCamera(model, placement, values, scene);
 }
 
@@ -137,6 +168,10 @@ LIGHTPATH_REGISTER_SHAPE(lightpath::ShapeType{
        "which of the file's cameras (by its label) becomes the scene's camera when the scene has no `[camera]`; "
        "default: the first"},
       {"lights", lightpath::ParameterType::Boolean, "", "true", {}, "whether the file's KHR_lights_punctual lights are added"},
+      {"lighting", lightpath::ParameterType::Name, "", "standard", {},
+       "what the lights' intensities mean, as Blender's glTF exporter's Lighting Mode: `standard` (candela and lux "
+       "at 683 lm/W: W/sr = cd / 683, W/m² = lux / 683; Blender's default), `unitless` (W/sr and W/m²) or `raw` "
+       "(a lamp's watts, W/sr = W / 4π; a sun's W/m²)"},
       {"scale", lightpath::ParameterType::PerAxis, "", "1", lightpath::kPositive,
        "applied first, about the file's origin: one factor for every axis or one per axis"},
       {"rotate_y", lightpath::ParameterType::Number, "degrees", "0", {}, "then a turn about the y axis (x towards −z)"},

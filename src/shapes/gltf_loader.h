@@ -35,8 +35,8 @@ struct GltfObject {
 
 enum class GltfLightKind { point, spot, directional };
 
-// A KHR_lights_punctual light placed by its node: radiometric as glTF states it, intensity in
-// candela (point, spot) or lux (directional), read as W/sr and W/m^2 (docs/design.md).
+// A KHR_lights_punctual light placed by its node, its intensity as the file gives it: candela
+// (point, spot) or lux (directional); shapes/gltf.cpp makes it W/sr or W/m^2 (docs/design.md).
 struct GltfLight {
     std::string label;
     GltfLightKind kind = GltfLightKind::point;

@@ -6,14 +6,18 @@
 // two materials, a constant normal map against the vertex normals it makes (also in the frame of a
 // TANGENT the uvs disagree with), a base-colour texture read through TEXCOORD_1. Textured emission:
 // a TOML quad light of a four-quadrant texture against four constant quads, and a glTF
-// emissiveTexture against the TOML texture key. The AOVs sum to the beauty on a glTF scene as on
-// every other.
+// emissiveTexture against the TOML texture key. A scene exported by Blender (blender/) renders as
+// Cycles renders it. The AOVs sum to the beauty on a glTF scene as on every other.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 #include <utility>
 
 #include "film/aov_presets.h"
@@ -21,6 +25,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "../support/film_checks.h"
+#include "../support/temp_folder.h"
 
 namespace lightpath {
 namespace {
@@ -95,6 +100,82 @@ TEST_CASE("a glTF directional light (lux as W/m^2, its node's -z) renders as the
         const Film toml = renderSmall(kData / "directional.toml", integrator, 16);
         CHECK(worstBlockDifference(gltf, toml) <= 0.01);
     }
+}
+
+// Cycles' 8x8-block means of a render (blender/make_blender.py): rows of numbers, '#' lines skipped.
+std::vector<std::vector<double>> readBlockMeans(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    REQUIRE(in);
+    std::vector<std::vector<double>> rows;
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream numbers(line);
+        rows.emplace_back(std::istream_iterator<double>(numbers), std::istream_iterator<double>());
+    }
+    return rows;
+}
+
+// A scene made in Blender and exported by its glTF exporter as a user would (candela and lux at
+// 683 lm/W, Blender's default), rendered by Cycles as Blender holds it: an independent renderer's
+// converged image, which lightpath's render of the file must match per block, so that what a
+// lecturer sees in Blender is what lightpath shows. Reading the file's numbers as W/sr and W/m^2
+// (`lighting = "unitless"`) makes every block 683 times too bright.
+TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blender: a point lamp and a sun") {
+    constexpr int kBlock = 8;
+    for (const std::string light : {"point", "sun"}) {
+        CAPTURE(light);
+        const auto cycles = readBlockMeans(kData / "blender" / (light + "-cycles.txt"));
+        REQUIRE(cycles.size() == 8);
+        REQUIRE(cycles[0].size() == 12);
+        Scene scene = loadScene(kData / "blender" / (light + ".toml"));
+        REQUIRE(scene.cameraGiven);
+        scene.camera.width = int(cycles[0].size()) * kBlock;
+        scene.camera.height = int(cycles.size()) * kBlock;
+        RenderOptions options;
+        options.integrator = "path";
+        options.samplesPerPixel = 64;
+        options.maxDepth = 8;  // Cycles' max bounces
+        const Film film = Renderer(scene, AovSet(classesSet()), options).render().film;
+        double brightest = 0.0, ours = 0.0, theirs = 0.0, worst = 0.0;
+        for (const auto& row : cycles)
+            for (double v : row) brightest = std::max(brightest, v);
+        for (std::size_t by = 0; by < cycles.size(); ++by)
+            for (std::size_t bx = 0; bx < cycles[by].size(); ++bx) {
+                double sum = 0.0;
+                for (int y = 0; y < kBlock; ++y)
+                    for (int x = 0; x < kBlock; ++x) {
+                        const Rgb v = film.at(0, int(bx) * kBlock + x, int(by) * kBlock + y);
+                        sum += (double(v.r) + double(v.g) + double(v.b)) / 3.0;
+                    }
+                const double mean = sum / (kBlock * kBlock);
+                ours += mean;
+                theirs += cycles[by][bx];
+                worst = std::max(worst, std::fabs(mean - cycles[by][bx]) / std::max(cycles[by][bx], 0.05 * brightest));
+            }
+        CHECK(ours / theirs == doctest::Approx(1.0).epsilon(0.01));
+        CHECK(worst <= 0.03);
+    }
+}
+
+TEST_CASE("[[gltf]] lighting: a sun's lux read as W/m^2 by 683 (standard), and unchanged by unitless and raw") {
+    const test::TempFolder temp("lightpath-gltf-sun");
+    std::filesystem::copy_file(kData / "directional.gltf", temp.path() / "directional.gltf");
+    const auto rendered = [&](const std::string& lighting) {
+        std::ofstream(temp.path() / "scene.toml")
+            << "[[gltf]]\nfile = \"directional.gltf\"\nlighting = \"" << lighting << "\"\n";
+        return renderSmall(temp.path() / "scene.toml", "raycast", 1);
+    };
+    const Film standard = rendered("standard"), unitless = rendered("unitless"), raw = rendered("raw");
+    double sumStandard = 0.0, sumUnitless = 0.0, sumRaw = 0.0;
+    for (int y = 0; y < standard.height(); ++y)
+        for (int x = 0; x < standard.width(); ++x) {
+            sumStandard += double(standard.at(0, x, y).g);
+            sumUnitless += double(unitless.at(0, x, y).g);
+            sumRaw += double(raw.at(0, x, y).g);
+        }
+    REQUIRE(sumStandard > 0.0);
+    CHECK(sumUnitless / sumStandard == doctest::Approx(683.0).epsilon(1e-4));
+    CHECK(sumRaw == doctest::Approx(sumUnitless).epsilon(1e-6));
 }
 
 TEST_CASE("a glTF emissive material (emissiveFactor, KHR_materials_emissive_strength) renders as its TOML scene") {

@@ -62,7 +62,7 @@ TEST_CASE("a glTF file as the scene: its nodes placed, its camera, its light in 
     CHECK(lamp.name == "Lamp");
     CHECK(lamp.location.x == doctest::Approx(-0.5));
     CHECK(lamp.location.y == doctest::Approx(2.5));
-    CHECK(kPi * lamp.intensity.r == doctest::Approx(20.0));  // 20 cd read as 20 W/sr
+    CHECK(kPi * lamp.intensity.r == doctest::Approx(20.0));  // 13,660 cd read as 13,660 / 683 = 20 W/sr
     CHECK(lamp.attenuationAt(2.0f) == doctest::Approx(0.25));  // physical 1/d^2
 
     // Material "Floor Paint" is labelled Floor_Paint, and says so.
@@ -146,6 +146,40 @@ TEST_CASE("[[gltf]] in a TOML scene: placed, relabelled, in a scene material, it
     CHECK(scene.labelOf(0) == "model");
     CHECK(scene.materials[scene.objects[0].material]->name == "chalk");
     for (const Triangle& t : scene.triangles) CHECK(t.a.x >= 8.0f);
+}
+
+// Blender's glTF exporter writes a lamp of P watts as P / (4 pi) * 683 cd ("Standard", its default),
+// P / (4 pi) ("Unitless") or P ("Raw"), and a sun of E W/m^2 as 683 E lux, E or E
+// (io_scene_gltf2's gather_lights): `lighting` reads each back as W/sr and W/m^2 (the sun's
+// modes: tests/render/test_gltf.cpp).
+TEST_CASE("[[gltf]] lighting: the file's light intensities read as Blender's glTF exporter writes them") {
+    const test::TempFolder temp("lightpath-gltf-lighting");
+    const fs::path& folder = temp.path();
+    fs::copy_file(kData / "point.gltf", folder / "point.gltf", fs::copy_options::overwrite_existing);
+    const auto loaded = [&](const std::string& lighting) {
+        std::ofstream(folder / "scene.toml") << "[[gltf]]\nfile = \"point.gltf\"\n"
+                                             << (lighting.empty() ? "" : "lighting = \"" + lighting + "\"\n");
+        return loadScene(folder / "scene.toml");
+    };
+    const auto pointWattsPerSr = [&](const std::string& lighting) {
+        const Scene scene = loaded(lighting);
+        REQUIRE(scene.lights.size() == 1);
+        return double(kPi * pointLightOf(scene.lights[0]).intensity.r);
+    };
+    // point.gltf's lamp: 13,660 in the file.
+    CHECK(pointWattsPerSr("") == doctest::Approx(20.0));  // standard, the default
+    CHECK(pointWattsPerSr("standard") == doctest::Approx(20.0));
+    CHECK(pointWattsPerSr("unitless") == doctest::Approx(13660.0));
+    CHECK(pointWattsPerSr("raw") == doctest::Approx(13660.0 / (4.0 * 3.14159265358979)));
+    std::string error;
+    try {
+        loaded("photometric");
+    } catch (const SceneError& e) {
+        error = e.what();
+    }
+    CHECK(error.find("lighting") != std::string::npos);
+    CHECK(error.find("expected \"standard\", \"unitless\" or \"raw\" (Blender's glTF Lighting Mode), got "
+                     "\"photometric\"") != std::string::npos);
 }
 
 TEST_CASE("a malformed glTF file is refused naming the file, the element and what was expected") {

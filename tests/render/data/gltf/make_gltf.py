@@ -116,7 +116,7 @@ def point():
     nodes.append({"name": "Lamp", "translation": [-0.5, 2.5, 0.5], "extensions": {"KHR_lights_punctual": {"light": 0}}})
     rest = dict(materials=MATERIALS, nodes=nodes, cameras=[CAMERA], scenes=[{"nodes": [0, 1, 3, 4]}], scene=0,
                 extensionsUsed=["KHR_lights_punctual"],
-                extensions={"KHR_lights_punctual": {"lights": [{"name": "Lamp", "type": "point", "intensity": 20,
+                extensions={"KHR_lights_punctual": {"lights": [{"name": "Lamp", "type": "point", "intensity": 20 * 683,
                                                                 "color": [1, 1, 1]}]}})
     write("point.gltf", b.document(**rest))
     (HERE / "point.glb").write_bytes(b.glb(**rest))
@@ -133,7 +133,7 @@ def punctual(name, light, node):
 
 def spot():
     # Turned -70 degrees about x: its -z points to (0, -sin 70, -cos 70), down and away from the camera.
-    punctual("spot", {"name": "Spot", "type": "spot", "intensity": 30, "color": [1, 0.9, 0.8],
+    punctual("spot", {"name": "Spot", "type": "spot", "intensity": 30 * 683, "color": [1, 0.9, 0.8],
                       "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}},
              {"name": "Spot", "translation": [-0.3, 2.5, 0.8], "rotation": quaternion((1, 0, 0), -70)})
 
@@ -141,7 +141,7 @@ def spot():
 def directional():
     # Turned -50 degrees about x, then 30 about y (the node's rotation is one quaternion: y after x).
     q = quaternion_product(quaternion((0, 1, 0), 30), quaternion((1, 0, 0), -50))
-    punctual("directional", {"name": "Sun", "type": "directional", "intensity": 3, "color": [1, 1, 0.9]},
+    punctual("directional", {"name": "Sun", "type": "directional", "intensity": 3 * 683, "color": [1, 1, 0.9]},
              {"name": "Sun", "translation": [5, 5, 5], "rotation": q})
 
 

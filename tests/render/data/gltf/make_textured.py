@@ -99,7 +99,7 @@ def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=N
     return {
         "asset": {"version": "2.0", "generator": "make_textured.py"},
         "extensionsUsed": ["KHR_lights_punctual"],
-        "extensions": {"KHR_lights_punctual": {"lights": [{"name": "Lamp", "type": "point", "intensity": 2 * math.pi}]}},
+        "extensions": {"KHR_lights_punctual": {"lights": [{"name": "Lamp", "type": "point", "intensity": 2 * math.pi * 683}]}},
         "scene": 0,
         "scenes": [{"nodes": [0, 1, 2]}],
         "nodes": [

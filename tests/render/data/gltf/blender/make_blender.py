@@ -1,0 +1,88 @@
+"""Writes the Blender-exported glTF files of the Cycles comparison (tests/render/test_gltf.cpp), and
+Cycles' renders of the same scenes as 8x8-block means (<light>-cycles.txt), the test's reference.
+
+Each file holds one light of one Blender kind (a point lamp of 500 W, a sun of 2 W/m^2) over a
+floor and a box, seen by a camera; Blender's glTF exporter writes it in its default Lighting
+Mode, "Standard" (candela and lux at 683 lm/W). Cycles renders
+the scene as Blender holds it, with a Lambertian (Diffuse BSDF) material of albedo 0.8, a black
+world and a box pixel filter; the test renders the exported file in lightpath with the same
+material and compares block by block. No spot: Cycles 3.4 dims a spot's light towards the edge of
+its cone (measured 1.01 to 1.15 of lightpath's across a 30-degree cone, about 1 / cos of the angle
+off its axis), which glTF's spot does not.
+
+Run (Blender 3.4, Debian's `blender`), from this folder:
+  for light in point sun; do blender -b --python make_blender.py -- $light; done
+"""
+import math
+import os
+import sys
+
+import bpy
+import numpy as np
+
+WIDTH, HEIGHT, BLOCK, SPP = 96, 64, 8, 4096
+HERE = os.path.dirname(os.path.abspath(__file__))
+light = sys.argv[sys.argv.index("--") + 1]
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+scene = bpy.context.scene
+scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = WIDTH, HEIGHT, 100
+
+white = bpy.data.materials.new("White")
+white.use_nodes = True
+principled = white.node_tree.nodes["Principled BSDF"]
+principled.inputs["Base Color"].default_value = (0.8, 0.8, 0.8, 1)
+principled.inputs["Roughness"].default_value = 1.0
+principled.inputs["Specular"].default_value = 0.0
+bpy.ops.mesh.primitive_plane_add(size=20, location=(0, 0, 0))
+bpy.context.object.data.materials.append(white)
+bpy.ops.mesh.primitive_cube_add(size=2, location=(0, 0, 1), rotation=(0, 0, 0.5))
+bpy.context.object.data.materials.append(white)
+
+if light == "point":
+    bpy.ops.object.light_add(type="POINT", location=(3, -2, 4))
+    bpy.context.object.data.energy = 500
+    bpy.context.object.data.shadow_soft_size = 0
+elif light == "sun":
+    bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.6, 0.3, 0))
+    bpy.context.object.data.energy = 2
+    bpy.context.object.data.angle = 0
+else:
+    raise SystemExit("expected point or sun, got " + light)
+bpy.ops.object.camera_add(location=(0, -10, 6), rotation=(math.radians(60), 0, 0))
+scene.camera = bpy.context.object
+
+bpy.ops.export_scene.gltf(filepath=os.path.join(HERE, light + ".glb"), export_format="GLB", export_lights=True,
+                          export_cameras=True, export_apply=True)
+
+tree = white.node_tree
+diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
+diffuse.inputs["Color"].default_value = (0.8, 0.8, 0.8, 1)
+tree.links.new(diffuse.outputs["BSDF"], tree.nodes["Material Output"].inputs["Surface"])
+world = bpy.data.worlds.new("black")
+scene.world = world
+world.use_nodes = True
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0
+scene.render.engine = "CYCLES"
+scene.cycles.device = "CPU"
+scene.cycles.samples = SPP
+scene.cycles.use_denoising = False
+scene.cycles.use_adaptive_sampling = False
+scene.cycles.seed = 1
+scene.cycles.max_bounces = scene.cycles.diffuse_bounces = 8
+scene.cycles.sample_clamp_direct = scene.cycles.sample_clamp_indirect = 0
+scene.cycles.filter_type = "BOX"
+scene.cycles.filter_width = 1.0
+scene.view_settings.view_transform = "Standard"
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.filepath = os.path.join("/tmp", "cycles-" + light + ".exr")
+bpy.ops.render.render(write_still=True)
+
+image = bpy.data.images.load(scene.render.filepath)
+pixels = np.array(image.pixels[:], dtype=np.float64).reshape(HEIGHT, WIDTH, 4)[::-1, :, :3]  # top row first
+blocks = pixels.mean(axis=2).reshape(HEIGHT // BLOCK, BLOCK, WIDTH // BLOCK, BLOCK).mean(axis=(1, 3))
+with open(os.path.join(HERE, light + "-cycles.txt"), "w") as out:
+    out.write(f"# Cycles (Blender {bpy.app.version_string}), {SPP} spp: the mean of R, G and B over each {BLOCK}x{BLOCK}"
+              f" block of a {WIDTH}x{HEIGHT} render, top row first\n")
+    for row in blocks:
+        out.write(" ".join(f"{v:.6f}" for v in row) + "\n")
