@@ -41,7 +41,8 @@ CheckResult checkLobeAlbedo(const Material& material, int lobe);
 // one event, the schema's).
 CheckResult checkDeclaredLobes(const Material& material, const std::string& events);
 // The Bsdf's one-sample estimate, E[weight], equals the integral of every smooth lobe's eval (by
-// uniform directions, not the material's own sampling) plus the delta branches' weights.
+// a defensive mixture of uniform directions and lobes about the Bsdf's samples, whose density
+// alone weighs them: not the material's own pdf) plus the delta branches' weights.
 CheckResult checkBsdfUnbiased(const Material& material, const Vec3& wo, bool entering);
 // eval, pdf, albedo, sample and the branches are finite and non-negative for any directions, on
 // either side, in either transport mode; sampled directions are unit vectors.
