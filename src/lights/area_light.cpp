@@ -33,7 +33,7 @@ bool emitsTwoSided(const SceneGeometry& geometry, std::uint32_t primitive) {
 }  // namespace
 
 AreaLightSource::AreaLightSource(const PathEvent& event, ColorParameter emission, const SceneGeometry& geometry,
-                                 const std::vector<std::uint32_t>& primitives)
+                                 const std::vector<std::uint32_t>& primitives, bool twoSided)
     : Light(event), emission_(std::move(emission)), geometry_(geometry) {
     std::size_t twoSidedCount = 0;
     for (std::uint32_t primitive : primitives) {
@@ -46,9 +46,9 @@ AreaLightSource::AreaLightSource(const PathEvent& event, ColorParameter emission
         shapes_.push_back({primitive, area_, isTriangle ? triangleNormal(geometry.triangleOf(primitive)) : Vec3(0.0f)});
         twoSidedCount += emitsTwoSided(geometry, primitive);
     }
-    if (twoSidedCount != 0 && twoSidedCount != shapes_.size())
+    if (!twoSided && twoSidedCount != 0 && twoSidedCount != shapes_.size())
         throw std::invalid_argument("an area light is closed shapes (spheres) or open ones (triangles), not both");
-    spheres_ = twoSidedCount != 0;
+    twoSided_ = twoSided || twoSidedCount != 0;
     if (shapes_.size() == 1) {
         const ShapeRecord* shape = geometry.shapeOf(shapes_[0].primitive);
         if (shape != nullptr && shape->ops->sampleSolidAngle != nullptr && shape->ops->pdfSolidAngle != nullptr)
@@ -118,8 +118,8 @@ LightSample AreaLightSource::sample(const Vec3& receiver, Vec2 u) const {
         return s;
     }
     s.wi = toLight / s.distance;
-    // The receiver behind a one-sided emitter sees nothing of it (spheres emit on both sides).
-    if (!spheres_ && -glm::dot(s.normal, s.wi) <= 0.0f) s.pdf = 0.0f;
+    // The receiver behind a one-sided emitter sees nothing of it.
+    if (!twoSided_ && -glm::dot(s.normal, s.wi) <= 0.0f) s.pdf = 0.0f;
     if (s.pdf > 0.0f) s.weight = (emission_.textured() ? emissionAt(uv) : emission_.constant()) / s.pdf;
     return s;
 }
@@ -140,11 +140,11 @@ EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     const SurfacePoint p = samplePoint(uPoint);
     EmittedRay e;
     Vec3 normal = p.normal;
-    if (spheres_ && uDirection.x < 0.5f) {
-        // A sphere emits on both sides: pick one, then reuse the sample for the direction.
+    if (twoSided_ && uDirection.x < 0.5f) {
+        // Emitting on both sides: pick one, then reuse the sample for the direction.
         normal = -normal;
         uDirection.x *= 2.0f;
-    } else if (spheres_) {
+    } else if (twoSided_) {
         uDirection.x = (uDirection.x - 0.5f) * 2.0f;
     }
     const Vec3 local = sampleCosineHemisphere(uDirection);
@@ -153,39 +153,39 @@ EmittedRay AreaLightSource::sampleEmission(Vec2 uPoint, Vec2 uDirection) const {
     e.normal = normal;
     e.radiance = emissionAt(p.uv);
     e.pdfPosition = pdfArea_;
-    e.pdfDirection = cosineHemispherePdf(local.z) * (spheres_ ? 0.5f : 1.0f);
+    e.pdfDirection = cosineHemispherePdf(local.z) * (twoSided_ ? 0.5f : 1.0f);
     return e;
 }
 
 float AreaLightSource::pdfEmissionDirection(const Vec3& normal, const Vec3& direction) const {
-    // sampleEmission's cosine lobe about the side's normal; a sphere picks either side by half.
+    // sampleEmission's cosine lobe about the side's normal; a two-sided light picks either side by half.
     const float cosine = glm::dot(normal, direction);
-    if (spheres_) return 0.5f * cosineHemispherePdf(std::fabs(cosine));
+    if (twoSided_) return 0.5f * cosineHemispherePdf(std::fabs(cosine));
     return cosine > 0.0f ? cosineHemispherePdf(cosine) : 0.0f;
 }
 
 EmittedRay AreaLightSource::emitAlong(const EmittedRay& from, const Vec3& direction) const {
     EmittedRay e = from;
     e.ray.direction = direction;
-    // A sphere emits the same radiance from both sides of its surface: it leaves by the side that
-    // faces the direction; an open surface only by its normal's side.
-    if (spheres_ && glm::dot(e.normal, direction) < 0.0f) e.normal = -e.normal;
+    // A two-sided light emits the same radiance from both sides of its surface: it leaves by the
+    // side that faces the direction; a one-sided one only by its normal's side.
+    if (twoSided_ && glm::dot(e.normal, direction) < 0.0f) e.normal = -e.normal;
     if (!(glm::dot(e.normal, direction) > 0.0f)) e.radiance = Rgb{0.0f};
     e.pdfDirection = pdfEmissionDirection(e.normal, direction);
     return e;
 }
 
 Rgb AreaLightSource::radiance(const SurfaceHit& hit, const Vec3& towardViewer) const {
-    if (!spheres_ && glm::dot(hit.normal, towardViewer) <= 0.0f) return Rgb{0.0f};
+    if (!twoSided_ && glm::dot(hit.normal, towardViewer) <= 0.0f) return Rgb{0.0f};
     if (!emission_.textured()) return emission_.constant();
     return emissionAt(geometry_.uvAt(hit.primitive, hit.point, hit.normal));
 }
 
 Rgb AreaLightSource::power() const {
-    // Le pi A for a one-sided Lambertian emitter; a sphere emits from both sides of its surface. A
+    // Le pi A for a one-sided Lambertian emitter, twice that for a two-sided one. A
     // texture's mean over its image stands for its mean over the surface: any positive power keeps
     // light choice unbiased; a closer one only lowers the noise.
-    return emission_.mean() * (kPi * area_ * (spheres_ ? 2.0f : 1.0f));
+    return emission_.mean() * (kPi * area_ * (twoSided_ ? 2.0f : 1.0f));
 }
 
 LIGHTPATH_HOT_PATH

@@ -1,7 +1,8 @@
 #pragma once
 // An emissive object as a light: one sphere, or the triangles of one scene object, whose material
-// emits radiance Le. Triangles emit on the side their winding's normal faces; a sphere on both
-// sides, so a closed emissive sphere also lights its inside. Light sampling picks points
+// emits radiance Le. Triangles emit on the side their winding's normal faces, or on both when the
+// material says so (two_sided_emission, glTF's doubleSided); a sphere always on both sides, so a
+// closed emissive sphere also lights its inside. Light sampling picks points
 // uniformly by area, except on a sphere seen from outside, where it samples the cone of
 // directions the sphere subtends (pbrt-v4 6.2.4): its density then stays finite and noiseless
 // for a sphere of any size at any distance. A textured emission (materials/texture.h) is read at
@@ -21,11 +22,12 @@ namespace lightpath {
 class AreaLightSource final : public Light {
 public:
     // `primitives`: scene-wide ids of the object's spheres or triangles; those without area are
-    // left out. Throws std::invalid_argument when they mix spheres and triangles: the two emit on
-    // different sides, and pdfEmissionDirection, given only a normal, could not tell which applies
-    // (one scene object is one sphere or a mesh).
+    // left out. `twoSided`: its open surfaces emit from both sides too. Throws std::invalid_argument
+    // when one-sided triangles and spheres mix: the two emit on different sides, and
+    // pdfEmissionDirection, given only a normal, could not tell which applies (one scene object is
+    // one sphere or a mesh).
     AreaLightSource(const PathEvent& event, ColorParameter emission, const SceneGeometry& geometry,
-                    const std::vector<std::uint32_t>& primitives);
+                    const std::vector<std::uint32_t>& primitives, bool twoSided = false);
 
     LightSample sample(const Vec3& receiver, Vec2 u) const override;
     float pdf(const Vec3& receiver, const Vec3& point, const Vec3& normal) const override;
@@ -66,7 +68,7 @@ private:
     float area_ = 0.0f;
     float pdfArea_ = 0.0f;  // 1 / area_: the density of a point chosen by area, per unit area
     bool sampleable_ = false;
-    bool spheres_ = false;          // its shapes are closed (spheres): they emit on both sides
+    bool twoSided_ = false;  // it emits from both sides: closed shapes (spheres), or a two-sided material
     // The light's one shape when its kind samples by solid angle (a sphere: its visible cone).
     const ShapeRecord* solidAngle_ = nullptr;
 };

@@ -32,9 +32,10 @@ LightSet::LightSet(const Scene& scene, const SceneGeometry& geometry)
     for (std::uint32_t object = 0; object < scene.objects.size(); ++object) {
         if (primitives[object].empty()) continue;
         const lpe::EventType type = *emissionEventOf(scene, object);
+        const Material& material = *scene.materials[scene.objects[object].material];
         auto light = std::make_unique<AreaLightSource>(PathEvent{type, lpe::Scatter::None, Subject::Object, object},
-                                                       scene.materials[scene.objects[object].material]->emission,
-                                                       geometry, primitives[object]);
+                                                       material.emission, geometry, primitives[object],
+                                                       material.twoSidedEmission);
         if (light->empty()) continue;
         ofObject_[object] = light.get();
         lights_.push_back(std::move(light));

@@ -22,6 +22,9 @@ public:
     // Emitted radiance: makes the surface an emitter (`O`, or `L` when declared a light). Its light
     // (lights/area_light.h) reads a texture at the emitting point's uv; `textured` is not needed for it.
     ColorParameter emission;
+    // Whether it emits from both sides of the surface (glTF's doubleSided, as Cycles' mesh lights
+    // do) rather than the side its normal faces; a closed shape always emits from both.
+    bool twoSidedEmission = false;
     // Some parameter is a texture (materials/texture.h): shading points then find their texture
     // coordinates and footprint, which an untextured material never pays for.
     bool textured = false;

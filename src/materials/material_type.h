@@ -23,6 +23,10 @@ struct MaterialPromises {
 // (an area light), and the GGX materials read roughness alike.
 inline constexpr Parameter kEmissionParameter{"emission", ParameterType::Colour, "W/(m² sr)", "0", kNonNegative,
                                               "emitted radiance: the surface is an area light"};
+inline constexpr Parameter kTwoSidedEmissionParameter{
+    "two_sided_emission", ParameterType::Boolean, "", "false", {},
+    "whether an emitting surface emits from both of its sides (glTF's doubleSided, Cycles' mesh lights); "
+    "default: the side its normal faces (a triangle's winding); a sphere always emits from both"};
 inline constexpr Parameter kGgxRoughnessParameter{
     "roughness", ParameterType::Number, "", "0.5", Range{0.0, 1.0, false, false},
     "GGX alpha = roughness²; 0 is a perfect mirror (`<RS>`), above 0 a glossy lobe (`<RG>`)"};

@@ -262,6 +262,7 @@ MaterialSlot makeMicrofacet(const ParameterValues& values) {
     MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
                                 values.number("roughness"));
     material.emission = colorParameter(values, "emission");
+    material.twoSidedEmission = values.boolean("two_sided_emission");
     return material;
 }
 
@@ -275,7 +276,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
       {"metallic", lightpath::ParameterType::Number, "", "1", lightpath::kUnitInterval,
        "1 a conductor (F0 = base_color, no base), 0 a dielectric (F0 = 0.04 over a diffuse base_color)"},
       lightpath::kGgxRoughnessParameter,
-      lightpath::kEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
      "<R[DGS]>|O"},
     2, lightpath::makeMicrofacet,
     // F and G2 at the half vector and (1 - E(wo))(1 - E(wi)) are symmetric: reciprocal. F <= 1,

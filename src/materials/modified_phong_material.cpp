@@ -93,6 +93,7 @@ MaterialSlot makeModifiedPhong(const ParameterValues& values) {
     material.ks = colorParameter(values, "ks");
     material.n = values.number("n");
     material.emission = colorParameter(values, "emission");
+    material.twoSidedEmission = values.boolean("two_sided_emission");
     return material;
 }
 
@@ -106,7 +107,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "specular albedo at normal incidence: `ks (n+2)/(2π) cos^n α`"},
       {"n", lightpath::ParameterType::Number, "", "20", lightpath::kNonNegative,
        "specular exponent: larger is a tighter highlight"},
-      lightpath::kEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
      "<R[DG]>|O"},
     1, lightpath::makeModifiedPhong,
     // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.

@@ -148,6 +148,7 @@ MaterialSlot makePhong(const ParameterValues& values) {
     material.ior = values.number("ior");
     material.fresnel = values.boolean("fresnel");
     material.emission = colorParameter(values, "emission");
+    material.twoSidedEmission = values.boolean("two_sided_emission");
     return material;
 }
 
@@ -170,7 +171,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "index of refraction of the inside (glass 1.5, water 1.33)"},
       {"fresnel", lightpath::ParameterType::Boolean, "", "false", {},
        "clear glass: the mirror and refracted rays split `kt` by Fresnel's equations"},
-      lightpath::kEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
      "<R[DGS]>|<TS>|O"},
     0, lightpath::makePhong,
     // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so f

@@ -164,6 +164,10 @@ private:
                 else
                     material->emission = ColorParameter(texture->first, emission, texture->second);
             }
+            // A doubleSided surface is lit and seen from both sides (glTF 2.0, 3.9.5), so it emits
+            // from both too, as Blender's mesh lights do in Cycles (Blender writes doubleSided
+            // unless backface culling is on).
+            material->twoSidedEmission = m.doubleSided;
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
             if (auto texture = open(m.normalTexture.index, m.normalTexture.texCoord, TextureColorSpace::linear,
                                     where + ".normalTexture")) {

@@ -249,6 +249,19 @@ center = [0, 0, -3]
 radius = 1
 material = "lamp"
 )"));
+    visit(lightCase("emissive object: a quad whose material emits 2 from both sides (two_sided_emission)", R"(
+[materials.lamp]
+emission = 2
+two_sided_emission = true
+[[triangles]]
+name = "panel"
+material = "lamp"
+vertices = [[-1, 2, -1], [1, 2, -1], [1, 2, 0]]
+[[triangles]]
+name = "panel"
+material = "lamp"
+vertices = [[-1, 2, -1], [1, 2, 0], [-1, 2, 0]]
+)"));
 
     // Drawn: every registered type, kDrawsPerLightType declarations within its schema.
     for (const LightType* type : LightRegistry::instance().entries()) {

@@ -366,3 +366,72 @@ radiance = 5
 }
 
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+// A square lamp halfway between a floor and a ceiling of the same matte material, seen edge-on by
+// a camera at its height: the scene is symmetric about the lamp's plane, so every integrator's
+// image is too when the lamp emits from both sides (two_sided_emission: glTF's doubleSided, as
+// Cycles' mesh lights). Emitting from its normal's side only (up), the floor gets no direct light.
+Scene lampBetweenFloorAndCeiling(bool twoSided) {
+    return loadSceneFromText(std::string(R"(
+[camera]
+eye = [0, 1, 4]
+look_at = [0, 1, 0]
+fov = 60
+resolution = [32, 32]
+[materials.matte]
+kd = 0.5
+[materials.lamp]
+kd = 0
+emission = 4
+two_sided_emission = )") + (twoSided ? "true" : "false") + R"(
+[[triangles]]
+material = "matte"
+vertices = [[-4, 0, -6], [-4, 0, 3], [4, 0, 3]]
+[[triangles]]
+material = "matte"
+vertices = [[-4, 0, -6], [4, 0, 3], [4, 0, -6]]
+[[triangles]]
+material = "matte"
+vertices = [[-4, 2, -6], [4, 2, 3], [-4, 2, 3]]
+[[triangles]]
+material = "matte"
+vertices = [[-4, 2, -6], [4, 2, -6], [4, 2, 3]]
+[[triangles]]
+name = "lamp"
+material = "lamp"
+vertices = [[-0.5, 1, -1.5], [-0.5, 1, -0.5], [0.5, 1, -0.5]]
+[[triangles]]
+name = "lamp"
+material = "lamp"
+vertices = [[-0.5, 1, -1.5], [0.5, 1, -0.5], [0.5, 1, -1.5]]
+)", "two-sided-lamp.toml");
+}
+
+// (top - bottom) / (top + bottom) of the beauty's image halves: the ceiling's and the floor's.
+double asymmetry(const Film& film) {
+    double top = 0.0, bottom = 0.0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) (y < film.height() / 2 ? top : bottom) += film.at(0, x, y).g;
+    return (top - bottom) / (top + bottom);
+}
+
+}  // namespace
+
+TEST_CASE("emitters: a two-sided emissive quad lights both its sides alike in every integrator") {
+    const AovSet aovs(classesSet());
+    const Scene twoSided = lampBetweenFloorAndCeiling(true), oneSided = lampBetweenFloorAndCeiling(false);
+    for (const std::string integrator : {"raycast", "raster", "whitted", "path", "bdpt", "radiosity", "photon", "sppm"}) {
+        CAPTURE(integrator);
+        const double both = asymmetry(renderWith(twoSided, aovs, integrator, 16).film);
+        const double one = asymmetry(renderWith(oneSided, aovs, integrator, 16).film);
+        CAPTURE(both);
+        CAPTURE(one);
+        CHECK(std::fabs(both) < 0.03);
+        CHECK(std::fabs(one) > 0.3);  // the control: one side sees only the other's light
+    }
+}
+
+}  // namespace lightpath

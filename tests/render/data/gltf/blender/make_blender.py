@@ -1,9 +1,10 @@
 """Writes the Blender-exported glTF files of the Cycles comparison (tests/render/test_gltf.cpp), and
 Cycles' renders of the same scenes as 8x8-block means (<light>-cycles.txt), the test's reference.
 
-Each file holds one light of one Blender kind (a point lamp of 500 W, a sun of 2 W/m^2) over a
-floor and a box, seen by a camera; Blender's glTF exporter writes it in its default Lighting
-Mode, "Standard" (candela and lux at 683 lm/W). Cycles renders
+Each file holds one light of one Blender kind (a point lamp of 500 W, a sun of 2 W/m^2, an
+emissive square of strength 5) over a floor and a box, seen by a camera; Blender's glTF exporter
+writes it in its default Lighting Mode, "Standard" (candela and lux at 683 lm/W), and the
+emission unconverted. Cycles renders
 the scene as Blender holds it, with a Lambertian (Diffuse BSDF) material of albedo 0.8, a black
 world and a box pixel filter; the test renders the exported file in lightpath with the same
 material and compares block by block. No spot: Cycles 3.4 dims a spot's light towards the edge of
@@ -11,7 +12,7 @@ its cone (measured 1.01 to 1.15 of lightpath's across a 30-degree cone, about 1 
 off its axis), which glTF's spot does not.
 
 Run (Blender 3.4, Debian's `blender`), from this folder:
-  for light in point sun; do blender -b --python make_blender.py -- $light; done
+  for light in point sun emissive; do blender -b --python make_blender.py -- $light; done
 """
 import math
 import os
@@ -47,8 +48,20 @@ elif light == "sun":
     bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.6, 0.3, 0))
     bpy.context.object.data.energy = 2
     bpy.context.object.data.angle = 0
+elif light == "emissive":
+    # A 2 m square lamp facing down, emission strength 5: the floor sees its front, the camera its
+    # back (Cycles' mesh lights emit from both sides; Blender writes the material doubleSided).
+    lamp = bpy.data.materials.new("Lamp")
+    lamp.use_nodes = True
+    bsdf = lamp.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (0, 0, 0, 1)
+    bsdf.inputs["Specular"].default_value = 0.0
+    bsdf.inputs["Emission"].default_value = (1, 0.9, 0.8, 1)
+    bsdf.inputs["Emission Strength"].default_value = 5
+    bpy.ops.mesh.primitive_plane_add(size=2, location=(2, -1, 3.5), rotation=(math.pi, 0, 0))
+    bpy.context.object.data.materials.append(lamp)
 else:
-    raise SystemExit("expected point or sun, got " + light)
+    raise SystemExit("expected point, sun or emissive, got " + light)
 bpy.ops.object.camera_add(location=(0, -10, 6), rotation=(math.radians(60), 0, 0))
 scene.camera = bpy.context.object
 
