@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 #include <glm/gtc/quaternion.hpp>
@@ -29,6 +30,10 @@
 namespace lightpath {
 namespace {
 
+// The extensions the Reader reads; docs: scenes/README.md, [[gltf]].
+constexpr std::array<std::string_view, 4> kReadExtensions{"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                          "KHR_materials_ior", "KHR_materials_transmission"};
+
 // glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
 constexpr const char* kDefaultMaterialLabel = "gltf-default";
 
@@ -43,6 +48,7 @@ public:
         : model_(model), file_(file), imageBytes_(images) {}
 
     GltfModel read() {
+        checkExtensions();
         readMaterials();
         const std::vector<int> roots = rootNodes();
         visited_.assign(model_.nodes.size(), false);
@@ -88,6 +94,33 @@ private:
             fail(where, "expected a number from " + formatNumber(low) + " to " + formatNumber(high) + ", got " +
                             formatNumber(given));
         return given;
+    }
+
+    // glTF 2.0, 3.12: a file that requires an extension this reader does not read cannot be read as
+    // meant (a Draco-compressed mesh keeps its triangles in the extension): refused, naming it. One
+    // it merely uses is left out, with a warning, so that what a viewer shows and this render omits
+    // is said (KHR_texture_transform, say, which moves a texture on its surface).
+    void checkExtensions() {
+        const auto reads = [](const std::string& name) {
+            return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
+        };
+        std::string known;
+        for (std::string_view name : kReadExtensions) known += (known.empty() ? "" : ", ") + std::string(name);
+        for (std::size_t i = 0; i < model_.extensionsRequired.size(); ++i)
+            if (!reads(model_.extensionsRequired[i]))
+                fail("extensionsRequired[" + std::to_string(i) + "]",
+                     "the file requires \"" + printableName(model_.extensionsRequired[i]) +
+                         "\", which lightpath does not read (it reads " + known + ")");
+        std::string left;
+        std::size_t count = 0;
+        for (const std::string& name : model_.extensionsUsed)
+            if (!reads(name)) {
+                left += (left.empty() ? "" : ", ") + printableName(name);
+                ++count;
+            }
+        if (count > 0)
+            warn("extensionsUsed: " + left + (count == 1 ? " is" : " are") + " not read by lightpath: the render leaves " +
+                 (count == 1 ? "it" : "them") + " out");
     }
 
     // A number in an extension object, else `fallback`.

@@ -182,6 +182,33 @@ TEST_CASE("[[gltf]] lighting: the file's light intensities read as Blender's glT
                      "\"photometric\"") != std::string::npos);
 }
 
+TEST_CASE("a glTF file requiring an extension lightpath does not read is refused; one merely using it warns") {
+    const test::TempFolder temp("lightpath-gltf-extensions");
+    const fs::path& folder = temp.path();
+    std::ifstream in(kData / "point.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string used = "\"extensionsUsed\": [";
+    REQUIRE(text.find(used) != std::string::npos);
+    const auto variant = [&](const std::string& name, const std::string& extra) {
+        std::string changed = text;
+        changed.replace(changed.find(used), used.size(), used + "\"KHR_draco_mesh_compression\", ");
+        changed.insert(changed.find('{') + 1, extra);
+        std::ofstream(folder / name) << changed;
+        return folder / name;
+    };
+    // Required: the meshes may live in the extension, so the file cannot be read as meant.
+    const fs::path required = variant("required.gltf", "\"extensionsRequired\": [\"KHR_draco_mesh_compression\"],");
+    CHECK(errorOf(required) == required.string() +
+                                   ": extensionsRequired[0]: the file requires \"KHR_draco_mesh_compression\", which "
+                                   "lightpath does not read (it reads KHR_lights_punctual, "
+                                   "KHR_materials_emissive_strength, KHR_materials_ior, KHR_materials_transmission)");
+    // Used only: rendered, the extension named in a warning; the ones it reads are not.
+    const Scene scene = loadScene(variant("used.gltf", ""));
+    CHECK(warns(scene, "extensionsUsed: KHR_draco_mesh_compression is not read by lightpath: the render leaves it out"));
+    CHECK(!warns(scene, "KHR_lights_punctual"));
+    CHECK(scene.lights.size() == 1);
+}
+
 TEST_CASE("a malformed glTF file is refused naming the file, the element and what was expected") {
     CHECK(errorOf(kData / "bad_index.gltf") ==
           (kData / "bad_index.gltf").string() +
