@@ -8,6 +8,7 @@
 #include <optional>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -367,7 +368,25 @@ private:
         const unsigned char* data = nullptr;
         std::size_t count = 0, stride = 0;
         int componentType = 0;
+        // A sparse accessor's elements, made dense: `data` points into them.
+        std::shared_ptr<const std::vector<unsigned char>> dense;
     };
+
+    // `length` bytes from `byteOffset` into bufferView `index`, bounds-checked against the view
+    // and its buffer.
+    const unsigned char* viewBytes(int index, std::size_t byteOffset, std::size_t length, const std::string& at) const {
+        if (index < 0 || std::size_t(index) >= model_.bufferViews.size())
+            fail(at, "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
+        const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(index)];
+        if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size()) fail(at, "its bufferView names no buffer");
+        const std::vector<unsigned char>& buffer = model_.buffers[std::size_t(bv.buffer)].data;
+        if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
+            fail(at, "its bufferView reaches beyond its buffer of " + std::to_string(buffer.size()) + " bytes");
+        if (byteOffset > bv.byteLength || length > bv.byteLength - byteOffset)
+            fail(at, std::to_string(length) + " bytes from byte " + std::to_string(byteOffset) +
+                         " reach beyond its bufferView of " + std::to_string(bv.byteLength) + " bytes");
+        return buffer.data() + bv.byteOffset + byteOffset;
+    }
 
     // The accessor's elements, bounds-checked against its buffer: `components` numbers each.
     View view(int index, int type, const std::string& where) const {
@@ -382,29 +401,60 @@ private:
                           : type == TINYGLTF_TYPE_VEC3 ? "VEC3"
                           : type == TINYGLTF_TYPE_VEC2 ? "VEC2"
                                                        : "SCALAR"));
-        if (a.sparse.isSparse) fail(at, "expected a dense accessor; sparse accessors are not read");
-        if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
-            fail(at, "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
-        const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(a.bufferView)];
-        if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size())
-            fail(at, "its bufferView names no buffer");
-        const std::vector<unsigned char>& buffer = model_.buffers[std::size_t(bv.buffer)].data;
         const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
         const int components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
         if (componentSize <= 0 || components <= 0) fail(at, "expected a known componentType");
         const std::size_t element = std::size_t(componentSize) * std::size_t(components);
-        const std::size_t stride = bv.byteStride == 0 ? element : bv.byteStride;
-        if (stride < element) fail(at, "expected a byteStride of at least " + std::to_string(element));
-        if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
-            fail(at, "its bufferView reaches beyond its buffer of " + std::to_string(buffer.size()) + " bytes");
-        if (a.count > 0) {
-            const std::size_t last = a.count - 1;
-            if (a.byteOffset > bv.byteLength || last > (bv.byteLength - a.byteOffset) / stride ||
-                a.byteOffset + last * stride + element > bv.byteLength)
-                fail(at, std::to_string(a.count) + " elements reach beyond its bufferView of " +
-                             std::to_string(bv.byteLength) + " bytes");
+        View v{nullptr, a.count, element, a.componentType, nullptr};
+        // A sparse accessor without a bufferView starts from zeros (glTF 2.0, 3.6.2.3).
+        if (a.bufferView >= 0 || !a.sparse.isSparse) {
+            if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
+                fail(at, "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
+            const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(a.bufferView)];
+            v.stride = bv.byteStride == 0 ? element : bv.byteStride;
+            if (v.stride < element) fail(at, "expected a byteStride of at least " + std::to_string(element));
+            if (a.count > 0 && (a.count - 1) > (std::numeric_limits<std::size_t>::max() - element) / v.stride)
+                fail(at, std::to_string(a.count) + " elements are more than any buffer holds");
+            const std::size_t span = a.count == 0 ? 0 : (a.count - 1) * v.stride + element;
+            v.data = viewBytes(a.bufferView, a.byteOffset, span, at);
         }
-        return {buffer.data() + bv.byteOffset + a.byteOffset, a.count, stride, a.componentType};
+        if (a.sparse.isSparse) v = densified(a, v, element, at);
+        return v;
+    }
+
+    // glTF 2.0, 3.6.2.3: a sparse accessor is its dense elements (zeros without a bufferView) with
+    // `sparse.count` of them replaced, at strictly increasing indices, by tightly packed values.
+    View densified(const tinygltf::Accessor& a, const View& base, std::size_t element, const std::string& at) const {
+        if (a.sparse.count < 0 || std::size_t(a.sparse.count) > a.count)
+            fail(at + ": sparse.count", "expected at most the accessor's " + std::to_string(a.count) + " elements, got " +
+                                           std::to_string(a.sparse.count));
+        if (a.count > (std::size_t(1) << 31) / element)
+            fail(at, std::to_string(a.count) + " sparse elements are more than lightpath makes dense");
+        auto dense = std::make_shared<std::vector<unsigned char>>(a.count * element, static_cast<unsigned char>(0));
+        if (base.data != nullptr)
+            for (std::size_t i = 0; i < a.count; ++i) std::memcpy(dense->data() + i * element, base.data + i * base.stride, element);
+        const std::size_t count = std::size_t(a.sparse.count);
+        const int indexType = a.sparse.indices.componentType;
+        const int indexSize = indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
+                              : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                              : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
+                                                                                    : 0;
+        if (indexSize == 0) fail(at + ": sparse.indices", "expected UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
+        const unsigned char* indices = viewBytes(a.sparse.indices.bufferView, std::size_t(std::max(0, a.sparse.indices.byteOffset)),
+                                                 count * std::size_t(indexSize), at + ": sparse.indices");
+        const unsigned char* values = viewBytes(a.sparse.values.bufferView, std::size_t(std::max(0, a.sparse.values.byteOffset)),
+                                                count * element, at + ": sparse.values");
+        std::size_t previous = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            std::uint32_t target = 0;
+            std::memcpy(&target, indices + i * std::size_t(indexSize), std::size_t(indexSize));  // little-endian
+            if (target >= a.count || (i > 0 && target <= previous))
+                fail(at + ": sparse.indices", "index " + std::to_string(i) + " is " + std::to_string(target) +
+                                                 "; expected indices increasing strictly, below " + std::to_string(a.count));
+            previous = target;
+            std::memcpy(dense->data() + std::size_t(target) * element, values + i * element, element);
+        }
+        return {dense->data(), a.count, element, a.componentType, std::move(dense)};
     }
 
     // The FLOAT elements of a VECn accessor, each element's n floats checked finite (else the error

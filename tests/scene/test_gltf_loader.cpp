@@ -209,6 +209,23 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
     CHECK(scene.lights.size() == 1);
 }
 
+TEST_CASE("sparse accessors: elements substituted over a bufferView or over zeros; indices out of order refused") {
+    const Scene scene = loadScene(kData / "sparse.gltf");
+    REQUIRE(scene.triangles.size() == 3);
+    // The kite: the quad (-1, -1)..(1, 1) with corner 2 moved to (2, 2); indices 0 1 2, 0 2 3.
+    CHECK(scene.triangles[0].c == Vec3(2, 2, 0));
+    CHECK(scene.triangles[1].b == Vec3(2, 2, 0));
+    CHECK(scene.triangles[1].c == Vec3(-1, 1, 0));
+    // The corner from zeros, moved by its node to z = -1.
+    CHECK(scene.triangles[2].a == Vec3(0, 0, -1));
+    CHECK(scene.triangles[2].b == Vec3(1, 0, -1));
+    CHECK(scene.triangles[2].c == Vec3(0, 1, -1));
+    CHECK(errorOf(kData / "bad_sparse.gltf") ==
+          (kData / "bad_sparse.gltf").string() +
+              ": meshes[0].primitives[0].attributes.POSITION: accessor 0: sparse.indices: index 1 is 2; expected "
+              "indices increasing strictly, below 4");
+}
+
 TEST_CASE("a malformed glTF file is refused naming the file, the element and what was expected") {
     CHECK(errorOf(kData / "bad_index.gltf") ==
           (kData / "bad_index.gltf").string() +

@@ -9,6 +9,8 @@ emissive.gltf  the same without the lamp, lit by an emissive panel (emissiveFact
 point.glb      point.gltf as binary glTF: its buffer in the BIN chunk.
 spot.gltf      the same lit by a KHR_lights_punctual spot tilted by its node; spot.toml by hand.
 directional.gltf  the same lit by a directional light tilted by its node; directional.toml by hand.
+sparse.gltf    positions through sparse accessors (glTF 2.0, 3.6.2.3), one over a bufferView, one
+               over zeros; bad_sparse.gltf with its substitution's indices out of order.
 bad_index.gltf an index beyond the vertices (the located error).
 Run: python3 make_gltf.py
 """
@@ -39,6 +41,21 @@ class Builder:
         hi = [max(p[i] for p in points) for i in range(3)]
         self.accessors.append({"bufferView": self._view(raw), "componentType": 5126, "count": len(points),
                                "type": "VEC3", "min": lo, "max": hi})
+        return len(self.accessors) - 1
+
+    def sparse_vec3(self, count, base, replaced):
+        """A VEC3 accessor of `count` elements: `base` (None: no bufferView, zeros) with the points of
+        `replaced` ({index: point}) put in through a sparse substitution, indices as UNSIGNED_BYTE."""
+        order = list(replaced)
+        accessor = {"componentType": 5126, "count": count, "type": "VEC3",
+                    "sparse": {"count": len(order),
+                               "indices": {"bufferView": self._view(struct.pack("<%dB" % len(order), *order)),
+                                           "componentType": 5121},
+                               "values": {"bufferView": self._view(b"".join(struct.pack("<3f", *replaced[i])
+                                                                            for i in order))}}}
+        if base is not None:
+            accessor["bufferView"] = self._view(b"".join(struct.pack("<3f", *p) for p in base))
+        self.accessors.append(accessor)
         return len(self.accessors) - 1
 
     def indices(self, values, component):
@@ -166,6 +183,20 @@ def emissive():
         extensionsUsed=["KHR_materials_emissive_strength"]))
 
 
+def sparse():
+    # The quad from (-1, -1) to (1, 1) whose corner 2 the sparse substitution moves to (2, 2, 0), and a
+    # triangle from zeros (no bufferView) with corners 1 and 2 put in: (1, 0, 0) and (0, 1, 0).
+    # bad_sparse.gltf gives the substitution's indices out of order.
+    for name, order in (("sparse.gltf", {2: (2, 2, 0)}), ("bad_sparse.gltf", {3: (0, 2, 0), 2: (2, 2, 0)})):
+        b = Builder()
+        kite = b.sparse_vec3(4, UNIT_QUAD, order)
+        b.meshes.append({"name": "Kite", "primitives": [{"attributes": {"POSITION": kite},
+                                                         "indices": b.indices([0, 1, 2, 0, 2, 3], 5121)}]})
+        corner = b.sparse_vec3(3, None, {1: (1, 0, 0), 2: (0, 1, 0)})
+        b.meshes.append({"name": "Corner", "primitives": [{"attributes": {"POSITION": corner}}]})
+        write(name, b.document(nodes=[{"mesh": 0}, {"mesh": 1, "translation": [0, 0, -1]}], scenes=[{"nodes": [0, 1]}]))
+
+
 def bad_index():
     b = Builder()
     b.mesh("Broken", UNIT_QUAD, (0, 0, 1), [0, 1, 2, 0, 2, 7], 5123, 0)
@@ -176,4 +207,5 @@ point()
 spot()
 directional()
 emissive()
+sparse()
 bad_index()
