@@ -138,6 +138,9 @@ private:
         for (std::size_t i = 0; i < model_.materials.size(); ++i) {
             const tinygltf::Material& m = model_.materials[i];
             const std::string where = "materials[" + std::to_string(i) + "]";
+            // No alpha: a MASK's cut-outs and a BLEND's see-through parts render opaque.
+            if (m.alphaMode == "MASK" || m.alphaMode == "BLEND")
+                warn(where + ": alphaMode " + m.alphaMode + " is not read: the surface renders opaque");
             uvSet_ = kNoUvSet;
             const auto& pbr = m.pbrMetallicRoughness;
             const std::vector<double> base =
@@ -493,11 +496,34 @@ private:
 
     // A TEXCOORD_n as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
     // where lightpath's runs up (OBJ's vt; io/image_texture.cpp reads t = 1 - v), so v' = 1 - v.
+    // glTF 2.0, 3.7.2.1 also allows normalized UNSIGNED_BYTE and UNSIGNED_SHORT (x / 255, x / 65535).
     std::vector<Vec2> textureCoordinates(int index, const std::string& where) const {
-        return floatElements<2>(
-            index, TINYGLTF_TYPE_VEC2, where, "expected FLOAT components (normalised integers are not read)",
-            [](const std::array<float, 2>& e) { return Vec2(e[0], 1.0f - e[1]); },
-            [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
+        const tinygltf::Accessor* a = index >= 0 && std::size_t(index) < model_.accessors.size()
+                                          ? &model_.accessors[std::size_t(index)]
+                                          : nullptr;
+        const bool integers = a != nullptr && (a->componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                               a->componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+        if (!integers || !a->normalized)
+            return floatElements<2>(
+                index, TINYGLTF_TYPE_VEC2, where, "expected FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, components",
+                [](const std::array<float, 2>& e) { return Vec2(e[0], 1.0f - e[1]); },
+                [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
+        const View v = view(index, TINYGLTF_TYPE_VEC2, where);
+        const bool bytes = v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+        const float scale = bytes ? 1.0f / 255.0f : 1.0f / 65535.0f;
+        std::vector<Vec2> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            const unsigned char* p = v.data + i * v.stride;
+            std::uint16_t u = 0, w = 0;
+            if (bytes) {
+                u = p[0], w = p[1];
+            } else {
+                std::memcpy(&u, p, sizeof u);  // little-endian, as glTF's buffers are
+                std::memcpy(&w, p + sizeof u, sizeof w);
+            }
+            out[i] = Vec2(float(u) * scale, 1.0f - float(w) * scale);
+        }
+        return out;
     }
 
     std::vector<std::uint32_t> indices(int index, std::size_t vertexCount, const std::string& where) const {

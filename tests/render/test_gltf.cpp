@@ -230,6 +230,14 @@ TEST_CASE("a glTF baseColorTexture naming texCoord 1 reads TEXCOORD_1, as the TO
     CHECK(worstBlockDifference(second, toml) <= 0.01);
 }
 
+TEST_CASE("glTF uvs as normalized UNSIGNED_BYTE and UNSIGNED_SHORT render as float uvs") {
+    const Film toml = renderSmall(kData / "textured.toml", "raycast", 4);
+    for (const char* file : {"textured-uv8.gltf", "textured-uv16.gltf"}) {
+        CAPTURE(file);
+        CHECK(worstBlockDifference(renderSmall(kData / file, "raycast", 4), toml) <= 0.01);
+    }
+}
+
 TEST_CASE("a textured quad light renders as its four quadrants as constant quads: seen, and by the light it casts" *
           doctest::test_suite("statistical")) {
     // Seen directly, a ray's hit reads the texture; on the floor, light sampling reads it at the

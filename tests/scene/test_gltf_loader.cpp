@@ -209,6 +209,19 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
     CHECK(scene.lights.size() == 1);
 }
 
+TEST_CASE("a glTF material's alphaMode MASK or BLEND is named in a warning: lightpath renders it opaque") {
+    const test::TempFolder temp("lightpath-gltf-alpha");
+    std::ifstream in(kData / "point.gltf");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string name = "\"name\": \"Floor Paint\"";
+    REQUIRE(text.find(name) != std::string::npos);
+    text.replace(text.find(name), name.size(), name + ", \"alphaMode\": \"MASK\"");
+    std::ofstream(temp.path() / "alpha.gltf") << text;
+    const Scene scene = loadScene(temp.path() / "alpha.gltf");
+    CHECK(warns(scene, "alpha.gltf: materials[0]: alphaMode MASK is not read: the surface renders opaque"));
+    CHECK(!warns(loadScene(kData / "point.gltf"), "alphaMode"));
+}
+
 TEST_CASE("sparse accessors: elements substituted over a bufferView or over zeros; indices out of order refused") {
     const Scene scene = loadScene(kData / "sparse.gltf");
     REQUIRE(scene.triangles.size() == 3);

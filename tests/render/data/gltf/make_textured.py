@@ -23,6 +23,8 @@ textured-texcoord1.gltf  textured.gltf with the floor's uvs as TEXCOORD_1, which
                       names (texCoord 1), and TEXCOORD_0 mirrored: it renders as textured.toml.
 texcoord-missing.gltf a baseColorTexture naming texCoord 1 on a primitive without TEXCOORD_1 (the
                       located error).
+textured-uv8.gltf, textured-uv16.gltf  textured.gltf with its uvs as normalized UNSIGNED_BYTE and
+                      UNSIGNED_SHORT (glTF 2.0, 3.7.2.1): they render as textured.toml.
 emissive-quadrants.png  256x256, linear greys 64 | 128 (bottom left, right) and 191 | 255 (top).
 emissive-texture.gltf a quad x in [-0.5, 0.5], y in [0.3, 1.3] at z = 0 facing +z, emitting
                       emissive-quadrants.png (sRGB, as glTF's emissiveTexture is) times emissiveFactor
@@ -74,7 +76,7 @@ def mapped_normal():
     return tuple(c / length for c in world)
 
 
-def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=None):
+def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=None, uv_component=5126):
     data = bytearray()
     views, accessors = [], []
 
@@ -91,7 +93,14 @@ def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=N
     nrm = add(b"".join(struct.pack("<3f", *normal) for _ in POSITIONS), 4, "VEC3", 5126)
     attributes = {"POSITION": pos, "NORMAL": nrm}
     for n, uvs in enumerate(uv_sets):
-        attributes["TEXCOORD_%d" % n] = add(b"".join(struct.pack("<2f", *t) for t in uvs), 4, "VEC2", 5126)
+        if uv_component == 5126:
+            attributes["TEXCOORD_%d" % n] = add(b"".join(struct.pack("<2f", *t) for t in uvs), 4, "VEC2", 5126)
+        else:  # normalized UNSIGNED_BYTE (5121, each element padded to 4 bytes) or UNSIGNED_SHORT (5123)
+            top, fmt = (255, "<2Bxx") if uv_component == 5121 else (65535, "<2H")
+            raw = b"".join(struct.pack(fmt, *(round(c * top) for c in t)) for t in uvs)
+            attributes["TEXCOORD_%d" % n] = add(raw, 4, "VEC2", uv_component, normalized=True)
+            if uv_component == 5121:
+                views[-1]["byteStride"] = 4
     if tangent is not None:
         attributes["TANGENT"] = add(b"".join(struct.pack("<4f", *tangent) for _ in POSITIONS), 4, "VEC4", 5126)
     idx = add(struct.pack("<6H", *ORDER), 6, "SCALAR", 5123)
@@ -167,6 +176,9 @@ def main():
         document(second, [{"uri": "checker4.png"}], 10497, uv_sets=(mirrored, UVS)), indent=1) + "\n")
     (HERE / "texcoord-missing.gltf").write_text(json.dumps(
         document(second, [{"uri": "checker4.png"}], 10497), indent=1) + "\n")
+    for name, component in (("textured-uv8.gltf", 5121), ("textured-uv16.gltf", 5123)):
+        (HERE / name).write_text(json.dumps(
+            document(base, [{"uri": "checker4.png"}], 10497, uv_component=component), indent=1) + "\n")
     emissive()
 
 
