@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/mat2x2.hpp>
+
 #include "materials/lobe.h"
 #include "math/types.h"
 #include "schema/parameter_values.h"
@@ -25,10 +27,19 @@ struct TextureSource {
     TextureColorSpace colorSpace = TextureColorSpace::automatic;
 };
 
+// An affine map of texture coordinates, uv' = linear uv + offset: the TOML key's uv_scale, or
+// glTF's KHR_texture_transform (offset, rotation, scale).
+struct UvTransform {
+    glm::mat2 linear{1.0f};
+    Vec2 offset{0.0f};
+
+    static UvTransform scaled(float scale) { return {glm::mat2(scale), Vec2(0.0f)}; }
+};
+
 // How a parameter reads its texture.
 struct TextureSampling {
-    float uvScale = 1.0f;  // texture coordinates are multiplied by it
-    bool filtered = true;  // false: point sampled (the finest level's texels, bilinearly)
+    UvTransform transform;  // applied to the texture coordinates and their derivatives
+    bool filtered = true;   // false: point sampled (the finest level's texels, bilinearly)
     TextureWrap wrapS = TextureWrap::repeat, wrapT = TextureWrap::repeat;
 };
 
@@ -36,7 +47,7 @@ struct TextureSampling {
 class Texture {
 public:
     virtual ~Texture() = default;
-    // The RGB over the footprint (uv and its change across a pixel, uv scaled already), filtered
+    // The RGB over the footprint (uv and its change across a pixel, transformed already), filtered
     // and wrapped as `sampling` says.
     virtual Rgb lookup(const TextureFootprint& footprint, const TextureSampling& sampling) const = 0;
     // The mean RGB over the whole image (radiosity's constant reflectance of a textured kd).
@@ -49,11 +60,11 @@ using TextureOpener = std::shared_ptr<const Texture> (*)(const TextureSource& so
 void registerTextureOpener(TextureOpener opener);
 std::shared_ptr<const Texture> openTexture(const TextureSource& source, std::string& error);
 
-// A footprint with a parameter's uv scale applied.
-inline TextureFootprint scaledFootprint(TextureFootprint f, float uvScale) {
-    f.uv *= uvScale;
-    f.dUVdx *= uvScale;
-    f.dUVdy *= uvScale;
+// A footprint in a parameter's texture coordinates: its uv mapped, its derivatives turned alike.
+inline TextureFootprint transformedFootprint(TextureFootprint f, const UvTransform& t) {
+    f.uv = t.linear * f.uv + t.offset;
+    f.dUVdx = t.linear * f.dUVdx;
+    f.dUVdy = t.linear * f.dUVdy;
     return f;
 }
 
@@ -64,14 +75,14 @@ public:
     ColorParameter(const Rgb& constant) : value_(constant) {}  // NOLINT: a constant is a parameter
     ColorParameter& operator=(const Rgb& constant) { return *this = ColorParameter(constant); }
     ColorParameter(std::shared_ptr<const Texture> texture, const Rgb& tint, float uvScale, bool filtered)
-        : ColorParameter(std::move(texture), tint, TextureSampling{uvScale, filtered}) {}
+        : ColorParameter(std::move(texture), tint, TextureSampling{UvTransform::scaled(uvScale), filtered}) {}
     ColorParameter(std::shared_ptr<const Texture> texture, const Rgb& tint, const TextureSampling& sampling)
         : value_(tint), texture_(std::move(texture)), sampling_(sampling) {}
 
     // Its value at the surface point `side` describes. The untextured case is one branch.
     Rgb at(const SurfaceSide& side) const {
         if (!texture_) return value_;
-        return value_ * texture_->lookup(scaledFootprint(side.texture, sampling_.uvScale), sampling_);
+        return value_ * texture_->lookup(transformedFootprint(side.texture, sampling_.transform), sampling_);
     }
     bool textured() const { return texture_ != nullptr; }
     // The constant, or a texture's tint.
@@ -100,7 +111,7 @@ public:
 
     float at(const SurfaceSide& side) const {
         if (!texture_) return value_;
-        return value_ * texture_->lookup(scaledFootprint(side.texture, sampling_.uvScale), sampling_)[channel_];
+        return value_ * texture_->lookup(transformedFootprint(side.texture, sampling_.transform), sampling_)[channel_];
     }
     bool textured() const { return texture_ != nullptr; }
     // The constant, or a texture's factor.
@@ -132,7 +143,7 @@ struct NormalMap {
         const Vec3 tangent = along / length;
         Vec3 bitangent = glm::cross(normal, tangent);
         if (glm::dot(bitangent, dpdv) < 0.0f) bitangent = -bitangent;
-        const Rgb texel = texture->lookup(scaledFootprint(footprint, sampling.uvScale), sampling);
+        const Rgb texel = texture->lookup(transformedFootprint(footprint, sampling.transform), sampling);
         const Vec3 local{(2.0f * texel.r - 1.0f) * scale, (2.0f * texel.g - 1.0f) * scale, 2.0f * texel.b - 1.0f};
         const Vec3 turned = local.x * tangent + local.y * bitangent + local.z * normal;
         const float turnedLength = glm::length(turned);

@@ -32,8 +32,9 @@ namespace lightpath {
 namespace {
 
 // The extensions the Reader reads; docs: scenes/README.md, [[gltf]].
-constexpr std::array<std::string_view, 4> kReadExtensions{"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                          "KHR_materials_ior", "KHR_materials_transmission"};
+constexpr std::array<std::string_view, 5> kReadExtensions{"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                          "KHR_materials_ior", "KHR_materials_transmission",
+                                                          "KHR_texture_transform"};
 
 // glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
 constexpr const char* kDefaultMaterialLabel = "gltf-default";
@@ -100,7 +101,7 @@ private:
     // glTF 2.0, 3.12: a file that requires an extension this reader does not read cannot be read as
     // meant (a Draco-compressed mesh keeps its triangles in the extension): refused, naming it. One
     // it merely uses is left out, with a warning, so that what a viewer shows and this render omits
-    // is said (KHR_texture_transform, say, which moves a texture on its surface).
+    // is said (KHR_materials_specular, say, which changes a surface's highlight).
     void checkExtensions() {
         const auto reads = [](const std::string& name) {
             return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
@@ -177,12 +178,11 @@ private:
                 const std::string at = where + ".pbrMetallicRoughness";
                 ColorParameter base(baseColor);
                 ScalarParameter metal(metallic), rough(roughness);
-                if (auto texture = open(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, TextureColorSpace::srgb,
-                                        at + ".baseColorTexture"))
+                if (auto texture = open(pbr.baseColorTexture, TextureColorSpace::srgb, at + ".baseColorTexture"))
                     base = ColorParameter(texture->first, baseColor, texture->second);
                 // glTF 2.0, 3.9.2: metalness in B, roughness in G, linear, times the factors.
-                if (auto texture = open(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                        TextureColorSpace::linear, at + ".metallicRoughnessTexture")) {
+                if (auto texture = open(pbr.metallicRoughnessTexture, TextureColorSpace::linear,
+                                        at + ".metallicRoughnessTexture")) {
                     metal = ScalarParameter(texture->first, 2, metallic, texture->second);
                     rough = ScalarParameter(texture->first, 1, roughness, texture->second);
                 }
@@ -194,8 +194,7 @@ private:
             // glTF 2.0, 3.9.3: the sRGB emissiveTexture times emissiveFactor (times the strength).
             const Rgb emission = float(strength) * Rgb(float(emissive[0]), float(emissive[1]), float(emissive[2]));
             material->emission = emission;
-            if (auto texture = open(m.emissiveTexture.index, m.emissiveTexture.texCoord, TextureColorSpace::srgb,
-                                    where + ".emissiveTexture")) {
+            if (auto texture = open(m.emissiveTexture, TextureColorSpace::srgb, where + ".emissiveTexture")) {
                 if (isBlack(emission))
                     warn(where + ".emissiveTexture: its emissiveFactor (default [0, 0, 0]) is black: it emits nothing");
                 else
@@ -206,8 +205,7 @@ private:
             // unless backface culling is on).
             material->twoSidedEmission = m.doubleSided;
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
-            if (auto texture = open(m.normalTexture.index, m.normalTexture.texCoord, TextureColorSpace::linear,
-                                    where + ".normalTexture")) {
+            if (auto texture = open(m.normalTexture, TextureColorSpace::linear, where + ".normalTexture")) {
                 material->normalMap = {texture->first, float(number(m.normalTexture.scale, -kMaxMagnitude, kMaxMagnitude,
                                                                     where + ".normalTexture.scale")),
                                        texture->second};
@@ -223,11 +221,16 @@ private:
 
     using OpenedTexture = std::pair<std::shared_ptr<const Texture>, TextureSampling>;
 
-    // Texture `index` (a material's textureInfo) opened with its sampler's wrap modes; nothing
-    // (and a warning: the material keeps its factor) when there is none or it cannot be read. Its
-    // texCoord becomes the material's uv set (uvSet_): a triangle carries one set, its material's.
-    std::optional<OpenedTexture> open(int index, int texCoord, TextureColorSpace colorSpace, const std::string& where) {
+    // A material's textureInfo opened with its sampler's wrap modes and its KHR_texture_transform;
+    // nothing (and a warning: the material keeps its factor) when there is none or it cannot be
+    // read. Its texCoord becomes the material's uv set (uvSet_): a triangle carries one set, its
+    // material's.
+    template <class TextureInfo>
+    std::optional<OpenedTexture> open(const TextureInfo& info, TextureColorSpace colorSpace, const std::string& where) {
+        const int index = info.index;
         if (index < 0) return std::nullopt;
+        int texCoord = info.texCoord;
+        const UvTransform transform = uvTransform(info.extensions, texCoord, where + ".extensions.KHR_texture_transform");
         if (std::size_t(index) >= model_.textures.size())
             fail(where + ".index", "expected a texture index below " + std::to_string(model_.textures.size()) + ", got " +
                                        std::to_string(index));
@@ -241,6 +244,7 @@ private:
             return std::nullopt;
         }
         TextureSampling sampling;
+        sampling.transform = transform;
         if (t.sampler >= 0) {
             if (std::size_t(t.sampler) >= model_.samplers.size())
                 fail(at + ".sampler", "expected a sampler index below " + std::to_string(model_.samplers.size()) + ", got " +
@@ -259,6 +263,43 @@ private:
                  ", the set of the material's other textures (a material's textures share one set)");
         }
         return OpenedTexture{std::move(texture), sampling};
+    }
+
+    // KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) uv in glTF's texture coordinates,
+    // whose v runs down the image, R = [cos sin; -sin cos]; its texCoord, when given, replaces
+    // the textureInfo's. As lightpath's v = 1 - glTF's (D = diag(1, -1), e = (0, 1)), the map is
+    // D L D uv + D (L e + offset) + e, L = R S.
+    UvTransform uvTransform(const tinygltf::ExtensionMap& extensions, int& texCoord, const std::string& where) const {
+        const auto found = extensions.find("KHR_texture_transform");
+        if (found == extensions.end()) return {};
+        const tinygltf::Value& t = found->second;
+        if (!t.IsObject()) fail(where, "expected an object");
+        const auto pair = [&](const char* key, Vec2 fallback) {
+            if (!t.Has(key)) return fallback;
+            const tinygltf::Value& v = t.Get(key);
+            if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber() ||
+                !finite(v.Get(0).GetNumberAsDouble()) || !finite(v.Get(1).GetNumberAsDouble()))
+                fail(where + "." + key, "expected two numbers" + std::string(kMagnitudeRange));
+            return Vec2(float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble()));
+        };
+        const Vec2 offset = pair("offset", Vec2(0.0f)), scale = pair("scale", Vec2(1.0f));
+        double rotation = 0.0;
+        if (t.Has("rotation")) {
+            const tinygltf::Value& r = t.Get("rotation");
+            if (!r.IsNumber() || !finite(r.GetNumberAsDouble())) fail(where + ".rotation", "expected a number of radians");
+            rotation = r.GetNumberAsDouble();
+        }
+        if (t.Has("texCoord")) {
+            const tinygltf::Value& c = t.Get("texCoord");
+            if (!c.IsInt()) fail(where + ".texCoord", "expected a set from 0 to " + std::to_string(kMaxUvSet));
+            texCoord = c.GetNumberAsInt();
+        }
+        const float c = float(std::cos(rotation)), s = float(std::sin(rotation));
+        const float l00 = c * scale.x, l01 = s * scale.y, l10 = -s * scale.x, l11 = c * scale.y;  // L, by rows
+        UvTransform out;
+        out.linear = glm::mat2(Vec2(l00, -l10), Vec2(-l01, l11));  // D L D, by columns
+        out.offset = Vec2(l01 + offset.x, 1.0f - l11 - offset.y);
+        return out;
     }
 
     static TextureWrap wrap(int mode) {

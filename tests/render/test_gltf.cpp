@@ -230,6 +230,12 @@ TEST_CASE("a glTF baseColorTexture naming texCoord 1 reads TEXCOORD_1, as the TO
     CHECK(worstBlockDifference(second, toml) <= 0.01);
 }
 
+TEST_CASE("KHR_texture_transform (offset, rotation, scale, its texCoord) renders as the uvs transformed by hand") {
+    const Film moved = renderSmall(kData / "textured-transform.gltf", "raycast", 4);
+    const Film baked = renderSmall(kData / "textured-transform-baked.gltf", "raycast", 4);
+    CHECK(worstBlockDifference(moved, baked) <= 0.01);
+}
+
 TEST_CASE("glTF uvs as normalized UNSIGNED_BYTE and UNSIGNED_SHORT render as float uvs") {
     const Film toml = renderSmall(kData / "textured.toml", "raycast", 4);
     for (const char* file : {"textured-uv8.gltf", "textured-uv16.gltf"}) {

@@ -23,6 +23,8 @@ textured-texcoord1.gltf  textured.gltf with the floor's uvs as TEXCOORD_1, which
                       names (texCoord 1), and TEXCOORD_0 mirrored: it renders as textured.toml.
 texcoord-missing.gltf a baseColorTexture naming texCoord 1 on a primitive without TEXCOORD_1 (the
                       located error).
+textured-transform.gltf  the checker through KHR_texture_transform (offset, rotation, scale, and
+                      texCoord 1 in place of 0); textured-transform-baked.gltf has the transformed uvs.
 textured-uv8.gltf, textured-uv16.gltf  textured.gltf with its uvs as normalized UNSIGNED_BYTE and
                       UNSIGNED_SHORT (glTF 2.0, 3.7.2.1): they render as textured.toml.
 emissive-quadrants.png  256x256, linear greys 64 | 128 (bottom left, right) and 191 | 255 (top).
@@ -176,6 +178,21 @@ def main():
         document(second, [{"uri": "checker4.png"}], 10497, uv_sets=(mirrored, UVS)), indent=1) + "\n")
     (HERE / "texcoord-missing.gltf").write_text(json.dumps(
         document(second, [{"uri": "checker4.png"}], 10497), indent=1) + "\n")
+    # KHR_texture_transform on TEXCOORD_1 (its texCoord overrides the textureInfo's 0), against the
+    # same transform applied here to the uvs, by the extension's matrix T(offset) R(rotation) S(scale).
+    offset, rotation, scale = (0.25, 0.1), 0.3, (2.0, 1.5)
+    c, s = math.cos(rotation), math.sin(rotation)
+    baked = [(c * scale[0] * u + s * scale[1] * v + offset[0], -s * scale[0] * u + c * scale[1] * v + offset[1])
+             for u, v in UVS]
+    moved = {"name": "Checker", "pbrMetallicRoughness": {
+        "baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {
+            "offset": list(offset), "rotation": rotation, "scale": list(scale), "texCoord": 1}}},
+        "metallicFactor": 0, "roughnessFactor": 1}}
+    transformed = document(moved, [{"uri": "checker4.png"}], 10497, uv_sets=(mirrored, UVS))
+    transformed["extensionsUsed"].append("KHR_texture_transform")
+    (HERE / "textured-transform.gltf").write_text(json.dumps(transformed, indent=1) + "\n")
+    (HERE / "textured-transform-baked.gltf").write_text(json.dumps(
+        document(base, [{"uri": "checker4.png"}], 10497, uv_sets=(baked,)), indent=1) + "\n")
     for name, component in (("textured-uv8.gltf", 5121), ("textured-uv16.gltf", 5123)):
         (HERE / name).write_text(json.dumps(
             document(base, [{"uri": "checker4.png"}], 10497, uv_component=component), indent=1) + "\n")
