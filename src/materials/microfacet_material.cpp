@@ -13,8 +13,6 @@
 namespace lightpath {
 namespace {
 
-// glTF 2.0 appendix B: a dielectric's reflectance at normal incidence (index of refraction 1.5).
-constexpr float kDielectricF0 = 0.04f;
 // Visible normals per axis of the stratified grid that integrates the specular albedo table.
 constexpr int kAlbedoStrata = 64;
 
@@ -67,8 +65,10 @@ MicrofacetMaterial::AlbedoTable MicrofacetMaterial::albedoTable(float roughness,
     return table;
 }
 
-MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness)
-    : baseColor_(std::move(baseColor)), metallic_(std::move(metallic)), roughness_(std::move(roughness)) {
+MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness,
+                                       const Rgb& dielectricF0)
+    : baseColor_(std::move(baseColor)), metallic_(std::move(metallic)), roughness_(std::move(roughness)),
+      dielectricF0_(glm::clamp(dielectricF0, Rgb{0.0f}, Rgb{1.0f})) {
     if (!roughness_.textured()) {
         tables_.push_back(albedoTable(roughness_.constant(), kAlbedoStrata));
     } else {
@@ -77,7 +77,7 @@ MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter
             tables_.push_back(albedoTable(float(n) / float(kRoughnessNodes - 1), kAlbedoStrata / 2));
     }
     const float metal = metallic_.constant();
-    constant_.f0 = glm::mix(Rgb{kDielectricF0}, baseColor_.constant(), metal);
+    constant_.f0 = glm::mix(dielectricF0_, baseColor_.constant(), metal);
     constant_.diffuse = (1.0f - metal) * baseColor_.constant();
     constant_.alpha = std::max(ggx::kMinAlpha, roughness_.constant() * roughness_.constant());
     if (roughness_.textured()) {
@@ -107,7 +107,7 @@ MicrofacetMaterial::Shading MicrofacetMaterial::shadingOf(const Rgb& baseColor, 
     Shading shading;
     metallic = std::clamp(metallic, 0.0f, 1.0f);
     roughness = std::clamp(roughness, 0.0f, 1.0f);
-    shading.f0 = glm::mix(Rgb{kDielectricF0}, baseColor, metallic);
+    shading.f0 = glm::mix(dielectricF0_, baseColor, metallic);
     shading.diffuse = (1.0f - metallic) * baseColor;
     shading.alpha = std::max(ggx::kMinAlpha, roughness * roughness);
     float averageScale = tables_[0].averageScale, averageBias = tables_[0].averageBias;
@@ -260,7 +260,7 @@ constexpr Range kUnitInterval{0.0, 1.0, false, false};
 
 MaterialSlot makeMicrofacet(const ParameterValues& values) {
     MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
-                                values.number("roughness"));
+                                values.number("roughness"), values.colour("dielectric_f0"));
     material.emission = colorParameter(values, "emission");
     material.twoSidedEmission = values.boolean("two_sided_emission");
     return material;
@@ -274,8 +274,11 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
      {{"base_color", lightpath::ParameterType::Colour, "", "0.8", lightpath::kUnitInterval,
        "the metal's reflectance at normal incidence F0, the dielectric's diffuse albedo; may be a texture"},
       {"metallic", lightpath::ParameterType::Number, "", "1", lightpath::kUnitInterval,
-       "1 a conductor (F0 = base_color, no base), 0 a dielectric (F0 = 0.04 over a diffuse base_color)"},
+       "1 a conductor (F0 = base_color, no base), 0 a dielectric (F0 = dielectric_f0 over a diffuse base_color)"},
       lightpath::kGgxRoughnessParameter,
+      {"dielectric_f0", lightpath::ParameterType::Colour, "", "0.04", lightpath::kUnitInterval,
+       "the dielectric's reflectance at normal incidence: ((n − 1)/(n + 1))² for an index of refraction n, 0.04 for "
+       "1.5; glTF's KHR_materials_ior times KHR_materials_specular's specularColorFactor"},
       lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
      "<R[DGS]>|O"},
     2, lightpath::makeMicrofacet,

@@ -27,10 +27,16 @@ namespace lightpath {
 
 class MicrofacetMaterial final : public Material {
 public:
+    // glTF 2.0 appendix B: a dielectric's reflectance at normal incidence (index of refraction 1.5).
+    static constexpr float kDielectricF0 = 0.04f;
+
     MicrofacetMaterial(Rgb baseColor, float metallic, float roughness)
         : MicrofacetMaterial(ColorParameter(baseColor), ScalarParameter(metallic), ScalarParameter(roughness)) {}
-    // Any of the three may be a texture: F0, the base and the lobe then vary over the surface.
-    MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness);
+    // Any of the first three may be a texture: F0, the base and the lobe then vary over the
+    // surface. `dielectricF0`: the F0 of its dielectric part (glTF's KHR_materials_ior and
+    // KHR_materials_specular set it).
+    MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness,
+                       const Rgb& dielectricF0 = Rgb{kDielectricF0});
 
     std::unique_ptr<Material> clone() const override { return std::make_unique<MicrofacetMaterial>(*this); }
 
@@ -53,6 +59,8 @@ public:
     Rgb diffuseReflectance() const override;
     Rgb diffuseReflectanceAt(const SurfaceSide& side) const override;
 
+    // The F0 of its dielectric part (metallic 0).
+    const Rgb& dielectricF0() const { return dielectricF0_; }
     // Schlick's F(cos) = F0 + (1 - F0)(1 - cos)^5 (Schlick 1994).
     static Rgb fresnel(const Rgb& f0, float cosine);
     // E(w): the specular layer's directional albedo for cos theta = cosine, at the untextured
@@ -95,6 +103,7 @@ private:
     ColorParameter baseColor_;
     ScalarParameter metallic_{1.0f};
     ScalarParameter roughness_{0.5f};
+    Rgb dielectricF0_{kDielectricF0};
 };
 
 }  // namespace lightpath

@@ -32,9 +32,9 @@ namespace lightpath {
 namespace {
 
 // The extensions the Reader reads; docs: scenes/README.md, [[gltf]].
-constexpr std::array<std::string_view, 5> kReadExtensions{"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                          "KHR_materials_ior", "KHR_materials_transmission",
-                                                          "KHR_texture_transform"};
+constexpr std::array<std::string_view, 6> kReadExtensions{"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                                          "KHR_materials_ior", "KHR_materials_specular",
+                                                          "KHR_materials_transmission", "KHR_texture_transform"};
 
 // glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
 constexpr const char* kDefaultMaterialLabel = "gltf-default";
@@ -101,7 +101,7 @@ private:
     // glTF 2.0, 3.12: a file that requires an extension this reader does not read cannot be read as
     // meant (a Draco-compressed mesh keeps its triangles in the extension): refused, naming it. One
     // it merely uses is left out, with a warning, so that what a viewer shows and this render omits
-    // is said (KHR_materials_specular, say, which changes a surface's highlight).
+    // is said (KHR_materials_clearcoat, say, which adds a coat over a surface).
     void checkExtensions() {
         const auto reads = [](const std::string& name) {
             return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
@@ -132,6 +132,38 @@ private:
         if (found == extensions.end() || !found->second.IsObject() || !found->second.Has(key)) return fallback;
         const tinygltf::Value& value = found->second.Get(key);
         return value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+    }
+
+    // The dielectric's F0 of an opaque material: ((n - 1)/(n + 1))^2 of KHR_materials_ior's n,
+    // times KHR_materials_specular's specularColorFactor (clamped to 1), as Blender writes its
+    // Principled BSDF's specular (F0 = 0.08 specular); specularFactor, which the extension applies
+    // to the whole specular layer, scales F0 here (a warning), and its textures are not read.
+    Rgb dielectricF0(const tinygltf::Material& m, double ior, const std::string& where) {
+        const float f0 = float(((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0)));
+        const auto found = m.extensions.find("KHR_materials_specular");
+        if (found == m.extensions.end()) return Rgb{f0};
+        const std::string at = where + ".extensions.KHR_materials_specular";
+        const tinygltf::Value& e = found->second;
+        if (!e.IsObject()) fail(at, "expected an object");
+        Rgb colour{1.0f};
+        if (e.Has("specularColorFactor")) {
+            const tinygltf::Value& c = e.Get("specularColorFactor");
+            if (!c.IsArray() || c.ArrayLen() != 3) fail(at + ".specularColorFactor", "expected three numbers");
+            for (int k = 0; k < 3; ++k) {
+                const tinygltf::Value& x = c.Get(k);
+                if (!x.IsNumber() || !(x.GetNumberAsDouble() >= 0.0) || !finite(x.GetNumberAsDouble()))
+                    fail(at + ".specularColorFactor", "expected three numbers from 0" + std::string(kMagnitudeRange));
+                colour[k] = float(x.GetNumberAsDouble());
+            }
+        }
+        const double weight = number(extensionNumber(m.extensions, "KHR_materials_specular", "specularFactor", 1.0), 0.0,
+                                     1.0, at + ".specularFactor");
+        if (weight != 1.0)
+            warn(at + ".specularFactor " + formatNumber(weight) +
+                 " scales the reflectance at normal incidence only; at grazing angles the surface still reflects all");
+        for (const char* texture : {"specularTexture", "specularColorTexture"})
+            if (e.Has(texture)) warn(at + "." + texture + " is not read: its factor alone is used");
+        return glm::min(Rgb{1.0f}, f0 * colour) * float(weight);
     }
 
     void readMaterials() {
@@ -187,7 +219,8 @@ private:
                     rough = ScalarParameter(texture->first, 1, roughness, texture->second);
                 }
                 const bool textured = base.textured() || metal.textured();
-                MaterialSlot slot = MicrofacetMaterial(std::move(base), std::move(metal), std::move(rough));
+                MaterialSlot slot = MicrofacetMaterial(std::move(base), std::move(metal), std::move(rough),
+                                                       dielectricF0(m, ior, where));
                 slot->textured = textured;  // shading points then carry their uv and footprint
                 return slot;
             }();

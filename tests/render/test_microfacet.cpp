@@ -17,6 +17,7 @@
 #include "scene/scene_loader.h"
 #include "../support/direction_chi_square.h"
 #include "../support/material_harness.h"
+#include "../support/monte_carlo.h"
 #include "../support/paired_agreement.h"
 #include "../support/statistics.h"
 #include "../support/uniform_real.h"
@@ -175,6 +176,32 @@ TEST_CASE("microfacet: F0 = mix(0.04, base_color, metallic) and the base is (1 -
     CHECK(dielectric.eval(MicrofacetMaterial::kDiffuse, side, {0, 0, 1}, wi).r == doctest::Approx(expected).epsilon(1e-4));
     const MicrofacetMaterial metal(Rgb{0.6f}, 1.0f, 0.5f);
     CHECK(!metal.has(MicrofacetMaterial::kDiffuse));
+}
+
+// dielectric_f0 replaces the 0.04: F0 = mix(dielectric_f0, base_color, metallic). A dielectric of
+// F0 X over a black base is the conductor of F0 X (no base either way), lobe by lobe.
+TEST_CASE("microfacet: dielectric_f0 is the dielectric's F0; over a black base it is the conductor of that F0") {
+    const SurfaceSide side{{0, 0, 1}, true, TransportMode::Radiance};
+    SpecularBranches branches;
+    const Rgb f0{0.02f, 0.3f, 0.9f};
+    const MicrofacetMaterial smooth(ColorParameter(Rgb{0.6f}), 0.5f, 0.0f, f0);
+    REQUIRE(smooth.specularBranches(side, {0, 0, 1}, branches) == 1);
+    CHECK(branches[0].weight.r == doctest::Approx(0.5 * 0.02 + 0.5 * 0.6));  // at normal incidence F = F0
+    CHECK(branches[0].weight.b == doctest::Approx(0.5 * 0.9 + 0.5 * 0.6));
+    for (const float roughness : {0.2f, 0.6f}) {
+        CAPTURE(roughness);
+        const MicrofacetMaterial dielectric(ColorParameter(Rgb{0.0f}), 0.0f, roughness, f0);
+        const MicrofacetMaterial metal = conductor(f0, roughness);
+        std::mt19937_64 rng(7);
+        for (int k = 0; k < 200; ++k) {
+            Vec3 wo = test::uniformSphereDirection(rng), wi = test::uniformSphereDirection(rng);
+            wo.z = std::fabs(wo.z), wi.z = std::fabs(wi.z);  // both above the surface
+            for (int c = 0; c < 3; ++c)
+                CHECK(dielectric.eval(MicrofacetMaterial::kGlossy, side, wo, wi)[c] ==
+                      doctest::Approx(metal.eval(MicrofacetMaterial::kGlossy, side, wo, wi)[c]).epsilon(1e-5));
+            CHECK(dielectric.eval(MicrofacetMaterial::kDiffuse, side, wo, wi) == Rgb{0.0f});
+        }
+    }
 }
 
 constexpr int kChiSquareTests = 8;

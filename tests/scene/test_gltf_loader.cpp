@@ -201,8 +201,8 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
     CHECK(errorOf(required) == required.string() +
                                    ": extensionsRequired[0]: the file requires \"KHR_draco_mesh_compression\", which "
                                    "lightpath does not read (it reads KHR_lights_punctual, "
-                                   "KHR_materials_emissive_strength, KHR_materials_ior, KHR_materials_transmission, "
-                                   "KHR_texture_transform)");
+                                   "KHR_materials_emissive_strength, KHR_materials_ior, KHR_materials_specular, "
+                                   "KHR_materials_transmission, KHR_texture_transform)");
     // Used only: rendered, the extension named in a warning; the ones it reads are not.
     const Scene scene = loadScene(variant("used.gltf", ""));
     CHECK(warns(scene, "extensionsUsed: KHR_draco_mesh_compression is not read by lightpath: the render leaves it out"));
@@ -221,6 +221,36 @@ TEST_CASE("a glTF material's alphaMode MASK or BLEND is named in a warning: ligh
     const Scene scene = loadScene(temp.path() / "alpha.gltf");
     CHECK(warns(scene, "alpha.gltf: materials[0]: alphaMode MASK is not read: the surface renders opaque"));
     CHECK(!warns(loadScene(kData / "point.gltf"), "alphaMode"));
+}
+
+// KHR_materials_ior's n gives F0 = ((n - 1)/(n + 1))^2, KHR_materials_specular's specularColorFactor
+// tints it; Blender writes F0 = 0.08 * its Principled specular that way (0 in make_blender.py).
+TEST_CASE("a glTF dielectric's F0: from KHR_materials_ior and KHR_materials_specular, as Blender writes them") {
+    const auto f0Of = [](const Scene& scene, const std::string& name) {
+        for (const MaterialSlot& m : scene.materials)
+            if (m->name == name) {
+                const auto* microfacet = dynamic_cast<const MicrofacetMaterial*>(&*m);
+                REQUIRE(microfacet != nullptr);
+                return microfacet->dielectricF0();
+            }
+        FAIL("no material " << name);
+        return Rgb{0.0f};
+    };
+    CHECK(f0Of(loadScene(kData / "point.gltf"), "Floor_Paint") == Rgb{0.04f});  // neither: n = 1.5
+    const Scene blender = loadScene(kData / "blender" / "point.glb");
+    CHECK(f0Of(blender, "White") == Rgb{0.0f});  // specular 0: specularColorFactor [0, 0, 0], n 1.45
+    const test::TempFolder temp("lightpath-gltf-f0");
+    std::ifstream in(kData / "point.gltf");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string name = "\"name\": \"Floor Paint\"";
+    text.replace(text.find(name), name.size(),
+                 name + ", \"extensions\": {\"KHR_materials_ior\": {\"ior\": 2}, \"KHR_materials_specular\": "
+                        "{\"specularColorFactor\": [0.5, 1, 20]}}");
+    std::ofstream(temp.path() / "f0.gltf") << text;
+    const Rgb f0 = f0Of(loadScene(temp.path() / "f0.gltf"), "Floor_Paint");
+    CHECK(f0.r == doctest::Approx(0.5 / 9.0));
+    CHECK(f0.g == doctest::Approx(1.0 / 9.0));
+    CHECK(f0.b == doctest::Approx(1.0));  // 20 / 9, clamped
 }
 
 TEST_CASE("sparse accessors: elements substituted over a bufferView or over zeros; indices out of order refused") {
