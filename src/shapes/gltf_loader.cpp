@@ -121,8 +121,8 @@ private:
                 ++count;
             }
         if (count > 0)
-            warn("extensionsUsed: " + left + (count == 1 ? " is" : " are") + " not read by lightpath: the render leaves " +
-                 (count == 1 ? "it" : "them") + " out");
+            warn("extensionsUsed: " + left + (count == 1 ? " is" : " are") +
+                 " not read by lightpath: the render leaves " + (count == 1 ? "it" : "them") + " out");
     }
 
     // A number in an extension object, else `fallback`.
@@ -509,7 +509,8 @@ private:
             fail(at, std::to_string(a.count) + " sparse elements are more than lightpath makes dense");
         auto dense = std::make_shared<std::vector<unsigned char>>(a.count * element, static_cast<unsigned char>(0));
         if (base.data != nullptr)
-            for (std::size_t i = 0; i < a.count; ++i) std::memcpy(dense->data() + i * element, base.data + i * base.stride, element);
+            for (std::size_t i = 0; i < a.count; ++i)
+                std::memcpy(dense->data() + i * element, base.data + i * base.stride, element);
         const std::size_t count = std::size_t(a.sparse.count);
         const int indexType = a.sparse.indices.componentType;
         const int indexSize = indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
@@ -517,9 +518,10 @@ private:
                               : indexType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
                                                                                     : 0;
         if (indexSize == 0) fail(at + ": sparse.indices", "expected UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-        const unsigned char* indices = viewBytes(a.sparse.indices.bufferView, std::size_t(std::max(0, a.sparse.indices.byteOffset)),
+        const auto offset = [](int byteOffset) { return std::size_t(std::max(0, byteOffset)); };
+        const unsigned char* indices = viewBytes(a.sparse.indices.bufferView, offset(a.sparse.indices.byteOffset),
                                                  count * std::size_t(indexSize), at + ": sparse.indices");
-        const unsigned char* values = viewBytes(a.sparse.values.bufferView, std::size_t(std::max(0, a.sparse.values.byteOffset)),
+        const unsigned char* values = viewBytes(a.sparse.values.bufferView, offset(a.sparse.values.byteOffset),
                                                 count * element, at + ": sparse.values");
         std::size_t previous = 0;
         for (std::size_t i = 0; i < count; ++i) {
