@@ -425,8 +425,8 @@ TEST_CASE("emitters: a two-sided emissive quad lights both its sides alike in ev
     const Scene twoSided = lampBetweenFloorAndCeiling(true), oneSided = lampBetweenFloorAndCeiling(false);
     for (const std::string integrator : {"raycast", "raster", "whitted", "path", "bdpt", "radiosity", "photon", "sppm"}) {
         CAPTURE(integrator);
-        const double both = asymmetry(renderWith(twoSided, aovs, integrator, 16).film);
-        const double one = asymmetry(renderWith(oneSided, aovs, integrator, 16).film);
+        const double both = asymmetry(renderWith(twoSided, aovs, integrator, 16, 256).film);
+        const double one = asymmetry(renderWith(oneSided, aovs, integrator, 16, 256).film);
         CAPTURE(both);
         CAPTURE(one);
         CHECK(std::fabs(both) < 0.03);
