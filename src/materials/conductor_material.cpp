@@ -127,8 +127,7 @@ constexpr Range kExtinctionRange{0.0, 20.0, false, false};
 
 MaterialSlot makeConductor(const ParameterValues& values) {
     ConductorMaterial material(values.colour("eta"), values.colour("k"), values.number("roughness"));
-    material.emission = colorParameter(values, "emission");
-    material.twoSidedEmission = values.boolean("two_sided_emission");
+    readEmission(values, material);
     return material;
 }
 

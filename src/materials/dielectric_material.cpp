@@ -265,8 +265,7 @@ constexpr Range kDielectricRoughnessRange{0.0, 1.0, false, false};
 
 MaterialSlot makeDielectric(const ParameterValues& values) {
     DielectricMaterial material(values.number("ior"), colorParameter(values, "tint"), values.number("roughness"));
-    material.emission = colorParameter(values, "emission");
-    material.twoSidedEmission = values.boolean("two_sided_emission");
+    readEmission(values, material);
     return material;
 }
 

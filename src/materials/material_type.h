@@ -31,6 +31,12 @@ inline constexpr Parameter kGgxRoughnessParameter{
     "roughness", ParameterType::Number, "", "0.5", Range{0.0, 1.0, false, false},
     "GGX alpha = roughness²; 0 is a perfect mirror (`<RS>`), above 0 a glossy lobe (`<RG>`)"};
 
+// The values of those two rows, which every material type lists, set on `material`.
+inline void readEmission(const ParameterValues& values, Material& material) {
+    material.emission = colorParameter(values, "emission");
+    material.twoSidedEmission = values.boolean("two_sided_emission");
+}
+
 struct MaterialType {
     TypeSchema schema;
     int rank = 0;  // listing order (lecture order); rank 0 is the default type

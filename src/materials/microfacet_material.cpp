@@ -261,8 +261,7 @@ constexpr Range kUnitInterval{0.0, 1.0, false, false};
 MaterialSlot makeMicrofacet(const ParameterValues& values) {
     MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
                                 values.number("roughness"), values.colour("dielectric_f0"));
-    material.emission = colorParameter(values, "emission");
-    material.twoSidedEmission = values.boolean("two_sided_emission");
+    readEmission(values, material);
     return material;
 }
 

@@ -92,8 +92,7 @@ MaterialSlot makeModifiedPhong(const ParameterValues& values) {
     material.kd = colorParameter(values, "kd");
     material.ks = colorParameter(values, "ks");
     material.n = values.number("n");
-    material.emission = colorParameter(values, "emission");
-    material.twoSidedEmission = values.boolean("two_sided_emission");
+    readEmission(values, material);
     return material;
 }
 

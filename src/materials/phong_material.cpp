@@ -147,8 +147,7 @@ MaterialSlot makePhong(const ParameterValues& values) {
     material.kt = colorParameter(values, "kt");
     material.ior = values.number("ior");
     material.fresnel = values.boolean("fresnel");
-    material.emission = colorParameter(values, "emission");
-    material.twoSidedEmission = values.boolean("two_sided_emission");
+    readEmission(values, material);
     return material;
 }
 

@@ -352,13 +352,9 @@ private:
         if (img.bufferView >= 0) {
             if (std::size_t(img.bufferView) >= model_.bufferViews.size())
                 fail(at + ".bufferView", "expected a bufferView index below " + std::to_string(model_.bufferViews.size()));
-            const tinygltf::BufferView& bv = model_.bufferViews[std::size_t(img.bufferView)];
-            if (bv.buffer < 0 || std::size_t(bv.buffer) >= model_.buffers.size()) fail(at, "its bufferView names no buffer");
-            const std::vector<unsigned char>& buffer = model_.buffers[std::size_t(bv.buffer)].data;
-            if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
-                fail(at, "its bufferView reaches beyond its buffer of " + std::to_string(buffer.size()) + " bytes");
-            bufferViewBytes.assign(buffer.begin() + std::ptrdiff_t(bv.byteOffset),
-                                   buffer.begin() + std::ptrdiff_t(bv.byteOffset + bv.byteLength));
+            const std::size_t length = model_.bufferViews[std::size_t(img.bufferView)].byteLength;
+            const unsigned char* start = viewBytes(img.bufferView, 0, length, at);
+            bufferViewBytes.assign(start, start + length);
             bytes = &bufferViewBytes;
         } else if (std::size_t(index) < imageBytes_.size() && !imageBytes_[std::size_t(index)].empty()) {
             bytes = &imageBytes_[std::size_t(index)];
