@@ -17,7 +17,8 @@ std::string valueName(const Parameter& p) {
     }
     switch (p.type) {
         case ParameterType::Integer: return "INT";
-        case ParameterType::Number: return "FLOAT";
+        case ParameterType::Number:
+        case ParameterType::NumberOrTexture: return "FLOAT";
         default: return "TEXT";
     }
 }

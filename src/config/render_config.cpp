@@ -99,7 +99,8 @@ Typed parseTyped(const Parameter& p, const std::string& text) {
                 throw ConfigError(field, "expected an integer, got \"" + text + "\"");
             return value;
         }
-        case ParameterType::Number: {
+        case ParameterType::Number:
+        case ParameterType::NumberOrTexture: {
             char* end = nullptr;
             const double value = std::strtod(text.c_str(), &end);
             if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))

@@ -97,14 +97,18 @@ std::string expectedNumber(const Range& range) {
 
 // A Colour given as a texture: `{ texture = "FILE", tint = RGB, uv_scale = N, filter = BOOL,
 // colorspace = "srgb" | "linear" }`, FILE relative to the scene file's folder (materials/texture.h
-// opens it).
-TextureReference readTexture(const TomlValue& value, const NumberRule& rule) {
+// opens it). A NumberOrTexture's (`alpha`) takes one number as `tint`, may add `cutoff = N`, and
+// is linear unless `colorspace` says otherwise: a mask's texels are data, not colours.
+TextureReference readTexture(const TomlValue& value, const NumberRule& rule, bool scalar) {
     const TomlTable table = value.table();
-    table.allowOnly({"texture", "tint", "uv_scale", "filter", "colorspace"});
+    if (scalar) table.allowOnly({"texture", "tint", "cutoff", "uv_scale", "filter", "colorspace"});
+    else table.allowOnly({"texture", "tint", "uv_scale", "filter", "colorspace"});
     TextureReference texture;
+    if (scalar) texture.colorSpace = TextureColorSpace::linear;
     const std::filesystem::path file = table.required("texture").string();
     texture.file = (file.is_absolute() ? file : value.folder() / file).string();
-    if (auto tint = table.find("tint")) texture.tint = tint->numberOrVec3(rule);
+    if (auto tint = table.find("tint")) texture.tint = scalar ? Vec3(tint->number(rule)) : tint->numberOrVec3(rule);
+    if (auto cutoff = table.find("cutoff")) texture.cutoff = cutoff->number({0.0, 1.0, false, false, "a number 0 <= x <= 1"});
     if (auto scale = table.find("uv_scale")) texture.uvScale = scale->number(positive);
     if (auto filter = table.find("filter")) texture.filtered = filter->boolean();
     if (auto space = table.find("colorspace")) {
@@ -134,8 +138,12 @@ void readParameter(const TomlValue& value, const Parameter& parameter, Parameter
         }
         case ParameterType::Boolean: values.set(name, value.boolean()); break;
         case ParameterType::Colour:
-            if (value.isTable()) values.set(name, readTexture(value, rule));
+            if (value.isTable()) values.set(name, readTexture(value, rule, false));
             else values.set(name, value.numberOrVec3(rule));
+            break;
+        case ParameterType::NumberOrTexture:
+            if (value.isTable()) values.set(name, readTexture(value, rule, true));
+            else values.set(name, static_cast<double>(value.number(rule)));
             break;
         case ParameterType::Point: values.set(name, value.vec3(rule)); break;
         case ParameterType::Vector: values.set(name, readNonZeroVector(value)); break;

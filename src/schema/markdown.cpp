@@ -34,6 +34,7 @@ std::string allowedText(const Parameter& p) {
         case ParameterType::Boolean: return "`true` or `false`";
         case ParameterType::Text: return "any";
         case ParameterType::Number:
+        case ParameterType::NumberOrTexture:
         case ParameterType::Integer: return range;
     }
     return range;

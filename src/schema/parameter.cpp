@@ -21,6 +21,7 @@ std::string_view typeName(ParameterType type) {
         case ParameterType::Integer: return "integer";
         case ParameterType::Boolean: return "boolean";
         case ParameterType::Colour: return "RGB or number";
+        case ParameterType::NumberOrTexture: return "number or texture";
         case ParameterType::Point: return "point";
         case ParameterType::Vector: return "vector";
         case ParameterType::PerAxis: return "number or [x, y, z]";

@@ -15,6 +15,7 @@ enum class ParameterType : std::uint8_t {
     Integer,  // int within range
     Boolean,
     Colour,   // RGB or one number for grey; each channel within range (default >= 0)
+    NumberOrTexture,  // a Number, or a texture's one channel (an alpha mask)
     Point,    // [x, y, z], each component within range
     Vector,   // [x, y, z], non-zero
     PerAxis,  // one number for all three axes or [x, y, z], each within range (a mesh's scale)

@@ -44,7 +44,8 @@ ParameterValues::ParameterValues(const TypeSchema& schema) : schema_(&schema) {
     for (const Parameter& p : schema.parameters) {
         Slot slot;
         switch (p.type) {
-            case ParameterType::Number: slot.value = p.defaultText.empty() ? 0.0f : std::stof(std::string(p.defaultText)); break;
+            case ParameterType::Number:
+            case ParameterType::NumberOrTexture: slot.value = p.defaultText.empty() ? 0.0f : std::stof(std::string(p.defaultText)); break;
             case ParameterType::Integer: slot.value = p.defaultText.empty() ? 0 : std::stoi(std::string(p.defaultText)); break;
             case ParameterType::Boolean: slot.value = p.defaultText == "true"; break;
             case ParameterType::Colour:
@@ -76,6 +77,7 @@ const ParameterValues::Value& ParameterValues::valueOf(std::string_view name, Pa
             t == ParameterType::PerAxis)
             return ParameterType::Point;
         if (t == ParameterType::Text) return ParameterType::Name;
+        if (t == ParameterType::NumberOrTexture) return ParameterType::Number;
         return t;
     };
     if (family(type) != family(expected)) {
@@ -95,7 +97,8 @@ Rgb ParameterValues::colour(std::string_view name) const {
 }
 
 const TextureReference* ParameterValues::texture(std::string_view name) const {
-    (void)valueOf(name, ParameterType::Colour);
+    const ParameterType type = schema_->parameters[indexOf(name)].type;
+    (void)valueOf(name, type == ParameterType::NumberOrTexture ? type : ParameterType::Colour);
     const Slot& slot = slots_[indexOf(name)];
     return slot.texture ? &*slot.texture : nullptr;
 }
@@ -128,12 +131,13 @@ void ParameterValues::set(std::string_view name, double value) {
     if (!std::isfinite(value) || !p.range.admits(value) || !p.range.admits(stored)) {
         throw SchemaError(std::string(name) + ": expected a number " + p.range.describe() + ", got " + formatNumber(value));
     }
-    store(name, stored, {ParameterType::Number});
+    store(name, stored, {ParameterType::Number, ParameterType::NumberOrTexture});
 }
 
 void ParameterValues::set(std::string_view name, int value) {
     const Parameter& p = schema_->parameters[indexOf(name)];
-    if (p.type == ParameterType::Number) return set(name, static_cast<double>(value));
+    if (p.type == ParameterType::Number || p.type == ParameterType::NumberOrTexture)
+        return set(name, static_cast<double>(value));
     if (!p.range.admits(value)) {
         throw SchemaError(std::string(name) + ": expected an integer " + p.range.describe() + ", got " + std::to_string(value));
     }
@@ -185,14 +189,22 @@ void ParameterValues::set(std::string_view name, std::string value) {
 
 void ParameterValues::set(std::string_view name, TextureReference texture) {
     const Parameter& p = schema_->parameters[indexOf(name)];
+    const bool scalar = p.type == ParameterType::NumberOrTexture;
     for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(texture.tint[c]) || !p.range.admits(texture.tint[c]))
             throw SchemaError(std::string(name) + ".tint: expected each of 3 numbers " + p.range.describe() + ", got " +
                               formatVec3(texture.tint));
     }
+    if (scalar && !(texture.tint.g == texture.tint.r && texture.tint.b == texture.tint.r))
+        throw SchemaError(std::string(name) + ".tint: expected one number, got " + formatVec3(texture.tint));
     if (!(std::isfinite(texture.uvScale) && texture.uvScale > 0.0f))
         throw SchemaError(std::string(name) + ".uv_scale: expected a positive number, got " + formatNumber(texture.uvScale));
-    store(name, Vec3(0.0f), {ParameterType::Colour});
+    if (texture.cutoff && (!scalar || !(*texture.cutoff >= 0.0f && *texture.cutoff <= 1.0f)))
+        throw SchemaError(std::string(name) + ".cutoff: " +
+                          (scalar ? "expected a number 0 <= x <= 1, got " + formatNumber(*texture.cutoff)
+                                  : std::string("only a texture of a number has a cutoff")));
+    if (scalar) store(name, texture.tint.r, {ParameterType::NumberOrTexture});
+    else store(name, Vec3(0.0f), {ParameterType::Colour});
     slots_[indexOf(name)].texture = std::move(texture);
 }
 

@@ -29,6 +29,8 @@ struct TextureReference {
     float uvScale = 1.0f;  // texture coordinates are multiplied by it: repeats per unit of uv
     bool filtered = true;  // false: point sampled (the finest level's texels), to show aliasing
     TextureColorSpace colorSpace = TextureColorSpace::automatic;  // `colorspace`: "srgb", "linear"
+    // A NumberOrTexture's mask (`cutoff`): the value is 1 where the texel reaches it, else 0.
+    std::optional<float> cutoff;
 };
 
 class ParameterValues {
@@ -45,7 +47,8 @@ public:
     // A Colour given as a number or RGB; a located error when it was given as a texture (a
     // parameter its type reads as a constant, e.g. `emission`).
     Rgb colour(std::string_view name) const;
-    // The texture a Colour was given as, or null for a constant.
+    // The texture a Colour or a NumberOrTexture was given as, or null for a constant. A
+    // NumberOrTexture's number() is then its texture's factor (its tint).
     const TextureReference* texture(std::string_view name) const;
     bool anyTexture() const;  // some Colour was given as a texture
     Vec3 vec3(std::string_view name) const;  // a Point, a Vector or a PerAxis
@@ -53,14 +56,14 @@ public:
     const std::string& text(std::string_view name) const;  // a Name or a Text
 
     // Set programmatically (conformance kit, loaders): checks type and range, throws SchemaError.
-    void set(std::string_view name, double value);       // Number
+    void set(std::string_view name, double value);       // Number, NumberOrTexture
     void set(std::string_view name, int value);          // Integer, or a Number
     void set(std::string_view name, bool value);         // Boolean
     void set(std::string_view name, const Vec3& value);  // Colour, Point, Vector, PerAxis
     void set(std::string_view name, const std::array<Vec3, 3>& value);  // ThreePoints
     void set(std::string_view name, std::string value);  // Name, Text
     void set(std::string_view name, const char* value) { set(name, std::string(value)); }
-    void set(std::string_view name, TextureReference texture);  // a Colour as a texture
+    void set(std::string_view name, TextureReference texture);  // a Colour or NumberOrTexture as a texture
 
     // Where the declaration is ("FILE:LINE:COL" and its key path, "lights[0]"), for errors about
     // keys it leaves out; and where one value was read.

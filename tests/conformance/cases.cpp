@@ -101,7 +101,8 @@ std::optional<Value> draw(const Parameter& p, std::mt19937& rng) {
             return points;
         }
         case ParameterType::Name:
-        case ParameterType::Text: return std::nullopt;
+        case ParameterType::Text:
+        case ParameterType::NumberOrTexture: return std::nullopt;  // a surface's coverage (alpha) is no Bsdf's business
     }
     return std::nullopt;
 }
