@@ -14,7 +14,7 @@ namespace lightpath {
 // or nullptr when `interfaceVersion` is not the one it was built with (a stale module).
 inline constexpr const char* kImageCodecEntryPoint = "lightpathImageCodec";
 // Bumped whenever anything in this header changes.
-inline constexpr int kImageCodecInterfaceVersion = 4;
+inline constexpr int kImageCodecInterfaceVersion = 5;
 
 enum class PixelFormat { UInt8, Float32 };
 
@@ -82,8 +82,13 @@ public:
     // into R, G and B). Safe to call from many threads at once: each uses its own per-thread
     // state of the TextureSystem.
     virtual void lookupTexture(TextureFileHandle* texture, const TextureQuery& query, float rgb[3]) const = 0;
+    // The filtered value of channel `channel` alone (its alpha, say), as lookupTexture filters.
+    virtual float lookupTextureChannel(TextureFileHandle* texture, const TextureQuery& query, int channel) const = 0;
     // The mean RGB of the whole texture.
     virtual void averageTexture(TextureFileHandle* texture, float rgb[3]) const = 0;
+    // Its alpha channel's index: the one named A or Alpha, else the second of two (grey and
+    // alpha) or the fourth of four; -1 when it has none.
+    virtual int alphaChannel(TextureFileHandle* texture) const = 0;
 
 protected:
     ~ImageCodec() = default;  // the module owns its codec; it lives as long as the process

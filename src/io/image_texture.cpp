@@ -17,21 +17,29 @@ public:
         float rgb[3];
         codec_.averageTexture(handle_, rgb);
         average_ = {rgb[0], rgb[1], rgb[2]};
+        alphaChannel_ = codec_.alphaChannel(handle_);
     }
 
     Rgb lookup(const TextureFootprint& f, const TextureSampling& sampling) const override {
-        // Image rows run down from t = 0 while v runs up (OBJ's vt, OpenGL): t = 1 - v.
-        const TextureQuery query{f.uv.x,      1.0f - f.uv.y, f.dUVdx.x,
-                                 -f.dUVdx.y,  f.dUVdy.x,     -f.dUVdy.y,
-                                 sampling.filtered, wrap(sampling.wrapS), wrap(sampling.wrapT)};
         float rgb[3];
-        codec_.lookupTexture(handle_, query, rgb);
+        codec_.lookupTexture(handle_, query(f, sampling), rgb);
         return {rgb[0], rgb[1], rgb[2]};
     }
 
+    float lookupChannel(const TextureFootprint& f, const TextureSampling& sampling, int channel) const override {
+        return codec_.lookupTextureChannel(handle_, query(f, sampling), channel);
+    }
+
     Rgb average() const override { return average_; }
+    int alphaChannel() const override { return alphaChannel_; }
 
 private:
+    static TextureQuery query(const TextureFootprint& f, const TextureSampling& sampling) {
+        // Image rows run down from t = 0 while v runs up (OBJ's vt, OpenGL): t = 1 - v.
+        return {f.uv.x,    1.0f - f.uv.y, f.dUVdx.x, -f.dUVdx.y, f.dUVdy.x, -f.dUVdy.y,
+                sampling.filtered, wrap(sampling.wrapS), wrap(sampling.wrapT)};
+    }
+
     static TextureQuery::Wrap wrap(TextureWrap wrap) {
         switch (wrap) {
             case TextureWrap::clamp: return TextureQuery::Wrap::Clamp;
@@ -44,6 +52,7 @@ private:
     const ImageCodec& codec_;
     TextureFileHandle* handle_;  // the TextureSystem's, alive for the process
     Rgb average_{0.0f};
+    int alphaChannel_ = -1;
 };
 
 std::shared_ptr<const Texture> openImageTexture(const TextureSource& source, std::string& error) {

@@ -4,6 +4,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 #include <OpenImageIO/texture.h>
 
 #include <algorithm>
@@ -135,20 +136,25 @@ public:
     }
 
     void lookupTexture(TextureFileHandle* texture, const TextureQuery& query, float rgb[3]) const override {
+        if (!lookup(texture, query, 0, 3, rgb)) rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    }
+
+    float lookupTextureChannel(TextureFileHandle* texture, const TextureQuery& query, int channel) const override {
+        float value = 0.0f;
+        return lookup(texture, query, channel, 1, &value) ? value : 0.0f;
+    }
+
+    int alphaChannel(TextureFileHandle* texture) const override {
         OIIO::TextureSystem& system = textureSystem();
-        // Each thread's own state, asked once per thread (pbrt and OSL do the same).
-        thread_local OIIO::TextureSystem::Perthread* const perThread = system.get_perthread_info();
-        OIIO::TextureOpt options;
-        options.swrap = wrapMode(query.wrapS);
-        options.twrap = wrapMode(query.wrapT);
-        if (!query.filtered) {
-            options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
-            options.interpmode = OIIO::TextureOpt::InterpBilinear;
+        const OIIO::ImageSpec* spec = system.imagespec(reinterpret_cast<OIIO::TextureSystem::TextureHandle*>(texture), nullptr);
+        if (spec == nullptr) return -1;
+        for (int c = 0; c < spec->nchannels && c < int(spec->channelnames.size()); ++c) {
+            const std::string& name = spec->channelnames[std::size_t(c)];
+            if (OIIO::Strutil::iequals(name, "A") || OIIO::Strutil::iequals(name, "Alpha")) return c;
         }
-        if (!system.texture(reinterpret_cast<OIIO::TextureSystem::TextureHandle*>(texture), perThread, options, query.s,
-                            query.t, query.dsdx, query.dtdx, query.dsdy, query.dtdy, 3, rgb)) {
-            rgb[0] = rgb[1] = rgb[2] = 0.0f;  // opened before the render: only a file changed on disk since
-        }
+        if (spec->nchannels == 2) return 1;
+        if (spec->nchannels == 4) return 3;
+        return -1;
     }
 
     void averageTexture(TextureFileHandle* texture, float rgb[3]) const override {
@@ -163,6 +169,24 @@ public:
     }
 
 private:
+    // `count` channels from `first` of `texture` at `query` into `out`; false when the file is
+    // gone (opened before the render: only a file changed on disk since).
+    static bool lookup(TextureFileHandle* texture, const TextureQuery& query, int first, int count, float* out) {
+        OIIO::TextureSystem& system = textureSystem();
+        // Each thread's own state, asked once per thread (pbrt and OSL do the same).
+        thread_local OIIO::TextureSystem::Perthread* const perThread = system.get_perthread_info();
+        OIIO::TextureOpt options;
+        options.firstchannel = first;
+        options.swrap = wrapMode(query.wrapS);
+        options.twrap = wrapMode(query.wrapT);
+        if (!query.filtered) {
+            options.mipmode = OIIO::TextureOpt::MipModeNoMIP;
+            options.interpmode = OIIO::TextureOpt::InterpBilinear;
+        }
+        return system.texture(reinterpret_cast<OIIO::TextureSystem::TextureHandle*>(texture), perThread, options, query.s,
+                              query.t, query.dsdx, query.dtdx, query.dsdy, query.dtdy, count, out);
+    }
+
     static OIIO::TextureOpt::Wrap wrapMode(TextureQuery::Wrap wrap) {
         switch (wrap) {
             case TextureQuery::Wrap::Clamp: return OIIO::TextureOpt::WrapClamp;
@@ -181,7 +205,17 @@ private:
         if (request.bytes != nullptr) memory = std::make_unique<OIIO::Filesystem::IOMemReader>(request.bytes->data(), request.bytes->size());
         // OpenImageIO picks its reader by the name's extension: name the bytes by their signature.
         const std::string readerName = request.bytes != nullptr ? "memory." + formatOf(*request.bytes) : request.file;
-        auto in = OIIO::ImageInput::open(readerName, nullptr, memory.get());
+        // Colours as the file stores them, not multiplied by alpha (OpenImageIO's default for PNG):
+        // glTF's base colour is straight, alpha a cut-out's own channel (materials/alpha.h), and
+        // an sRGB texel is decoded before anything multiplies it.
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        // With a configuration the readers take their proxy from it, not from open's argument.
+        if (memory) {
+            OIIO::Filesystem::IOProxy* proxy = memory.get();
+            config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        }
+        auto in = OIIO::ImageInput::open(readerName, &config, memory.get());
         if (!in) {
             error = OIIO::geterror();
             if (error.empty()) error = "cannot decode the image";
@@ -243,6 +277,7 @@ private:
             made->attribute("automip", 1);      // a plain PNG gets its MIP levels when first read
             made->attribute("autotile", 64);    // and is cached in tiles
             made->attribute("gray_to_rgb", 1);  // a grey image is grey, not red
+            made->attribute("unassociatedalpha", 1);  // colours straight, as decodedImage reads them
             return made;
         }();
         return *system;

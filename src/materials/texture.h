@@ -50,8 +50,12 @@ public:
     // The RGB over the footprint (uv and its change across a pixel, transformed already), filtered
     // and wrapped as `sampling` says.
     virtual Rgb lookup(const TextureFootprint& footprint, const TextureSampling& sampling) const = 0;
+    // One channel alone over the footprint (an alpha mask's), filtered as lookup() filters.
+    virtual float lookupChannel(const TextureFootprint& footprint, const TextureSampling& sampling, int channel) const = 0;
     // The mean RGB over the whole image (radiosity's constant reflectance of a textured kd).
     virtual Rgb average() const = 0;
+    // The index of its alpha channel, or -1 when it has none.
+    virtual int alphaChannel() const = 0;
 };
 
 // What opens a texture: the image module's (io/image_texture.cpp registers it; src/ layers keep

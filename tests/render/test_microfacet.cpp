@@ -278,7 +278,11 @@ class UniformTexture final : public Texture {
 public:
     explicit UniformTexture(Rgb colour) : colour_(colour) {}
     Rgb lookup(const TextureFootprint&, const TextureSampling&) const override { return colour_; }
+    float lookupChannel(const TextureFootprint&, const TextureSampling&, int channel) const override {
+        return channel < 3 ? colour_[channel] : 1.0f;
+    }
     Rgb average() const override { return colour_; }
+    int alphaChannel() const override { return -1; }
 
 private:
     Rgb colour_;
