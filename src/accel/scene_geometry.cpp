@@ -1,6 +1,7 @@
 #include "accel/scene_geometry.h"
 
 #include <algorithm>
+#include <limits>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -53,9 +54,13 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
                              std::vector<Triangle> triangles, NumericsOptions numerics, Accelerator accelerator,
                              std::vector<TriangleNormals> vertexNormals, unsigned buildThreads,
                              std::vector<ShapeRecord> shapes, std::vector<TriangleUvs> triangleUvs,
-                             std::vector<TriangleTangents> triangleTangents)
+                             std::vector<TriangleTangents> triangleTangents,
+                             std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage)
     : triangles_(std::move(triangles)), vertexNormals_(std::move(vertexNormals)), triangleUvs_(std::move(triangleUvs)),
       triangleTangents_(std::move(triangleTangents)),
+      coverage_(std::any_of(objectCoverage.begin(), objectCoverage.end(), [](const auto& c) { return c != nullptr; })
+                    ? std::move(objectCoverage)
+                    : std::vector<std::shared_ptr<const SurfaceCoverage>>{}),
       numerics_(numerics),
       accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
@@ -205,6 +210,29 @@ template <typename Keep>
 
 LIGHTPATH_HOT_PATH
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
+    return coverage_.empty() ? intersectSurface(ray) : intersectCovered(ray);
+}
+
+bool SceneGeometry::covered(const Ray& ray, const SurfaceHit& hit) const {
+    const SurfaceCoverage* coverage = hit.object < coverage_.size() ? coverage_[hit.object].get() : nullptr;
+    return coverage == nullptr || coverage->covers(surfaceParameters(hit).uv, coverageSample(ray, hit.t));
+}
+
+bool SceneGeometry::covers(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {
+    return coverage_.empty() || covered(ray, describeHit(ray, t, id, barycentrics));
+}
+
+std::optional<SurfaceHit> SceneGeometry::intersectCovered(Ray ray) const {
+    for (;;) {
+        std::optional<SurfaceHit> hit = intersectSurface(ray);
+        if (!hit || covered(ray, *hit)) return hit;
+        // On past the hole, one float beyond it: every accelerator (Embree's t >= tnear too)
+        // then finds the next surface, and the loop ends, as t only grows.
+        ray.tMin = std::nextafter(hit->t, std::numeric_limits<float>::infinity());
+    }
+}
+
+std::optional<SurfaceHit> SceneGeometry::intersectSurface(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) {
         const std::optional<PrimitiveHit> found = closestBruteForce(ray);
         if (!found) return std::nullopt;
@@ -219,6 +247,11 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
 }
 
 std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) const {
+    if (!coverage_.empty()) {
+        const std::optional<SurfaceHit> hit = intersectCovered(ray);
+        if (!hit) return std::nullopt;
+        return PrimitiveHit{hit->t, hit->primitive};
+    }
     if (accelerator_ == Accelerator::BruteForce) return closestBruteForce(ray);
     const std::optional<PrimitiveHit> found = closestAccelerated(ray, PackedRay(ray));
     return planePacks_.empty() ? found : withPlanes(ray, found);
@@ -326,6 +359,8 @@ bool SceneGeometry::anyPlane(const Ray& ray) const {
 
 LIGHTPATH_HOT_PATH
 bool SceneGeometry::occluded(const Ray& ray) const {
+    // An any-hit query cannot stop at a cut-out's first hit: it may be a hole.
+    if (!coverage_.empty()) return intersectCovered(ray).has_value();
     if (accelerator_ == Accelerator::BruteForce) return occludedBruteForce(ray);
     const auto blocks = [&](std::uint32_t id) { return intersectPrimitive(ray, id) != kNoHit; };
     if (!planePacks_.empty() && anyPlane(ray)) return true;

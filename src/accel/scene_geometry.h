@@ -6,6 +6,7 @@
 #include "accel/bvh.h"
 #include "accel/plane_pack.h"
 #include "accel/triangle_pack.h"
+#include "geometry/coverage.h"
 #include "geometry/intersect.h"
 #include "geometry/numerics.h"
 #include "geometry/shape.h"
@@ -51,9 +52,11 @@ public:
                   NumericsOptions numerics = {}, Accelerator accelerator = Accelerator::BruteForce,
                   std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0,
                   std::vector<ShapeRecord> shapes = {}, std::vector<TriangleUvs> triangleUvs = {},
-                  std::vector<TriangleTangents> triangleTangents = {});
+                  std::vector<TriangleTangents> triangleTangents = {},
+                  std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage = {});
     // `spheres` and `planes` become the table's first records (geometry/builtin_shapes.h), in
-    // that order, before `shapes`.
+    // that order, before `shapes`. `objectCoverage`: empty, or per object id a cut-out (null: none;
+    // geometry/coverage.h), which every query below then looks through.
     // Throws std::invalid_argument for Accelerator::Embree in a build without Embree.
     // buildThreads: how many threads build our BVH (0: all); the tree is the same for any count.
     ~SceneGeometry();
@@ -68,6 +71,11 @@ public:
 
     std::optional<SurfaceHit> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
+    // Whether a ray meets primitive `id` where `ray` hits it at `t` (a triangle's point at
+    // `barycentrics` when given, as describeHit), or passes through a cut-out there: a
+    // rasteriser's fragment test. True for every surface without one.
+    bool covers(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics = nullptr) const;
+    bool hasCutouts() const { return !coverage_.empty(); }
 
     // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit, with this
     // geometry's numerics.
@@ -106,6 +114,11 @@ public:
     const Triangle& triangleOf(std::uint32_t id) const { return triangles_[id - firstTriangle()]; }
 
 private:
+    // The closest hit of any surface, covered or not.
+    std::optional<SurfaceHit> intersectSurface(const Ray& ray) const;
+    // The closest covered hit: past every cut-out the ray crosses on its way.
+    std::optional<SurfaceHit> intersectCovered(Ray ray) const;
+    bool covered(const Ray& ray, const SurfaceHit& hit) const;
     // The accelerated closest hit, given the ray's per-ray watertight set-up. With `edges`, also
     // the hit's unnormalised barycentrics as the traversal's triangle test found them (see
     // describeHit), so that intersect() need not test the triangle again.
@@ -149,6 +162,8 @@ private:
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     std::vector<TriangleUvs> triangleUvs_;        // empty, or one per triangle
     std::vector<TriangleTangents> triangleTangents_;  // empty, or one per triangle
+    // Empty when nothing is cut out, else one per object id (null: covered everywhere).
+    std::vector<std::shared_ptr<const SurfaceCoverage>> coverage_;
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // bounded shapes and triangles (Bvh); no triangles (Embree)

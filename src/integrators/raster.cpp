@@ -29,7 +29,14 @@ Vec3 ZBuffer::pixelDirection(int x, int y) const {
 
 void ZBuffer::test(int x, int y, float t, std::uint32_t primitive, const Vec3& barycentrics) {
     RasterFragment& kept = fragments_[index(x, y)];
-    if (t < kept.t) kept = {t, primitive, barycentrics};
+    if (!(t < kept.t)) return;
+    // The alpha test: a fragment where the surface is cut out is discarded (geometry/coverage.h).
+    if (geometry_.hasCutouts()) {
+        const Ray ray = camera_.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+        const bool triangle = geometry_.shapeOf(primitive) == nullptr;
+        if (!geometry_.covers(ray, t, primitive, triangle ? &barycentrics : nullptr)) return;
+    }
+    kept = {t, primitive, barycentrics};
 }
 
 template <typename Fragment>

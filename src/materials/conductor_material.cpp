@@ -127,7 +127,7 @@ constexpr Range kExtinctionRange{0.0, 20.0, false, false};
 
 MaterialSlot makeConductor(const ParameterValues& values) {
     ConductorMaterial material(values.colour("eta"), values.colour("k"), values.number("roughness"));
-    readEmission(values, material);
+    readSurfaceRows(values, material);
     return material;
 }
 
@@ -142,7 +142,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
       {"k", lightpath::ParameterType::Colour, "", "[3.424, 2.346, 1.770]", lightpath::kExtinctionRange,
        "imaginary part (extinction coefficient) of the index, per channel"},
       lightpath::kGgxRoughnessParameter,
-      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter, lightpath::kAlphaParameter},
      "<R[GS]>|O"},
     4, lightpath::makeConductor,
     // F, D and G2 are symmetric in wo and wi: reciprocal; F <= 1 and G2 <= G1: at most 1.

@@ -265,7 +265,7 @@ constexpr Range kDielectricRoughnessRange{0.0, 1.0, false, false};
 
 MaterialSlot makeDielectric(const ParameterValues& values) {
     DielectricMaterial material(values.number("ior"), colorParameter(values, "tint"), values.number("roughness"));
-    readEmission(values, material);
+    readSurfaceRows(values, material);
     return material;
 }
 
@@ -281,7 +281,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "GGX alpha = roughness²; 0 is smooth glass (`<RS>`, `<TS>`), above 0 glossy lobes (`<RG>`, `<TG>`)"},
       {"tint", lightpath::ParameterType::Colour, "", "1", lightpath::kNonNegative,
        "transmittance colour: multiplies the refracted light, not the reflected"},
-      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter, lightpath::kAlphaParameter},
      "<[RT][GS]>|O"},
     5, lightpath::makeDielectric,
     // Reflection: F, D and G2 are symmetric in wo and wi. Transmission: reciprocal only with the

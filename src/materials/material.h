@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "materials/alpha.h"
 #include "materials/lobe.h"
 #include "materials/texture.h"
 #include "math/types.h"
@@ -30,6 +31,9 @@ public:
     bool textured = false;
     // A normal map (glTF's normalTexture) turning the shading normal; set with `textured`.
     NormalMap normalMap;
+    // Where the surface is (materials/alpha.h): null when it is everywhere, as most are. Rays pass
+    // through where it is not (SceneGeometry asks it at each hit); an emitter is never cut out.
+    std::shared_ptr<const Alpha> alpha;
 
     virtual std::unique_ptr<Material> clone() const = 0;
 

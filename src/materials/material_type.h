@@ -20,21 +20,28 @@ struct MaterialPromises {
 };
 
 // Rows several material types share, so their meaning is written once: any material may emit
-// (an area light), and the GGX materials read roughness alike.
+// (an area light) and be cut out (alpha), and the GGX materials read roughness alike.
 inline constexpr Parameter kEmissionParameter{"emission", ParameterType::Colour, "W/(m² sr)", "0", kNonNegative,
                                               "emitted radiance: the surface is an area light"};
 inline constexpr Parameter kTwoSidedEmissionParameter{
     "two_sided_emission", ParameterType::Boolean, "", "false", {},
     "whether an emitting surface emits from both of its sides (glTF's doubleSided, Cycles' mesh lights); "
     "default: the side its normal faces (a triangle's winding); a sphere always emits from both"};
+inline constexpr Parameter kAlphaParameter{
+    "alpha", ParameterType::NumberOrTexture, "", "1", Range{0.0, 1.0, false, false},
+    "coverage: where the surface is; a texture `{ texture = \"leaf.png\", cutoff = 0.5 }` reads its alpha "
+    "channel (else its only one) and cuts out where it is below `cutoff` (glTF's MASK); without a cutoff, or "
+    "as a number, the fraction of rays the surface stops (the rest pass as if it were not there); ignored on an "
+    "emitter"};
 inline constexpr Parameter kGgxRoughnessParameter{
     "roughness", ParameterType::Number, "", "0.5", Range{0.0, 1.0, false, false},
     "GGX alpha = roughness²; 0 is a perfect mirror (`<RS>`), above 0 a glossy lobe (`<RG>`)"};
 
-// The values of those two rows, which every material type lists, set on `material`.
-inline void readEmission(const ParameterValues& values, Material& material) {
+// The values of those three rows, which every material type lists, set on `material`.
+inline void readSurfaceRows(const ParameterValues& values, Material& material) {
     material.emission = colorParameter(values, "emission");
     material.twoSidedEmission = values.boolean("two_sided_emission");
+    material.alpha = alphaParameter(values, "alpha");
 }
 
 struct MaterialType {

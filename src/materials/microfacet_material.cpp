@@ -261,7 +261,7 @@ constexpr Range kUnitInterval{0.0, 1.0, false, false};
 MaterialSlot makeMicrofacet(const ParameterValues& values) {
     MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
                                 values.number("roughness"), values.colour("dielectric_f0"));
-    readEmission(values, material);
+    readSurfaceRows(values, material);
     return material;
 }
 
@@ -278,7 +278,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
       {"dielectric_f0", lightpath::ParameterType::Colour, "", "0.04", lightpath::kUnitInterval,
        "the dielectric's reflectance at normal incidence: ((n − 1)/(n + 1))² for an index of refraction n, 0.04 for "
        "1.5; glTF's KHR_materials_ior times KHR_materials_specular's specularColorFactor"},
-      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter, lightpath::kAlphaParameter},
      "<R[DGS]>|O"},
     2, lightpath::makeMicrofacet,
     // F and G2 at the half vector and (1 - E(wo))(1 - E(wi)) are symmetric: reciprocal. F <= 1,

@@ -92,7 +92,7 @@ MaterialSlot makeModifiedPhong(const ParameterValues& values) {
     material.kd = colorParameter(values, "kd");
     material.ks = colorParameter(values, "ks");
     material.n = values.number("n");
-    readEmission(values, material);
+    readSurfaceRows(values, material);
     return material;
 }
 
@@ -106,7 +106,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "specular albedo at normal incidence: `ks (n+2)/(2π) cos^n α`"},
       {"n", lightpath::ParameterType::Number, "", "20", lightpath::kNonNegative,
        "specular exponent: larger is a tighter highlight"},
-      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter, lightpath::kAlphaParameter},
      "<R[DG]>|O"},
     1, lightpath::makeModifiedPhong,
     // Lafortune and Willems 1994: both lobes reciprocal, and kd + ks <= 1 reflects at most 1.

@@ -147,7 +147,7 @@ MaterialSlot makePhong(const ParameterValues& values) {
     material.kt = colorParameter(values, "kt");
     material.ior = values.number("ior");
     material.fresnel = values.boolean("fresnel");
-    readEmission(values, material);
+    readSurfaceRows(values, material);
     return material;
 }
 
@@ -170,7 +170,7 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
        "index of refraction of the inside (glass 1.5, water 1.33)"},
       {"fresnel", lightpath::ParameterType::Boolean, "", "false", {},
        "clear glass: the mirror and refracted rays split `kt` by Fresnel's equations"},
-      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter},
+      lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter, lightpath::kAlphaParameter},
      "<R[DGS]>|<TS>|O"},
     0, lightpath::makePhong,
     // Lambert's lobe is reciprocal; Szymczak's highlight ks (H.N)^n / pi is f |cos theta_i|, so f

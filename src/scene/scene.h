@@ -1,9 +1,11 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "geometry/coverage.h"
 #include "geometry/shape.h"
 #include "geometry/shapes.h"
 #include "math/types.h"
@@ -83,6 +85,22 @@ struct Scene {
         for (std::uint32_t i = 0; i < media.size(); ++i)
             if (&*media[i] == medium) return i;
         return kNoMedium;
+    }
+
+    // Per object its material's cut-out (materials/alpha.h), what SceneGeometry looks through;
+    // empty when nothing is cut out. An emitter is never cut out: its light samples points
+    // all over it, which the cut-out's holes would contradict.
+    std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage() const {
+        std::vector<std::shared_ptr<const SurfaceCoverage>> coverage(objects.size());
+        bool any = false;
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            const Material& material = *materials[objects[i].material];
+            if (!material.alpha || !material.emission.black()) continue;
+            coverage[i] = material.alpha;
+            any = true;
+        }
+        if (!any) coverage.clear();
+        return coverage;
     }
 
     const std::string& labelOf(std::uint32_t object) const {

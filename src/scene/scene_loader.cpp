@@ -535,6 +535,10 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
     if (!scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
     if (!scene.triangleUvs.empty()) scene.triangleUvs.resize(scene.triangles.size());
     if (!scene.triangleTangents.empty()) scene.triangleTangents.resize(scene.triangles.size());
+    // An emitter is never cut out (Scene::objectCoverage): said once for each material that is both.
+    for (const MaterialSlot& m : scene.materials)
+        if (m->alpha && !m->emission.black())
+            scene.warnings.push_back("material \"" + m->name + "\" emits, so its alpha is not read: an emitter is never cut out");
     return scene;
 }
 

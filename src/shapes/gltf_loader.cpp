@@ -171,9 +171,6 @@ private:
         for (std::size_t i = 0; i < model_.materials.size(); ++i) {
             const tinygltf::Material& m = model_.materials[i];
             const std::string where = "materials[" + std::to_string(i) + "]";
-            // No alpha: a MASK's cut-outs and a BLEND's see-through parts render opaque.
-            if (m.alphaMode == "MASK" || m.alphaMode == "BLEND")
-                warn(where + ": alphaMode " + m.alphaMode + " is not read: the surface renders opaque");
             uvSet_ = kNoUvSet;
             const auto& pbr = m.pbrMetallicRoughness;
             const std::vector<double> base =
@@ -237,6 +234,7 @@ private:
             // from both too, as Blender's mesh lights do in Cycles (Blender writes doubleSided
             // unless backface culling is on).
             material->twoSidedEmission = m.doubleSided;
+            material->alpha = alpha(m, float(base[3]), where);
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
             if (auto texture = open(m.normalTexture, TextureColorSpace::linear, where + ".normalTexture")) {
                 material->normalMap = {texture->first, float(number(m.normalTexture.scale, -kMaxMagnitude, kMaxMagnitude,
@@ -248,6 +246,26 @@ private:
             uvSetOfMaterial_.push_back(uvSet_);
         }
         materialLabels_ = std::move(taken);
+    }
+
+    // glTF 2.0, 3.9.4: alpha is baseColorTexture's alpha (1 without an alpha channel) times
+    // baseColorFactor's. MASK: the surface is where alpha >= alphaCutoff (default 0.5), cut out
+    // elsewhere; BLEND: alpha is the fraction of light it stops, as Cycles renders it (a
+    // stochastic cut-out, materials/alpha.h); OPAQUE (the default) ignores alpha. Null: opaque.
+    std::shared_ptr<const Alpha> alpha(const tinygltf::Material& m, float factor, const std::string& where) {
+        if (m.alphaMode == "OPAQUE" || m.alphaMode.empty()) return nullptr;
+        if (m.alphaMode != "MASK" && m.alphaMode != "BLEND")
+            fail(where + ".alphaMode", "expected OPAQUE, MASK or BLEND, got \"" + printableName(m.alphaMode) + "\"");
+        std::optional<float> cutoff;
+        if (m.alphaMode == "MASK") cutoff = float(number(m.alphaCutoff, 0.0, kMaxMagnitude, where + ".alphaCutoff"));
+        std::shared_ptr<const Alpha> alpha;
+        auto texture = open(m.pbrMetallicRoughness.baseColorTexture, TextureColorSpace::srgb,
+                            where + ".pbrMetallicRoughness.baseColorTexture");
+        if (texture && texture->first->alphaChannel() >= 0)
+            alpha = std::make_shared<const Alpha>(texture->first, factor, cutoff, texture->second);
+        else
+            alpha = std::make_shared<const Alpha>(factor, cutoff);
+        return alpha->opaque() ? nullptr : alpha;
     }
 
     // ---- textures

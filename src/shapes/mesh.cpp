@@ -77,6 +77,20 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         // it, so `textured` stays as kd left it.
         if (auto ke = textured(mtl.emission, mesh.emissionTextures[mtlIndex], mtlIndex, "map_Ke", "Ke"))
             material.emission = std::move(*ke);
+        if (const std::string& image = mesh.alphaTextures[mtlIndex]; !image.empty()) {
+            // `map_d`: the dissolve map, a cut-out (materials/alpha.h): its alpha channel, else
+            // its grey, the fraction of rays the surface stops (linear: a mask's texels are data).
+            std::string error;
+            std::shared_ptr<const Texture> texture =
+                openTexture({(file.parent_path() / image).string(), nullptr, TextureColorSpace::linear}, error);
+            if (texture) {
+                material.alpha = std::make_shared<const Alpha>(std::move(texture), 1.0f, std::nullopt, TextureSampling{});
+            } else {
+                scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" + mtl.name +
+                                                      "\": cannot read its map_d \"" + printableName(image) + "\" (" +
+                                                      error + "); the surface is opaque"));
+            }
+        }
         return material;
     };
 

@@ -246,6 +246,7 @@ ObjMesh meshFrom(const tinyobj::ObjReader& reader, const std::filesystem::path& 
                                               m.shininess, m.ior, m.dissolve, m.illum));
         mesh.diffuseTextures.push_back(m.diffuse_texname);
         mesh.emissionTextures.push_back(m.emissive_texname);
+        mesh.alphaTextures.push_back(m.alpha_texname);
     }
 
     const auto position = [&](const tinyobj::index_t& i) {

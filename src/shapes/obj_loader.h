@@ -35,6 +35,8 @@ struct ObjMesh {
     std::vector<std::string> diffuseTextures;
     // Per material: its `map_Ke` image likewise (empty: none), the material's emission texture.
     std::vector<std::string> emissionTextures;
+    // Per material: its `map_d` (dissolve) image likewise (empty: none), the material's alpha.
+    std::vector<std::string> alphaTextures;
     std::size_t degenerateDropped = 0;  // faces without area: they have no normal to shade with
     // Material libraries named by `mtllib` lines that could not be opened (paths as looked for),
     // and `usemtl` names that no library read defines, each with the OBJ line naming it. Faces of

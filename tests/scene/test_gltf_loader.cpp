@@ -210,17 +210,37 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
     CHECK(scene.lights.size() == 1);
 }
 
-TEST_CASE("a glTF material's alphaMode MASK or BLEND is named in a warning: lightpath renders it opaque") {
+TEST_CASE("a glTF material's alphaMode and alphaCutoff become its alpha; a bad one is a located error") {
     const test::TempFolder temp("lightpath-gltf-alpha");
     std::ifstream in(kData / "point.gltf");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string name = "\"name\": \"Floor Paint\"";
     REQUIRE(text.find(name) != std::string::npos);
-    text.replace(text.find(name), name.size(), name + ", \"alphaMode\": \"MASK\"");
-    std::ofstream(temp.path() / "alpha.gltf") << text;
-    const Scene scene = loadScene(temp.path() / "alpha.gltf");
-    CHECK(warns(scene, "alpha.gltf: materials[0]: alphaMode MASK is not read: the surface renders opaque"));
-    CHECK(!warns(loadScene(kData / "point.gltf"), "alphaMode"));
+    const auto variant = [&](const std::string& file, const std::string& extra) {
+        std::string changed = text;
+        changed.replace(changed.find(name), name.size(), name + ", " + extra);
+        std::ofstream(temp.path() / file) << changed;
+        return temp.path() / file;
+    };
+    const auto floorAlpha = [](const Scene& scene) {
+        for (const MaterialSlot& m : scene.materials)
+            if (m->name == "Floor_Paint") return m->alpha;
+        FAIL("no Floor_Paint");
+        return std::shared_ptr<const Alpha>();
+    };
+    // Its baseColorFactor's alpha is 1 (no texture): MASK at the default cutoff 0.5 and BLEND
+    // keep every point, so nothing is cut out; a cutoff above 1 cuts out everything.
+    CHECK(floorAlpha(loadScene(kData / "point.gltf")) == nullptr);
+    CHECK(floorAlpha(loadScene(variant("mask.gltf", "\"alphaMode\": \"MASK\""))) == nullptr);
+    CHECK(floorAlpha(loadScene(variant("blend.gltf", "\"alphaMode\": \"BLEND\""))) == nullptr);
+    const auto all = floorAlpha(loadScene(variant("high.gltf", "\"alphaMode\": \"MASK\", \"alphaCutoff\": 1.5")));
+    REQUIRE(all != nullptr);
+    CHECK_FALSE(all->covers({0.3f, 0.6f}, 0.0f));
+    CHECK(floorAlpha(loadScene(variant("opaque.gltf", "\"alphaMode\": \"OPAQUE\", \"alphaCutoff\": 1.5"))) == nullptr);
+    const fs::path clip = variant("clip.gltf", "\"alphaMode\": \"CLIP\"");
+    CHECK(errorOf(clip) == clip.string() + ": materials[0].alphaMode: expected OPAQUE, MASK or BLEND, got \"CLIP\"");
+    const fs::path negative = variant("negative.gltf", "\"alphaMode\": \"MASK\", \"alphaCutoff\": -1");
+    CHECK(errorOf(negative).find(negative.string() + ": materials[0].alphaCutoff: expected") == 0);
 }
 
 // KHR_materials_ior's n gives F0 = ((n - 1)/(n + 1))^2, KHR_materials_specular's specularColorFactor
