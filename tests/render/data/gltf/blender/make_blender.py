@@ -2,7 +2,8 @@
 Cycles' renders of the same scenes as 8x8-block means (<light>-cycles.txt), the test's reference.
 
 Each file holds one light of one Blender kind (a point lamp of 500 W, a sun of 2 W/m^2, an
-emissive square of strength 5) over a floor and a box, seen by a camera; Blender's glTF exporter
+emissive square of strength 5) over a floor and a box, seen by a camera (cutout-mask and
+cutout-blend: a sun through a black card cut out by its alpha, see below); Blender's glTF exporter
 writes it in its default Lighting Mode, "Standard" (candela and lux at 683 lm/W), and the
 emission unconverted. Cycles renders
 the scene as Blender holds it, with a Lambertian (Diffuse BSDF) material of albedo 0.8, a black
@@ -12,7 +13,7 @@ its cone (measured 1.01 to 1.15 of lightpath's across a 30-degree cone, about 1 
 off its axis), which glTF's spot does not.
 
 Run (Blender 3.4, Debian's `blender`), from this folder:
-  for light in point sun emissive; do blender -b --python make_blender.py -- $light; done
+  for light in point sun emissive cutout-mask cutout-blend; do blender -b --python make_blender.py -- $light; done
 """
 import math
 import os
@@ -60,8 +61,38 @@ elif light == "emissive":
     bsdf.inputs["Emission Strength"].default_value = 5
     bpy.ops.mesh.primitive_plane_add(size=2, location=(2, -1, 3.5), rotation=(math.pi, 0, 0))
     bpy.context.object.data.materials.append(lamp)
+elif light in ("cutout-mask", "cutout-blend"):
+    # A 4 m card 3 m above the floor (1 m above the box) under a sun, black (no light back from it), cut out by its
+    # alpha as Blender holds it: "cutout-mask" an image's alpha in 2-texel stripes (8 x 8 texels,
+    # Closest, blend mode Alpha Clip at 0.5: glTF's MASK), "cutout-blend" a constant alpha of 0.4
+    # (blend mode Alpha Blend: glTF's BLEND). Cycles renders alpha as transparency either way.
+    bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.35, 0.25, 0))
+    bpy.context.object.data.energy = 2
+    bpy.context.object.data.angle = 0
+    card = bpy.data.materials.new("Card")
+    card.use_nodes = True
+    bsdf = card.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = (0, 0, 0, 1)
+    bsdf.inputs["Specular"].default_value = 0.0
+    bsdf.inputs["Roughness"].default_value = 1.0
+    if light == "cutout-mask":
+        stripes = bpy.data.images.new("stripes", 8, 8, alpha=True)
+        stripes.pixels[:] = [v for _ in range(8) for x in range(8) for v in (0, 0, 0, 1.0 if x % 4 < 2 else 0.0)]
+        stripes.pack()
+        image = card.node_tree.nodes.new("ShaderNodeTexImage")
+        image.image = stripes
+        image.interpolation = "Closest"
+        card.node_tree.links.new(image.outputs["Color"], bsdf.inputs["Base Color"])
+        card.node_tree.links.new(image.outputs["Alpha"], bsdf.inputs["Alpha"])
+        card.blend_method = "CLIP"
+        card.alpha_threshold = 0.5
+    else:
+        bsdf.inputs["Alpha"].default_value = 0.4
+        card.blend_method = "BLEND"
+    bpy.ops.mesh.primitive_plane_add(size=4, location=(0.5, 0, 3))
+    bpy.context.object.data.materials.append(card)
 else:
-    raise SystemExit("expected point, sun or emissive, got " + light)
+    raise SystemExit("expected point, sun, emissive, cutout-mask or cutout-blend, got " + light)
 bpy.ops.object.camera_add(location=(0, -10, 6), rotation=(math.radians(60), 0, 0))
 scene.camera = bpy.context.object
 
