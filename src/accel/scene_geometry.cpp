@@ -55,9 +55,11 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
                              std::vector<TriangleNormals> vertexNormals, unsigned buildThreads,
                              std::vector<ShapeRecord> shapes, std::vector<TriangleUvs> triangleUvs,
                              std::vector<TriangleTangents> triangleTangents,
-                             std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage)
+                             std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage,
+                             std::vector<TriangleColors> triangleColors)
     : triangles_(std::move(triangles)), vertexNormals_(std::move(vertexNormals)), triangleUvs_(std::move(triangleUvs)),
       triangleTangents_(std::move(triangleTangents)),
+      triangleColors_(std::move(triangleColors)),
       coverage_(std::any_of(objectCoverage.begin(), objectCoverage.end(), [](const auto& c) { return c != nullptr; })
                     ? std::move(objectCoverage)
                     : std::vector<std::shared_ptr<const SurfaceCoverage>>{}),
@@ -69,6 +71,8 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
         throw std::invalid_argument("texture coordinates: expected one entry per triangle");
     if (!triangleTangents_.empty() && triangleTangents_.size() != triangles_.size())
         throw std::invalid_argument("tangents: expected one entry per triangle");
+    if (!triangleColors_.empty() && triangleColors_.size() != triangles_.size())
+        throw std::invalid_argument("vertex colours: expected one entry per triangle");
     shapes_.reserve(spheres.size() + planes.size() + shapes.size());
     for (const Sphere& sphere : spheres) shapes_.push_back(sphereRecord(sphere));
     for (const Plane& plane : planes) shapes_.push_back(planeRecord(plane));
@@ -484,6 +488,14 @@ SurfaceParameters SceneGeometry::surfaceParameters(const SurfaceHit& hit) const 
     result.dpdu = (duv12.y * dp02 - duv02.y * dp12) / det;
     result.dpdv = (duv02.x * dp12 - duv12.x * dp02) / det;
     return result;
+}
+
+Rgb SceneGeometry::vertexColorAt(const SurfaceHit& hit) const {
+    if (triangleColors_.empty() || hit.primitive < shapes_.size()) return Rgb(1.0f);
+    const std::uint32_t index = hit.primitive - firstTriangle();
+    const TriangleColors& c = triangleColors_[index];
+    const Vec3 w = barycentricsOf(triangles_[index], hit.point);
+    return w.x * c.a + w.y * c.b + w.z * c.c;
 }
 
 Vec2 SceneGeometry::uvAt(std::uint32_t id, const Vec3& point, const Vec3& normal, const Vec3* barycentrics) const {

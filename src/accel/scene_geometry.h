@@ -53,7 +53,8 @@ public:
                   std::vector<TriangleNormals> vertexNormals = {}, unsigned buildThreads = 0,
                   std::vector<ShapeRecord> shapes = {}, std::vector<TriangleUvs> triangleUvs = {},
                   std::vector<TriangleTangents> triangleTangents = {},
-                  std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage = {});
+                  std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage = {},
+                  std::vector<TriangleColors> triangleColors = {});
     // `spheres` and `planes` become the table's first records (geometry/builtin_shapes.h), in
     // that order, before `shapes`. `objectCoverage`: empty, or per object id a cut-out (null: none;
     // geometry/coverage.h), which every query below then looks through.
@@ -95,6 +96,8 @@ public:
     // `normal`); a triangle's from `barycentrics` (weights of a, b, c) when given, as a point
     // sampled on it has them, else from the point.
     Vec2 uvAt(std::uint32_t id, const Vec3& point, const Vec3& normal, const Vec3* barycentrics = nullptr) const;
+    // The vertex colour at a hit (glTF's COLOR_0): a triangle's corner colours interpolated, else white.
+    Rgb vertexColorAt(const SurfaceHit& hit) const;
 
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }
@@ -162,6 +165,7 @@ private:
     std::vector<TriangleNormals> vertexNormals_;  // empty, or one per triangle
     std::vector<TriangleUvs> triangleUvs_;        // empty, or one per triangle
     std::vector<TriangleTangents> triangleTangents_;  // empty, or one per triangle
+    std::vector<TriangleColors> triangleColors_;      // empty, or one per triangle
     // Empty when nothing is cut out, else one per object id (null: covered everywhere).
     std::vector<std::shared_ptr<const SurfaceCoverage>> coverage_;
     NumericsOptions numerics_;

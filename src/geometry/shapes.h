@@ -46,6 +46,12 @@ struct TriangleTangents {
     Vec4 a{0.0f}, b{0.0f}, c{0.0f};
 };
 
+// The colours at a triangle's corners (glTF's COLOR_0, linear RGB), which multiply its material's
+// base colour; white where a mesh has none.
+struct TriangleColors {
+    Rgb a{1.0f}, b{1.0f}, c{1.0f};
+};
+
 // A surface point's texture coordinates and the surface's derivatives along them (pbrt-v4's
 // dpdu, dpdv): what turns a footprint on the surface into one in texture space.
 struct SurfaceParameters {

@@ -314,8 +314,25 @@ void RadiosityIntegrator::preprocess(const RenderContext& context) {
 
 void RadiosityIntegrator::computeReflectance(const RenderContext& context) {
     reflectance_.clear();
-    for (const RadiosityCluster& c : mesh_->clusters())
-        reflectance_.push_back(context.scene.materials[context.scene.objects[c.object].material]->diffuseReflectance());
+    for (const RadiosityCluster& c : mesh_->clusters()) {
+        const Material& material = *context.scene.materials[context.scene.objects[c.object].material];
+        Rgb rho = material.diffuseReflectance();
+        if (material.vertexColored) {
+            // Times the area-weighted mean of the vertex colour at its patches' centroids.
+            Rgb colour{0.0f};
+            float area = 0.0f;
+            for (const std::uint32_t p : mesh_->membersOf(c)) {
+                const RadiosityPatch& patch = mesh_->patches()[p];
+                SurfaceHit centre;
+                centre.primitive = patch.primitive;
+                centre.point = (patch.a + patch.b + patch.c) / 3.0f;
+                colour += patch.area * context.geometry.vertexColorAt(centre);
+                area += patch.area;
+            }
+            if (area > 0.0f) rho *= colour / area;
+        }
+        reflectance_.push_back(rho);
+    }
 }
 
 std::vector<float> RadiosityIntegrator::valueNoise(int threads) const {
@@ -1082,7 +1099,7 @@ Rgb RadiosityIntegrator::gatheredRadiance(std::size_t light, int bounce, const P
 Rgb RadiosityIntegrator::textureRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster,
                                       const RenderContext& context) const {
     const Material& material = *context.scene.materials[context.scene.objects[hit.object].material];
-    if (!material.textured) return Rgb{1.0f};
+    if (!material.textured && !material.vertexColored) return Rgb{1.0f};
     const Rgb mean = reflectance_[cluster];
     const Rgb here = makeShadingPoint(hit, ray, context).bsdf.diffuseReflectance();
     Rgb ratio{0.0f};

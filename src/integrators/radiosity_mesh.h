@@ -117,6 +117,10 @@ public:
 
     const std::vector<RadiosityPatch>& patches() const { return patches_; }
     const std::vector<RadiosityCluster>& clusters() const { return clusters_; }
+    // The ids of the patches cluster `c` solves as one.
+    std::span<const std::uint32_t> membersOf(const RadiosityCluster& c) const {
+        return {members_.data() + c.firstMember, c.memberCount};
+    }
     std::size_t vertexCount() const { return vertexCount_; }
     float patchSize() const { return patchSize_; }
 

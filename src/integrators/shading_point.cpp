@@ -82,7 +82,8 @@ ShadingPoint makeShadingPoint(const SurfaceHit& hit, const Ray& ray, const Rende
     if (m.textured) shadingNormal = textured(hit, m, context, texture);
     const Vec3 normal = entering ? shadingNormal : -shadingNormal;
     const MaterialTerms& terms = context.analysis.materials[material];
-    return {hit, -ray.direction, normal, entering, m, terms, Bsdf(m, normal, entering, mode, texture, &terms.lobes)};
+    const Rgb vertexColor = m.vertexColored ? context.geometry.vertexColorAt(hit) : Rgb(1.0f);
+    return {hit, -ray.direction, normal, entering, m, terms, Bsdf(m, normal, entering, mode, texture, &terms.lobes, vertexColor)};
 }
 
 }  // namespace lightpath

@@ -28,8 +28,9 @@ public:
     // analysis, MaterialTerms::lobes): read instead of one virtual call per lobe and question.
     Bsdf(const Material& material, const Vec3& normal, bool entering,
          TransportMode mode = TransportMode::Radiance, const TextureFootprint& texture = {},
-         const std::array<bool, kMaxLobes>* present = nullptr)
-        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode, texture}, present_(present) {}
+         const std::array<bool, kMaxLobes>* present = nullptr, const Rgb& vertexColor = Rgb(1.0f))
+        : material_(material), lobes_(material.lobes()), side_{normal, entering, mode, texture, vertexColor},
+          present_(present) {}
 
     Lobes lobes() const { return lobes_; }
     const LobeInfo& lobe(int index) const { return lobes_[index]; }

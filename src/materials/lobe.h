@@ -68,6 +68,7 @@ struct SurfaceSide {
     bool entering = true;           // that side is the material's outside
     TransportMode mode = TransportMode::Radiance;
     TextureFootprint texture;       // what its textured parameters are looked up at (texture.h)
+    Rgb vertexColor{1.0f};          // the mesh's colour there (glTF's COLOR_0), for parameters it multiplies
 
     // Both directions leave the surface on this side: a reflection lobe can connect them.
     bool bothAbove(const Vec3& wo, const Vec3& wi) const {

@@ -29,6 +29,9 @@ public:
     // Some parameter is a texture (materials/texture.h): shading points then find their texture
     // coordinates and footprint, which an untextured material never pays for.
     bool textured = false;
+    // Some parameter is multiplied by the mesh's vertex colour (glTF's COLOR_0 on the base colour):
+    // shading points then find it (SurfaceSide::vertexColor), which no other material pays for.
+    bool vertexColored = false;
     // A normal map (glTF's normalTexture) turning the shading normal; set with `textured`.
     NormalMap normalMap;
     // Where the surface is (materials/alpha.h): null when it is everywhere, as most are. Rays pass

@@ -99,7 +99,7 @@ Rgb MicrofacetMaterial::fresnel(const Rgb& f0, float cosine) {
 }
 
 MicrofacetMaterial::Shading MicrofacetMaterial::shadingAt(const SurfaceSide& side) const {
-    if (!baseColor_.textured() && !metallic_.textured() && !roughness_.textured()) return constant_;
+    if (!baseColor_.varies() && !metallic_.textured() && !roughness_.textured()) return constant_;
     return shadingOf(baseColor_.at(side), metallic_.at(side), roughness_.at(side));
 }
 
@@ -148,7 +148,7 @@ Rgb MicrofacetMaterial::diffuseWeight(const Shading& shading, float cosOut, floa
 
 Rgb MicrofacetMaterial::diffuseReflectance() const {
     // Textures: read as their images' means times their factors.
-    const bool textured = baseColor_.textured() || metallic_.textured() || roughness_.textured();
+    const bool textured = baseColor_.varies() || metallic_.textured() || roughness_.textured();
     const Shading shading = textured ? shadingOf(baseColor_.mean(), metallic_.mean(), roughness_.mean()) : constant_;
     return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo);
 }

@@ -85,15 +85,25 @@ public:
 
     // Its value at the surface point `side` describes. The untextured case is one branch.
     Rgb at(const SurfaceSide& side) const {
-        if (!texture_) return value_;
-        return value_ * texture_->lookup(transformedFootprint(side.texture, sampling_.transform), sampling_);
+        if (!texture_) return vertexColored_ ? value_ * side.vertexColor : value_;
+        const Rgb texel = texture_->lookup(transformedFootprint(side.texture, sampling_.transform), sampling_);
+        return vertexColored_ ? value_ * texel * side.vertexColor : value_ * texel;
+    }
+    // The same parameter times the surface's vertex colour (glTF's COLOR_0 on the base colour).
+    ColorParameter timesVertexColor() const {
+        ColorParameter multiplied = *this;
+        multiplied.vertexColored_ = true;
+        return multiplied;
     }
     bool textured() const { return texture_ != nullptr; }
+    // Whether it differs from point to point: a texture, or a vertex colour that multiplies it.
+    bool varies() const { return texture_ != nullptr || vertexColored_; }
     // The constant, or a texture's tint.
     const Rgb& constant() const { return value_; }
     // Nothing anywhere: a zero constant or a zero tint (lobes test it to drop themselves).
     bool black() const { return isBlack(value_); }
-    // The mean over the surface: the constant, or the tint times the image's mean.
+    // The mean over the surface: the constant, or the tint times the image's mean (a vertex
+    // colour, which the parameter does not hold, left out).
     Rgb mean() const { return texture_ ? value_ * texture_->average() : value_; }
     // Its largest channel at this point (a lobe's albedo, for choosing lobes).
     float maxAt(const SurfaceSide& side) const { return maxComponent(at(side)); }
@@ -102,6 +112,7 @@ private:
     Rgb value_{0.0f};
     std::shared_ptr<const Texture> texture_;
     TextureSampling sampling_;
+    bool vertexColored_ = false;
 };
 
 // One scalar parameter: a constant, or one channel of a texture times a factor (glTF's metallic

@@ -36,7 +36,7 @@ struct alignas(kCacheLine) CacheLinePadded {
 std::shared_ptr<const SceneGeometry> Renderer::buildGeometry(const Scene& scene, const RenderOptions& options) {
     return std::make_shared<const SceneGeometry>(scene.spheres, scene.planes, scene.triangles, options.numerics,
                                                  options.accelerator, scene.triangleNormals, 0, scene.shapes, scene.triangleUvs,
-                                                 scene.triangleTangents, scene.objectCoverage());
+                                                 scene.triangleTangents, scene.objectCoverage(), scene.triangleColors);
 }
 
 Renderer::Renderer(const Scene& scene, const AovSet& aovs, const RenderOptions& options)

@@ -59,6 +59,8 @@ struct Scene {
     std::vector<TriangleUvs> triangleUvs;
     // Empty when no triangle has tangents, else one entry per triangle (glTF's TANGENT).
     std::vector<TriangleTangents> triangleTangents;
+    // Empty when no triangle has vertex colours, else one entry per triangle (glTF's COLOR_0).
+    std::vector<TriangleColors> triangleColors;
 
     // Legal but probably unintended, located like errors ("FILE:LINE:COL: KEY: ..."), e.g. a
     // triangle without area. The command line prints them.

@@ -39,6 +39,8 @@ public:
     virtual void setTriangleUvs(const TriangleUvs& uvs) { (void)uvs; }
     // The tangents at the corners of the triangle added last (glTF's TANGENT).
     virtual void setTriangleTangents(const TriangleTangents& tangents) { (void)tangents; }
+    // The colours at the corners of the triangle added last (glTF's COLOR_0).
+    virtual void setTriangleColors(const TriangleColors& colors) { (void)colors; }
     // A shape declaration's object, from its `name` (optional) and `material` (a material of the
     // scene, else a located error at `material`). Returns the object index its shapes store.
     virtual std::uint32_t addShapeObject(const ParameterValues& values) = 0;

@@ -325,6 +325,10 @@ public:
         scene_.triangleTangents.resize(scene_.triangles.size());
         scene_.triangleTangents.back() = tangents;
     }
+    void setTriangleColors(const TriangleColors& colors) override {
+        scene_.triangleColors.resize(scene_.triangles.size());  // white for the triangles before
+        scene_.triangleColors.back() = colors;
+    }
     std::uint32_t addShapeObject(const ParameterValues& values) override;
     std::uint32_t addObject(std::string name, std::uint32_t material) override {
         scene_.objects.push_back({std::move(name), material});
@@ -535,6 +539,7 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
     if (!scene.triangleNormals.empty()) scene.triangleNormals.resize(scene.triangles.size());
     if (!scene.triangleUvs.empty()) scene.triangleUvs.resize(scene.triangles.size());
     if (!scene.triangleTangents.empty()) scene.triangleTangents.resize(scene.triangles.size());
+    if (!scene.triangleColors.empty()) scene.triangleColors.resize(scene.triangles.size());
     // An emitter is never cut out (Scene::objectCoverage): said once for each material that is both.
     for (const MaterialSlot& m : scene.materials)
         if (m->alpha && !m->emission.black())

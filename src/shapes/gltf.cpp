@@ -146,6 +146,7 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
         }
         if (!model.uvs.empty() && model.uvs[i].given) scene.setTriangleUvs(model.uvs[i]);
         if (!model.tangents.empty()) scene.setTriangleTangents(placement.tangents(model.tangents[i]));
+        if (!model.colors.empty()) scene.setTriangleColors(model.colors[i]);
     }
     const LightingMode lighting = lightingModeOf(values);
     if (values.boolean("lights"))

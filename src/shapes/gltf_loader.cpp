@@ -51,6 +51,7 @@ public:
 
     GltfModel read() {
         checkExtensions();
+        findVertexColors();
         readMaterials();
         const std::vector<int> roots = rootNodes();
         visited_.assign(model_.nodes.size(), false);
@@ -166,6 +167,23 @@ private:
         return glm::min(Rgb{1.0f}, f0 * colour) * float(weight);
     }
 
+    // Which materials' primitives carry COLOR_0 (the last slot: primitives without a material): their
+    // base colour is multiplied by it (glTF 2.0, 3.7.2.1), a material's parameter built once.
+    void findVertexColors() {
+        coloredMaterial_.assign(model_.materials.size() + 1, false);
+        for (const tinygltf::Mesh& mesh : model_.meshes)
+            for (const tinygltf::Primitive& primitive : mesh.primitives)
+                if (primitive.attributes.count("COLOR_0") != 0) {
+                    const bool named = primitive.material >= 0 && std::size_t(primitive.material) < model_.materials.size();
+                    coloredMaterial_[named ? std::size_t(primitive.material) : model_.materials.size()] = true;
+                }
+    }
+
+    // `parameter`, times the vertex colour when the material's primitives have one.
+    static ColorParameter colored(ColorParameter parameter, bool vertexColors) {
+        return vertexColors ? parameter.timesVertexColor() : parameter;
+    }
+
     void readMaterials() {
         std::vector<std::string> taken;
         for (std::size_t i = 0; i < model_.materials.size(); ++i) {
@@ -185,6 +203,7 @@ private:
                                                0.0, 1.0, where + ".extensions.KHR_materials_transmission.transmissionFactor");
             const double ior = number(extensionNumber(m.extensions, "KHR_materials_ior", "ior", 1.5), 1.0, kMaxMagnitude,
                                       where + ".extensions.KHR_materials_ior.ior");
+            const bool vertexColors = coloredMaterial_[i];
             MaterialSlot material = [&]() -> MaterialSlot {
                 if (transmission > 0.0) {
                     // Rough: the rough dielectric (Walter et al. 2007), whose tint is the transmitted
@@ -193,13 +212,14 @@ private:
                         if (transmission < 1.0 || metallic > 0.0f)
                             warn(where + ": a rough transmitting material is rendered as rough glass tinted by " +
                                  "transmission * baseColor; its diffuse and metallic share is dropped");
-                        return DielectricMaterial(float(ior), float(transmission) * baseColor, roughness);
+                        return DielectricMaterial(float(ior), colored(float(transmission) * baseColor, vertexColors),
+                                                  roughness);
                     }
                     // Smooth: Fresnel glass of the lecture's material (its kt tints the mirror ray
                     // too, which the dielectric's tint does not), with the rest as its diffuse part.
                     PhongMaterial glass;
-                    glass.kd = float(1.0 - transmission) * (1.0f - metallic) * baseColor;
-                    glass.kt = float(transmission) * baseColor;
+                    glass.kd = colored(float(1.0 - transmission) * (1.0f - metallic) * baseColor, vertexColors);
+                    glass.kt = colored(float(transmission) * baseColor, vertexColors);
                     glass.ior = float(ior);
                     glass.fresnel = true;
                     return glass;
@@ -216,8 +236,8 @@ private:
                     rough = ScalarParameter(texture->first, 1, roughness, texture->second);
                 }
                 const bool textured = base.textured() || metal.textured();
-                MaterialSlot slot = MicrofacetMaterial(std::move(base), std::move(metal), std::move(rough),
-                                                       dielectricF0(m, ior, where));
+                MaterialSlot slot = MicrofacetMaterial(colored(std::move(base), vertexColors), std::move(metal),
+                                                       std::move(rough), dielectricF0(m, ior, where));
                 slot->textured = textured;  // shading points then carry their uv and footprint
                 return slot;
             }();
@@ -235,6 +255,7 @@ private:
             // unless backface culling is on).
             material->twoSidedEmission = m.doubleSided;
             material->alpha = alpha(m, float(base[3]), where);
+            material->vertexColored = vertexColors;
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
             if (auto texture = open(m.normalTexture, TextureColorSpace::linear, where + ".normalTexture")) {
                 material->normalMap = {texture->first, float(number(m.normalTexture.scale, -kMaxMagnitude, kMaxMagnitude,
@@ -393,7 +414,9 @@ private:
 
     std::uint32_t defaultMaterial() {
         if (defaultMaterial_ == kNoMeshMaterial) {
-            MaterialSlot material = MicrofacetMaterial(Rgb(1.0f), 1.0f, 1.0f);
+            const bool vertexColors = coloredMaterial_.back();
+            MaterialSlot material = MicrofacetMaterial(colored(Rgb(1.0f), vertexColors), 1.0f, 1.0f);
+            material->vertexColored = vertexColors;
             material->name = label(kDefaultMaterialLabel, kDefaultMaterialLabel, materialLabels_, "the default material");
             defaultMaterial_ = std::uint32_t(out_.materials.size());
             out_.materials.push_back(std::move(material));
@@ -616,6 +639,39 @@ private:
         return out;
     }
 
+    // COLOR_0: linear RGB or RGBA (its alpha not read), of FLOAT or of normalized UNSIGNED_BYTE or
+    // UNSIGNED_SHORT, each from 0 to 1 (glTF 2.0, 3.7.2.1).
+    std::vector<Rgb> vertexColors(int index, const std::string& where) const {
+        const bool rgba = index >= 0 && std::size_t(index) < model_.accessors.size() &&
+                          model_.accessors[std::size_t(index)].type == TINYGLTF_TYPE_VEC4;
+        const View v = view(index, rgba ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, where);
+        const std::string at = where + ": accessor " + std::to_string(index);
+        const bool normalized = model_.accessors[std::size_t(index)].normalized;
+        std::vector<Rgb> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            const unsigned char* p = v.data + i * v.stride;
+            for (int c = 0; c < 3; ++c) {
+                float x = 0.0f;
+                if (v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+                    std::memcpy(&x, p + 4 * c, sizeof x);
+                } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && normalized) {
+                    x = float(p[c]) / 255.0f;
+                } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && normalized) {
+                    std::uint16_t s;
+                    std::memcpy(&s, p + 2 * c, sizeof s);
+                    x = float(s) / 65535.0f;
+                } else {
+                    fail(at, "expected FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, components");
+                }
+                if (!(x >= 0.0f && x <= 1.0f))
+                    fail(at, "element " + std::to_string(i) + " has a component " + formatNumber(x) +
+                                 "; expected numbers from 0 to 1");
+                out[i][c] = x;
+            }
+        }
+        return out;
+    }
+
     std::vector<std::uint32_t> indices(int index, std::size_t vertexCount, const std::string& where) const {
         const View v = view(index, TINYGLTF_TYPE_SCALAR, where);
         std::vector<std::uint32_t> out(v.count);
@@ -699,6 +755,13 @@ private:
                     fail(at + ".attributes.TANGENT", "expected " + std::to_string(positions.size()) +
                                                          " tangents, one per position, got " + std::to_string(tangentsOf.size()));
             }
+            std::vector<Rgb> colors;
+            if (const auto color = primitive.attributes.find("COLOR_0"); color != primitive.attributes.end()) {
+                colors = vertexColors(color->second, at + ".attributes.COLOR_0");
+                if (colors.size() != positions.size())
+                    fail(at + ".attributes.COLOR_0", "expected " + std::to_string(positions.size()) +
+                                                         " colours, one per position, got " + std::to_string(colors.size()));
+            }
             std::vector<std::uint32_t> order;
             if (primitive.indices >= 0) {
                 order = indices(primitive.indices, positions.size(), at + ".indices");
@@ -747,6 +810,11 @@ private:
                 else if (!out_.tangents.empty()) out_.tangents.push_back({});
                 if (!normals.empty()) out_.normals.push_back({orient(i), orient(j), orient(k)});
                 else if (!out_.normals.empty()) out_.normals.push_back({});
+                // Colours for every triangle once any has them, white for the others.
+                if (!colors.empty() && out_.colors.size() + 1 < out_.triangles.size())
+                    out_.colors.resize(out_.triangles.size() - 1);
+                if (!colors.empty()) out_.colors.push_back({colors[i], colors[j], colors[k]});
+                else if (!out_.colors.empty()) out_.colors.push_back({});
             };
             if (mode == TINYGLTF_MODE_TRIANGLES) {
                 for (std::size_t i = 0; i + 2 < order.size(); i += 3) addTriangle(order[i], order[i + 1], order[i + 2]);
@@ -830,6 +898,7 @@ private:
     static constexpr int kNoUvSet = -1;
     static constexpr int kMaxUvSet = 31;  // far above any exporter's; keeps the attribute's name short
     std::vector<int> uvSetOfMaterial_;
+    std::vector<bool> coloredMaterial_;  // per material (and, last, none): some primitive has COLOR_0
     int uvSet_ = kNoUvSet;
 };
 

@@ -58,6 +58,7 @@ struct GltfModel {
     std::vector<TriangleNormals> normals; // empty, or one per triangle (zero: shade flat)
     std::vector<TriangleUvs> uvs;         // empty (no material is textured), or one per triangle
     std::vector<TriangleTangents> tangents;  // empty, or one per triangle (zero: none; TANGENT)
+    std::vector<TriangleColors> colors;      // empty, or one per triangle (white: none; COLOR_0)
     std::vector<GltfLight> lights;
     std::vector<GltfCamera> cameras;
     std::vector<GltfRenaming> renamed;

@@ -23,6 +23,7 @@
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
 #include "render/renderer.h"
+#include "scene/camera.h"
 #include "scene/scene_loader.h"
 #include "../support/film_checks.h"
 #include "../support/temp_folder.h"
@@ -196,6 +197,84 @@ TEST_CASE("a Blender scene's cut-outs (Alpha Clip, Alpha Blend) render as Cycles
         Scene opaque = scene;
         for (MaterialSlot& m : opaque.materials) m->alpha = nullptr;
         CHECK(compareWithCycles(opaque, cycles, 2).worstBlock > 0.3);
+    }
+}
+
+// glTF 2.0, 3.7.2.1: COLOR_0 multiplies the base colour. A floor triangle of base colour 1 and
+// F0 0 (a Lambertian base alone) under a light straight down, seen from above by the rasteriser
+// (pixel centres): each pixel is the white floor's times the corners' colours interpolated at the
+// point that pixel's centre sees, barycentric weights worked here from the corners. The path
+// tracer, bdpt and radiosity agree on the coloured floor's mean (each reads the colour).
+TEST_CASE("a glTF mesh's COLOR_0 multiplies its base colour: the white floor times the corners' colours, interpolated") {
+    std::ifstream in(kData / "vertex-colors.toml");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto sceneOf = [&](const std::string& file) {
+        std::string changed = text;
+        changed.replace(changed.rfind("FILE"), 4, file);
+        return loadSceneFromText(changed, kData / "vertex-colors.toml");
+    };
+    const auto render = [](const Scene& scene, const char* integrator, int spp) {
+        RenderOptions options;
+        options.integrator = integrator;
+        options.samplesPerPixel = spp;
+        return Renderer(scene, AovSet(classesSet()), options).render().film;
+    };
+    const Scene whiteScene = sceneOf("vertex-colors-white.gltf");
+    const Film white = render(whiteScene, "raster", 1);
+    const PinholeCamera camera(whiteScene.camera);
+    // The corners (x, z) of make_vertex_colors.py's triangle at y = 0.
+    const Vec2 a{-8.0f, 8.0f}, b{8.0f, 8.0f}, c{0.0f, -8.0f};
+    const auto weights = [&](Vec2 p) {
+        const auto cross = [](Vec2 u, Vec2 v) { return double(u.x) * v.y - double(u.y) * v.x; };
+        const double area = cross(b - a, c - a);
+        return glm::dvec3(cross(b - p, c - p) / area, cross(c - p, a - p) / area, cross(a - p, b - p) / area);
+    };
+    struct Case {
+        const char* file;
+        std::array<Rgb, 3> corners;
+    };
+    for (const Case& k : {Case{"vertex-colors.gltf", {Rgb(1, 0, 0), Rgb(0, 1, 0), Rgb(0, 0, 1)}},
+                          Case{"vertex-colors-u8.gltf", {Rgb(1.0f, 128.0f / 255, 0), Rgb(0, 1, 64.0f / 255),
+                                                         Rgb(32.0f / 255, 0, 1)}}}) {
+        CAPTURE(k.file);
+        const Film colored = render(sceneOf(k.file), "raster", 1);
+        int checked = 0;
+        double worst = 0.0;
+        for (int y = 0; y < white.height(); ++y)
+            for (int x = 0; x < white.width(); ++x) {
+                const Rgb reference = white.at(0, x, y);
+                if (!(reference.r > 0.0f)) continue;  // beyond the triangle
+                const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+                const Vec3 p = ray.at(-ray.origin.y / ray.direction.y);
+                const glm::dvec3 w = weights({p.x, p.z});
+                for (int ch = 0; ch < 3; ++ch) {
+                    const double expected = w.x * k.corners[0][ch] + w.y * k.corners[1][ch] + w.z * k.corners[2][ch];
+                    worst = std::max(worst, std::fabs(double(colored.at(0, x, y)[ch]) / reference[ch] - expected));
+                }
+                ++checked;
+            }
+        CHECK(checked > 1000);
+        CHECK(worst < 1e-4);
+    }
+    const Scene coloredScene = sceneOf("vertex-colors.gltf");
+    const auto mean = [](const Film& film) {
+        double sum = 0.0;
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x) sum += double(film.at(0, x, y).g);
+        return sum / (film.width() * film.height());
+    };
+    const double path = mean(render(coloredScene, "path", 16)), bdpt = mean(render(coloredScene, "bdpt", 16));
+    CHECK(bdpt / path == doctest::Approx(1.0).epsilon(0.02));
+    // Radiosity solves with each patch's mean colour and shows the colour at each point.
+    CHECK(mean(render(coloredScene, "radiosity", 1)) / path == doctest::Approx(1.0).epsilon(0.02));
+    CHECK(path < 0.9 * mean(render(whiteScene, "path", 16)));  // the control: the colour is there
+    try {
+        (void)loadScene(kData / "vertex-colors-bad.gltf");
+        FAIL("no error");
+    } catch (const SceneError& e) {
+        CHECK(std::string(e.what()) == (kData / "vertex-colors-bad.gltf").string() +
+                                            ": meshes[0].primitives[0].attributes.COLOR_0: accessor 1: element 1 has a "
+                                            "component 1.5; expected numbers from 0 to 1");
     }
 }
 
