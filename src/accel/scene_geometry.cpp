@@ -63,6 +63,8 @@ SceneGeometry::SceneGeometry(std::vector<Sphere> spheres, std::vector<Plane> pla
       coverage_(std::any_of(objectCoverage.begin(), objectCoverage.end(), [](const auto& c) { return c != nullptr; })
                     ? std::move(objectCoverage)
                     : std::vector<std::shared_ptr<const SurfaceCoverage>>{}),
+      cutouts_(!coverage_.empty()),
+      plainAnyHit_(!cutouts_ && accelerator != Accelerator::BruteForce),
       numerics_(numerics),
       accelerator_(accelerator) {
     if (!vertexNormals_.empty() && vertexNormals_.size() != triangles_.size())
@@ -212,18 +214,13 @@ template <typename Keep>
     }
 }
 
-LIGHTPATH_HOT_PATH
-std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray) const {
-    return coverage_.empty() ? intersectSurface(ray) : intersectCovered(ray);
-}
-
 bool SceneGeometry::covered(const Ray& ray, const SurfaceHit& hit) const {
     const SurfaceCoverage* coverage = hit.object < coverage_.size() ? coverage_[hit.object].get() : nullptr;
     return coverage == nullptr || coverage->covers(surfaceParameters(hit).uv, coverageSample(ray, hit.t));
 }
 
 bool SceneGeometry::covers(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {
-    return coverage_.empty() || covered(ray, describeHit(ray, t, id, barycentrics));
+    return !cutouts_ || covered(ray, describeHit(ray, t, id, barycentrics));
 }
 
 std::optional<SurfaceHit> SceneGeometry::intersectCovered(Ray ray) const {
@@ -236,6 +233,7 @@ std::optional<SurfaceHit> SceneGeometry::intersectCovered(Ray ray) const {
     }
 }
 
+LIGHTPATH_HOT_PATH
 std::optional<SurfaceHit> SceneGeometry::intersectSurface(const Ray& ray) const {
     if (accelerator_ == Accelerator::BruteForce) {
         const std::optional<PrimitiveHit> found = closestBruteForce(ray);
@@ -251,7 +249,7 @@ std::optional<SurfaceHit> SceneGeometry::intersectSurface(const Ray& ray) const 
 }
 
 std::optional<PrimitiveHit> SceneGeometry::closestPrimitive(const Ray& ray) const {
-    if (!coverage_.empty()) {
+    if (cutouts_) {
         const std::optional<SurfaceHit> hit = intersectCovered(ray);
         if (!hit) return std::nullopt;
         return PrimitiveHit{hit->t, hit->primitive};
@@ -363,9 +361,11 @@ bool SceneGeometry::anyPlane(const Ray& ray) const {
 
 LIGHTPATH_HOT_PATH
 bool SceneGeometry::occluded(const Ray& ray) const {
-    // An any-hit query cannot stop at a cut-out's first hit: it may be a hole.
-    if (!coverage_.empty()) return intersectCovered(ray).has_value();
-    if (accelerator_ == Accelerator::BruteForce) return occludedBruteForce(ray);
+    if (!plainAnyHit_) {
+        // An any-hit query cannot stop at a cut-out's first hit: it may be a hole.
+        if (cutouts_) return intersectCovered(ray).has_value();
+        return occludedBruteForce(ray);
+    }
     const auto blocks = [&](std::uint32_t id) { return intersectPrimitive(ray, id) != kNoHit; };
     if (!planePacks_.empty() && anyPlane(ray)) return true;
     for (const std::uint32_t id : unbounded_)

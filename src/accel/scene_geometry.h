@@ -70,13 +70,16 @@ public:
     // (Embree: its own triangle test decides, so rare ties and edge hits may differ).
     std::optional<PrimitiveHit> closestPrimitive(const Ray& ray) const;
 
-    std::optional<SurfaceHit> intersect(const Ray& ray) const;
+    // Inline: a scene without cut-outs calls the search itself, as it did before they were.
+    std::optional<SurfaceHit> intersect(const Ray& ray) const {
+        return cutouts_ ? intersectCovered(ray) : intersectSurface(ray);
+    }
     bool occluded(const Ray& ray) const;
     // Whether a ray meets primitive `id` where `ray` hits it at `t` (a triangle's point at
     // `barycentrics` when given, as describeHit), or passes through a cut-out there: a
     // rasteriser's fragment test. True for every surface without one.
     bool covers(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics = nullptr) const;
-    bool hasCutouts() const { return !coverage_.empty(); }
+    bool hasCutouts() const { return cutouts_; }
 
     // t of the nearest hit of primitive `id` in (ray.tMin, ray.tMax), or kNoHit, with this
     // geometry's numerics.
@@ -168,6 +171,9 @@ private:
     std::vector<TriangleColors> triangleColors_;      // empty, or one per triangle
     // Empty when nothing is cut out, else one per object id (null: covered everywhere).
     std::vector<std::shared_ptr<const SurfaceCoverage>> coverage_;
+    bool cutouts_ = false;  // !coverage_.empty(), one byte for the hot paths to test
+    // Neither cut-outs nor the lecture's loop: occluded's common case, one test.
+    bool plainAnyHit_ = false;
     NumericsOptions numerics_;
     Accelerator accelerator_;
     Bvh bvh_;  // bounded shapes and triangles (Bvh); no triangles (Embree)

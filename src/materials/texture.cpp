@@ -25,6 +25,12 @@ std::shared_ptr<const Texture> openTexture(const TextureSource& source, std::str
     return open(source, error);
 }
 
+Rgb ColorParameter::varying(const SurfaceSide& side) const {
+    Rgb value = value_;
+    if (texture_) value *= texture_->lookup(transformedFootprint(side.texture, sampling_.transform), sampling_);
+    return vertexColored_ ? value * side.vertexColor : value;
+}
+
 ColorParameter colorParameter(const ParameterValues& values, std::string_view name) {
     const TextureReference* reference = values.texture(name);
     if (reference == nullptr) return values.colour(name);

@@ -81,23 +81,20 @@ public:
     ColorParameter(std::shared_ptr<const Texture> texture, const Rgb& tint, float uvScale, bool filtered)
         : ColorParameter(std::move(texture), tint, TextureSampling{UvTransform::scaled(uvScale), filtered}) {}
     ColorParameter(std::shared_ptr<const Texture> texture, const Rgb& tint, const TextureSampling& sampling)
-        : value_(tint), texture_(std::move(texture)), sampling_(sampling) {}
+        : value_(tint), texture_(std::move(texture)), sampling_(sampling), varies_(texture_ != nullptr) {}
 
-    // Its value at the surface point `side` describes. The untextured case is one branch.
-    Rgb at(const SurfaceSide& side) const {
-        if (!texture_) return vertexColored_ ? value_ * side.vertexColor : value_;
-        const Rgb texel = texture_->lookup(transformedFootprint(side.texture, sampling_.transform), sampling_);
-        return vertexColored_ ? value_ * texel * side.vertexColor : value_ * texel;
-    }
+    // Its value at the surface point `side` describes. The constant case is one branch, inlined
+    // where it is read; the rest out of line.
+    Rgb at(const SurfaceSide& side) const { return varies_ ? varying(side) : value_; }
     // The same parameter times the surface's vertex colour (glTF's COLOR_0 on the base colour).
     ColorParameter timesVertexColor() const {
         ColorParameter multiplied = *this;
-        multiplied.vertexColored_ = true;
+        multiplied.vertexColored_ = multiplied.varies_ = true;
         return multiplied;
     }
     bool textured() const { return texture_ != nullptr; }
     // Whether it differs from point to point: a texture, or a vertex colour that multiplies it.
-    bool varies() const { return texture_ != nullptr || vertexColored_; }
+    bool varies() const { return varies_; }
     // The constant, or a texture's tint.
     const Rgb& constant() const { return value_; }
     // Nothing anywhere: a zero constant or a zero tint (lobes test it to drop themselves).
@@ -113,6 +110,8 @@ private:
     std::shared_ptr<const Texture> texture_;
     TextureSampling sampling_;
     bool vertexColored_ = false;
+    bool varies_ = false;  // a texture or a vertex colour
+    Rgb varying(const SurfaceSide& side) const;
 };
 
 // One scalar parameter: a constant, or one channel of a texture times a factor (glTF's metallic
