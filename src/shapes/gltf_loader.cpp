@@ -51,6 +51,7 @@ public:
 
     GltfModel read() {
         checkExtensions();
+        warnUnread();
         findVertexColors();
         readMaterials();
         const std::vector<int> roots = rootNodes();
@@ -124,6 +125,22 @@ private:
         if (count > 0)
             warn("extensionsUsed: " + left + (count == 1 ? " is" : " are") +
                  " not read by lightpath: the render leaves " + (count == 1 ? "it" : "them") + " out");
+    }
+
+    // What a still render leaves out of the file, said once each rather than dropped in silence.
+    void warnUnread() {
+        if (const std::size_t n = model_.animations.size(); n > 0)
+            warn("animations: " + std::to_string(n) + (n == 1 ? " animation is" : " animations are") +
+                 " not played: the scene renders as its nodes stand");
+        if (!model_.skins.empty())
+            warn("skins: not applied: a skinned mesh renders as its vertices stand, placed by its node");
+        for (const tinygltf::Mesh& mesh : model_.meshes)
+            for (const tinygltf::Primitive& primitive : mesh.primitives)
+                if (!primitive.targets.empty()) {
+                    warn("meshes[" + std::to_string(&mesh - model_.meshes.data()) +
+                         "]: morph targets are not applied: the mesh renders without them");
+                    break;
+                }
     }
 
     // A number in an extension object, else `fallback`.

@@ -210,6 +210,31 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
     CHECK(scene.lights.size() == 1);
 }
 
+TEST_CASE("a glTF file's animations, skins and morph targets, which a still render leaves out, are named in warnings") {
+    const test::TempFolder temp("lightpath-gltf-unread");
+    std::ifstream in(kData / "point.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto variant = [&](const std::string& file, const std::string& from, const std::string& to) {
+        std::string changed = text;
+        REQUIRE(changed.find(from) != std::string::npos);
+        changed.replace(changed.find(from), from.size(), to);
+        std::ofstream(temp.path() / file) << changed;
+        return loadScene(temp.path() / file);
+    };
+    CHECK(warns(variant("skin.gltf", "{", "{ \"skins\": [{\"joints\": [0]}],"),
+                "skin.gltf: skins: not applied: a skinned mesh renders as its vertices stand, placed by its node"));
+    CHECK(warns(variant("morph.gltf", "\"attributes\": {", "\"targets\": [{\"POSITION\": 0}], \"attributes\": {"),
+                "morph.gltf: meshes[0]: morph targets are not applied: the mesh renders without them"));
+    CHECK(warns(variant("animated.gltf", "{",
+                        "{ \"animations\": [{\"channels\": [{\"sampler\": 0, \"target\": {\"node\": 0, \"path\": "
+                        "\"translation\"}}], \"samplers\": [{\"input\": 0, \"output\": 0}]}],"),
+                "animated.gltf: animations: 1 animation is not played: the scene renders as its nodes stand"));
+    const Scene plain = loadScene(kData / "point.gltf");
+    CHECK(!warns(plain, "skins"));
+    CHECK(!warns(plain, "morph"));
+    CHECK(!warns(plain, "animation"));
+}
+
 TEST_CASE("a glTF material's alphaMode and alphaCutoff become its alpha; a bad one is a located error") {
     const test::TempFolder temp("lightpath-gltf-alpha");
     std::ifstream in(kData / "point.gltf");
