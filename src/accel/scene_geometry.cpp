@@ -216,7 +216,9 @@ template <typename Keep>
 
 bool SceneGeometry::covered(const Ray& ray, const SurfaceHit& hit) const {
     const SurfaceCoverage* coverage = hit.object < coverage_.size() ? coverage_[hit.object].get() : nullptr;
-    return coverage == nullptr || coverage->covers(surfaceParameters(hit).uv, coverageSample(ray, hit.t));
+    return coverage == nullptr ||
+           coverage->covers(surfaceParameters(hit).uv,
+                            coverageSample(ray, hit.primitive, glm::dot(hit.normal, ray.direction) < 0.0f));
 }
 
 bool SceneGeometry::covers(const Ray& ray, float t, std::uint32_t id, const Vec3* barycentrics) const {

@@ -22,15 +22,16 @@ public:
     virtual bool covers(Vec2 uv, float u) const = 0;
 };
 
-// The uniform number of `ray` at distance `t`: a hash of its origin, direction and t, so a ray
-// cast again decides again alike (a shadow ray, a rasterised fragment and a traced one agree), and
-// two layers along one ray decide independently.
-inline float coverageSample(const Ray& ray, float t) {
+// The uniform number of `ray` where it meets primitive `primitive` from its front (`front`) or
+// back: a hash of the ray's origin and direction and of the two, so a ray cast again decides again
+// alike (a shadow ray, a rasterised fragment and a traced one agree, whatever their t's rounding),
+// and the layers along one ray (two triangles, a sphere's front and back) decide independently.
+inline float coverageSample(const Ray& ray, std::uint32_t primitive, bool front) {
     const auto bits = [](float x) { return static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(x)); };
     std::uint64_t h = mixBits(bits(ray.origin.x) | bits(ray.origin.y) << 32);
     h = mixBits(h ^ (bits(ray.origin.z) | bits(ray.direction.x) << 32));
     h = mixBits(h ^ (bits(ray.direction.y) | bits(ray.direction.z) << 32));
-    h = mixBits(h ^ bits(t));
+    h = mixBits(h ^ (std::uint64_t{primitive} << 1 | std::uint64_t{front}));
     return static_cast<float>(h >> 40) * 0x1p-24f;
 }
 

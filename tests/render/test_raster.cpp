@@ -42,7 +42,8 @@ struct Comparison {
 // The object each pixel centre sees, by the ray caster's closest hit; -1 for the background.
 std::vector<std::int64_t> objectsSeen(const Scene& scene) {
     const SceneGeometry geometry(scene.spheres, scene.planes, scene.triangles, NumericsOptions{}, Accelerator::Bvh,
-                                 scene.triangleNormals);
+                                 scene.triangleNormals, 0, scene.shapes, scene.triangleUvs, scene.triangleTangents,
+                                 scene.objectCoverage(), scene.triangleColors);
     const PinholeCamera camera(scene.camera);
     std::vector<std::int64_t> objects;
     for (int y = 0; y < camera.height(); ++y) {
@@ -109,7 +110,9 @@ TEST_CASE("the rasteriser and ray casting without shadows agree off the edges on
                                          << c.maxInterior << "; " << c.edgeDiffering << " of " << c.edgePixels
                                          << " edge pixels differ");
         CHECK(c.interiorDiffering == 0);
-        CHECK(c.interiorPixels > 10 * c.edgePixels);  // the edges are silhouettes, not the whole image
+        // The edges are silhouettes, not the whole image (a perforated screen and a pane of alpha 0.5,
+        // whose pixels see it or the floor by chance, make 11% of perforated-screen.toml edges).
+        CHECK(c.interiorPixels > 5 * c.edgePixels);
         worstInterior = std::max(worstInterior, c.maxInterior);
         edgeDiffering += c.edgeDiffering;
         edgePixels += c.edgePixels;
