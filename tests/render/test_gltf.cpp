@@ -161,9 +161,10 @@ CyclesComparison compareWithCycles(Scene scene, const std::vector<std::vector<do
 // converged image, which lightpath's render of the file must match per block, so that what a
 // lecturer sees in Blender is what lightpath shows. Reading the file's numbers as W/sr and W/m^2
 // (`lighting = "unitless"`) makes every block 683 times too bright; an emissive square emitting
-// only on its normal's side leaves its back, which the camera sees, black.
+// only on its normal's side leaves its back, which the camera sees, black. A floor painted by a
+// colour attribute (its material's base colour) exports it as COLOR_0.
 TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blender: a point lamp, a sun, an emitter") {
-    for (const std::string light : {"point", "sun", "emissive"}) {
+    for (const std::string light : {"point", "sun", "emissive", "vertex-colors"}) {
         CAPTURE(light);
         const auto cycles = readBlockMeans(kData / "blender" / (light + "-cycles.txt"));
         REQUIRE(cycles.size() == 8);

@@ -3,7 +3,8 @@ Cycles' renders of the same scenes as 8x8-block means (<light>-cycles.txt), the 
 
 Each file holds one light of one Blender kind (a point lamp of 500 W, a sun of 2 W/m^2, an
 emissive square of strength 5) over a floor and a box, seen by a camera (cutout-mask and
-cutout-blend: a sun through a black card cut out by its alpha, see below); Blender's glTF exporter
+cutout-blend: a sun through a black card cut out by its alpha; vertex-colors: the floor painted by a
+colour attribute; see below); Blender's glTF exporter
 writes it in its default Lighting Mode, "Standard" (candela and lux at 683 lm/W), and the
 emission unconverted. Cycles renders
 the scene as Blender holds it, with a Lambertian (Diffuse BSDF) material of albedo 0.8, a black
@@ -13,7 +14,7 @@ its cone (measured 1.01 to 1.15 of lightpath's across a 30-degree cone, about 1 
 off its axis), which glTF's spot does not.
 
 Run (Blender 3.4, Debian's `blender`), from this folder:
-  for light in point sun emissive cutout-mask cutout-blend; do blender -b --python make_blender.py -- $light; done
+  for light in point sun emissive cutout-mask cutout-blend vertex-colors; do blender -b --python make_blender.py -- $light; done
 """
 import math
 import os
@@ -91,8 +92,29 @@ elif light in ("cutout-mask", "cutout-blend"):
         card.blend_method = "BLEND"
     bpy.ops.mesh.primitive_plane_add(size=4, location=(0.5, 0, 3))
     bpy.context.object.data.materials.append(card)
+elif light == "vertex-colors":
+    # The floor painted by a colour attribute (red, green, blue and white corners, float, per
+    # vertex) that its material's base colour reads, under a sun: the exporter writes COLOR_0.
+    bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.35, 0.25, 0))
+    bpy.context.object.data.energy = 2
+    bpy.context.object.data.angle = 0
+    floor = bpy.data.objects["Plane"]
+    colors = floor.data.color_attributes.new("Paint", "FLOAT_COLOR", "POINT")
+    corners = {(-1, -1): (1, 0, 0, 1), (1, -1): (0, 1, 0, 1), (1, 1): (0, 0, 1, 1), (-1, 1): (1, 1, 1, 1)}
+    for vertex in floor.data.vertices:
+        colors.data[vertex.index].color = corners[(round(vertex.co.x / 10), round(vertex.co.y / 10))]
+    painted = bpy.data.materials.new("Painted")
+    painted.use_nodes = True
+    bsdf = painted.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Specular"].default_value = 0.0
+    bsdf.inputs["Roughness"].default_value = 1.0
+    attribute = painted.node_tree.nodes.new("ShaderNodeVertexColor")
+    attribute.layer_name = "Paint"
+    painted.node_tree.links.new(attribute.outputs["Color"], bsdf.inputs["Base Color"])
+    floor.data.materials.clear()
+    floor.data.materials.append(painted)
 else:
-    raise SystemExit("expected point, sun, emissive, cutout-mask or cutout-blend, got " + light)
+    raise SystemExit("expected point, sun, emissive, cutout-mask, cutout-blend or vertex-colors, got " + light)
 bpy.ops.object.camera_add(location=(0, -10, 6), rotation=(math.radians(60), 0, 0))
 scene.camera = bpy.context.object
 
@@ -103,6 +125,13 @@ tree = white.node_tree
 diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
 diffuse.inputs["Color"].default_value = (0.8, 0.8, 0.8, 1)
 tree.links.new(diffuse.outputs["BSDF"], tree.nodes["Material Output"].inputs["Surface"])
+if light == "vertex-colors":
+    # Lambertian too, its colour the attribute's (lightpath reads the exported Principled with
+    # specular 0 as F0 = 0: a Lambertian base alone).
+    tree = painted.node_tree
+    diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
+    tree.links.new(attribute.outputs["Color"], diffuse.inputs["Color"])
+    tree.links.new(diffuse.outputs["BSDF"], tree.nodes["Material Output"].inputs["Surface"])
 world = bpy.data.worlds.new("black")
 scene.world = world
 world.use_nodes = True
