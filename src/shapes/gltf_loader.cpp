@@ -689,6 +689,22 @@ private:
         return out;
     }
 
+    // A primitive's attribute `name` as `read` reads its accessor, one element per position (else a
+    // located error counting `what`); empty when the primitive has none.
+    template <class Read>
+    auto perVertex(const tinygltf::Primitive& primitive, const std::string& name, std::size_t count,
+                   const std::string& at, const char* what, Read read) const {
+        const auto found = primitive.attributes.find(name);
+        const std::string where = at + ".attributes." + name;
+        decltype(read(0, where)) values;
+        if (found == primitive.attributes.end()) return values;
+        values = read(found->second, where);
+        if (values.size() != count)
+            fail(where, "expected " + std::to_string(count) + " " + what + ", one per position, got " +
+                            std::to_string(values.size()));
+        return values;
+    }
+
     std::vector<std::uint32_t> indices(int index, std::size_t vertexCount, const std::string& where) const {
         const View v = view(index, TINYGLTF_TYPE_SCALAR, where);
         std::vector<std::uint32_t> out(v.count);
@@ -737,13 +753,9 @@ private:
             const auto position = primitive.attributes.find("POSITION");
             if (position == primitive.attributes.end()) fail(at + ".attributes", "expected a POSITION accessor");
             const std::vector<Vec3> positions = floats3(position->second, at + ".attributes.POSITION");
-            std::vector<Vec3> normals;
-            if (const auto normal = primitive.attributes.find("NORMAL"); normal != primitive.attributes.end()) {
-                normals = floats3(normal->second, at + ".attributes.NORMAL");
-                if (normals.size() != positions.size())
-                    fail(at + ".attributes.NORMAL", "expected " + std::to_string(positions.size()) +
-                                                        " normals, one per position, got " + std::to_string(normals.size()));
-            }
+            const std::size_t count = positions.size();
+            const std::vector<Vec3> normals =
+                perVertex(primitive, "NORMAL", count, at, "normals", [&](int i, const std::string& w) { return floats3(i, w); });
             if (primitive.material >= 0 && std::size_t(primitive.material) >= model_.materials.size())
                 fail(at + ".material", "expected a material index below " + std::to_string(model_.materials.size()) +
                                            ", got " + std::to_string(primitive.material));
@@ -751,34 +763,21 @@ private:
             // (a [[gltf]] `material` may put a textured material on it).
             const int uvSet = primitive.material >= 0 ? uvSetOfMaterial_[std::size_t(primitive.material)] : kNoUvSet;
             const std::string uvName = "TEXCOORD_" + std::to_string(uvSet == kNoUvSet ? 0 : uvSet);
-            std::vector<Vec2> uvs;
-            const auto uv = primitive.attributes.find(uvName);
-            if (usesTextures_ && uv == primitive.attributes.end() && uvSet != kNoUvSet)
+            if (usesTextures_ && uvSet != kNoUvSet && primitive.attributes.count(uvName) == 0)
                 fail(at + ".attributes", "expected a " + uvName + " accessor: material " +
                                              std::to_string(primitive.material) + "'s textures name texCoord " +
                                              std::to_string(uvSet));
-            if (usesTextures_ && uv != primitive.attributes.end()) {
-                uvs = textureCoordinates(uv->second, at + ".attributes." + uvName);
-                if (uvs.size() != positions.size())
-                    fail(at + ".attributes." + uvName, "expected " + std::to_string(positions.size()) +
-                                                           " texture coordinates, one per position, got " +
-                                                           std::to_string(uvs.size()));
-            }
-            // Tangents for a normal map's frame; only a textured material reads them.
+            // Texture coordinates, and tangents for a normal map's frame: only textures read them.
+            std::vector<Vec2> uvs;
             std::vector<Vec4> tangentsOf;
-            if (const auto tangent = primitive.attributes.find("TANGENT"); usesTextures_ && tangent != primitive.attributes.end()) {
-                tangentsOf = tangents(tangent->second, at + ".attributes.TANGENT");
-                if (tangentsOf.size() != positions.size())
-                    fail(at + ".attributes.TANGENT", "expected " + std::to_string(positions.size()) +
-                                                         " tangents, one per position, got " + std::to_string(tangentsOf.size()));
+            if (usesTextures_) {
+                uvs = perVertex(primitive, uvName, count, at, "texture coordinates",
+                                [&](int i, const std::string& w) { return textureCoordinates(i, w); });
+                tangentsOf = perVertex(primitive, "TANGENT", count, at, "tangents",
+                                       [&](int i, const std::string& w) { return tangents(i, w); });
             }
-            std::vector<Rgb> colors;
-            if (const auto color = primitive.attributes.find("COLOR_0"); color != primitive.attributes.end()) {
-                colors = vertexColors(color->second, at + ".attributes.COLOR_0");
-                if (colors.size() != positions.size())
-                    fail(at + ".attributes.COLOR_0", "expected " + std::to_string(positions.size()) +
-                                                         " colours, one per position, got " + std::to_string(colors.size()));
-            }
+            const std::vector<Rgb> colors = perVertex(primitive, "COLOR_0", count, at, "colours",
+                                                      [&](int i, const std::string& w) { return vertexColors(i, w); });
             std::vector<std::uint32_t> order;
             if (primitive.indices >= 0) {
                 order = indices(primitive.indices, positions.size(), at + ".indices");
