@@ -31,12 +31,20 @@ bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
 scene.render.resolution_x, scene.render.resolution_y, scene.render.resolution_percentage = WIDTH, HEIGHT, 100
 
-white = bpy.data.materials.new("White")
-white.use_nodes = True
-principled = white.node_tree.nodes["Principled BSDF"]
-principled.inputs["Base Color"].default_value = (0.8, 0.8, 0.8, 1)
-principled.inputs["Roughness"].default_value = 1.0
-principled.inputs["Specular"].default_value = 0.0
+
+
+def matte(name, base_color):
+    """A Principled material of roughness 1 and specular 0 (F0 = 0 in lightpath: its base alone), and its BSDF."""
+    material = bpy.data.materials.new(name)
+    material.use_nodes = True
+    bsdf = material.node_tree.nodes["Principled BSDF"]
+    bsdf.inputs["Base Color"].default_value = base_color
+    bsdf.inputs["Roughness"].default_value = 1.0
+    bsdf.inputs["Specular"].default_value = 0.0
+    return material, bsdf
+
+
+white, principled = matte("White", (0.8, 0.8, 0.8, 1))
 bpy.ops.mesh.primitive_plane_add(size=20, location=(0, 0, 0))
 bpy.context.object.data.materials.append(white)
 bpy.ops.mesh.primitive_cube_add(size=2, location=(0, 0, 1), rotation=(0, 0, 0.5))
@@ -70,12 +78,7 @@ elif light in ("cutout-mask", "cutout-blend"):
     bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.35, 0.25, 0))
     bpy.context.object.data.energy = 2
     bpy.context.object.data.angle = 0
-    card = bpy.data.materials.new("Card")
-    card.use_nodes = True
-    bsdf = card.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Base Color"].default_value = (0, 0, 0, 1)
-    bsdf.inputs["Specular"].default_value = 0.0
-    bsdf.inputs["Roughness"].default_value = 1.0
+    card, bsdf = matte("Card", (0, 0, 0, 1))
     if light == "cutout-mask":
         stripes = bpy.data.images.new("stripes", 8, 8, alpha=True)
         stripes.pixels[:] = [v for _ in range(8) for x in range(8) for v in (0, 0, 0, 1.0 if x % 4 < 2 else 0.0)]
@@ -103,11 +106,7 @@ elif light == "vertex-colors":
     corners = {(-1, -1): (1, 0, 0, 1), (1, -1): (0, 1, 0, 1), (1, 1): (0, 0, 1, 1), (-1, 1): (1, 1, 1, 1)}
     for vertex in floor.data.vertices:
         colors.data[vertex.index].color = corners[(round(vertex.co.x / 10), round(vertex.co.y / 10))]
-    painted = bpy.data.materials.new("Painted")
-    painted.use_nodes = True
-    bsdf = painted.node_tree.nodes["Principled BSDF"]
-    bsdf.inputs["Specular"].default_value = 0.0
-    bsdf.inputs["Roughness"].default_value = 1.0
+    painted, bsdf = matte("Painted", (1, 1, 1, 1))
     attribute = painted.node_tree.nodes.new("ShaderNodeVertexColor")
     attribute.layer_name = "Paint"
     painted.node_tree.links.new(attribute.outputs["Color"], bsdf.inputs["Base Color"])
