@@ -90,14 +90,15 @@ struct Scene {
     }
 
     // Per object its material's cut-out (materials/alpha.h), what SceneGeometry looks through;
-    // empty when nothing is cut out. An emitter is never cut out: its light samples points
-    // all over it, which the cut-out's holes would contradict.
+    // empty when nothing is cut out. An emitter is never cut out: its light samples points all
+    // over it, which the cut-out's holes would contradict. Nor is the boundary of a medium: a ray
+    // through a hole would be inside without having entered.
     std::vector<std::shared_ptr<const SurfaceCoverage>> objectCoverage() const {
         std::vector<std::shared_ptr<const SurfaceCoverage>> coverage(objects.size());
         bool any = false;
         for (std::size_t i = 0; i < objects.size(); ++i) {
             const Material& material = *materials[objects[i].material];
-            if (!material.alpha || !material.emission.black()) continue;
+            if (!material.alpha || !material.emission.black() || objects[i].interior != kNoMedium) continue;
             coverage[i] = material.alpha;
             any = true;
         }

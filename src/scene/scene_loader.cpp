@@ -544,6 +544,12 @@ Scene loadSceneFromText(std::string_view text, const std::filesystem::path& path
     for (const MaterialSlot& m : scene.materials)
         if (m->alpha && !m->emission.black())
             scene.warnings.push_back("material \"" + m->name + "\" emits, so its alpha is not read: an emitter is never cut out");
+    // Nor is the boundary of a medium (Scene::objectCoverage): said once for each such object.
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].interior != kNoMedium && scene.materials[scene.objects[i].material]->alpha)
+            scene.warnings.push_back("object \"" + scene.labelOf(i) +
+                                     "\" bounds a medium (interior), so its alpha is not read: a ray through a hole "
+                                     "would be inside it without having entered");
     return scene;
 }
 

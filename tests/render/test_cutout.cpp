@@ -273,11 +273,29 @@ TEST_CASE("cut-outs: bad alpha values are located errors, and an emitter is neve
     fails("cut = { alpha = { texture = \"stripes-rgba.png\", tint = [1, 0.5, 1] } }", "tint");
     fails("cut = { kd = { texture = \"stripes-rgba.png\", cutoff = 0.5 } }", "cutoff");
     fails("cut = { alpha = { texture = \"missing.png\" } }", "missing.png");
+    const auto warns = [](const Scene& scene, const std::string& part) {
+        for (const std::string& warning : scene.warnings)
+            if (warning.find(part) != std::string::npos) return true;
+        return false;
+    };
     const Scene emitter = shadowScene("cut = ", "cut = { emission = 1, alpha = { texture = \"stripes-rgba.png\", cutoff = 0.5 } }");
     CHECK(emitter.objectCoverage().empty());
-    bool warned = false;
-    for (const std::string& warning : emitter.warnings) warned = warned || warning.find("never cut out") != std::string::npos;
-    CHECK(warned);
+    CHECK(warns(emitter, "emits, so its alpha is not read: an emitter is never cut out"));
+    // Nor is a medium's boundary: the ball holding smoke stays whole, the card is still cut out.
+    std::string text = shadowText();
+    text.replace(text.find("[materials]"), 11,
+                 "[media.smoke]\nsigma_a = 0.1\nsigma_s = 1\n\n[[spheres]]\ncenter = [0, 0.5, 0]\nradius = 0.2\n"
+                 "material = \"cut\"\ninterior = \"smoke\"\n\n[materials]");
+    const Scene medium = loadSceneFromText(text, kData / "shadow.toml");
+    const auto coverage = medium.objectCoverage();
+    REQUIRE(coverage.size() == medium.objects.size());
+    for (std::uint32_t i = 0; i < medium.objects.size(); ++i) {
+        CAPTURE(medium.labelOf(i));
+        const bool cut = medium.materials[medium.objects[i].material]->alpha != nullptr;
+        CHECK((coverage[i] != nullptr) == (cut && medium.objects[i].interior == kNoMedium));
+    }
+    CHECK(warns(medium, "bounds a medium (interior), so its alpha is not read"));
+    CHECK(!warns(emitter, "bounds a medium"));
 }
 
 }  // namespace cutout_tests
