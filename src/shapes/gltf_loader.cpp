@@ -221,6 +221,15 @@ private:
             const double ior = number(extensionNumber(m.extensions, "KHR_materials_ior", "ior", 1.5), 1.0, kMaxMagnitude,
                                       where + ".extensions.KHR_materials_ior.ior");
             const bool vertexColors = coloredMaterial_[i];
+            // The base colour's texture, opened (and any warning about it given) once, when the
+            // base colour or alpha first reads it.
+            std::optional<std::optional<OpenedTexture>> baseTexture;
+            const auto baseColorTexture = [&]() -> const std::optional<OpenedTexture>& {
+                if (!baseTexture)
+                    baseTexture = open(pbr.baseColorTexture, TextureColorSpace::srgb,
+                                       where + ".pbrMetallicRoughness.baseColorTexture");
+                return *baseTexture;
+            };
             MaterialSlot material = [&]() -> MaterialSlot {
                 if (transmission > 0.0) {
                     // Rough: the rough dielectric (Walter et al. 2007), whose tint is the transmitted
@@ -244,8 +253,7 @@ private:
                 const std::string at = where + ".pbrMetallicRoughness";
                 ColorParameter base(baseColor);
                 ScalarParameter metal(metallic), rough(roughness);
-                if (auto texture = open(pbr.baseColorTexture, TextureColorSpace::srgb, at + ".baseColorTexture"))
-                    base = ColorParameter(texture->first, baseColor, texture->second);
+                if (const auto& texture = baseColorTexture()) base = ColorParameter(texture->first, baseColor, texture->second);
                 // glTF 2.0, 3.9.2: metalness in B, roughness in G, linear, times the factors.
                 if (auto texture = open(pbr.metallicRoughnessTexture, TextureColorSpace::linear,
                                         at + ".metallicRoughnessTexture")) {
@@ -271,7 +279,7 @@ private:
             // from both too, as Blender's mesh lights do in Cycles (Blender writes doubleSided
             // unless backface culling is on).
             material->twoSidedEmission = m.doubleSided;
-            material->alpha = alpha(m, float(base[3]), where);
+            material->alpha = alpha(m, float(base[3]), where, baseColorTexture);
             material->vertexColored = vertexColors;
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
             if (auto texture = open(m.normalTexture, TextureColorSpace::linear, where + ".normalTexture")) {
@@ -290,15 +298,16 @@ private:
     // baseColorFactor's. MASK: the surface is where alpha >= alphaCutoff (default 0.5), cut out
     // elsewhere; BLEND: alpha is the fraction of light it stops, as Cycles renders it (a
     // stochastic cut-out, materials/alpha.h); OPAQUE (the default) ignores alpha. Null: opaque.
-    std::shared_ptr<const Alpha> alpha(const tinygltf::Material& m, float factor, const std::string& where) {
+    template <class BaseColorTexture>
+    std::shared_ptr<const Alpha> alpha(const tinygltf::Material& m, float factor, const std::string& where,
+                                       const BaseColorTexture& baseColorTexture) {
         if (m.alphaMode == "OPAQUE" || m.alphaMode.empty()) return nullptr;
         if (m.alphaMode != "MASK" && m.alphaMode != "BLEND")
             fail(where + ".alphaMode", "expected OPAQUE, MASK or BLEND, got \"" + printableName(m.alphaMode) + "\"");
         std::optional<float> cutoff;
         if (m.alphaMode == "MASK") cutoff = float(number(m.alphaCutoff, 0.0, kMaxMagnitude, where + ".alphaCutoff"));
         std::shared_ptr<const Alpha> alpha;
-        auto texture = open(m.pbrMetallicRoughness.baseColorTexture, TextureColorSpace::srgb,
-                            where + ".pbrMetallicRoughness.baseColorTexture");
+        const auto& texture = baseColorTexture();
         if (texture && texture->first->alphaChannel() >= 0)
             alpha = std::make_shared<const Alpha>(texture->first, factor, cutoff, texture->second);
         else

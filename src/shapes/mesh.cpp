@@ -51,19 +51,25 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
     // folder, times Kd (Ke) (the MTL spec; a black Kd or Ke, which some tools write beside a map,
     // counts as white). One that cannot be read is a warning, as everything else other tools
     // forgive: Kd (Ke) alone is used.
+    // A map's image, relative to the OBJ's folder; null, and a warning ending `instead`, when it
+    // cannot be read.
+    const auto openMap = [&](const std::string& image, std::uint32_t mtlIndex, const char* statement,
+                             const std::string& instead, TextureColorSpace colorSpace) {
+        std::string error;
+        std::shared_ptr<const Texture> texture =
+            openTexture({(file.parent_path() / image).string(), nullptr, colorSpace}, error);
+        if (!texture)
+            scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" +
+                                                  mesh.materials[mtlIndex].name + "\": cannot read its " + statement +
+                                                  " \"" + printableName(image) + "\" (" + error + "); " + instead));
+        return texture;
+    };
     const auto textured = [&](const ColorParameter& constant, const std::string& image, std::uint32_t mtlIndex,
                               const char* statement, const char* colour) -> std::optional<ColorParameter> {
         if (image.empty()) return std::nullopt;
-        const std::filesystem::path path = file.parent_path() / image;
-        std::string error;
-        std::shared_ptr<const Texture> texture = openTexture({path.string()}, error);
-        if (!texture) {
-            scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" +
-                                                  mesh.materials[mtlIndex].name + "\": cannot read its " + statement +
-                                                  " \"" + printableName(image) + "\" (" + error + "); " + colour +
-                                                  " is used"));
-            return std::nullopt;
-        }
+        std::shared_ptr<const Texture> texture =
+            openMap(image, mtlIndex, statement, std::string(colour) + " is used", TextureColorSpace::automatic);
+        if (!texture) return std::nullopt;
         const Rgb tint = constant.black() ? Rgb{1.0f} : constant.constant();
         return ColorParameter(std::move(texture), tint, 1.0f, true);
     };
@@ -80,16 +86,8 @@ void addMesh(const ParameterValues& values, SceneBuilder& scene) {
         if (const std::string& image = mesh.alphaTextures[mtlIndex]; !image.empty()) {
             // `map_d`: the dissolve map, a cut-out (materials/alpha.h): its alpha channel, else
             // its grey, the fraction of rays the surface stops (linear: a mask's texels are data).
-            std::string error;
-            std::shared_ptr<const Texture> texture =
-                openTexture({(file.parent_path() / image).string(), nullptr, TextureColorSpace::linear}, error);
-            if (texture) {
+            if (auto texture = openMap(image, mtlIndex, "map_d", "the surface is opaque", TextureColorSpace::linear))
                 material.alpha = std::make_shared<const Alpha>(std::move(texture), 1.0f, std::nullopt, TextureSampling{});
-            } else {
-                scene.warn(values.located("file", at(mesh.materialLines[mtlIndex]) + "material \"" + mtl.name +
-                                                      "\": cannot read its map_d \"" + printableName(image) + "\" (" +
-                                                      error + "); the surface is opaque"));
-            }
         }
         return material;
     };
