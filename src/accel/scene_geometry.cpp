@@ -217,7 +217,7 @@ template <typename Keep>
 bool SceneGeometry::covered(const Ray& ray, const SurfaceHit& hit) const {
     const SurfaceCoverage* coverage = hit.object < coverage_.size() ? coverage_[hit.object].get() : nullptr;
     return coverage == nullptr ||
-           coverage->covers(surfaceParameters(hit).uv,
+           coverage->covers(uvAt(hit.primitive, hit.point, hit.normal),
                             coverageSample(ray, hit.primitive, glm::dot(hit.normal, ray.direction) < 0.0f));
 }
 
