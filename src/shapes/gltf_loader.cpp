@@ -633,6 +633,15 @@ private:
             [](const std::array<float, 4>&) { return std::string(" is not 4 numbers "); });
     }
 
+    // Component `c` of a normalized UNSIGNED_BYTE or UNSIGNED_SHORT element at `p`, from 0 to 1
+    // (glTF 2.0, 3.11: x / 255, x / 65535; little-endian, as glTF's buffers are).
+    static float unitComponent(const unsigned char* p, int componentType, int c) {
+        if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return float(p[c]) * (1.0f / 255.0f);
+        std::uint16_t s;
+        std::memcpy(&s, p + 2 * c, sizeof s);
+        return float(s) * (1.0f / 65535.0f);
+    }
+
     // A TEXCOORD_n as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
     // where lightpath's runs up (OBJ's vt; io/image_texture.cpp reads t = 1 - v), so v' = 1 - v.
     // glTF 2.0, 3.7.2.1 also allows normalized UNSIGNED_BYTE and UNSIGNED_SHORT (x / 255, x / 65535).
@@ -648,19 +657,10 @@ private:
                 [](const std::array<float, 2>& e) { return Vec2(e[0], 1.0f - e[1]); },
                 [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
         const View v = view(index, TINYGLTF_TYPE_VEC2, where);
-        const bool bytes = v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-        const float scale = bytes ? 1.0f / 255.0f : 1.0f / 65535.0f;
         std::vector<Vec2> out(v.count);
         for (std::size_t i = 0; i < v.count; ++i) {
             const unsigned char* p = v.data + i * v.stride;
-            std::uint16_t u = 0, w = 0;
-            if (bytes) {
-                u = p[0], w = p[1];
-            } else {
-                std::memcpy(&u, p, sizeof u);  // little-endian, as glTF's buffers are
-                std::memcpy(&w, p + sizeof u, sizeof w);
-            }
-            out[i] = Vec2(float(u) * scale, 1.0f - float(w) * scale);
+            out[i] = Vec2(unitComponent(p, v.componentType, 0), 1.0f - unitComponent(p, v.componentType, 1));
         }
         return out;
     }
@@ -680,12 +680,9 @@ private:
                 float x = 0.0f;
                 if (v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
                     std::memcpy(&x, p + 4 * c, sizeof x);
-                } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && normalized) {
-                    x = float(p[c]) / 255.0f;
-                } else if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT && normalized) {
-                    std::uint16_t s;
-                    std::memcpy(&s, p + 2 * c, sizeof s);
-                    x = float(s) / 65535.0f;
+                } else if (normalized && (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                          v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)) {
+                    x = unitComponent(p, v.componentType, c);
                 } else {
                     fail(at, "expected FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, components");
                 }
