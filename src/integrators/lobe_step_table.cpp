@@ -57,6 +57,9 @@ LobeStepTable::LobeStepTable(const Scene& scene, const lpe::Automaton& automaton
     for (lpe::Automaton::State state = 0; state < automaton.stateCount(); ++state)
         for (std::size_t column = 0; column < columnSymbols_.size(); ++column)
             for (std::size_t c = 0; c < classes_.size(); ++c) {
+                // A class without smooth lobes (an interface) has no slots: with no other class,
+                // masks_ is empty and even its row's address would be out of bounds.
+                if (classes_[c].count == 0) continue;
                 lpe::OutputMask* row = &masks_[(state * columnSymbols_.size() + column) * slotCount_ + slotBase_[c]];
                 for (int slot = 0; slot < classes_[c].count; ++slot)
                     row[slot] = automaton.accepts(
