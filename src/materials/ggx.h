@@ -12,11 +12,13 @@ namespace lightpath::ggx {
 // The smallest alpha treated as rough: below it D overflows a float (pbrt-v4's EffectivelySmooth).
 inline constexpr float kMinAlpha = 1e-3f;
 
-// D(m) = alpha^2 / (pi ((alpha^2 - 1) cos^2 theta_m + 1)^2), m above the surface.
+// D(m) = alpha^2 / (pi ((alpha^2 - 1) cos^2 theta_m + 1)^2), m above the surface. The bracket is
+// sin^2 + alpha^2 cos^2, with sin^2 from m's x and y: 1 - cos^2 would cancel near the pole, where a
+// sharp lobe (alpha 0.02) is all of its mass and a rounding of cos moves D by 1e-3.
 inline float distribution(const Vec3& m, float alpha) {
     if (m.z <= 0.0f) return 0.0f;
     const float a2 = alpha * alpha;
-    const float t = (a2 - 1.0f) * m.z * m.z + 1.0f;
+    const float t = (m.x * m.x + m.y * m.y) + a2 * m.z * m.z;
     return a2 / (kPi * t * t);
 }
 
