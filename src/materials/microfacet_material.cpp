@@ -22,6 +22,13 @@ Rgb meanDiffuseAlbedo(const Rgb& diffuse, const Rgb& averageAlbedo) {
     return diffuse * remaining * remaining;
 }
 
+// The GGX reflection lobe's f cos theta_i = F D G2 / (4 cos theta_o), in the local frame.
+Rgb ggxReflection(const Rgb& f0, float alpha, const Vec3& o, const Vec3& i) {
+    const Vec3 m = glm::normalize(o + i);
+    return MicrofacetMaterial::fresnel(f0, glm::dot(o, m)) *
+           (ggx::distribution(m, alpha) * ggx::maskingShadowing(o, i, alpha) / (4.0f * o.z));
+}
+
 }  // namespace
 
 MicrofacetMaterial::AlbedoTable MicrofacetMaterial::albedoTable(float roughness, int strata) {
@@ -65,27 +72,39 @@ MicrofacetMaterial::AlbedoTable MicrofacetMaterial::albedoTable(float roughness,
     return table;
 }
 
-MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness,
-                                       const Rgb& dielectricF0)
-    : baseColor_(std::move(baseColor)), metallic_(std::move(metallic)), roughness_(std::move(roughness)),
-      dielectricF0_(glm::clamp(dielectricF0, Rgb{0.0f}, Rgb{1.0f})) {
-    if (!roughness_.textured()) {
-        tables_.push_back(albedoTable(roughness_.constant(), kAlbedoStrata));
+std::vector<MicrofacetMaterial::AlbedoTable> MicrofacetMaterial::albedoTables(const ScalarParameter& roughness) {
+    std::vector<AlbedoTable> tables;
+    if (!roughness.textured()) {
+        tables.push_back(albedoTable(roughness.constant(), kAlbedoStrata));
     } else {
         // Coarser strata: nine tables, and E varies smoothly with roughness.
         for (int n = 0; n < kRoughnessNodes; ++n)
-            tables_.push_back(albedoTable(float(n) / float(kRoughnessNodes - 1), kAlbedoStrata / 2));
+            tables.push_back(albedoTable(float(n) / float(kRoughnessNodes - 1), kAlbedoStrata / 2));
     }
-    const float metal = metallic_.constant();
-    constant_.f0 = glm::mix(dielectricF0_, baseColor_.constant(), metal);
-    constant_.diffuse = (1.0f - metal) * baseColor_.constant();
-    constant_.alpha = std::max(ggx::kMinAlpha, roughness_.constant() * roughness_.constant());
-    if (roughness_.textured()) {
-        const float x = std::clamp(roughness_.constant(), 0.0f, 1.0f) * float(kRoughnessNodes - 1);
-        constant_.node = std::min(int(x), kRoughnessNodes - 2);
-        constant_.blend = x - float(constant_.node);
-    }
-    // 2 integral of E(mu) mu dmu by the trapezoid rule on the table's nodes.
+    return tables;
+}
+
+std::pair<int, float> MicrofacetMaterial::roughnessNode(float roughness) {
+    const float x = std::clamp(roughness, 0.0f, 1.0f) * float(kRoughnessNodes - 1);
+    const int node = std::min(int(x), kRoughnessNodes - 2);
+    return {node, x - float(node)};
+}
+
+MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness,
+                                       const Rgb& dielectricF0)
+    : MicrofacetMaterial(std::move(baseColor), std::move(metallic), std::move(roughness), dielectricF0, Clearcoat{}) {}
+
+MicrofacetMaterial::MicrofacetMaterial(ColorParameter baseColor, ScalarParameter metallic, ScalarParameter roughness,
+                                       const Rgb& dielectricF0, Clearcoat clearcoat)
+    : baseColor_(std::move(baseColor)), metallic_(std::move(metallic)), roughness_(std::move(roughness)),
+      dielectricF0_(glm::clamp(dielectricF0, Rgb{0.0f}, Rgb{1.0f})), coat_(std::move(clearcoat)),
+      coated_(coat_.weight.textured() || coat_.weight.constant() > 0.0f) {
+    tables_ = albedoTables(roughness_);
+    if (coated_) coatTables_ = albedoTables(coat_.roughness);
+    constant_ = shadingOf(baseColor_.constant(), metallic_.constant(), roughness_.constant(), coat_.weight.constant(),
+                          coat_.roughness.constant());
+    // The untextured base's average from E at each node (2 integral of E(mu) mu dmu, trapezoids).
+    constant_.averageAlbedo = Rgb{0.0f};
     for (int k = 0; k < kAlbedoNodes; ++k) {
         const float mu = float(k) / float(kAlbedoNodes - 1);
         const float w = (k == 0 || k == kAlbedoNodes - 1) ? 0.5f : 1.0f;
@@ -99,11 +118,15 @@ Rgb MicrofacetMaterial::fresnel(const Rgb& f0, float cosine) {
 }
 
 MicrofacetMaterial::Shading MicrofacetMaterial::shadingAt(const SurfaceSide& side) const {
-    if (!baseColor_.varies() && !metallic_.textured() && !roughness_.textured()) return constant_;
-    return shadingOf(baseColor_.at(side), metallic_.at(side), roughness_.at(side));
+    if (!baseColor_.varies() && !metallic_.textured() && !roughness_.textured() && !coat_.weight.textured() &&
+        !coat_.roughness.textured())
+        return constant_;
+    return shadingOf(baseColor_.at(side), metallic_.at(side), roughness_.at(side), coat_.weight.at(side),
+                     coat_.roughness.at(side));
 }
 
-MicrofacetMaterial::Shading MicrofacetMaterial::shadingOf(const Rgb& baseColor, float metallic, float roughness) const {
+MicrofacetMaterial::Shading MicrofacetMaterial::shadingOf(const Rgb& baseColor, float metallic, float roughness,
+                                                          float coat, float coatRoughness) const {
     Shading shading;
     metallic = std::clamp(metallic, 0.0f, 1.0f);
     roughness = std::clamp(roughness, 0.0f, 1.0f);
@@ -112,57 +135,104 @@ MicrofacetMaterial::Shading MicrofacetMaterial::shadingOf(const Rgb& baseColor, 
     shading.alpha = std::max(ggx::kMinAlpha, roughness * roughness);
     float averageScale = tables_[0].averageScale, averageBias = tables_[0].averageBias;
     if (tables_.size() > 1) {
-        const float x = roughness * float(kRoughnessNodes - 1);
-        shading.node = std::min(int(x), kRoughnessNodes - 2);
-        shading.blend = x - float(shading.node);
+        std::tie(shading.node, shading.blend) = roughnessNode(roughness);
         const AlbedoTable &t0 = tables_[std::size_t(shading.node)], &t1 = tables_[std::size_t(shading.node) + 1];
         averageScale = glm::mix(t0.averageScale, t1.averageScale, shading.blend);
         averageBias = glm::mix(t0.averageBias, t1.averageBias, shading.blend);
     }
     // E is linear in F0 (the table's scale and bias), so is its average.
     shading.averageAlbedo = glm::min(Rgb{1.0f}, shading.f0 * averageScale + Rgb{averageBias});
+    if (coated_) {
+        shading.coat = std::clamp(coat, 0.0f, 1.0f);
+        coatRoughness = std::clamp(coatRoughness, 0.0f, 1.0f);
+        shading.coatAlpha = std::max(ggx::kMinAlpha, coatRoughness * coatRoughness);
+        float coatScale = coatTables_[0].averageScale, coatBias = coatTables_[0].averageBias;
+        if (coatTables_.size() > 1) {
+            std::tie(shading.coatNode, shading.coatBlend) = roughnessNode(coatRoughness);
+            const AlbedoTable &t0 = coatTables_[std::size_t(shading.coatNode)],
+                              &t1 = coatTables_[std::size_t(shading.coatNode) + 1];
+            coatScale = glm::mix(t0.averageScale, t1.averageScale, shading.coatBlend);
+            coatBias = glm::mix(t0.averageBias, t1.averageBias, shading.coatBlend);
+        }
+        shading.coatAverage = shading.coat * std::min(1.0f, kDielectricF0 * coatScale + coatBias);
+    }
     return shading;
+}
+
+std::pair<float, float> MicrofacetMaterial::albedoTerms(const std::vector<AlbedoTable>& tables, int node, float blend,
+                                                        float cosine) {
+    const float x = std::clamp(cosine, 0.0f, 1.0f) * float(kAlbedoNodes - 1);
+    const int k = std::min(int(x), kAlbedoNodes - 2);
+    const float t = x - float(k);
+    const AlbedoTable& table = tables[std::size_t(node)];
+    float scale = glm::mix(table.scale[k], table.scale[k + 1], t);
+    float bias = glm::mix(table.bias[k], table.bias[k + 1], t);
+    if (tables.size() > 1) {
+        const AlbedoTable& next = tables[std::size_t(node) + 1];
+        scale = glm::mix(scale, glm::mix(next.scale[k], next.scale[k + 1], t), blend);
+        bias = glm::mix(bias, glm::mix(next.bias[k], next.bias[k + 1], t), blend);
+    }
+    return {scale, bias};
 }
 
 Rgb MicrofacetMaterial::specularAlbedo(const Rgb& f0, float cosine) const { return specularAlbedo(f0, cosine, constant_); }
 
 Rgb MicrofacetMaterial::specularAlbedo(const Rgb& f0, float cosine, const Shading& shading) const {
-    const float x = std::clamp(cosine, 0.0f, 1.0f) * float(kAlbedoNodes - 1);
-    const int k = std::min(int(x), kAlbedoNodes - 2);
-    const float t = x - float(k);
-    const AlbedoTable& table = tables_[std::size_t(shading.node)];
-    float scale = glm::mix(table.scale[k], table.scale[k + 1], t);
-    float bias = glm::mix(table.bias[k], table.bias[k + 1], t);
-    if (tables_.size() > 1) {
-        const AlbedoTable& next = tables_[std::size_t(shading.node) + 1];
-        scale = glm::mix(scale, glm::mix(next.scale[k], next.scale[k + 1], t), shading.blend);
-        bias = glm::mix(bias, glm::mix(next.bias[k], next.bias[k + 1], t), shading.blend);
-    }
+    const auto [scale, bias] = albedoTerms(tables_, shading.node, shading.blend, cosine);
     return glm::min(Rgb{1.0f}, f0 * scale + Rgb{bias});
 }
 
+float MicrofacetMaterial::coatAlbedo(float cosine) const {
+    Shading unit = constant_;
+    unit.coat = 1.0f;
+    return coated_ ? coatAlbedo(cosine, unit) : 0.0f;
+}
+
+float MicrofacetMaterial::coatAlbedo(float cosine, const Shading& shading) const {
+    if (shading.coat == 0.0f) return 0.0f;
+    // A polished coat reflects F_c(cos) exactly, which the table only interpolates between nodes.
+    if (coatSmooth()) return shading.coat * fresnel(Rgb{kDielectricF0}, std::clamp(cosine, 0.0f, 1.0f)).g;
+    const auto [scale, bias] = albedoTerms(coatTables_, shading.coatNode, shading.coatBlend, cosine);
+    return shading.coat * std::min(1.0f, kDielectricF0 * scale + bias);
+}
+
+float MicrofacetMaterial::coatTransmission(const Shading& shading, float cosOut, float cosIn) const {
+    if (shading.coat == 0.0f) return 1.0f;
+    return (1.0f - coatAlbedo(cosOut, shading)) * (1.0f - coatAlbedo(cosIn, shading));
+}
+
 Rgb MicrofacetMaterial::diffuseWeight(const Shading& shading, float cosOut, float cosIn) const {
-    return shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
-           (Rgb{1.0f} - specularAlbedo(shading.f0, cosIn, shading));
+    const Rgb weight = shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
+                       (Rgb{1.0f} - specularAlbedo(shading.f0, cosIn, shading));
+    return shading.coat == 0.0f ? weight : weight * coatTransmission(shading, cosOut, cosIn);
 }
 
 Rgb MicrofacetMaterial::diffuseReflectance() const {
     // Textures: read as their images' means times their factors.
-    const bool textured = baseColor_.varies() || metallic_.textured() || roughness_.textured();
-    const Shading shading = textured ? shadingOf(baseColor_.mean(), metallic_.mean(), roughness_.mean()) : constant_;
-    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo);
+    const bool textured = baseColor_.varies() || metallic_.textured() || roughness_.textured() ||
+                          coat_.weight.textured() || coat_.roughness.textured();
+    const Shading shading = textured ? shadingOf(baseColor_.mean(), metallic_.mean(), roughness_.mean(),
+                                                 coat_.weight.mean(), coat_.roughness.mean())
+                                     : constant_;
+    const float underCoat = 1.0f - shading.coatAverage;
+    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo) * (underCoat * underCoat);
 }
 
 Rgb MicrofacetMaterial::diffuseReflectanceAt(const SurfaceSide& side) const {
     const Shading shading = shadingAt(side);
-    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo);
+    const float underCoat = 1.0f - shading.coatAverage;
+    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo) * (underCoat * underCoat);
 }
 
 bool MicrofacetMaterial::has(int lobe) const {
-    if (lobe == kDiffuse) return metallic_.textured() ? !baseColor_.black() : !isBlack(constant_.diffuse);
-    if (lobe == kGlossy) return !smooth();
-    if (lobe == kMirror) return smooth();
-    return false;
+    switch (lobe) {
+        case kDiffuse: return metallic_.textured() ? !baseColor_.black() : !isBlack(constant_.diffuse);
+        case kGlossy: return !smooth();
+        case kMirror: return smooth();
+        case kCoatGlossy: return coated_ && !coatSmooth();
+        case kCoatMirror: return coated_ && coatSmooth();
+        default: return false;
+    }
 }
 
 Rgb MicrofacetMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
@@ -171,20 +241,27 @@ Rgb MicrofacetMaterial::eval(int lobe, const SurfaceSide& side, const Vec3& wo, 
     const Vec3 o = frame.toLocal(wo), i = frame.toLocal(wi);
     const Shading shading = shadingAt(side);
     if (lobe == kDiffuse) return lambert::eval(diffuseWeight(shading, o.z, i.z), side, wi);
-    if (lobe != kGlossy) return Rgb{0.0f};
-    const Vec3 m = glm::normalize(o + i);
-    const float a = shading.alpha;
-    // f cos theta_i = F D G2 / (4 cos theta_o)
-    return fresnel(shading.f0, glm::dot(o, m)) * (ggx::distribution(m, a) * ggx::maskingShadowing(o, i, a) / (4.0f * o.z));
+    if (lobe == kGlossy) {
+        const Rgb value = ggxReflection(shading.f0, shading.alpha, o, i);
+        return shading.coat == 0.0f ? value : value * coatTransmission(shading, o.z, i.z);
+    }
+    if (lobe == kCoatGlossy) return shading.coat * ggxReflection(Rgb{kDielectricF0}, shading.coatAlpha, o, i);
+    return Rgb{0.0f};
 }
 
 float MicrofacetMaterial::pdf(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
     if (!has(lobe) || !side.bothAbove(wo, wi)) return 0.0f;
     if (lobe == kDiffuse) return lambert::pdf(side, wi);
-    if (lobe != kGlossy) return 0.0f;
     const Frame frame(side.normal);
-    const float a = roughness_.textured() ? shadingAt(side).alpha : constant_.alpha;
-    return ggx::reflectionPdf(frame.toLocal(wo), frame.toLocal(wi), a);
+    if (lobe == kGlossy) {
+        const float a = roughness_.textured() ? shadingAt(side).alpha : constant_.alpha;
+        return ggx::reflectionPdf(frame.toLocal(wo), frame.toLocal(wi), a);
+    }
+    if (lobe == kCoatGlossy) {
+        const float a = coat_.roughness.textured() ? shadingAt(side).coatAlpha : constant_.coatAlpha;
+        return ggx::reflectionPdf(frame.toLocal(wo), frame.toLocal(wi), a);
+    }
+    return 0.0f;
 }
 
 std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide& side, const Vec3& wo,
@@ -195,12 +272,13 @@ std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide
         if (s) s->weight = diffuseWeight(shadingAt(side), glm::dot(wo, side.normal), glm::dot(s->wi, side.normal));
         return s;
     }
-    if (lobe != kGlossy) return std::nullopt;
+    if (lobe != kGlossy && lobe != kCoatGlossy) return std::nullopt;
     const Frame frame(side.normal);
     const Vec3 o = frame.toLocal(wo);
     if (!(o.z > 0.0f)) return std::nullopt;  // eval() is 0 there
     const Shading shading = shadingAt(side);
-    const float a = shading.alpha;
+    const bool coat = lobe == kCoatGlossy;
+    const float a = coat ? shading.coatAlpha : shading.alpha;
     const Vec3 m = ggx::sampleVisibleNormal(o, a, u);
     const Vec3 i = reflectAbout(o, m);
     if (i.z <= 0.0f) return std::nullopt;
@@ -209,7 +287,13 @@ std::optional<LobeSample> MicrofacetMaterial::sample(int lobe, const SurfaceSide
     s.pdf = ggx::reflectionPdf(o, i, a);
     if (!(s.pdf > 0.0f)) return std::nullopt;
     // F D G2 / (4 cos_o) over G1(wo) D / (4 cos_o): F G2 / G1 (Heitz 2018, eq. 19).
-    s.weight = fresnel(shading.f0, glm::dot(o, m)) * (ggx::maskingShadowing(o, i, a) / ggx::masking(o, a));
+    const float shadowing = ggx::maskingShadowing(o, i, a) / ggx::masking(o, a);
+    if (coat) {
+        s.weight = shading.coat * fresnel(Rgb{kDielectricF0}, glm::dot(o, m)) * shadowing;
+    } else {
+        s.weight = fresnel(shading.f0, glm::dot(o, m)) * shadowing;
+        if (shading.coat != 0.0f) s.weight *= coatTransmission(shading, o.z, i.z);
+    }
     return s;
 }
 
@@ -217,37 +301,66 @@ float MicrofacetMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3& 
     if (!has(lobe)) return 0.0f;
     const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
     const Shading shading = shadingAt(side);
+    if (lobe == kCoatGlossy) return coatAlbedo(cosOut, shading);
+    // Below the coat: what it lets through from wo, and on average (the base) or about the
+    // mirror direction (the glossy lobe) on the way back.
+    const float below = 1.0f - coatAlbedo(cosOut, shading);
     // The base's albedo: c (1 - E(wo)) times the cosine-weighted mean of 1 - E(wi).
     if (lobe == kDiffuse)
         return maxComponent(shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
-                            (Rgb{1.0f} - shading.averageAlbedo));
-    return maxComponent(specularAlbedo(shading.f0, cosOut, shading));
+                            (Rgb{1.0f} - shading.averageAlbedo)) *
+               (shading.coat == 0.0f ? 1.0f : below * (1.0f - shading.coatAverage));
+    return maxComponent(specularAlbedo(shading.f0, cosOut, shading)) * (shading.coat == 0.0f ? 1.0f : below * below);
 }
 
 int MicrofacetMaterial::specularBranches(const SurfaceSide& side, const Vec3& wo, SpecularBranches& branches) const {
-    if (!has(kMirror)) return 0;
+    if (!has(kMirror) && !has(kCoatMirror)) return 0;
     const float cosOut = glm::dot(wo, side.normal);
     if (cosOut <= 0.0f) return 0;
-    const Rgb weight = fresnel(shadingAt(side).f0, cosOut);
-    branches[0] = {reflectAbout(wo, side.normal), weight, kMirror, maxComponent(weight)};
-    return 1;
+    const Shading shading = shadingAt(side);
+    const Vec3 mirror = reflectAbout(wo, side.normal);
+    int count = 0;
+    if (has(kMirror)) {
+        // Through the coat both ways along the mirror direction: (1 - w E_c(cos))^2.
+        const Rgb weight = fresnel(shading.f0, cosOut) * coatTransmission(shading, cosOut, cosOut);
+        branches[std::size_t(count++)] = {mirror, weight, kMirror, maxComponent(weight)};
+    }
+    if (has(kCoatMirror)) {
+        const Rgb weight = shading.coat * fresnel(Rgb{kDielectricF0}, cosOut);
+        branches[std::size_t(count++)] = {mirror, weight, kCoatMirror, maxComponent(weight)};
+    }
+    return count;
 }
 
 int MicrofacetMaterial::factors(int lobe, const SurfaceSide& side, const Vec3& wo, const Vec3& wi,
                                 NamedFactors& factors) const {
+    const Shading shading = shadingAt(side);
     if (lobe == kDiffuse) {
         factors = lambert::factors(
-            diffuseWeight(shadingAt(side), glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
-        factors[0].name = "(1-m) base (1-E(V)) (1-E(L))";
+            diffuseWeight(shading, glm::dot(wo, side.normal), glm::dot(wi, side.normal)), side, wi);
+        factors[0].name = shading.coat == 0.0f ? "(1-m) base (1-E(V)) (1-E(L))"
+                                               : "(1-m) base (1-E(V)) (1-E(L)) (1-cE_c(V)) (1-cE_c(L))";
         return 2;
     }
-    if (lobe != kGlossy) return 0;
+    if (lobe != kGlossy && lobe != kCoatGlossy) return 0;
     const Rgb value = eval(lobe, side, wo, wi);
-    const Rgb f = fresnel(shadingAt(side).f0, std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi))));
-    // pi eval = F times pi D G2 / (4 N.V)
+    const float cosHalf = std::max(0.0f, glm::dot(wo, glm::normalize(wo + wi)));
+    // pi eval = F (times what the coat lets through, or the coat's weight) times pi D G2 / (4 N.V)
+    Rgb f{0.0f};
+    const char* name = "F";
+    if (lobe == kCoatGlossy) {
+        f = shading.coat * fresnel(Rgb{kDielectricF0}, cosHalf);
+        name = "c F_c";
+    } else {
+        f = fresnel(shading.f0, cosHalf);
+        if (shading.coat != 0.0f) {
+            f *= coatTransmission(shading, glm::dot(wo, side.normal), glm::dot(wi, side.normal));
+            name = "F (1-cE_c(V)) (1-cE_c(L))";
+        }
+    }
     Rgb rest{0.0f};
     for (int c = 0; c < 3; ++c) rest[c] = f[c] > 0.0f ? kPi * value[c] / f[c] : 0.0f;
-    factors = {{{"F", f}, {"pi D G / (4 N.V)", rest}}};
+    factors = {{{name, f}, {"pi D G / (4 N.V)", rest}}};
     return 2;
 }
 
@@ -260,7 +373,8 @@ constexpr Range kUnitInterval{0.0, 1.0, false, false};
 
 MaterialSlot makeMicrofacet(const ParameterValues& values) {
     MicrofacetMaterial material(colorParameter(values, "base_color"), values.number("metallic"),
-                                values.number("roughness"), values.colour("dielectric_f0"));
+                                values.number("roughness"), values.colour("dielectric_f0"),
+                                {values.number("clearcoat"), values.number("clearcoat_roughness")});
     readSurfaceRows(values, material);
     return material;
 }
@@ -278,9 +392,15 @@ LIGHTPATH_REGISTER_MATERIAL(lightpath::MaterialType{
       {"dielectric_f0", lightpath::ParameterType::Colour, "", "0.04", lightpath::kUnitInterval,
        "the dielectric's reflectance at normal incidence: ((n − 1)/(n + 1))² for an index of refraction n, 0.04 for "
        "1.5; glTF's KHR_materials_ior times KHR_materials_specular's specularColorFactor"},
+      {"clearcoat", lightpath::ParameterType::Number, "", "0", lightpath::kUnitInterval,
+       "a clear coat's weight over the surface (glTF's KHR_materials_clearcoat): a GGX layer of F0 0.04, `<RG>` or "
+       "at clearcoat_roughness 0 `<RS>`; what it reflects, the layers below do not receive; 0: none"},
+      {"clearcoat_roughness", lightpath::ParameterType::Number, "", "0", lightpath::kUnitInterval,
+       "the clear coat's GGX roughness (alpha = clearcoat_roughness²); 0 a mirror-smooth coat"},
       lightpath::kEmissionParameter, lightpath::kTwoSidedEmissionParameter, lightpath::kAlphaParameter},
      "<R[DGS]>|O"},
     2, lightpath::makeMicrofacet,
-    // F and G2 at the half vector and (1 - E(wo))(1 - E(wi)) are symmetric: reciprocal. F <= 1,
-    // G2 <= G1 and the base's share 1 - E(wo): at most 1 from every direction.
-    {{true, true, true}, [](const lightpath::ParameterValues&) { return true; }}})
+    // F and G2 at the half vector, (1 - E(wo))(1 - E(wi)) and the coat's (1 - w E_c(wo))(1 - w E_c(wi))
+    // are symmetric: reciprocal. F <= 1, G2 <= G1, the base's share 1 - E(wo) and what is below
+    // the coat 1 - w E_c(wo): at most 1 from every direction.
+    {{true, true, true, true, true}, [](const lightpath::ParameterValues&) { return true; }}})

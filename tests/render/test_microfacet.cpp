@@ -16,6 +16,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "../support/direction_chi_square.h"
+#include "../support/ggx_albedo_reference.h"
 #include "../support/material_harness.h"
 #include "../support/monte_carlo.h"
 #include "../support/paired_agreement.h"
@@ -27,38 +28,6 @@ namespace {
 
 // glTF's metallic = 1: a conductor whose F0 is the base colour.
 MicrofacetMaterial conductor(Rgb f0, float roughness) { return MicrofacetMaterial(f0, 1.0f, roughness); }
-
-// The single-scattering albedo of GGX with F = 1 and height-correlated Smith G2, written out in
-// double from Walter et al. 2007 and Heitz 2014 (eq. 99), integrated over microfacet normals m:
-// E(wo) = integral D(m) G2(wo, wi) (wo.m) / cos theta_o dm, wi the mirror of wo about m
-// (dwi = 4 (wo.m) dm), by the midpoint rule in theta_m and phi_m.
-double ggxAlbedoReference(double cosOut, double alpha) {
-    const double a2 = alpha * alpha, pi = 3.14159265358979323846;
-    const double sinOut = std::sqrt(1.0 - cosOut * cosOut);
-    const double ox = sinOut, oz = cosOut;
-    auto lambda = [&](double cz) {
-        const double tan2 = (1.0 - cz * cz) / (cz * cz);
-        return 0.5 * (std::sqrt(1.0 + a2 * tan2) - 1.0);
-    };
-    const int thetaSteps = 4000, phiSteps = 360;
-    const double dTheta = 0.5 * pi / thetaSteps, dPhi = 2.0 * pi / phiSteps;
-    double sum = 0.0;
-    for (int t = 0; t < thetaSteps; ++t) {
-        const double theta = (t + 0.5) * dTheta, cm = std::cos(theta), sm = std::sin(theta);
-        const double d = a2 / (pi * std::pow((a2 - 1.0) * cm * cm + 1.0, 2.0));
-        for (int p = 0; p < phiSteps; ++p) {
-            const double phi = (p + 0.5) * dPhi;
-            const double mx = sm * std::cos(phi), mz = cm;
-            const double om = ox * mx + oz * mz;
-            if (om <= 0.0) continue;
-            const double iz = 2.0 * om * mz - oz;  // the mirror of wo about m
-            if (iz <= 0.0) continue;
-            const double g2 = 1.0 / (1.0 + lambda(oz) + lambda(iz));
-            sum += d * g2 * om / oz * sm * dTheta * dPhi;
-        }
-    }
-    return sum;
-}
 
 constexpr float kRoughnessSweep[] = {0.2f, 0.35f, 0.5f, 0.7f, 0.85f, 1.0f};
 constexpr float kCosSweep[] = {0.999f, 0.7f, 0.4f, 0.15f};
@@ -86,7 +55,7 @@ TEST_CASE("microfacet: white furnace, a conductor with F = 1 reflects the single
             }
             byWeight /= kDraws;
             byEval /= kDraws;
-            const double reference = ggxAlbedoReference(cosOut, alpha);
+            const double reference = test::ggxAlbedoReference(cosOut, alpha);
             CAPTURE(reference);
             CHECK(reference <= 1.0);
             CHECK(byWeight <= 1.0);
