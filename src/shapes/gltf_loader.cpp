@@ -32,7 +32,8 @@ namespace lightpath {
 namespace {
 
 // The extensions the Reader reads; docs: scenes/README.md, [[gltf]].
-constexpr std::array<std::string_view, 6> kReadExtensions{"KHR_lights_punctual", "KHR_materials_emissive_strength",
+constexpr std::array<std::string_view, 7> kReadExtensions{"KHR_lights_punctual", "KHR_materials_clearcoat",
+                                                          "KHR_materials_emissive_strength",
                                                           "KHR_materials_ior", "KHR_materials_specular",
                                                           "KHR_materials_transmission", "KHR_texture_transform"};
 
@@ -232,6 +233,9 @@ private:
             };
             MaterialSlot material = [&]() -> MaterialSlot {
                 if (transmission > 0.0) {
+                    if (m.extensions.count("KHR_materials_clearcoat") != 0)
+                        warn(where + ".extensions.KHR_materials_clearcoat: a transmitting material is rendered without "
+                                     "its clear coat");
                     // Rough: the rough dielectric (Walter et al. 2007), whose tint is the transmitted
                     // share of the base colour; it has no diffuse base for the rest (a warning).
                     if (roughness > 0.0f) {
@@ -260,9 +264,11 @@ private:
                     metal = ScalarParameter(texture->first, 2, metallic, texture->second);
                     rough = ScalarParameter(texture->first, 1, roughness, texture->second);
                 }
-                const bool textured = base.textured() || metal.textured();
+                MicrofacetMaterial::Clearcoat coat = clearcoat(m, where);
+                const bool textured =
+                    base.textured() || metal.textured() || coat.weight.textured() || coat.roughness.textured();
                 MaterialSlot slot = MicrofacetMaterial(colored(std::move(base), vertexColors), std::move(metal),
-                                                       std::move(rough), dielectricF0(m, ior, where));
+                                                       std::move(rough), dielectricF0(m, ior, where), std::move(coat));
                 slot->textured = textured;  // shading points then carry their uv and footprint
                 return slot;
             }();
@@ -292,6 +298,58 @@ private:
             uvSetOfMaterial_.push_back(uvSet_);
         }
         materialLabels_ = std::move(taken);
+    }
+
+    // KHR_materials_clearcoat: the coat's weight, clearcoatFactor times clearcoatTexture's R, and
+    // its roughness, clearcoatRoughnessFactor times clearcoatRoughnessTexture's G (both linear).
+    // No extension: no coat. Its own normal map is not read: the coat takes the surface's normal.
+    MicrofacetMaterial::Clearcoat clearcoat(const tinygltf::Material& m, const std::string& where) {
+        MicrofacetMaterial::Clearcoat coat;
+        const auto found = m.extensions.find("KHR_materials_clearcoat");
+        if (found == m.extensions.end()) return coat;
+        const std::string at = where + ".extensions.KHR_materials_clearcoat";
+        const tinygltf::Value& e = found->second;
+        if (!e.IsObject()) fail(at, "expected an object");
+        const float weight = float(
+            number(extensionNumber(m.extensions, "KHR_materials_clearcoat", "clearcoatFactor", 0.0), 0.0, 1.0, at + ".clearcoatFactor"));
+        const float roughness = float(number(extensionNumber(m.extensions, "KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0),
+                                             0.0, 1.0, at + ".clearcoatRoughnessFactor"));
+        coat.weight = weight;
+        coat.roughness = roughness;
+        if (weight == 0.0f) return coat;  // glTF: a factor of 0 disables the coat, whatever its texture
+        if (auto texture = open(extensionTexture(e, "clearcoatTexture", at), TextureColorSpace::linear,
+                                at + ".clearcoatTexture"))
+            coat.weight = ScalarParameter(texture->first, 0, weight, texture->second);
+        if (auto texture = open(extensionTexture(e, "clearcoatRoughnessTexture", at), TextureColorSpace::linear,
+                                at + ".clearcoatRoughnessTexture"))
+            coat.roughness = ScalarParameter(texture->first, 1, roughness, texture->second);
+        if (e.Has("clearcoatNormalTexture"))
+            warn(at + ".clearcoatNormalTexture is not read: the coat takes the surface's normal");
+        return coat;
+    }
+
+    // A textureInfo inside an extension object (tinygltf leaves it as JSON): its index, texCoord
+    // and extensions; index -1 when the key is absent.
+    tinygltf::TextureInfo extensionTexture(const tinygltf::Value& object, const std::string& key,
+                                           const std::string& where) const {
+        tinygltf::TextureInfo info;
+        if (!object.Has(key)) return info;
+        const std::string at = where + "." + key;
+        const tinygltf::Value& t = object.Get(key);
+        if (!t.IsObject()) fail(at, "expected a textureInfo object");
+        if (!t.Has("index") || !t.Get("index").IsInt() || t.Get("index").GetNumberAsInt() < 0)
+            fail(at + ".index", "expected a texture index of 0 or more");
+        info.index = t.Get("index").GetNumberAsInt();
+        if (t.Has("texCoord")) {
+            if (!t.Get("texCoord").IsInt()) fail(at + ".texCoord", "expected a set from 0 to " + std::to_string(kMaxUvSet));
+            info.texCoord = t.Get("texCoord").GetNumberAsInt();
+        }
+        if (t.Has("extensions")) {
+            const tinygltf::Value& extensions = t.Get("extensions");
+            if (!extensions.IsObject()) fail(at + ".extensions", "expected an object");
+            for (const std::string& name : extensions.Keys()) info.extensions[name] = extensions.Get(name);
+        }
+        return info;
     }
 
     // glTF 2.0, 3.9.4: alpha is baseColorTexture's alpha (1 without an alpha channel) times

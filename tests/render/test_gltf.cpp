@@ -324,6 +324,15 @@ TEST_CASE("a glTF metallicRoughnessTexture (B metallic, G roughness) renders as 
     CHECK(worstBlockDifference(gltf, toml, 5, 7) <= 0.01);
 }
 
+TEST_CASE("a glTF clear coat's textures (R weight, G roughness, KHR_materials_clearcoat) render as two materials would") {
+    // Its left half a coat of weight 1 and roughness 0.2, its right half 0.4 and 0.8; read as their
+    // factors alone (1 and 1), the left half shows the lamp's broad highlight and the right half is
+    // dimmed as under a full coat. The seam's block columns are left out, as for metal-rough.
+    const Film gltf = renderSmall(kData / "clearcoat.gltf", "raycast", 4);
+    const Film toml = renderSmall(kData / "clearcoat.toml", "raycast", 4);
+    CHECK(worstBlockDifference(gltf, toml, 5, 7) <= 0.01);
+}
+
 TEST_CASE("a glTF normalTexture (constant, tilted, scale 0.5) shades as vertex normals of the tilted normal") {
     // make_textured.py works the map's normal out in double (glTF's +Y up, OpenGL style: the
     // bitangent along v up, which glTF's v down makes -z here) and writes it as NORMAL of the
@@ -390,7 +399,8 @@ TEST_CASE("a glTF emissiveTexture (sRGB, times emissiveFactor and emissive stren
 }
 
 TEST_CASE("the AOVs sum to the beauty on glTF scenes") {
-    for (const char* file : {"point.gltf", "spot.gltf", "directional.gltf", "emissive.gltf", "metal-rough.gltf"}) {
+    for (const char* file :
+         {"point.gltf", "spot.gltf", "directional.gltf", "emissive.gltf", "metal-rough.gltf", "clearcoat.gltf"}) {
         for (const char* integrator : {"raycast", "whitted", "path", "bdpt"}) {
             CAPTURE(file);
             CAPTURE(integrator);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <stdexcept>
 #include <string>
 
 #include "lights/point_light.h"
@@ -200,7 +201,7 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
     const fs::path required = variant("required.gltf", "\"extensionsRequired\": [\"KHR_draco_mesh_compression\"],");
     CHECK(errorOf(required) == required.string() +
                                    ": extensionsRequired[0]: the file requires \"KHR_draco_mesh_compression\", which "
-                                   "lightpath does not read (it reads KHR_lights_punctual, "
+                                   "lightpath does not read (it reads KHR_lights_punctual, KHR_materials_clearcoat, "
                                    "KHR_materials_emissive_strength, KHR_materials_ior, KHR_materials_specular, "
                                    "KHR_materials_transmission, KHR_texture_transform)");
     // Used only: rendered, the extension named in a warning; the ones it reads are not.
@@ -296,6 +297,52 @@ TEST_CASE("a glTF dielectric's F0: from KHR_materials_ior and KHR_materials_spec
     CHECK(f0.r == doctest::Approx(0.5 / 9.0));
     CHECK(f0.g == doctest::Approx(1.0 / 9.0));
     CHECK(f0.b == doctest::Approx(1.0));  // 20 / 9, clamped
+}
+
+// KHR_materials_clearcoat: clearcoatFactor and clearcoatRoughnessFactor (each 0..1, default 0) make
+// the microfacet material's coat; 0 is none. Its normal map and a transmitting material's coat are
+// not read, each said in a warning.
+TEST_CASE("a glTF material's KHR_materials_clearcoat is its clear coat; a bad factor is a located error") {
+    const test::TempFolder temp("lightpath-gltf-clearcoat");
+    std::ifstream in(kData / "point.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string name = "\"name\": \"Floor Paint\"";
+    REQUIRE(text.find(name) != std::string::npos);
+    const auto variant = [&](const std::string& file, const std::string& extensions) {
+        std::string changed = text;
+        changed.replace(changed.find(name), name.size(), name + ", \"extensions\": {" + extensions + "}");
+        std::ofstream(temp.path() / file) << changed;
+        return temp.path() / file;
+    };
+    const auto paint = [](const Scene& scene) -> const MicrofacetMaterial& {
+        for (const MaterialSlot& m : scene.materials)
+            if (m->name == "Floor_Paint") return dynamic_cast<const MicrofacetMaterial&>(*m);
+        throw std::runtime_error("no Floor_Paint");
+    };
+    const Scene coated = loadScene(
+        variant("coat.gltf", "\"KHR_materials_clearcoat\": {\"clearcoatFactor\": 0.6, \"clearcoatRoughnessFactor\": 0.3}"));
+    const MicrofacetMaterial& coat = paint(coated);
+    CHECK(coat.coated());
+    CHECK(coat.has(MicrofacetMaterial::kCoatGlossy));
+    // The same coat as the TOML keys make it.
+    const MicrofacetMaterial expected(Rgb{0.8f, 0.6f, 0.4f}, 0.0f, 0.6f, Rgb{MicrofacetMaterial::kDielectricF0},
+                                      {0.6f, 0.3f});
+    for (const float c : {0.9f, 0.5f, 0.2f}) CHECK(coat.coatAlbedo(c) == expected.coatAlbedo(c));
+    CHECK(!warns(coated, "KHR_materials_clearcoat"));
+    CHECK(!paint(loadScene(variant("zero.gltf", "\"KHR_materials_clearcoat\": {\"clearcoatRoughnessFactor\": 0.3}"))).coated());
+    CHECK(warns(loadScene(variant("normal.gltf", "\"KHR_materials_clearcoat\": {\"clearcoatFactor\": 1, "
+                                                 "\"clearcoatNormalTexture\": {\"index\": 0}}")),
+                "materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture is not read"));
+    CHECK(warns(loadScene(variant("glass.gltf", "\"KHR_materials_clearcoat\": {\"clearcoatFactor\": 1}, "
+                                                "\"KHR_materials_transmission\": {\"transmissionFactor\": 1}")),
+                "materials[0].extensions.KHR_materials_clearcoat: a transmitting material is rendered without"));
+    const fs::path bad = variant("bad.gltf", "\"KHR_materials_clearcoat\": {\"clearcoatFactor\": 1.5}");
+    CHECK(errorOf(bad) == bad.string() + ": materials[0].extensions.KHR_materials_clearcoat.clearcoatFactor: "
+                                         "expected a number from 0 to 1, got 1.5");
+    const fs::path texture = variant("texture.gltf", "\"KHR_materials_clearcoat\": {\"clearcoatFactor\": 1, "
+                                                     "\"clearcoatTexture\": {\"index\": -2}}");
+    CHECK(errorOf(texture) == texture.string() + ": materials[0].extensions.KHR_materials_clearcoat.clearcoatTexture"
+                                                 ".index: expected a texture index of 0 or more");
 }
 
 TEST_CASE("sparse accessors: elements substituted over a bufferView or over zeros; indices out of order refused") {

@@ -11,6 +11,11 @@ metal-rough.png       64x64, linear: the left half metal (B = 255) with roughnes
                       right half dielectric (B = 0) with roughness 0.8 (G = 204).
 metal-rough.gltf      the floor with metallicRoughnessTexture metal-rough.png, base colour 0.9,
                       0.6, 0.3; metal-rough.toml: the two halves as two materials.
+clearcoat.png         64x64, linear: the left half a coat of weight 1 (R = 255) and roughness 0.2
+                      (G = 51), the right half weight 0.4 (R = 102) and roughness 0.8 (G = 204).
+clearcoat.gltf        the floor, blue (metallic 0, roughness 0.5), with KHR_materials_clearcoat's
+                      clearcoatTexture and clearcoatRoughnessTexture clearcoat.png, factors 1;
+                      clearcoat.toml: the two halves as two materials.
 normal-map.png        4x4, linear: every texel the tangent-space normal (166, 179, 238) / 255 * 2 - 1,
                       leaning towards +u and +v (image up).
 normal-map.gltf       the floor (metallic 0, roughness 0.5) with normalTexture normal-map.png, scale 0.5.
@@ -56,6 +61,7 @@ def png(width, height, rows):
 CHECKER = png(4, 4, [[((x * 60 + 20) % 256, (y * 60 + 40) % 256, ((x + y) * 30 + 10) % 256) for x in range(4)]
                      for y in range(4)])
 METAL_ROUGH = png(64, 64, [[(0, 51, 255)] * 32 + [(0, 204, 0)] * 32 for _ in range(64)])
+CLEARCOAT = png(64, 64, [[(255, 51, 0)] * 32 + [(102, 204, 0)] * 32 for _ in range(64)])
 
 # The floor: x and z in [-1, 1] at y = 0, facing +y. glTF's uv has v down the image from its top
 # row: the corner (-1, 0, -1), farthest from the camera's bottom edge, reads the image's top left.
@@ -167,6 +173,15 @@ def main():
                                                             "metallicRoughnessTexture": {"index": 0}}}
     # CLAMP_TO_EDGE: the metal's edge must not blend with the dielectric's across the wrap.
     (HERE / "metal-rough.gltf").write_text(json.dumps(document(metal, [{"uri": "metal-rough.png"}], 33071), indent=1) + "\n")
+    (HERE / "clearcoat.png").write_bytes(CLEARCOAT)
+    lacquered = {"name": "Lacquered", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.3, 0.8, 1], "metallicFactor": 0,
+                                                               "roughnessFactor": 0.5},
+                 "extensions": {"KHR_materials_clearcoat": {
+                     "clearcoatFactor": 1, "clearcoatTexture": {"index": 0},
+                     "clearcoatRoughnessFactor": 1, "clearcoatRoughnessTexture": {"index": 0}}}}
+    coated = document(lacquered, [{"uri": "clearcoat.png"}], 33071)
+    coated["extensionsUsed"] = sorted(set(coated.get("extensionsUsed", [])) | {"KHR_materials_clearcoat"})
+    (HERE / "clearcoat.gltf").write_text(json.dumps(coated, indent=1) + "\n")
     # A quarter turn of the uvs: u = (z + 1) / 2, v = (1 - x) / 2.
     turned = [((z + 1) / 2, (1 - x) / 2) for x, _, z in POSITIONS]
     (HERE / "normal-map-tangent.gltf").write_text(json.dumps(
