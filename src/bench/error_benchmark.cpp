@@ -133,7 +133,7 @@ Scene mirrorCausticScene(int size, Reference& caustic) {
     scene.planes.push_back({{0, 0, 0}, {0, 1, 0}, 0});
     scene.planes.push_back({{1, 0, 0}, {-1, 0, 0}, 1});
     scene.lights.push_back(PointLight{"key", Vec3(light), Rgb{static_cast<float>(intensity)}, {0, 0, 1}});
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     constexpr int kSub = 8;
     for (int j = 0; j < size; ++j) {
         for (int i = 0; i < size; ++i) {

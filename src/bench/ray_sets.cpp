@@ -47,7 +47,7 @@ std::vector<Ray> primaryRays(const Scene& scene, int side) {
     CameraDescription description = scene.camera;
     description.width = side;
     description.height = side;
-    const PinholeCamera camera(description);
+    const Camera camera(description);
     std::vector<Ray> rays;
     rays.reserve(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
     for (int y = 0; y < side; ++y)

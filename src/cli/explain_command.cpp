@@ -219,7 +219,7 @@ void printText(const ExplainCommand& command, const RenderOptions& options, cons
 // The schema is documented in docs/lpe.md ("explain --json").
 // A contribution's path for drawing: each vertex in world space, and each segment between two
 // vertices projected onto the image (the part in front of the eye), null where there is none.
-std::string jsonGeometry(const PinholeCamera& camera, const std::vector<std::optional<Vec3>>& positions) {
+std::string jsonGeometry(const Camera& camera, const std::vector<std::optional<Vec3>>& positions) {
     char buffer[160];
     std::string json = "\"vertices\": [";
     for (std::size_t v = 0; v < positions.size(); ++v) {
@@ -248,7 +248,7 @@ std::string jsonStrategy(const std::optional<BdptStrategy>& strategy) {
 
 void printJson(const ExplainCommand& command, const Scene& scene, const RenderOptions& options, const AovSet& aovs,
                int x, int y, const std::vector<PathGroup>& groups, const std::vector<RejectionGroup>& rejections) {
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     std::ostringstream json;
     json << "{\n  \"schema\": \"lightpath-explain-1\",\n  \"scene\": " << jsonString(command.flags.config().scenePath)
          << ",\n  \"integrator\": " << jsonString(options.integrator) << ",\n  \"spp\": " << options.samplesPerPixel

@@ -271,7 +271,7 @@ bool hasLight(const Scene& scene) {
 // Gives a scene without any light kDefaultLightName, a point light above and to the left of its
 // camera's eye; says so.
 std::string addDefaultLight(Scene& scene) {
-    const PinholeCamera view(scene.camera);
+    const Camera view(scene.camera);
     const Vec3 right = glm::normalize(glm::cross(view.forward(), scene.camera.up));
     const Vec3 up = glm::cross(right, view.forward());
     const float distance = glm::length(scene.camera.lookAt - scene.camera.eye);

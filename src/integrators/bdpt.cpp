@@ -159,7 +159,7 @@ private:
 // estimate different integrals and their MIS sum neither (pbrt-v4's RGBFilm::AddSplat weighs splats
 // by the filter likewise). The box: the pixel that contains p, weight 1.
 template <class Add>
-void forPixelsCovering(const PixelFilter* filter, const Vec2& p, const PinholeCamera& camera, const Add& add) {
+void forPixelsCovering(const PixelFilter* filter, const Vec2& p, const Camera& camera, const Add& add) {
     if (filter == nullptr || filter->kind() == PixelFilterKind::Box) {
         add(std::min(static_cast<int>(p.x), camera.width() - 1), std::min(static_cast<int>(p.y), camera.height() - 1), 1.0f);
         return;

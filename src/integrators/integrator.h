@@ -34,7 +34,7 @@ struct RenderContext {
     const SceneAnalysis& analysis;
     const LightSet& lights;
     const LobeStepTable& lobeSteps;  // the automaton's answers for direct light (path_state.h)
-    const PinholeCamera& camera;
+    const Camera& camera;
     // The most scattering events (R or T) a path may have before its light: 1 is ray casting's
     // E(D|G)L, and every integrator cuts its paths at the same length.
     int maxDepth = 5;

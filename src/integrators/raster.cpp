@@ -9,7 +9,7 @@
 
 namespace lightpath {
 
-ZBuffer::ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera)
+ZBuffer::ZBuffer(const SceneGeometry& geometry, const Camera& camera)
     : geometry_(geometry),
       camera_(camera),
       width_(camera.width()),

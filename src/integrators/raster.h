@@ -44,7 +44,7 @@ class ZBuffer {
 public:
     // Rasterises every primitive of `geometry` as `camera` sees it, in primitive id order: equal
     // depths keep the smaller id, as the ray caster's closest hit does.
-    ZBuffer(const SceneGeometry& geometry, const PinholeCamera& camera);
+    ZBuffer(const SceneGeometry& geometry, const Camera& camera);
     // One fragment per pixel: the constructor allocates fragmentCount, and `bytes` is what a
     // render is checked against before the z-buffer exists.
     static std::size_t fragmentCount(int width, int height) {
@@ -79,7 +79,7 @@ private:
     void test(int x, int y, float t, std::uint32_t primitive, const Vec3& barycentrics);
 
     const SceneGeometry& geometry_;
-    const PinholeCamera& camera_;
+    const Camera& camera_;
     int width_, height_;
     std::vector<RasterFragment> fragments_;
     mutable std::uint64_t pixelsTested_ = 0;

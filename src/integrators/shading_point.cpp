@@ -26,7 +26,7 @@ Vec3 stepOnTangentPlane(const Vec3& eye, const Vec3& d, const Vec3& point, const
 // mirrors or curvature), so it never blurs more than a camera ray would. Then dp = dpdu du + dpdv
 // dv solved in the least-squares sense (pbrt-v4 10.1.1, SurfaceInteraction::ComputeDifferentials).
 TextureFootprint footprintOf(const SurfaceHit& hit, const SurfaceParameters& surface, const RenderContext& context) {
-    const PinholeCamera& camera = context.camera;
+    const Camera& camera = context.camera;
     const Vec3 origin = camera.filmDirection(0.0f, 0.0f);
     const Vec3 dDdx = camera.filmDirection(1.0f, 0.0f) - origin, dDdy = camera.filmDirection(0.0f, 1.0f) - origin;
     const Vec3 toPoint = hit.point - camera.eye();

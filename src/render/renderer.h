@@ -196,7 +196,7 @@ private:
     SceneAnalysis analysis_;
     LightSet lights_;
     LobeStepTable lobeSteps_;
-    PinholeCamera camera_;
+    Camera camera_;
     PixelFilter filter_;
     // Indices into AovSet::layerNames(): every layer, or all but beauty and rest.
     static std::vector<std::size_t> writtenLayers(const AovSet& aovs, bool writeBeauty);

@@ -6,7 +6,7 @@
 
 namespace lightpath {
 
-PinholeCamera::PinholeCamera(const CameraDescription& d)
+Camera::Camera(const CameraDescription& d)
     : eye_(d.eye), width_(d.width), height_(d.height) {
     forward_ = glm::normalize(d.lookAt - d.eye);
     right_ = glm::normalize(glm::cross(forward_, d.up));
@@ -14,7 +14,7 @@ PinholeCamera::PinholeCamera(const CameraDescription& d)
     halfHeight_ = std::tan(glm::radians(d.verticalFovDegrees) * 0.5f);
 }
 
-Vec3 PinholeCamera::filmDirection(float x, float y) const {
+Vec3 Camera::filmDirection(float x, float y) const {
     // Map the film position to [-aspect, aspect] x [-1, 1] (times tan(fov/2)) on the image plane
     // at distance 1.
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
@@ -24,16 +24,16 @@ Vec3 PinholeCamera::filmDirection(float x, float y) const {
 }
 
 LIGHTPATH_HOT_PATH
-Ray PinholeCamera::generateRay(float x, float y) const {
+Ray Camera::generateRay(float x, float y) const {
     Ray ray;
     ray.origin = eye_;
     ray.direction = glm::normalize(filmDirection(x, y));
     return ray;
 }
 
-float PinholeCamera::depth(const Vec3& point) const { return glm::dot(point - eye_, forward_); }
+float Camera::depth(const Vec3& point) const { return glm::dot(point - eye_, forward_); }
 
-std::optional<Vec2> PinholeCamera::filmPosition(const Vec3& point) const {
+std::optional<Vec2> Camera::filmPosition(const Vec3& point) const {
     // generateRay inverted: the point's coordinates on the image plane at distance 1.
     const Vec3 d = point - eye_;
     const float depth = glm::dot(d, forward_);
@@ -44,7 +44,7 @@ std::optional<Vec2> PinholeCamera::filmPosition(const Vec3& point) const {
                 (1.0f - v / halfHeight_) * 0.5f * static_cast<float>(height_)};
 }
 
-std::optional<std::array<Vec2, 2>> PinholeCamera::filmSegment(Vec3 a, Vec3 b) const {
+std::optional<std::array<Vec2, 2>> Camera::filmSegment(Vec3 a, Vec3 b) const {
     constexpr float kNear = 1e-4f;
     const float da = depth(a), db = depth(b);
     if (da < kNear && db < kNear) return std::nullopt;
@@ -55,19 +55,19 @@ std::optional<std::array<Vec2, 2>> PinholeCamera::filmSegment(Vec3 a, Vec3 b) co
     return std::array<Vec2, 2>{*pa, *pb};
 }
 
-std::optional<Vec2> PinholeCamera::project(const Vec3& point) const {
+std::optional<Vec2> Camera::project(const Vec3& point) const {
     const std::optional<Vec2> p = filmPosition(point);
     if (!p || !(p->x >= 0.0f && p->x < static_cast<float>(width_) && p->y >= 0.0f && p->y < static_cast<float>(height_)))
         return std::nullopt;
     return p;
 }
 
-float PinholeCamera::imageArea() const {
+float Camera::imageArea() const {
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
     return (2.0f * aspect * halfHeight_) * (2.0f * halfHeight_);
 }
 
-float PinholeCamera::cosineInImage(const Vec3& direction) const {
+float Camera::cosineInImage(const Vec3& direction) const {
     const float cosTheta = glm::dot(direction, forward_);
     if (!(cosTheta > 0.0f)) return 0.0f;
     const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
@@ -76,12 +76,12 @@ float PinholeCamera::cosineInImage(const Vec3& direction) const {
     return cosTheta;
 }
 
-float PinholeCamera::importance(const Vec3& direction) const {
+float Camera::importance(const Vec3& direction) const {
     const float c = cosineInImage(direction);
     return c > 0.0f ? 1.0f / (imageArea() * c * c * c * c) : 0.0f;
 }
 
-float PinholeCamera::pdfDirection(const Vec3& direction) const {
+float Camera::pdfDirection(const Vec3& direction) const {
     const float c = cosineInImage(direction);
     return c > 0.0f ? 1.0f / (imageArea() * c * c * c) : 0.0f;
 }

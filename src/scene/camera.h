@@ -18,9 +18,9 @@ struct CameraDescription {
     int height = 480;
 };
 
-class PinholeCamera {
+class Camera {
 public:
-    explicit PinholeCamera(const CameraDescription& description);
+    explicit Camera(const CameraDescription& description);
 
     // Ray through the film position (x, y) in pixels, (0,0) the top-left corner of the image;
     // the centre of pixel (i, j) is (i + 0.5, j + 0.5).

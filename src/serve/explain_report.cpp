@@ -22,7 +22,7 @@ std::optional<Vec3> positionOf(const PathEvent& event) {
 
 // The part of segment a-b in front of the eye, projected: [x0, y0, x1, y1] in pixels, or null
 // when all of it is behind.
-json projectedSegment(const PinholeCamera& camera, Vec3 a, Vec3 b) {
+json projectedSegment(const Camera& camera, Vec3 a, Vec3 b) {
     const auto ends = camera.filmSegment(a, b);
     if (!ends) return nullptr;
     return json::array({(*ends)[0].x, (*ends)[0].y, (*ends)[1].x, (*ends)[1].y});
@@ -39,7 +39,7 @@ json explainPixel(const Job& job, int x, int y, const std::atomic<bool>* cancel)
     const std::vector<LoggedContribution> log =
         job.renderer().explainPixel(x, y, &rejections, {.samplesPerPixel = 1, .cancel = cancel});
     const lpe::Automaton& automaton = job.aovs.automaton();
-    const PinholeCamera camera(job.scene.camera);
+    const Camera camera(job.scene.camera);
     const std::vector<std::string> layers = job.aovs.layerNames();
     std::vector<Rgb> sums(layers.size(), Rgb{0.0f});
 

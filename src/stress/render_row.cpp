@@ -70,7 +70,7 @@ std::vector<Rgb> renderBeauty(const Scene& scene, const NumericsOptions& numeric
 // the light reaches: there a renderer at any scale must give the same colour.
 std::vector<bool> litFlatMask(const Scene& scene) {
     const SceneGeometry geometry(scene.spheres, scene.planes, scene.triangles);
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     const int w = scene.camera.width, h = scene.camera.height;
     std::vector<int> object(static_cast<std::size_t>(w * h), -1);
     for (int y = 0; y < h; ++y) {

@@ -193,7 +193,7 @@ TEST_CASE("an OBJ file without camera or light renders framed and lit, and says 
     CHECK(scene.lights[0]->name == kDefaultLightName);
     CHECK(scene.camera.width == 40);
     CHECK(scene.camera.lookAt == Vec3(0.0f));
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     for (int k = 0; k < 8; ++k) CHECK(camera.project(Vec3(k & 1 ? 0.5f : -0.5f, k & 2 ? 0.5f : -0.5f, k & 4 ? 0.5f : -0.5f)));
 
     RenderOptions options;

@@ -20,7 +20,7 @@ import sys
 # whole by another compiler (clang's sanitizer build) and leave no symbol.
 REQUIRED = [
     "Renderer::renderPixel", "Sampler::next1D", "Sampler::next2D",
-    "PinholeCamera::generateRay", "SceneGeometry::intersectSurface", "SceneGeometry::occluded",
+    "Camera::generateRay", "SceneGeometry::intersectSurface", "SceneGeometry::occluded",
     "makeShadingPoint", "addLocalIllumination", "addDirectLight", "AreaLightSource::sample",
     "PointLightSource::sample", "PhongMaterial::eval", "WhittedIntegrator::trace",
     "PathIntegrator::traceCameraRay", "spawnShadowRay", "WatertightRay::WatertightRay",

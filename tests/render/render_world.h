@@ -39,7 +39,7 @@ struct RenderWorld {
     SceneAnalysis analysis;
     LightSet lights;
     LobeStepTable lobeSteps;
-    PinholeCamera camera;
+    Camera camera;
     RenderContext context;
 };
 

@@ -364,7 +364,7 @@ TEST_CASE("camera: project() inverts generateRay, and importance integrates to o
     d.width = 64;
     d.height = 40;
     d.verticalFovDegrees = 50.0f;
-    const PinholeCamera camera(d);
+    const Camera camera(d);
     Pcg32 rng(9, 1);
     for (int i = 0; i < 1000; ++i) {
         const float x = rng.nextFloat() * 64.0f, y = rng.nextFloat() * 40.0f;
@@ -585,7 +585,7 @@ Film lightTrace(const World& world, int spp) {
 // The mean over pixel (i, j) of a function of the floor point y = 0 its rays see, by an 8x8 grid:
 // light tracing estimates the pixel's mean radiance, not its centre's.
 template <class F>
-double pixelMean(const PinholeCamera& camera, int i, int j, F f) {
+double pixelMean(const Camera& camera, int i, int j, F f) {
     double sum = 0.0;
     for (int b = 0; b < 8; ++b) {
         for (int a = 0; a < 8; ++a) {
@@ -609,7 +609,7 @@ Scene floorUnderLight(const glm::dvec3& light, const glm::dvec3& attenuation) {
     return scene;
 }
 
-void checkAgainst(const Film& film, std::size_t layer, const PinholeCamera& camera,
+void checkAgainst(const Film& film, std::size_t layer, const Camera& camera,
                   const std::function<double(const glm::dvec3&)>& expected) {
     std::vector<double> differences, wrong;
     for (int j = 0; j < film.height(); ++j) {
@@ -653,7 +653,7 @@ void checkMirrorCaustic(int spp, std::uint64_t seed, double lightWalkFraction) {
     test::addPlane(scene, "mirror", test::addMaterial(scene, mirror), {1, 0, 0}, {-1, 0, 0});
     const std::vector<lpe::NamedExpression> set{{"caustic", "E(D|G)S+L"}};
     const Film film = render(scene, set, "bdpt", spp, 5, seed, 0, lightWalkFraction);
-    checkAgainst(film, 1, PinholeCamera(scene.camera), [&](const glm::dvec3& p) {
+    checkAgainst(film, 1, Camera(scene.camera), [&](const glm::dvec3& p) {
         const glm::dvec3 toImage = image - p;
         const double d = glm::length(toImage);
         return kr * 0.6 * 3.0 * (toImage.y / d) / (d * d);
@@ -737,7 +737,7 @@ struct SpotFloor {
     // [-radius, radius]^2 around its centre, by a fine midpoint grid.
     template <class Profile>
     double filtered(int i, int j, double radius, Profile profile) const {
-        const PinholeCamera camera(scene.camera);
+        const Camera camera(scene.camera);
         constexpr int kGrid = 96;
         double sum = 0.0, weights = 0.0;
         for (int b = 0; b < kGrid; ++b) {
@@ -806,7 +806,7 @@ TEST_CASE("bdpt: at 1 spp, splats and eye samples estimate the same pixel mean")
     const int c = spot.size / 2;
     const std::vector<double> box = {spot.box(c, c), spot.box(c + 1, c), spot.box(c - 1, c), spot.box(c, c + 1),
                                      spot.box(c, c - 1)};
-    const PinholeCamera camera(spot.scene.camera);
+    const Camera camera(spot.scene.camera);
     const Ray centreRay = camera.generateRay(c + 0.5f, c + 0.5f);
     const glm::dvec3 d(centreRay.direction), o(centreRay.origin);
     const double centre = spot.radiance(o + (-o.y / d.y) * d);

@@ -143,7 +143,7 @@ normal = [0, 1, 0]
 material = "lacquer"
 )";
     const Scene scene = loadSceneFromText(text, LIGHTPATH_SOURCE_DIR "/tests/render/data/lacquer.toml");
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     const auto schlick = [](double f0, double c) { return f0 + (1.0 - f0) * std::pow(1.0 - c, 5.0); };
     const auto reflected = [&](double c) {
         const double coat = 0.8 * schlick(0.04, c);

@@ -199,7 +199,7 @@ TEST_CASE("disk: ray casting and the rasteriser see the same disks, pixel for pi
     int differing = 0, onDisk = 0;
     const SceneGeometry geometry(scene.spheres, scene.planes, scene.triangles, {}, Accelerator::Bvh, {}, 0,
                                  scene.shapes);
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     for (int y = 0; y < raycast.height(); ++y) {
         for (int x = 0; x < raycast.width(); ++x) {
             const auto hit = geometry.intersect(camera.generateRay(float(x) + 0.5f, float(y) + 0.5f));

@@ -12,7 +12,7 @@ namespace lightpath {
 namespace {
 
 int cornersInside(const CameraDescription& description, const Bounds& box) {
-    const PinholeCamera camera(description);
+    const Camera camera(description);
     int inside = 0;
     for (int k = 0; k < 8; ++k) {
         const Vec3 corner((k & 1) ? box.hi.x : box.lo.x, (k & 2) ? box.hi.y : box.lo.y, (k & 4) ? box.hi.z : box.lo.z);

@@ -222,7 +222,7 @@ TEST_CASE("a glTF mesh's COLOR_0 multiplies its base colour: the white floor tim
     };
     const Scene whiteScene = sceneOf("vertex-colors-white.gltf");
     const Film white = render(whiteScene, "raster", 1);
-    const PinholeCamera camera(whiteScene.camera);
+    const Camera camera(whiteScene.camera);
     // The corners (x, z) of make_vertex_colors.py's triangle at y = 0.
     const Vec2 a{-8.0f, 8.0f}, b{8.0f, 8.0f}, c{0.0f, -8.0f};
     const auto weights = [&](Vec2 p) {

@@ -44,7 +44,7 @@ std::vector<std::int64_t> objectsSeen(const Scene& scene) {
     const SceneGeometry geometry(scene.spheres, scene.planes, scene.triangles, NumericsOptions{}, Accelerator::Bvh,
                                  scene.triangleNormals, 0, scene.shapes, scene.triangleUvs, scene.triangleTangents,
                                  scene.objectCoverage(), scene.triangleColors);
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     std::vector<std::int64_t> objects;
     for (int y = 0; y < camera.height(); ++y) {
         for (int x = 0; x < camera.width(); ++x) {
@@ -140,7 +140,7 @@ TEST_CASE("the rasteriser tests no pixel for a sphere behind the camera, and the
     CameraDescription description;  // at (0, 0, 5) looking down -z
     description.width = 64;
     description.height = 48;
-    const PinholeCamera camera(description);
+    const Camera camera(description);
     const auto tested = [&](Vec3 center) {
         const SceneGeometry geometry({Sphere{center, 0.5f, 0}}, {}, {});
         return ZBuffer(geometry, camera).pixelsTested();
@@ -161,7 +161,7 @@ TEST_CASE("the rasteriser covers exactly the pixels whose centre's ray meets a s
     // once covered by) lose the pixel centres between a chord and the arc of its outline; its
     // bounding box loses none, and each pixel keeps the true sphere's hit.
     CameraDescription description;  // at (0, 0, 5) looking down -z
-    const PinholeCamera camera(description);
+    const Camera camera(description);
     const SceneGeometry geometry({Sphere{Vec3{0.1f, -0.05f, 0.0f}, 1.8f, 0}}, {}, {});
     const ZBuffer zBuffer(geometry, camera);
     int seen = 0, wrong = 0;

@@ -80,7 +80,7 @@ Film renderBeauty(const Scene& scene, int samplesPerPixel) {
 
 // The pixels (their centres) whose ray meets the floor farther than `distance` from the eye.
 std::vector<std::pair<int, int>> floorPixelsBeyond(const Scene& scene, float distance) {
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     std::vector<std::pair<int, int>> pixels;
     for (int y = 0; y < camera.height(); ++y)
         for (int x = 0; x < camera.width(); ++x) {
@@ -137,7 +137,7 @@ TEST_CASE("textures: up close each pixel is its texel's colour") {
     const Scene scene = loadSceneFromText(
         floorScene(texture, "[0.3, 0.5, 0.2]", "[0.3, 0, 0.2]", "[0, 0, -1]", 1.0f, true), "near.toml");
     const Film film = renderBeauty(scene, 1);
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     int checked = 0;
     for (int y = 0; y < camera.height(); ++y)
         for (int x = 0; x < camera.width(); ++x) {
@@ -166,7 +166,7 @@ TEST_CASE("textures: up close each pixel is its texel's colour") {
 // with that check's value, 0 or 1.
 template <class Check>
 void forEachCheckPixel(const Scene& scene, Check check) {
-    const PinholeCamera camera(scene.camera);
+    const Camera camera(scene.camera);
     for (int y = 0; y < camera.height(); ++y)
         for (int x = 0; x < camera.width(); ++x) {
             const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);

@@ -258,7 +258,7 @@ TEST_CASE("serve: explain a mirror pixel: paths, pasteable LPEs, automaton state
     Scene scene = loadScene(scenePath("mirror-sphere.toml"));
     scene.camera.width = 64;
     scene.camera.height = 48;
-    const auto centre = PinholeCamera(scene.camera).project({0.0f, 1.1f, 0.0f});
+    const auto centre = Camera(scene.camera).project({0.0f, 1.1f, 0.0f});
     REQUIRE(centre);
     const int x = static_cast<int>(centre->x), y = static_cast<int>(centre->y);
     const auto r = fixture.client()->Get(("/api/explain?x=" + std::to_string(x) + "&y=" + std::to_string(y)).c_str());

@@ -1,4 +1,4 @@
-// PinholeCamera::filmPosition and project against hand-computed positions, and as generateRay's inverse.
+// Camera::filmPosition and project against hand-computed positions, and as generateRay's inverse.
 #include <doctest/doctest.h>
 
 #include "scene/camera.h"
@@ -14,7 +14,7 @@ TEST_CASE("project: hand-computed positions of a 90-degree camera looking down -
     d.verticalFovDegrees = 90.0f;
     d.width = 200;
     d.height = 100;
-    const PinholeCamera camera(d);
+    const Camera camera(d);
     const auto centre = camera.filmPosition({0.0f, 0.0f, -5.0f});
     REQUIRE(centre);
     CHECK(centre->x == doctest::Approx(100.0));
@@ -53,7 +53,7 @@ TEST_CASE("project: the point a generated ray reaches lands on the film position
     d.verticalFovDegrees = 40.0f;
     d.width = 64;
     d.height = 48;
-    const PinholeCamera camera(d);
+    const Camera camera(d);
     for (const float x : {0.5f, 10.25f, 31.0f, 63.5f}) {
         for (const float y : {0.5f, 20.75f, 47.5f}) {
             const Ray ray = camera.generateRay(x, y);
