@@ -185,7 +185,7 @@ void joinToCamera(const Vertices& light, int i, PathState& path, const Weights& 
     const RenderContext& ctx = path.context;
     const BdptVertex& y = light[i];
     const ShadingPoint& sp = *y.surface;
-    if (y.smoothLobes == 0) return;
+    if (y.smoothLobes == 0 || !ctx.camera.connectible()) return;
     const auto raster = ctx.camera.project(y.point);
     if (!raster) return;
     const Vec3 toEye = ctx.camera.eye() - y.point;
@@ -343,12 +343,14 @@ void traceStrategies(const Ray& cameraRay, PathState& path, int lightWalks, Bdpt
     if (strategies == BdptIntegrator::Strategies::LightTracingOnly) return;
 
     Vertices& eye = subpaths.eye;
-    eye[0] = cameraVertex(ctx.camera.eye());
+    // An orthographic camera's ray is a Dirac in direction: its first step counts as a delta's.
+    const bool orthographic = !ctx.camera.connectible();
+    eye[0] = cameraVertex(cameraRay.origin, orthographic);
     const std::size_t pathStart = path.size();
     Ray ray = cameraRay;
     Rgb beta{1.0f};
-    float pdf = ctx.camera.pdfDirection(cameraRay.direction);
-    bool delta = false;
+    float pdf = orthographic ? 1.0f : ctx.camera.pdfDirection(cameraRay.direction);
+    bool delta = orthographic;
     for (int t = 2; t <= ctx.maxDepth + 2; ++t) {
         const auto hit = ctx.geometry.intersect(ray);
         if (!hit) {
@@ -467,8 +469,8 @@ LightWalkPilot runPilot(const RenderContext& ctx, BdptIntegrator::Strategies str
                 const Vec2 u = sampler.next2D();
                 const Vec2 offset = Vec2{0.5f} + (ctx.filter != nullptr ? ctx.filter->sample(u) : u - Vec2{0.5f});
                 PilotSample sample;
-                if (path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, ctx.camera.eye()})) {
-                    const Ray ray = ctx.camera.generateRay(float(x) + offset.x, float(y) + offset.y);
+                const Ray ray = ctx.camera.generateRay(float(x) + offset.x, float(y) + offset.y);
+                if (path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, ray.origin})) {
                     traceStrategies(ray, path, 1, strategies, {1.0, 1.0f, 1.0f, &sample, &layers[0]});
                     // Light tracing's splats need no eye walk: more light walks, their splats'
                     // second moment averaged with the sample's own (their work is not the render's).

@@ -35,12 +35,15 @@ std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, 
     return step;
 }
 
-BdptVertex cameraVertex(const Vec3& eye) {
+BdptVertex cameraVertex(const Vec3& origin, bool directionDelta) {
     BdptVertex v;
     v.kind = VertexKind::Camera;
-    v.point = eye;
+    v.point = origin;
     v.beta = Rgb{1.0f};
-    v.pdfFwd = 1.0f;  // a pinhole: every strategy shares the eye's position
+    // A pinhole: every strategy shares the eye's position. An orthographic camera's ray leaves
+    // along one direction, a Dirac no join can meet (and its first step's density counts as 1).
+    v.pdfFwd = 1.0f;
+    v.delta = directionDelta;
     return v;
 }
 
@@ -108,6 +111,7 @@ PathDensities joinedDensities(std::span<const BdptVertex> light, int lightLobe, 
     PathDensities p;
     const int s = static_cast<int>(light.size()), t = static_cast<int>(eye.size());
     p.n = s + t;
+    p.cameraJoinable = context.camera.connectible();
     for (int i = 0; i < s; ++i) {
         p.fromLight[i] = light[i].pdfFwd;
         p.fromEye[i] = light[i].pdfRev;
@@ -166,7 +170,7 @@ bool available(const PathDensities& p, int s, double lightWalks) {
     if (s == 0) return p.originHittable;
     if (s >= 2 && !(lightWalks > 0.0)) return false;
     // The light seen straight by the camera (s = 1, t = 1) is left to the eye's walk (s = 0).
-    if (t == 1) return s >= 2 && p.connectible[s - 1];
+    if (t == 1) return p.cameraJoinable && s >= 2 && p.connectible[s - 1];
     return p.connectible[s - 1] && p.connectible[s];
 }
 

@@ -110,7 +110,7 @@ ScatterStep prescribedStep(const ShadingPoint& vertex, int lobe, const Vec3& wi)
 std::optional<ScatterStep> sampledStep(const ShadingPoint& vertex, float uLobe, Vec2 u);
 
 // Builders of subpath vertices.
-BdptVertex cameraVertex(const Vec3& eye);
+BdptVertex cameraVertex(const Vec3& origin, bool directionDelta = false);
 // x0 on `light`, at `point` with outward `normal`, where light sampling picks it with area
 // density `pdfPosition` and emission with `pdfEmission`.
 BdptVertex lightVertex(const Light& light, const Vec3& point, const Vec3& normal, float pdfPosition, float pdfEmission);
@@ -147,6 +147,7 @@ struct PathDensities {
     double originByNextEvent = 0.0;  // x0 chosen by light sampling (s = 1): choice * pdfPosition
     double originByEmission = 0.0;   // x0 chosen to start a light walk (s >= 2)
     bool originHittable = false;     // an eye walk can find x0 by chance (an area light: s = 0)
+    bool cameraJoinable = true;      // light tracing (t = 1) can reach the camera: a pinhole, not an orthographic one
 };
 
 // The densities of the path made by joining light[0..s) and eye[0..t) (either may be empty: s = 0

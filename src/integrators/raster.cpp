@@ -39,8 +39,67 @@ void ZBuffer::test(int x, int y, float t, std::uint32_t primitive, const Vec3& b
     kept = {t, primitive, barycentrics};
 }
 
+std::array<int, 4> ZBuffer::pixelBox(const Vec3& a, const Vec3& b, const Vec3& c) const {
+    int x0 = 0, y0 = 0, x1 = width_ - 1, y1 = height_ - 1;
+    const auto pa = camera_.filmPosition(a), pb = camera_.filmPosition(b), pc = camera_.filmPosition(c);
+    if (pa && pb && pc) {
+        const auto low = [](float v) { return static_cast<int>(std::floor(v)) - 1; };
+        const auto high = [](float v) { return static_cast<int>(std::ceil(v)) + 1; };
+        x0 = std::max(x0, low(std::min({pa->x, pb->x, pc->x})));
+        y0 = std::max(y0, low(std::min({pa->y, pb->y, pc->y})));
+        x1 = std::min(x1, high(std::max({pa->x, pb->x, pc->x})));
+        y1 = std::min(y1, high(std::max({pa->y, pb->y, pc->y})));
+    }
+    if (x1 >= x0 && y1 >= y0) pixelsTested_ += std::uint64_t(x1 - x0 + 1) * std::uint64_t(y1 - y0 + 1);
+    return {x0, y0, x1, y1};
+}
+
+template <typename Fragment>
+void ZBuffer::coverTriangleOrthographic(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const {
+    // Parallel rays along forward: the corners project to the film by dropping their depth, so 2D
+    // edge functions of each pixel's ray origin give its barycentrics, and the depth (the unit
+    // ray's t) interpolates linearly. In double, inclusive on every edge, as coverTriangle.
+    const glm::dvec3 right(camera_.right()), up(camera_.up()), forward(camera_.forward());
+    const glm::dvec3 corners[3] = {glm::dvec3(a), glm::dvec3(b), glm::dvec3(c)};
+    glm::dvec2 film[3];
+    double depth[3];
+    for (int k = 0; k < 3; ++k) {
+        film[k] = {glm::dot(corners[k], right), glm::dot(corners[k], up)};
+        depth[k] = glm::dot(corners[k], forward);
+    }
+    const auto edge = [](const glm::dvec2& p, const glm::dvec2& q, const glm::dvec2& x) {
+        return (q.x - p.x) * (x.y - p.y) - (q.y - p.y) * (x.x - p.x);
+    };
+    const double area = edge(film[0], film[1], film[2]);
+    if (!(std::fabs(area) > 0.0) || !std::isfinite(area)) return;  // edge-on: no area on the film
+    const double orientation = area > 0.0 ? 1.0 : -1.0;
+    const double film0 = glm::dot(glm::dvec3(camera_.eye()), forward);  // the film's depth
+    if (depth[0] <= film0 && depth[1] <= film0 && depth[2] <= film0) return;  // wholly behind the film
+    const auto [x0, y0, x1, y1] = pixelBox(a, b, c);
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const glm::dvec3 origin(camera_.filmOrigin(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+            const glm::dvec2 o{glm::dot(origin, right), glm::dot(origin, up)};
+            const double ea = orientation * edge(film[1], film[2], o), eb = orientation * edge(film[2], film[0], o),
+                         ec = orientation * edge(film[0], film[1], o);
+            if (ea < 0.0 || eb < 0.0 || ec < 0.0) continue;
+            const double sum = ea + eb + ec;
+            if (!(sum > 0.0)) continue;
+            const glm::dvec3 barycentrics = glm::dvec3{ea, eb, ec} / sum;
+            const double t = barycentrics.x * depth[0] + barycentrics.y * depth[1] + barycentrics.z * depth[2] -
+                             glm::dot(origin, forward);
+            if (!(t > 0.0)) continue;  // behind the film, where the rays start
+            fragment(x, y, static_cast<float>(t), Vec3(barycentrics));
+        }
+    }
+}
+
 template <typename Fragment>
 void ZBuffer::coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const {
+    if (camera_.orthographic()) {
+        coverTriangleOrthographic(a, b, c, fragment);
+        return;
+    }
     // In double: for a small triangle far away, vb x vc is the difference of nearly equal
     // products, and in float its rounding moves depths by 1e-3 relative, enough to change which
     // of two nearby surfaces is nearer.
@@ -61,17 +120,7 @@ void ZBuffer::coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragmen
 
     // The pixels to test: the projected triangle's bounding box (one pixel of slack for the
     // projection's rounding), or the whole film when a corner is not in front of the eye.
-    int x0 = 0, y0 = 0, x1 = width_ - 1, y1 = height_ - 1;
-    const auto pa = camera_.filmPosition(a), pb = camera_.filmPosition(b), pc = camera_.filmPosition(c);
-    if (pa && pb && pc) {
-        const auto low = [](float v) { return static_cast<int>(std::floor(v)) - 1; };
-        const auto high = [](float v) { return static_cast<int>(std::ceil(v)) + 1; };
-        x0 = std::max(x0, low(std::min({pa->x, pb->x, pc->x})));
-        y0 = std::max(y0, low(std::min({pa->y, pb->y, pc->y})));
-        x1 = std::min(x1, high(std::max({pa->x, pb->x, pc->x})));
-        y1 = std::min(y1, high(std::max({pa->y, pb->y, pc->y})));
-    }
-    if (x1 >= x0 && y1 >= y0) pixelsTested_ += std::uint64_t(x1 - x0 + 1) * std::uint64_t(y1 - y0 + 1);
+    const auto [x0, y0, x1, y1] = pixelBox(a, b, c);
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
             const glm::dvec3 d(pixelDirection(x, y));
@@ -97,7 +146,7 @@ void ZBuffer::rasteriseTriangle(std::uint32_t index) {
 }
 
 float ZBuffer::depthUnder(const ShapeRecord& shape, std::uint32_t id, int x, int y) const {
-    if (shape.ops->depthAlong) {
+    if (shape.ops->depthAlong && !camera_.orthographic()) {
         const Vec3 d = pixelDirection(x, y);
         const float s = shape.ops->depthAlong(shape, camera_.eye(), d);
         return s > 0.0f && std::isfinite(s) ? s * glm::length(d) : kNoHit;

@@ -21,6 +21,7 @@
 //   for a triangle. A sphere's image loses no silhouette pixel to facets.
 //
 // The rasteriser casts no rays, so it has no shadows; it samples each pixel once, at its centre.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -69,6 +70,12 @@ private:
     // Calls fragment(x, y, t, barycentrics) for every pixel centre the triangle abc covers.
     template <typename Fragment>
     void coverTriangle(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const;
+    // The same for an orthographic camera's parallel rays.
+    template <typename Fragment>
+    void coverTriangleOrthographic(const Vec3& a, const Vec3& b, const Vec3& c, Fragment fragment) const;
+    // The pixels whose centres a triangle's projection may cover: its box on the film with one
+    // pixel of slack, or the whole film when a corner is not in front of the camera.
+    std::array<int, 4> pixelBox(const Vec3& a, const Vec3& b, const Vec3& c) const;
     void rasteriseUnbounded(std::uint32_t index);
     void rasteriseShape(std::uint32_t index);
     // Distance along the unit ray through pixel (x, y)'s centre to record `shape` (primitive `id`),

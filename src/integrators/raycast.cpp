@@ -26,7 +26,9 @@ void shadeSeenHit(const std::optional<SurfaceHit>& hit, const Ray& ray, std::uin
         return;
     }
     addEmission(*hit, ray, seen, 1.0f, path);
-    if (ctx.maxDepth < 1) return;
+    // Unlikely, so that GCC does not take the shading below for a cold call and leave
+    // makeShadingPoint out of line (which the unity batch's inlining budget then decides).
+    if (ctx.maxDepth < 1) [[unlikely]] return;
     addLocalIllumination(makeShadingPoint(*hit, ray, ctx), seen, path, ctx.scene.medium(medium));
 }
 

@@ -8,35 +8,44 @@
 namespace lightpath {
 namespace {
 
-// Where the offset ray eye + s d meets the tangent plane through `point` with normal `normal`,
+// Where the offset ray from + s d meets the tangent plane through `point` with normal `normal`,
 // minus `point`: the step on the surface that one pixel's step of the film makes (zero where the
 // offset ray runs along the plane).
-Vec3 stepOnTangentPlane(const Vec3& eye, const Vec3& d, const Vec3& point, const Vec3& normal) {
+Vec3 stepOnTangentPlane(const Vec3& from, const Vec3& d, const Vec3& point, const Vec3& normal) {
     const float along = glm::dot(normal, d);
-    const float s = glm::dot(normal, point - eye) / along;
+    const float s = glm::dot(normal, point - from) / along;
     if (!std::isfinite(s) || s <= 0.0f) return Vec3(0.0f);
-    return eye + s * d - point;
+    return from + s * d - point;
 }
 
 // The texture footprint of a hit: its uv and their change across one pixel. The pixel's steps on
-// the surface are the pinhole camera's ray differentials (pbrt-v4 5.2.3, 10.1.1), found from the
-// eye through the hit's tangent plane; for a point the camera does not see directly (after a
+// the surface are the camera's ray differentials (pbrt-v4 5.2.3, 10.1.1), found from the eye (an
+// orthographic camera: from the film, one pixel over) through the hit's tangent plane; for a point the camera does not see directly (after a
 // bounce) the same steps from the eye, pbrt-v4's Approximate_dp_dxy: the footprint of a camera
 // ray to that point, narrower than a ray cone along the path would give (no blur added by
 // mirrors or curvature), so it never blurs more than a camera ray would. Then dp = dpdu du + dpdv
 // dv solved in the least-squares sense (pbrt-v4 10.1.1, SurfaceInteraction::ComputeDifferentials).
 TextureFootprint footprintOf(const SurfaceHit& hit, const SurfaceParameters& surface, const RenderContext& context) {
     const Camera& camera = context.camera;
-    const Vec3 origin = camera.filmDirection(0.0f, 0.0f);
-    const Vec3 dDdx = camera.filmDirection(1.0f, 0.0f) - origin, dDdy = camera.filmDirection(0.0f, 1.0f) - origin;
     const Vec3 toPoint = hit.point - camera.eye();
     const float depth = glm::dot(toPoint, camera.forward());
     TextureFootprint footprint;
     footprint.uv = surface.uv;
     if (!(depth > 0.0f)) return footprint;  // behind the eye's plane: no pixel sees it; point sampled
-    const Vec3 d = toPoint / depth;            // on the film plane at distance 1, as filmDirection's
-    const Vec3 dpdx = stepOnTangentPlane(camera.eye(), d + dDdx, hit.point, hit.normal);
-    const Vec3 dpdy = stepOnTangentPlane(camera.eye(), d + dDdy, hit.point, hit.normal);
+    Vec3 dpdx, dpdy;
+    if (camera.orthographic()) {
+        // Parallel rays: the neighbouring pixels' rays start one pixel's step along the film.
+        const Vec3 film = hit.point - depth * camera.forward(), start = camera.filmOrigin(0.0f, 0.0f);
+        const Vec3 dOdx = camera.filmOrigin(1.0f, 0.0f) - start, dOdy = camera.filmOrigin(0.0f, 1.0f) - start;
+        dpdx = stepOnTangentPlane(film + dOdx, camera.forward(), hit.point, hit.normal);
+        dpdy = stepOnTangentPlane(film + dOdy, camera.forward(), hit.point, hit.normal);
+    } else {
+        const Vec3 origin = camera.filmDirection(0.0f, 0.0f);
+        const Vec3 dDdx = camera.filmDirection(1.0f, 0.0f) - origin, dDdy = camera.filmDirection(0.0f, 1.0f) - origin;
+        const Vec3 d = toPoint / depth;  // on the film plane at distance 1, as filmDirection's
+        dpdx = stepOnTangentPlane(camera.eye(), d + dDdx, hit.point, hit.normal);
+        dpdy = stepOnTangentPlane(camera.eye(), d + dDdy, hit.point, hit.normal);
+    }
     const float ata00 = glm::dot(surface.dpdu, surface.dpdu), ata01 = glm::dot(surface.dpdu, surface.dpdv),
                 ata11 = glm::dot(surface.dpdv, surface.dpdv);
     float invDet = 1.0f / (ata00 * ata11 - ata01 * ata01);

@@ -169,11 +169,12 @@ void Renderer::traceSample(int x, int y, std::uint64_t seed, int sample, int spp
     Vec2 offset{0.5f};
     if (spp > 1 || integrator_->splats()) offset += filter_.sample(sampler.next2D());
     else sampler.skip2D();
-    if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, camera_.eye()})) {
+    const Ray ray = camera_.generateRay(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
+    // E is where the ray starts: the eye, or an orthographic camera's point on its film.
+    if (!path.push({lpe::EventType::Camera, lpe::Scatter::None, Subject::None, 0, ray.origin})) {
         ++path.counters.cameraDead;
         return;
     }
-    const Ray ray = camera_.generateRay(static_cast<float>(x) + offset.x, static_cast<float>(y) + offset.y);
     ++path.counters.camera;
     if (progressive != nullptr) progressive->traceCameraRay(ray, path, x, y);
     else integrator_->traceCameraRay(ray, path);

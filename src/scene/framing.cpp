@@ -27,11 +27,19 @@ CameraDescription framingCamera(const Bounds& bounds, CameraDescription camera) 
     const Vec3 centre = bounds.empty() ? Vec3(0.0f) : bounds.centroid();
     float radius = bounds.empty() ? 1.0f : 0.5f * glm::length(bounds.hi - bounds.lo);
     if (!(radius > 0.0f)) radius = 1.0f;  // a single point: frame the unit sphere around it
-    const double halfVertical = 0.5 * static_cast<double>(camera.verticalFovDegrees) * kPi / 180.0;
     const double aspect = static_cast<double>(camera.width) / camera.height;
+    const Vec3 back = glm::normalize(camera.eye - camera.lookAt);
+    if (camera.projection == Projection::Orthographic) {
+        // The film, where its rays start, outside the sphere; a view of the sphere's diameter
+        // (times the margin) across the image's shorter side.
+        camera.orthographicHeight = static_cast<float>(2.0 * kFramingMargin * radius / std::min(1.0, aspect));
+        camera.lookAt = centre;
+        camera.eye = centre + static_cast<float>(2.0 * kFramingMargin * radius) * back;
+        return camera;
+    }
+    const double halfVertical = 0.5 * static_cast<double>(camera.verticalFovDegrees) * kPi / 180.0;
     const double halfHorizontal = std::atan(std::tan(halfVertical) * aspect);
     const double distance = kFramingMargin * radius / std::sin(std::min(halfVertical, halfHorizontal));
-    const Vec3 back = glm::normalize(camera.eye - camera.lookAt);
     camera.lookAt = centre;
     camera.eye = centre + static_cast<float>(distance) * back;
     return camera;

@@ -24,7 +24,8 @@ inline constexpr double kFramingMargin = 1.1;
 // along its own viewing direction (from eye to look_at) and up, keeps its field of view and
 // resolution, and stands at distance kFramingMargin r / sin(a), a the smaller of the vertical and horizontal
 // half-angles, so the cone of half-angle a that touches the sphere lies inside the image's
-// frustum. An empty box frames the unit sphere at the origin.
+// frustum. An orthographic camera stands outside the sphere, its height set to see all of it.
+// An empty box frames the unit sphere at the origin.
 CameraDescription framingCamera(const Bounds& bounds, CameraDescription camera);
 
 }  // namespace lightpath

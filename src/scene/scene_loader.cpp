@@ -6,8 +6,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -38,8 +38,23 @@ Vec3 readNonZeroVector(const TomlValue& value) {
 }
 
 CameraDescription readCamera(const TomlTable& table) {
-    table.allowOnly({"eye", "look_at", "up", "fov", "resolution"});
+    table.allowOnly({"eye", "look_at", "up", "projection", "fov", "height", "resolution"});
     CameraDescription camera;
+    if (auto projection = table.find("projection")) {
+        const std::string name = projection->string();
+        if (name == "orthographic") camera.projection = Projection::Orthographic;
+        else if (name != "perspective") projection->expected("\"perspective\" or \"orthographic\"");
+    }
+    const bool orthographic = camera.projection == Projection::Orthographic;
+    // Each projection has its own extent: a field of view, or the orthographic view's height.
+    if (orthographic && table.find("fov"))
+        table.failAtKey("fov", "an orthographic camera has no field of view: `height` sets how much of the scene it shows");
+    if (!orthographic && table.find("height"))
+        table.failAtKey("height", "`height` is an orthographic camera's; a perspective one's extent is `fov` "
+                                  "(or set projection = \"orthographic\")");
+    if (auto height = table.find("height"))
+        camera.orthographicHeight = height->number({0.0, std::numeric_limits<double>::infinity(), true, false,
+                                                    "the view's height in scene units, > 0"});
     if (auto eye = table.find("eye")) camera.eye = eye->vec3();
     if (auto lookAt = table.find("look_at")) camera.lookAt = lookAt->vec3();
     if (camera.lookAt == camera.eye) {

@@ -59,6 +59,7 @@ void checkScene(const Scene& scene) {
     if (!within(c.eye) || !within(c.lookAt) || !within(c.up) || c.eye == c.lookAt)
         broken("camera accepted with a bad eye, look_at or up");
     if (!(c.verticalFovDegrees > 0.0f && c.verticalFovDegrees < 180.0f)) broken("camera fov accepted outside (0, 180)");
+    if (!(c.orthographicHeight > 0.0f && c.orthographicHeight <= 1e6f)) broken("camera height accepted outside (0, 1e6]");
     if (c.width < 1 || c.width > 16384 || c.height < 1 || c.height > 16384) broken("resolution accepted outside 1..16384");
     if (!colour(scene.background) || !colour(scene.ambient)) broken("world colour accepted outside 0..1e6");
 

@@ -123,6 +123,70 @@ TEST_CASE("the rasteriser and ray casting without shadows agree off the edges on
     CHECK(worstInterior <= kInteriorTolerance);
 }
 
+// The scene's camera made orthographic, seeing at its look-at point what the pinhole saw there.
+Scene orthographic(Scene scene) {
+    CameraDescription& c = scene.camera;
+    const float distance = glm::length(c.lookAt - c.eye);
+    c.orthographicHeight = 2.0f * distance * std::tan(glm::radians(c.verticalFovDegrees) * 0.5f);
+    c.projection = Projection::Orthographic;
+    return scene;
+}
+
+TEST_CASE("under an orthographic camera too, the rasteriser and ray casting agree off the edges on every shipped scene" *
+          doctest::test_suite("statistical")) {
+    const AovSet aovs(classesSet());
+    int edgePixels = 0, pixels = 0;
+    for (const std::filesystem::path& path : test::shippedScenes()) {
+        CAPTURE(path.filename().string());
+        const Scene scene = orthographic(loadScene(path.string()));
+        if (!scene.media.empty()) continue;
+        const Comparison c =
+            compare(scene, renderWith(scene, aovs, "raster", std::nullopt), renderWith(scene, aovs, "raycast", false));
+        CAPTURE(c.maxInterior);
+        CHECK(c.interiorDiffering == 0);
+        CHECK(c.interiorPixels > 5 * c.edgePixels);
+        edgePixels += c.edgePixels;
+        pixels += c.interiorPixels + c.edgePixels;
+    }
+    MESSAGE("orthographic, all scenes: " << pixels << " pixels, " << edgePixels << " on edges");
+}
+
+TEST_CASE("under an orthographic camera the rasteriser covers exactly the pixels whose centre's ray meets a sphere") {
+    CameraDescription description;  // at (0, 0, 5) looking down -z
+    description.projection = Projection::Orthographic;
+    description.orthographicHeight = 4.0f;
+    const Camera camera(description);
+    const SceneGeometry geometry({Sphere{Vec3{0.1f, -0.05f, 0.0f}, 1.8f, 0}}, {}, {});
+    const ZBuffer zBuffer(geometry, camera);
+    int seen = 0, wrong = 0;
+    for (int y = 0; y < camera.height(); ++y) {
+        for (int x = 0; x < camera.width(); ++x) {
+            const float t = geometry.intersectPrimitive(camera.generateRay(float(x) + 0.5f, float(y) + 0.5f), 0);
+            const RasterFragment& kept = zBuffer.at(x, y);
+            seen += t != kNoHit;
+            if ((t != kNoHit) != (kept.primitive == 0) || (t != kNoHit && kept.t != t)) ++wrong;
+        }
+    }
+    CHECK(seen > 100000);
+    CHECK(wrong == 0);
+    // A triangle through the film (z = 5): only its part in front, where the rays start, is seen.
+    const SceneGeometry through({}, {}, {Triangle{{-3, -2, 7}, {3, -2, 7}, {0, 2, 3}, 0}});
+    const ZBuffer crossing(through, camera);
+    int front = 0, differing = 0, behind = 0;
+    for (int y = 0; y < camera.height(); ++y) {
+        for (int x = 0; x < camera.width(); ++x) {
+            const float t = through.intersectPrimitive(camera.generateRay(float(x) + 0.5f, float(y) + 0.5f), 0);
+            const RasterFragment& kept = crossing.at(x, y);
+            front += t != kNoHit;
+            behind += kept.primitive == 0 && t == kNoHit;
+            if ((t != kNoHit) != (kept.primitive == 0) || (t != kNoHit && std::fabs(kept.t - t) > 1e-4f * t)) ++differing;
+        }
+    }
+    CHECK(front > 10000);
+    CHECK(behind == 0);
+    CHECK(differing <= front / 1000);  // the line where it crosses the film: t near 0 rounds either way
+}
+
 TEST_CASE("the control: with shadow rays, ray casting differs from the rasteriser off the edges") {
     const AovSet aovs(classesSet());
     for (const char* name : {"lecture-room.toml", "cornell-sphere.toml"}) {

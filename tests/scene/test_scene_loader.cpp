@@ -331,9 +331,27 @@ TEST_CASE_FIXTURE(SceneFiles, "an unknown key is named, with a suggestion when o
           "scene.toml:4:1: spheres[0].raduis: unknown key \"raduis\"; did you mean \"radius\"?");
     CHECK(errorOf("[camera]\n  zoom = 2\n") ==
           "scene.toml:2:3: camera.zoom: unknown key \"zoom\" "
-          "(known: eye, look_at, up, fov, resolution)");
+          "(known: eye, look_at, up, projection, fov, height, resolution)");
     CHECK(errorOf("[materials.red]\nkd = 1\nKs = 0.5\n") ==
           "scene.toml:3:1: materials.red.Ks: unknown key \"Ks\"; did you mean \"ks\"?");
+}
+
+TEST_CASE_FIXTURE(SceneFiles, "an orthographic camera: its height read; a field of view or an unknown projection refused") {
+    const auto camera = [&](std::string_view text) { return load(text).camera; };
+    const lightpath::CameraDescription ortho = camera("[camera]\nprojection = \"orthographic\"\nheight = 3.5\n");
+    CHECK(ortho.projection == lightpath::Projection::Orthographic);
+    CHECK(ortho.orthographicHeight == 3.5f);
+    CHECK(camera("[camera]\nprojection = \"perspective\"\n").projection == lightpath::Projection::Perspective);
+    CHECK(errorOf("[camera]\nprojection = \"fisheye\"\n") ==
+          "scene.toml:2:14: camera.projection: expected \"perspective\" or \"orthographic\", got a string (\"fisheye\")");
+    CHECK(errorOf("[camera]\nprojection = \"orthographic\"\nfov = 40\n") ==
+          "scene.toml:3:7: camera.fov: an orthographic camera has no field of view: `height` sets how much of the "
+          "scene it shows");
+    CHECK(errorOf("[camera]\nheight = 2\n") ==
+          "scene.toml:2:10: camera.height: `height` is an orthographic camera's; a perspective one's extent is `fov` "
+          "(or set projection = \"orthographic\")");
+    CHECK(errorOf("[camera]\nprojection = \"orthographic\"\nheight = 0\n") ==
+          "scene.toml:3:10: camera.height: expected the view's height in scene units, > 0, got 0");
 }
 
 TEST_CASE_FIXTURE(SceneFiles, "an unknown top-level table is an error") {
