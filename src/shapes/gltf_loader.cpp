@@ -914,8 +914,9 @@ private:
                                         std::to_string(node.camera));
         const tinygltf::Camera& c = model_.cameras[std::size_t(node.camera)];
         const std::string at = "cameras[" + std::to_string(node.camera) + "]";
-        if (c.type != "perspective") {
-            warn(at + ": only perspective cameras are read; this " + printableName(c.type) + " camera is left out");
+        if (c.type != "perspective" && c.type != "orthographic") {
+            warn(at + ": only perspective and orthographic cameras are read; this " + printableName(c.type) +
+                 " camera is left out");
             return;
         }
         GltfCamera camera;
@@ -928,10 +929,22 @@ private:
         camera.camera.eye = eye;
         camera.camera.lookAt = eye + Vec3(glm::normalize(forward));
         camera.camera.up = Vec3(glm::normalize(up));
-        const double fov = number(c.perspective.yfov, 1e-6, kPi - 1e-6, at + ".perspective.yfov");
-        camera.camera.verticalFovDegrees = float(glm::degrees(fov));
-        if (c.perspective.aspectRatio > 0.0 && std::isfinite(c.perspective.aspectRatio)) {
-            const double width = std::clamp(std::round(camera.camera.height * c.perspective.aspectRatio), 1.0, 16384.0);
+        double aspectRatio = 0.0;
+        if (c.type == "orthographic") {
+            // glTF 2.0, 3.10.3: xmag and ymag are half the view's width and height (Blender writes
+            // its Orthographic Scale over the image's longer side so).
+            const double xmag = number(c.orthographic.xmag, 1e-9, kMaxMagnitude, at + ".orthographic.xmag");
+            const double ymag = number(c.orthographic.ymag, 1e-9, kMaxMagnitude, at + ".orthographic.ymag");
+            camera.camera.projection = Projection::Orthographic;
+            camera.camera.orthographicHeight = float(2.0 * ymag);
+            aspectRatio = xmag / ymag;
+        } else {
+            const double fov = number(c.perspective.yfov, 1e-6, kPi - 1e-6, at + ".perspective.yfov");
+            camera.camera.verticalFovDegrees = float(glm::degrees(fov));
+            aspectRatio = c.perspective.aspectRatio;
+        }
+        if (aspectRatio > 0.0 && std::isfinite(aspectRatio)) {
+            const double width = std::clamp(std::round(camera.camera.height * aspectRatio), 1.0, 16384.0);
             camera.camera.width = int(width);
         }
         out_.cameras.push_back(camera);

@@ -61,6 +61,8 @@ void checkModel(const GltfModel& model) {
             broken("camera \"" + c.label + "\" sees nowhere");
         if (!(d.verticalFovDegrees > 0.0f && d.verticalFovDegrees < 180.0f) || d.width < 1 || d.height < 1)
             broken("camera \"" + c.label + "\" has no field of view or image");
+        if (!(d.orthographicHeight > 0.0f && std::isfinite(d.orthographicHeight)))
+            broken("camera \"" + c.label + "\" has an orthographic view of no height");
     }
 }
 

@@ -162,17 +162,25 @@ CyclesComparison compareWithCycles(Scene scene, const std::vector<std::vector<do
 // lecturer sees in Blender is what lightpath shows. Reading the file's numbers as W/sr and W/m^2
 // (`lighting = "unitless"`) makes every block 683 times too bright; an emissive square emitting
 // only on its normal's side leaves its back, which the camera sees, black. A floor painted by a
-// colour attribute (its material's base colour) exports it as COLOR_0.
-TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blender: a point lamp, a sun, an emitter") {
-    for (const std::string light : {"point", "sun", "emissive", "vertex-colors"}) {
+// colour attribute (its material's base colour) exports it as COLOR_0. An orthographic camera (Blender's
+// Orthographic Scale over the image's width) exports xmag and ymag: seen through a pinhole, the same
+// view is far off.
+TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blender: a point lamp, a sun, an emitter, an orthographic camera") {
+    for (const std::string light : {"point", "sun", "emissive", "vertex-colors", "orthographic"}) {
         CAPTURE(light);
         const auto cycles = readBlockMeans(kData / "blender" / (light + "-cycles.txt"));
         REQUIRE(cycles.size() == 8);
         REQUIRE(cycles[0].size() == 12);
         // The lamp's edge lies 0.02 pixels apart in the two (the camera passes through the file's floats).
-        const CyclesComparison c = compareWithCycles(loadScene(kData / "blender" / (light + ".toml")), cycles, 1);
+        const Scene scene = loadScene(kData / "blender" / (light + ".toml"));
+        const CyclesComparison c = compareWithCycles(scene, cycles, 1);
         CHECK(c.meanRatio == doctest::Approx(1.0).epsilon(0.01));
         CHECK(c.worstBlock <= 0.04);
+        if (light == "orthographic") {  // the control: the same view through a pinhole is far off
+            Scene pinhole = scene;
+            pinhole.camera.projection = Projection::Perspective;
+            CHECK(compareWithCycles(pinhole, cycles, 1).worstBlock > 0.3);
+        }
     }
 }
 

@@ -345,6 +345,30 @@ TEST_CASE("a glTF material's KHR_materials_clearcoat is its clear coat; a bad fa
                                                  ".index: expected a texture index of 0 or more");
 }
 
+// glTF 2.0, 3.10.3: an orthographic camera's xmag and ymag are half its view's width and height.
+TEST_CASE("a glTF orthographic camera is the scene's orthographic camera: ymag half its height, xmag / ymag its aspect") {
+    const test::TempFolder temp("lightpath-gltf-orthographic");
+    std::ifstream in(kData / "point.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto variant = [&](const std::string& file, const std::string& projection) {
+        std::string changed = text;
+        const std::string from = "\"type\": \"perspective\",";
+        REQUIRE(changed.find(from) != std::string::npos);
+        changed.replace(changed.find(from), from.size(), "\"type\": \"orthographic\", " + projection + ",");
+        std::ofstream(temp.path() / file) << changed;
+        return temp.path() / file;
+    };
+    const Scene scene = loadScene(variant("ortho.gltf", "\"orthographic\": {\"xmag\": 2, \"ymag\": 1.5, \"znear\": 0.1, "
+                                                        "\"zfar\": 100}"));
+    CHECK(scene.camera.projection == Projection::Orthographic);
+    CHECK(scene.camera.orthographicHeight == 3.0f);
+    CHECK(scene.camera.height == 480);
+    CHECK(scene.camera.width == 640);
+    CHECK(!warns(scene, "camera"));
+    const fs::path flat = variant("flat.gltf", "\"orthographic\": {\"xmag\": 2, \"ymag\": 0, \"znear\": 0.1, \"zfar\": 100}");
+    CHECK(errorOf(flat).find(flat.string() + ": cameras[0].orthographic.ymag: expected a number from") == 0);
+}
+
 TEST_CASE("sparse accessors: elements substituted over a bufferView or over zeros; indices out of order refused") {
     const Scene scene = loadScene(kData / "sparse.gltf");
     REQUIRE(scene.triangles.size() == 3);

@@ -2,7 +2,8 @@
 Cycles' renders of the same scenes as 8x8-block means (<light>-cycles.txt), the test's reference.
 
 Each file holds one light of one Blender kind (a point lamp of 500 W, a sun of 2 W/m^2, an
-emissive square of strength 5) over a floor and a box, seen by a camera (cutout-mask and
+emissive square of strength 5) over a floor and a box, seen by a camera (orthographic: the sun's
+scene seen by an orthographic camera of Orthographic Scale 14; cutout-mask and
 cutout-blend: a sun through a black card cut out by its alpha; vertex-colors: the floor painted by a
 colour attribute; see below); Blender's glTF exporter
 writes it in its default Lighting Mode, "Standard" (candela and lux at 683 lm/W), and the
@@ -14,7 +15,7 @@ its cone (measured 1.01 to 1.15 of lightpath's across a 30-degree cone, about 1 
 off its axis), which glTF's spot does not.
 
 Run (Blender 3.4, Debian's `blender`), from this folder:
-  for light in point sun emissive cutout-mask cutout-blend vertex-colors; do blender -b --python make_blender.py -- $light; done
+  for light in point sun emissive cutout-mask cutout-blend vertex-colors orthographic; do blender -b --python make_blender.py -- $light; done
 """
 import math
 import os
@@ -54,7 +55,7 @@ if light == "point":
     bpy.ops.object.light_add(type="POINT", location=(3, -2, 4))
     bpy.context.object.data.energy = 500
     bpy.context.object.data.shadow_soft_size = 0
-elif light == "sun":
+elif light in ("sun", "orthographic"):
     bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.6, 0.3, 0))
     bpy.context.object.data.energy = 2
     bpy.context.object.data.angle = 0
@@ -113,9 +114,15 @@ elif light == "vertex-colors":
     floor.data.materials.clear()
     floor.data.materials.append(painted)
 else:
-    raise SystemExit("expected point, sun, emissive, cutout-mask, cutout-blend or vertex-colors, got " + light)
+    raise SystemExit("expected point, sun, emissive, cutout-mask, cutout-blend, vertex-colors or orthographic, got " +
+                     light)
 bpy.ops.object.camera_add(location=(0, -10, 6), rotation=(math.radians(60), 0, 0))
 scene.camera = bpy.context.object
+if light == "orthographic":
+    # 14 m across the image's width (Blender's Orthographic Scale spans its longer side): the exporter
+    # writes xmag 7 and ymag 7 * 64 / 96.
+    scene.camera.data.type = "ORTHO"
+    scene.camera.data.ortho_scale = 14
 
 bpy.ops.export_scene.gltf(filepath=os.path.join(HERE, light + ".glb"), export_format="GLB", export_lights=True,
                           export_cameras=True, export_apply=True)
