@@ -19,6 +19,16 @@
 #include "util/parallel_chunks.h"
 
 namespace lightpath {
+
+// The point the camera sees, in the final gather, where its material's diffuse part depends on the
+// directions (Material::diffuseDependsOnView: a base under a GGX layer or a coat): pi f toward the
+// eye for light from each direction, which a Lambertian kd would give for all alike.
+struct SeenPoint {
+    const Bsdf& bsdf;
+    Vec3 wo;
+    Rgb from(const Vec3& wi) const { return bsdf.diffuseReflectanceBetween(wo, wi); }
+};
+
 namespace {
 
 // More patches than this would need gigabytes of form factors: refused with a clear message.
@@ -91,16 +101,18 @@ SurfaceHit surfacePoint(const RadiosityPatch& patch, const PatchPoint& p) {
 // (1/pi) cos(theta) times a light sample's weight, plus, for an area light, the emitter's radiance
 // met by a cosine-distributed ray (f cos / pdf = 1): two techniques weighed by Veach's power
 // heuristic (Veach 1997, ch. 9), so neither the 1/d^2 of points near the emitter nor small bright
-// emitters make the estimate noisy. Added to `sum` term by term; `cast` counts the rays.
+// emitters make the estimate noisy. Added to `sum` term by term; `cast` counts the rays. With a
+// `seen` point, each term is weighed by its pi f for the term's direction instead of over kd.
 void addDirectOverKd(const Light& light, const RenderContext& context, const SurfaceHit& from, const Vec3& normal,
-                     Vec2 uLight, Vec2 uCosine, Rgb& sum, std::uint64_t& cast) {
+                     Vec2 uLight, Vec2 uCosine, Rgb& sum, std::uint64_t& cast, const SeenPoint* seen = nullptr) {
     const LightSample s = light.sample(from.point, uLight);
     const float cosTheta = glm::dot(normal, s.wi);
     if (s.distance > 0.0f && cosTheta > 0.0f && !isBlack(s.weight)) {
         ++cast;
         if (!context.geometry.occluded(spawnShadowRay(from, s.point, s.normal, context.geometry.numerics()))) {
             const float weight = light.isDelta() ? 1.0f : powerHeuristic(s.pdf, cosineHemispherePdf(cosTheta));
-            sum += (weight * cosTheta / kPi) * s.weight;
+            const Rgb term = (weight * cosTheta / kPi) * s.weight;
+            sum += seen != nullptr ? term * seen->from(s.wi) : term;
         }
     }
     if (light.isDelta()) return;
@@ -112,7 +124,8 @@ void addDirectOverKd(const Light& light, const RenderContext& context, const Sur
     const Rgb emitted = light.radiance(*hit, -direction);
     if (isBlack(emitted)) return;
     const float lightPdf = light.pdf(from.point, hit->point, hit->normal);
-    sum += powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
+    const Rgb term = powerHeuristic(cosineHemispherePdf(local.z), lightPdf) * emitted;
+    sum += seen != nullptr ? term * seen->from(direction) : term;
 }
 
 // 0 when a ray travelling along `direction` meets the front side (the side the normal faces).
@@ -1021,13 +1034,20 @@ void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const 
     }
     const int side = sideFacing(hit->normal, ray.direction);
     const std::uint32_t cluster = mesh_->patches()[found->patch].cluster;
-    const Rgb texture = textureRatio(*hit, ray, cluster, ctx);
+    const Rgb ratio = reflectanceRatio(*hit, ray, cluster, ctx);
     if (options_.finalGather > 0) {
-        const Rgb albedo = reflectance_[cluster] * texture;
-        emitDirectLight(*hit, side, albedo, path);
-        if (bounces_ > 1) gatherLaterBounces(*hit, side, albedo, path);
+        const Rgb albedo = reflectance_[cluster] * ratio;
+        const Material& material = *ctx.scene.materials[ctx.scene.objects[hit->object].material];
+        std::optional<ShadingPoint> shading;
+        std::optional<SeenPoint> seen;
+        if (material.diffuseDependsOnView()) {
+            shading.emplace(makeShadingPoint(*hit, ray, ctx));
+            seen.emplace(SeenPoint{shading->bsdf, -ray.direction});
+        }
+        emitDirectLight(*hit, side, albedo, path, seen ? &*seen : nullptr);
+        if (bounces_ > 1) gatherLaterBounces(*hit, side, albedo, path, seen ? &*seen : nullptr);
     } else {
-        emitSolution(hit->point, *found, side, bounces_, texture, false, path);
+        emitSolution(hit->point, *found, side, bounces_, ratio, false, path);
     }
     path.pop();
 }
@@ -1096,12 +1116,12 @@ Rgb RadiosityIntegrator::gatheredRadiance(std::size_t light, int bounce, const P
     return field.at(patch, at.patch, side, at.weights, &vertexValues_[vertexValueIndex(light, bounce, 0, 0)]);
 }
 
-Rgb RadiosityIntegrator::textureRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster,
-                                      const RenderContext& context) const {
+Rgb RadiosityIntegrator::reflectanceRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster,
+                                          const RenderContext& context) const {
     const Material& material = *context.scene.materials[context.scene.objects[hit.object].material];
-    if (!material.textured && !material.vertexColored) return Rgb{1.0f};
+    if (!material.textured && !material.vertexColored && !material.diffuseDependsOnView()) return Rgb{1.0f};
     const Rgb mean = reflectance_[cluster];
-    const Rgb here = makeShadingPoint(hit, ray, context).bsdf.diffuseReflectance();
+    const Rgb here = makeShadingPoint(hit, ray, context).bsdf.diffuseReflectanceToward(-ray.direction);
     Rgb ratio{0.0f};
     for (int c = 0; c < 3; ++c) ratio[c] = mean[c] > 0.0f ? here[c] / mean[c] : 0.0f;
     return ratio;
@@ -1129,7 +1149,8 @@ void RadiosityIntegrator::emitSolution(const Vec3& point, const PatchLookup& at,
     while (path.size() > start) path.pop();
 }
 
-void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const {
+void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
+                                          const SeenPoint* seen) const {
     const RenderContext& ctx = path.context;
     const auto lights = ctx.lights.all();
     const Vec3 normal = side == 0 ? hit.normal : -hit.normal;
@@ -1152,16 +1173,16 @@ void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const
         for (std::uint32_t k = 0; k < n * n; ++k) {
             const Vec2 cell{float(k % n), float(k / n)};
             addDirectOverKd(light, ctx, hit, normal, (cell + shiftLight) / float(n), (cell + shiftCosine) / float(n), sum,
-                            cast);
+                            cast, seen);
         }
         path.counters.shadow += cast;
-        const Rgb value = albedo * sum / float(n * n);
+        const Rgb value = seen != nullptr ? sum / float(n * n) : albedo * sum / float(n * n);
         if (!isBlack(value) || !ctx.skipEnabled) path.emit(event, value);
     }
 }
 
-void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo,
-                                             PathState& path) const {
+void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
+                                             const SeenPoint* seen) const {
     const RenderContext& ctx = path.context;
     // A Lambertian surface's bounce k is albedo times the mean of bounce k - 1's radiance over
     // cosine-weighted directions. The directions are stratified, a square pattern shifted as a
@@ -1185,8 +1206,9 @@ void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, co
             ++path.counters.reflectionDead;
             continue;
         }
-        const Rgb texture = textureRatio(*there, gatherRay, mesh_->patches()[found->patch].cluster, ctx);
-        emitSolution(there->point, *found, sideFacing(there->normal, direction), bounces_ - 1, weight * texture, true,
+        const Rgb ratio = reflectanceRatio(*there, gatherRay, mesh_->patches()[found->patch].cluster, ctx);
+        const Rgb here = seen != nullptr ? seen->from(direction) / float(rays) : weight;
+        emitSolution(there->point, *found, sideFacing(there->normal, direction), bounces_ - 1, here * ratio, true,
                      path);
         path.pop();
     }

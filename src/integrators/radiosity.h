@@ -33,6 +33,7 @@ namespace lightpath {
 
 class PatchGradients;
 class ProgressBar;
+struct SeenPoint;  // radiosity.cpp: the final gather's view of a point whose diffuse part depends on the directions
 
 struct RadiosityStats {
     std::size_t patches = 0;
@@ -97,9 +98,11 @@ private:
     // What the display shows of (light, bounce) at a patch point on `side`: the element's value
     // (flat) or the vertex values interpolated there (gouraud), scaled per element (smooth).
     Rgb shownRadiance(std::size_t light, int bounce, const PatchLookup& at, int side) const;
-    // A textured material's kd at the hit over the mean kd its element was solved with, per
-    // channel (1: untextured): the texture a patch's radiosity averages, read back at the point.
-    Rgb textureRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster, const RenderContext& context) const;
+    // The diffuse reflectance at the hit toward the ray's origin over the mean its element was
+    // solved with, per channel (1: a constant Lambertian kd): a texture or vertex colour the
+    // patch's radiosity averages, and a base that reflects less at grazing views (under a GGX
+    // layer or a coat), read back at the point for the direction it is seen from.
+    Rgb reflectanceRatio(const SurfaceHit& hit, const Ray& ray, std::uint32_t cluster, const RenderContext& context) const;
     // Emits bounces 1..last of every wanted light as shown at `at`, times `weight`, with an
     // unlabelled D event between them; the path's last event is the point's own reflection.
     // gathered: read as the solve's gather reads it (gatheredRadiance), else as the display shows it.
@@ -131,10 +134,14 @@ private:
     void completeGatherFields();
     // With the final gather, bounce 1 at a camera hit: every wanted light's direct light there,
     // sampled as the patches' own is (radiosity.cpp, addDirectOverKd), times the hit's kd.
-    void emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const;
+    // `seen`: the camera's point where its diffuse part depends on the directions, which then
+    // weighs each direction instead of `albedo` (null: albedo, a Lambertian kd).
+    void emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
+                         const SeenPoint* seen) const;
     // The final gather (RadiosityOptions::finalGather): bounces 2..bounces_ at a camera hit, each
     // ray labelled by the object it meets and reading the solution's bounces there.
-    void gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path) const;
+    void gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
+                            const SeenPoint* seen) const;
     // The vertex radiosities (vertexValues_) of every solved light and bounce, or of one.
     void computeVertexValues();
     void computeVertexValues(std::size_t light, int bounce);

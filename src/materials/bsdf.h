@@ -65,6 +65,11 @@ public:
     Rgb ambientReflectance() const { return material_.ambientReflectanceAt(side_); }
     // The constant diffuse part's reflectance here (radiosity's; a texture read at this point).
     Rgb diffuseReflectance() const { return material_.diffuseReflectanceAt(side_); }
+    // The same toward wo, the rest of the hemisphere averaged (Material::diffuseReflectanceToward).
+    Rgb diffuseReflectanceToward(const Vec3& wo) const { return material_.diffuseReflectanceToward(side_, wo); }
+    Rgb diffuseReflectanceBetween(const Vec3& wo, const Vec3& wi) const {
+        return material_.diffuseReflectanceBetween(side_, wo, wi);
+    }
 
 private:
     // Probability of choosing each lobe for wo, in proportion to its albedo. Integrators ask

@@ -94,6 +94,20 @@ public:
         (void)side;
         return diffuseReflectance();
     }
+    // The diffuse part's albedo toward wo at one point, the rest of the hemisphere averaged: what
+    // radiosity shows toward the eye. Lambertian, the same from every wo; a base under a specular
+    // layer or a coat (MicrofacetMaterial) gets less of the light at grazing wo.
+    virtual bool diffuseDependsOnView() const { return false; }
+    virtual Rgb diffuseReflectanceToward(const SurfaceSide& side, const Vec3& wo) const {
+        (void)wo;
+        return diffuseReflectanceAt(side);
+    }
+    // pi f of the diffuse part for light from wi reflected toward wo (Lambertian: kd); radiosity's
+    // final gather weighs each of its directions by it at the point the camera sees.
+    virtual Rgb diffuseReflectanceBetween(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+        (void)wi;
+        return diffuseReflectanceToward(side, wo);
+    }
     // ka of the illumination formula's ambient term, which only the classic integrators add.
     virtual Rgb ambientReflectance() const { return Rgb{0.0f}; }
     // ka at one surface point (a textured ka varies; ambientReflectance is then its mean).

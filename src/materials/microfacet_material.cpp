@@ -224,6 +224,20 @@ Rgb MicrofacetMaterial::diffuseReflectanceAt(const SurfaceSide& side) const {
     return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo) * (underCoat * underCoat);
 }
 
+Rgb MicrofacetMaterial::diffuseReflectanceToward(const SurfaceSide& side, const Vec3& wo) const {
+    const Shading shading = shadingAt(side);
+    const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
+    const Rgb base = shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
+                     (Rgb{1.0f} - shading.averageAlbedo);
+    if (shading.coat == 0.0f) return base;
+    return base * ((1.0f - coatAlbedo(cosOut, shading)) * (1.0f - shading.coatAverage));
+}
+
+Rgb MicrofacetMaterial::diffuseReflectanceBetween(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
+    return diffuseWeight(shadingAt(side), std::max(0.0f, glm::dot(wo, side.normal)),
+                         std::max(0.0f, glm::dot(wi, side.normal)));
+}
+
 bool MicrofacetMaterial::has(int lobe) const {
     switch (lobe) {
         case kDiffuse: return metallic_.textured() ? !baseColor_.black() : !isBlack(constant_.diffuse);

@@ -82,6 +82,11 @@ public:
     // Radiosity's constant reading of the base: its albedo averaged over cosine-weighted wo.
     Rgb diffuseReflectance() const override;
     Rgb diffuseReflectanceAt(const SurfaceSide& side) const override;
+    // c (1 - E(wo)) (1 - mean E), times (1 - w E_c(wo)) (1 - mean w E_c) under a coat.
+    bool diffuseDependsOnView() const override { return has(kDiffuse); }
+    Rgb diffuseReflectanceToward(const SurfaceSide& side, const Vec3& wo) const override;
+    // c (1 - E(wo)) (1 - E(wi)), times (1 - w E_c(wo)) (1 - w E_c(wi)) under a coat: pi times the base.
+    Rgb diffuseReflectanceBetween(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const override;
 
     // The F0 of its dielectric part (metallic 0).
     const Rgb& dielectricF0() const { return dielectricF0_; }

@@ -1316,3 +1316,91 @@ TEST_CASE("radiosity's later bounces: szymczak-one-light on 4096 first elements,
 
 }  // namespace
 }  // namespace lightpath
+
+namespace lightpath {
+namespace {
+
+// A lacquered floor (a GGX layer of F0 0.2 over a white base, under a polished coat) under a sun
+// from the side, seen from near grazing: its base reflects c (1 - E(wo)) (1 - E(wi)) times the
+// coat's (1 - E_c(wo)) (1 - E_c(wi)), darker toward the horizon and for the sun's slant.
+constexpr const char* kLacquerFloor = R"(
+[camera]
+eye = [0, 0.8, 4]
+look_at = [0, 0, -1]
+fov = 50
+resolution = [48, 32]
+[materials.lacquer]
+type = "microfacet"
+base_color = 0.8
+metallic = 0
+roughness = 0.5
+dielectric_f0 = 0.2
+clearcoat = 1
+clearcoat_roughness = 0
+[[planes]]
+name = "floor"
+point = [0, 0, 0]
+normal = [0, 1, 0]
+material = "lacquer"
+[[lights]]
+type = "directional"
+direction = [0.8, -0.5, 0.2]
+irradiance = 3
+)";
+
+// Mean of channel means per 4 x 4 region of one layer.
+std::vector<double> regionMeans(const Film& film, std::size_t layer) {
+    std::vector<double> regions;
+    for (int y0 = 0; y0 + 4 <= film.height(); y0 += 4)
+        for (int x0 = 0; x0 + 4 <= film.width(); x0 += 4) {
+            double sum = 0.0;
+            for (int y = y0; y < y0 + 4; ++y)
+                for (int x = x0; x < x0 + 4; ++x) {
+                    const Rgb v = film.at(layer, x, y);
+                    sum += (v.r + v.g + v.b) / 3.0;
+                }
+            regions.push_back(sum / 16.0);
+        }
+    return regions;
+}
+
+double worstRegionRatio(const Film& a, const Film& b) {
+    const std::vector<double> ra = regionMeans(a, 0), rb = regionMeans(b, 0);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < ra.size(); ++i)
+        if (rb[i] > 0.0) worst = std::max(worst, std::abs(ra[i] / rb[i] - 1.0));
+    return worst;
+}
+
+}  // namespace
+
+// Radiosity's patches are Lambertian, but at the point the camera sees, its final gather weighs
+// each direction light arrives from by the material's own diffuse part toward the eye
+// (Material::diffuseReflectanceBetween), so a microfacet base under a layer and a coat shows what
+// the path tracer shows. The control: the same floor as a Lambertian of the material's average
+// albedo (diffuseReflectance, what radiosity showed before) is far off toward the horizon.
+TEST_CASE("radiosity shows a base under a GGX layer and a coat as the path tracer does: toward the eye, from the sun; "
+          "control: its average albedo as a Lambertian kd fails") {
+    const Scene scene = loadSceneFromText(kLacquerFloor, LIGHTPATH_SOURCE_DIR "/tests/render/data/lacquer-floor.toml");
+    const std::vector<lpe::NamedExpression> direct{{"direct", "ED<L>"}};
+    RadiosityOptions radiosity;
+    const Film path = renderAovs(scene, direct, "path", 16, 2, radiosity);
+    const Film solved = renderAovs(scene, direct, "radiosity", 16, 2, radiosity);
+    const double worst = worstRegionRatio(solved, path);
+    CAPTURE(worst);
+    CHECK(worst < 0.01);
+    // The control: kd = the material's mean albedo, what a Lambertian patch shows from every side.
+    const Rgb average = scene.materials[0]->diffuseReflectance();
+    std::string lambertian = kLacquerFloor;
+    const std::string from = lambertian.substr(lambertian.find("[materials.lacquer]"),
+                                               lambertian.find("[[planes]]") - lambertian.find("[materials.lacquer]"));
+    lambertian.replace(lambertian.find(from), from.size(),
+                       "[materials.lacquer]\nkd = [" + std::to_string(average.r) + ", " + std::to_string(average.g) +
+                           ", " + std::to_string(average.b) + "]\n");
+    const Scene plain = loadSceneFromText(lambertian, LIGHTPATH_SOURCE_DIR "/tests/render/data/lacquer-floor.toml");
+    const double control = worstRegionRatio(renderAovs(plain, direct, "radiosity", 16, 2, radiosity), path);
+    CAPTURE(control);
+    CHECK(control > 0.1);
+}
+
+}  // namespace lightpath
