@@ -32,10 +32,10 @@ namespace lightpath {
 namespace {
 
 // The extensions the Reader reads; docs: scenes/README.md, [[gltf]].
-constexpr std::array<std::string_view, 7> kReadExtensions{"KHR_lights_punctual", "KHR_materials_clearcoat",
-                                                          "KHR_materials_emissive_strength",
-                                                          "KHR_materials_ior", "KHR_materials_specular",
-                                                          "KHR_materials_transmission", "KHR_texture_transform"};
+constexpr std::array<std::string_view, 8> kReadExtensions{"KHR_lights_punctual",        "KHR_materials_clearcoat",
+                                                          "KHR_materials_emissive_strength", "KHR_materials_ior",
+                                                          "KHR_materials_specular",      "KHR_materials_transmission",
+                                                          "KHR_mesh_quantization",       "KHR_texture_transform"};
 
 // glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
 constexpr const char* kDefaultMaterialLabel = "gltf-default";
@@ -116,6 +116,11 @@ private:
                 fail("extensionsRequired[" + std::to_string(i) + "]",
                      "the file requires \"" + printableName(model_.extensionsRequired[i]) +
                          "\", which lightpath does not read (it reads " + known + ")");
+        const auto lists = [](const std::vector<std::string>& names, std::string_view name) {
+            return std::find(names.begin(), names.end(), name) != names.end();
+        };
+        quantized_ = lists(model_.extensionsUsed, "KHR_mesh_quantization") ||
+                     lists(model_.extensionsRequired, "KHR_mesh_quantization");
         std::string left;
         std::size_t count = 0;
         for (const std::string& name : model_.extensionsUsed)
@@ -675,52 +680,109 @@ private:
         return out;
     }
 
-    std::vector<Vec3> floats3(int index, const std::string& where) const {
-        return floatElements<3>(
-            index, TINYGLTF_TYPE_VEC3, where, "expected FLOAT components",
+    // The elements of a VECn accessor, FLOAT, or of the integer types `integers` allows (a mask of
+    // kByte, kUnsignedByte, kShort, kUnsignedShort, each only normalized where `normalizedOnly`), as
+    // KHR_mesh_quantization stores positions, normals, tangents and uvs; else a located error
+    // saying `expected`. Each element is turned into lightpath's value by `convert`.
+    template <std::size_t N, class Convert, class NotFinite>
+    auto quantizedElements(int index, int type, const std::string& where, unsigned integers, bool normalizedOnly,
+                           std::string_view expected, Convert convert, NotFinite notFinite) const {
+        const tinygltf::Accessor* a = index >= 0 && std::size_t(index) < model_.accessors.size()
+                                          ? &model_.accessors[std::size_t(index)]
+                                          : nullptr;
+        const unsigned kind = a == nullptr ? 0u : integerKind(a->componentType);
+        if (kind == 0u || (kind & integers) == 0u || (normalizedOnly && !a->normalized))
+            return floatElements<N>(index, type, where, expected, convert, notFinite);
+        const View v = view(index, type, where);
+        std::vector<decltype(convert(std::array<float, N>{}))> out(v.count);
+        for (std::size_t i = 0; i < v.count; ++i) {
+            std::array<float, N> element;
+            for (std::size_t c = 0; c < N; ++c)
+                element[c] = component(v.data + i * v.stride, v.componentType, a->normalized, int(c));
+            out[i] = convert(element);
+        }
+        return out;
+    }
+
+    // The integer component types, as masks for quantizedElements.
+    static constexpr unsigned kByte = 1, kUnsignedByte = 2, kShort = 4, kUnsignedShort = 8;
+    static unsigned integerKind(int componentType) {
+        switch (componentType) {
+            case TINYGLTF_COMPONENT_TYPE_BYTE: return kByte;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return kUnsignedByte;
+            case TINYGLTF_COMPONENT_TYPE_SHORT: return kShort;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return kUnsignedShort;
+            default: return 0u;
+        }
+    }
+
+    // Component `c` of an integer element at `p` (little-endian, as glTF's buffers are): its value,
+    // or normalized as glTF 2.0, 3.11 maps it, x / 255 and x / 65535 unsigned, max(x / 127, -1) and
+    // max(x / 32767, -1) signed.
+    static float component(const unsigned char* p, int componentType, bool normalized, int c) {
+        switch (componentType) {
+            case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                const auto x = static_cast<std::int8_t>(p[c]);
+                return normalized ? std::max(float(x) / 127.0f, -1.0f) : float(x);
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? float(p[c]) * (1.0f / 255.0f) : float(p[c]);
+            case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                std::int16_t x;
+                std::memcpy(&x, p + 2 * c, sizeof x);
+                return normalized ? std::max(float(x) / 32767.0f, -1.0f) : float(x);
+            }
+            default: {
+                std::uint16_t x;
+                std::memcpy(&x, p + 2 * c, sizeof x);
+                return normalized ? float(x) * (1.0f / 65535.0f) : float(x);
+            }
+        }
+    }
+
+    // POSITION: FLOAT, or (KHR_mesh_quantization) BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT,
+    // normalized or not, which the node's transform scales back.
+    std::vector<Vec3> positions(int index, const std::string& where) const {
+        return quantizedElements<3>(
+            index, TINYGLTF_TYPE_VEC3, where, quantized_ ? kByte | kUnsignedByte | kShort | kUnsignedShort : 0u, false,
+            quantized_ ? "expected FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT components"
+                       : "expected FLOAT components",
+            [](const std::array<float, 3>& e) { return Vec3(e[0], e[1], e[2]); },
+            [](const std::array<float, 3>& e) { return " is " + formatVec3(Vec3(e[0], e[1], e[2])) + "; expected numbers "; });
+    }
+
+    // NORMAL: FLOAT, or (KHR_mesh_quantization) normalized BYTE or SHORT.
+    std::vector<Vec3> normals(int index, const std::string& where) const {
+        return quantizedElements<3>(
+            index, TINYGLTF_TYPE_VEC3, where, quantized_ ? kByte | kShort : 0u, true,
+            quantized_ ? "expected FLOAT, or normalized BYTE or SHORT, components" : "expected FLOAT components",
             [](const std::array<float, 3>& e) { return Vec3(e[0], e[1], e[2]); },
             [](const std::array<float, 3>& e) { return " is " + formatVec3(Vec3(e[0], e[1], e[2])) + "; expected numbers "; });
     }
 
     // TANGENT: xyz a unit tangent, w the bitangent's sign, +1 or -1 (glTF 2.0, 3.7.2.1); any other
-    // finite w is read by its sign (0 as +1), as viewers do.
+    // finite w is read by its sign (0 as +1), as viewers do. FLOAT, or (KHR_mesh_quantization)
+    // normalized BYTE or SHORT.
     std::vector<Vec4> tangents(int index, const std::string& where) const {
-        return floatElements<4>(
-            index, TINYGLTF_TYPE_VEC4, where, "expected FLOAT components",
+        return quantizedElements<4>(
+            index, TINYGLTF_TYPE_VEC4, where, quantized_ ? kByte | kShort : 0u, true,
+            quantized_ ? "expected FLOAT, or normalized BYTE or SHORT, components" : "expected FLOAT components",
             [](const std::array<float, 4>& e) { return Vec4(e[0], e[1], e[2], e[3] < 0.0f ? -1.0f : 1.0f); },
             [](const std::array<float, 4>&) { return std::string(" is not 4 numbers "); });
-    }
-
-    // Component `c` of a normalized UNSIGNED_BYTE or UNSIGNED_SHORT element at `p`, from 0 to 1
-    // (glTF 2.0, 3.11: x / 255, x / 65535; little-endian, as glTF's buffers are).
-    static float unitComponent(const unsigned char* p, int componentType, int c) {
-        if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return float(p[c]) * (1.0f / 255.0f);
-        std::uint16_t s;
-        std::memcpy(&s, p + 2 * c, sizeof s);
-        return float(s) * (1.0f / 65535.0f);
     }
 
     // A TEXCOORD_n as lightpath's uv: glTF's v runs down the image from its top (glTF 2.0, 3.7.2.1)
     // where lightpath's runs up (OBJ's vt; io/image_texture.cpp reads t = 1 - v), so v' = 1 - v.
     // glTF 2.0, 3.7.2.1 also allows normalized UNSIGNED_BYTE and UNSIGNED_SHORT (x / 255, x / 65535).
+    // KHR_mesh_quantization adds BYTE and SHORT, and all four integer types not normalized (the
+    // material's KHR_texture_transform scaling them back).
     std::vector<Vec2> textureCoordinates(int index, const std::string& where) const {
-        const tinygltf::Accessor* a = index >= 0 && std::size_t(index) < model_.accessors.size()
-                                          ? &model_.accessors[std::size_t(index)]
-                                          : nullptr;
-        const bool integers = a != nullptr && (a->componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-                                               a->componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-        if (!integers || !a->normalized)
-            return floatElements<2>(
-                index, TINYGLTF_TYPE_VEC2, where, "expected FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, components",
-                [](const std::array<float, 2>& e) { return Vec2(e[0], 1.0f - e[1]); },
-                [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
-        const View v = view(index, TINYGLTF_TYPE_VEC2, where);
-        std::vector<Vec2> out(v.count);
-        for (std::size_t i = 0; i < v.count; ++i) {
-            const unsigned char* p = v.data + i * v.stride;
-            out[i] = Vec2(unitComponent(p, v.componentType, 0), 1.0f - unitComponent(p, v.componentType, 1));
-        }
-        return out;
+        return quantizedElements<2>(
+            index, TINYGLTF_TYPE_VEC2, where,
+            quantized_ ? kByte | kUnsignedByte | kShort | kUnsignedShort : kUnsignedByte | kUnsignedShort, !quantized_,
+            quantized_ ? "expected FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT components"
+                       : "expected FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, components",
+            [](const std::array<float, 2>& e) { return Vec2(e[0], 1.0f - e[1]); },
+            [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
     }
 
     // COLOR_0: linear RGB or RGBA (its alpha not read), of FLOAT or of normalized UNSIGNED_BYTE or
@@ -740,7 +802,7 @@ private:
                     std::memcpy(&x, p + 4 * c, sizeof x);
                 } else if (normalized && (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
                                           v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)) {
-                    x = unitComponent(p, v.componentType, c);
+                    x = component(p, v.componentType, true, c);
                 } else {
                     fail(at, "expected FLOAT, or normalized UNSIGNED_BYTE or UNSIGNED_SHORT, components");
                 }
@@ -816,10 +878,10 @@ private:
             }
             const auto position = primitive.attributes.find("POSITION");
             if (position == primitive.attributes.end()) fail(at + ".attributes", "expected a POSITION accessor");
-            const std::vector<Vec3> positions = floats3(position->second, at + ".attributes.POSITION");
+            const std::vector<Vec3> positions = this->positions(position->second, at + ".attributes.POSITION");
             const std::size_t count = positions.size();
             const std::vector<Vec3> normals =
-                perVertex(primitive, "NORMAL", count, at, "normals", [&](int i, const std::string& w) { return floats3(i, w); });
+                perVertex(primitive, "NORMAL", count, at, "normals", [&](int i, const std::string& w) { return this->normals(i, w); });
             if (primitive.material >= 0 && std::size_t(primitive.material) >= model_.materials.size())
                 fail(at + ".material", "expected a material index below " + std::to_string(model_.materials.size()) +
                                            ", got " + std::to_string(primitive.material));
@@ -982,6 +1044,8 @@ private:
     GltfModel out_;
     std::vector<bool> visited_;
     std::vector<std::string> materialLabels_, objectLabels_, cameraLabels_;
+    // The file uses KHR_mesh_quantization: integer positions, normals, tangents and uvs are read.
+    bool quantized_ = false;
     std::vector<std::string> lightLabels_{"ambient"};  // the ambient term's label (scene/light_type.h)
     std::uint32_t defaultMaterial_ = kNoMeshMaterial;
     const ImageBytes& imageBytes_;

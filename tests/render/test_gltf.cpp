@@ -372,6 +372,30 @@ TEST_CASE("KHR_texture_transform (offset, rotation, scale, its texCoord) renders
     CHECK(worstBlockDifference(moved, baked) <= 0.01);
 }
 
+// KHR_mesh_quantization, as gltfpack writes a file: SHORT positions 16384 times the floor's that its
+// node scales back, normalized BYTE normals (each element padded to 4 bytes) and normalized SHORT
+// uvs. Without the extension in extensionsUsed the integer positions are refused.
+TEST_CASE("a KHR_mesh_quantization file (SHORT positions, BYTE normals, SHORT uvs) renders as the float file") {
+    const Film toml = renderSmall(kData / "textured.toml", "raycast", 4);
+    CHECK(worstBlockDifference(renderSmall(kData / "textured-quantized.gltf", "raycast", 4), toml) <= 0.01);
+    // A tilted normal with negative components, as signed bytes (1/127 steps: within 1% per block).
+    CHECK(worstBlockDifference(renderSmall(kData / "normal-tilted-quantized.gltf", "raycast", 4),
+                               renderSmall(kData / "normal-tilted.gltf", "raycast", 4)) <= 0.01);
+    std::ifstream in(kData / "textured-quantized.gltf");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const std::string listed : {",\n  \"KHR_mesh_quantization\"", "\"KHR_mesh_quantization\""}) {
+        REQUIRE(text.find(listed) != std::string::npos);
+        text.erase(text.find(listed), listed.size());
+    }
+    const test::TempFolder temp("lightpath-gltf-quantized");
+    std::ofstream(temp.path() / "unlisted.gltf") << text;
+    std::ofstream(temp.path() / "checker4.png", std::ios::binary)
+        << std::ifstream(kData / "checker4.png", std::ios::binary).rdbuf();
+    CHECK_THROWS_WITH_AS(loadScene(temp.path() / "unlisted.gltf"),
+                         doctest::Contains("meshes[0].primitives[0].attributes.POSITION: expected FLOAT components"),
+                         SceneError);
+}
+
 TEST_CASE("glTF uvs as normalized UNSIGNED_BYTE and UNSIGNED_SHORT render as float uvs") {
     const Film toml = renderSmall(kData / "textured.toml", "raycast", 4);
     for (const char* file : {"textured-uv8.gltf", "textured-uv16.gltf"}) {

@@ -203,7 +203,7 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
                                    ": extensionsRequired[0]: the file requires \"KHR_draco_mesh_compression\", which "
                                    "lightpath does not read (it reads KHR_lights_punctual, KHR_materials_clearcoat, "
                                    "KHR_materials_emissive_strength, KHR_materials_ior, KHR_materials_specular, "
-                                   "KHR_materials_transmission, KHR_texture_transform)");
+                                   "KHR_materials_transmission, KHR_mesh_quantization, KHR_texture_transform)");
     // Used only: rendered, the extension named in a warning; the ones it reads are not.
     const Scene scene = loadScene(variant("used.gltf", ""));
     CHECK(warns(scene, "extensionsUsed: KHR_draco_mesh_compression is not read by lightpath: the render leaves it out"));

@@ -30,6 +30,11 @@ texcoord-missing.gltf a baseColorTexture naming texCoord 1 on a primitive withou
                       located error).
 textured-transform.gltf  the checker through KHR_texture_transform (offset, rotation, scale, and
                       texCoord 1 in place of 0); textured-transform-baked.gltf has the transformed uvs.
+normal-tilted-quantized.gltf  normal-tilted.gltf under KHR_mesh_quantization: its normal (negative
+                      components included) as normalized BYTE, its positions as SHORT.
+textured-quantized.gltf  textured.gltf as gltfpack writes it under KHR_mesh_quantization (required):
+                      SHORT positions 16384 times the floor's, scaled back by its node, normalized
+                      BYTE normals and normalized SHORT uvs; it renders as textured.toml.
 textured-uv8.gltf, textured-uv16.gltf  textured.gltf with its uvs as normalized UNSIGNED_BYTE and
                       UNSIGNED_SHORT (glTF 2.0, 3.7.2.1): they render as textured.toml.
 emissive-quadrants.png  256x256, linear greys 64 | 128 (bottom left, right) and 191 | 255 (top).
@@ -84,7 +89,11 @@ def mapped_normal():
     return tuple(c / length for c in world)
 
 
-def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=None, uv_component=5126):
+QUANTUM = 16384  # textured-quantized.gltf: SHORT positions of the floor's corners times this, scaled back by its node
+
+
+def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=None, uv_component=5126,
+             quantized=False):
     data = bytearray()
     views, accessors = [], []
 
@@ -96,12 +105,25 @@ def document(material, images, wrap, normal=(0, 1, 0), uv_sets=(UVS,), tangent=N
         accessors.append({"bufferView": len(views) - 1, "componentType": component, "count": count, "type": kind, **extra})
         return len(accessors) - 1
 
-    pos = add(b"".join(struct.pack("<3f", *p) for p in POSITIONS), 4, "VEC3", 5126,
-              min=[-1, 0, -1], max=[1, 0, 1])
-    nrm = add(b"".join(struct.pack("<3f", *normal) for _ in POSITIONS), 4, "VEC3", 5126)
+    if quantized:
+        # KHR_mesh_quantization as gltfpack writes it: SHORT positions (each element padded to 8
+        # bytes), normalized BYTE normals (padded to 4), normalized SHORT uvs.
+        pos = add(b"".join(struct.pack("<3hxx", *(c * QUANTUM for c in p)) for p in POSITIONS), 4, "VEC3", 5122,
+                  min=[-QUANTUM, 0, -QUANTUM], max=[QUANTUM, 0, QUANTUM])
+        views[-1]["byteStride"] = 8
+        nrm = add(b"".join(struct.pack("<3bx", *(round(c * 127) for c in normal)) for _ in POSITIONS), 4, "VEC3", 5120,
+                  normalized=True)
+        views[-1]["byteStride"] = 4
+    else:
+        pos = add(b"".join(struct.pack("<3f", *p) for p in POSITIONS), 4, "VEC3", 5126,
+                  min=[-1, 0, -1], max=[1, 0, 1])
+        nrm = add(b"".join(struct.pack("<3f", *normal) for _ in POSITIONS), 4, "VEC3", 5126)
     attributes = {"POSITION": pos, "NORMAL": nrm}
     for n, uvs in enumerate(uv_sets):
-        if uv_component == 5126:
+        if quantized:
+            attributes["TEXCOORD_%d" % n] = add(b"".join(struct.pack("<2h", *(round(c * 32767) for c in t)) for t in uvs),
+                                                4, "VEC2", 5122, normalized=True)
+        elif uv_component == 5126:
             attributes["TEXCOORD_%d" % n] = add(b"".join(struct.pack("<2f", *t) for t in uvs), 4, "VEC2", 5126)
         else:  # normalized UNSIGNED_BYTE (5121, each element padded to 4 bytes) or UNSIGNED_SHORT (5123)
             top, fmt = (255, "<2Bxx") if uv_component == 5121 else (65535, "<2H")
@@ -169,6 +191,13 @@ def main():
     for unused in ("textures", "samplers", "images"):
         del tilted[unused]
     (HERE / "normal-tilted.gltf").write_text(json.dumps(tilted, indent=1) + "\n")
+    tilted = document(plain, [], 10497, mapped_normal(), quantized=True)
+    for unused in ("textures", "samplers", "images"):
+        del tilted[unused]
+    tilted["extensionsUsed"].append("KHR_mesh_quantization")
+    tilted["extensionsRequired"] = ["KHR_mesh_quantization"]
+    tilted["nodes"][0]["scale"] = [1 / QUANTUM] * 3
+    (HERE / "normal-tilted-quantized.gltf").write_text(json.dumps(tilted, indent=1) + "\n")
     metal = {"name": "MetalRough", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.6, 0.3, 1],
                                                             "metallicRoughnessTexture": {"index": 0}}}
     # CLAMP_TO_EDGE: the metal's edge must not blend with the dielectric's across the wrap.
@@ -211,6 +240,11 @@ def main():
     for name, component in (("textured-uv8.gltf", 5121), ("textured-uv16.gltf", 5123)):
         (HERE / name).write_text(json.dumps(
             document(base, [{"uri": "checker4.png"}], 10497, uv_component=component), indent=1) + "\n")
+    quantized = document(base, [{"uri": "checker4.png"}], 10497, quantized=True)
+    quantized["extensionsUsed"].append("KHR_mesh_quantization")
+    quantized["extensionsRequired"] = ["KHR_mesh_quantization"]
+    quantized["nodes"][0]["scale"] = [1 / QUANTUM] * 3
+    (HERE / "textured-quantized.gltf").write_text(json.dumps(quantized, indent=1) + "\n")
     emissive()
 
 
