@@ -545,8 +545,14 @@ void BdptIntegrator::chooseLightWalkFraction(const RenderContext& ctx) {
     }
     if (ctx.parameters != nullptr && ctx.parameters->has("light-walk-fraction")) {
         fraction_ = ctx.parameters->number("light-walk-fraction");
-        stats_.lightWalkFraction = fraction_;
         stats_.reason = "given (--light-walk-fraction)";
+        // Walks beyond one per camera sample only splat (t = 1), which no join reaches under an
+        // orthographic camera: they would cost and add nothing.
+        if (fraction_ > 1.0 && !ctx.camera.connectible()) {
+            fraction_ = 1.0;
+            stats_.reason = "given above 1, 1 used: the walks beyond only splat, which an orthographic camera cannot take";
+        }
+        stats_.lightWalkFraction = fraction_;
         return;
     }
     const LightWalkPilot pilot = runPilot(ctx, strategies_);

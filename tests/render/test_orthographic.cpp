@@ -137,5 +137,24 @@ TEST_CASE("orthographic camera: the path tracer and bdpt, without light tracing,
     test::checkPairedAgreement(bdpt, test::renderClassesFilm(scene, "path", 256, 17), 0.001);
 }
 
+TEST_CASE("orthographic camera: bdpt's light walks beyond one per camera sample, which only splat, are not taken") {
+    Scene scene = loadScene(LIGHTPATH_SOURCE_DIR "/tests/render/data/cornell-orthographic.toml");
+    scene.camera.width = scene.camera.height = 12;
+    const auto render = [&](double fraction) {
+        RenderOptions options;
+        options.integrator = "bdpt";
+        options.samplesPerPixel = 4;
+        options.seed = 3;
+        ParameterValues values(findIntegrator("bdpt")->schema);
+        values.set("light-walk-fraction", fraction);
+        options.integratorParameters = values;
+        return Renderer(scene, AovSet(classesSet()), options).render();
+    };
+    const RenderResult one = render(1.0), four = render(4.0);
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 12; ++x) CHECK(four.film.at(0, x, y) == one.film.at(0, x, y));
+    CHECK(four.stats.rays.total() == one.stats.rays.total());
+}
+
 }  // namespace orthographic_test
 }  // namespace lightpath
