@@ -16,12 +16,6 @@ namespace {
 // Visible normals per axis of the stratified grid that integrates the specular albedo table.
 constexpr int kAlbedoStrata = 64;
 
-// The base's albedo from wo is c (1 - E(wo)) (1 - averageAlbedo_); averaged over wo as well.
-Rgb meanDiffuseAlbedo(const Rgb& diffuse, const Rgb& averageAlbedo) {
-    const Rgb remaining = Rgb{1.0f} - averageAlbedo;
-    return diffuse * remaining * remaining;
-}
-
 // The GGX reflection lobe's f cos theta_i = F D G2 / (4 cos theta_o), in the local frame.
 Rgb ggxReflection(const Rgb& f0, float alpha, const Vec3& o, const Vec3& i) {
     const Vec3 m = glm::normalize(o + i);
@@ -133,30 +127,26 @@ MicrofacetMaterial::Shading MicrofacetMaterial::shadingOf(const Rgb& baseColor, 
     shading.f0 = glm::mix(dielectricF0_, baseColor, metallic);
     shading.diffuse = (1.0f - metallic) * baseColor;
     shading.alpha = std::max(ggx::kMinAlpha, roughness * roughness);
-    float averageScale = tables_[0].averageScale, averageBias = tables_[0].averageBias;
-    if (tables_.size() > 1) {
-        std::tie(shading.node, shading.blend) = roughnessNode(roughness);
-        const AlbedoTable &t0 = tables_[std::size_t(shading.node)], &t1 = tables_[std::size_t(shading.node) + 1];
-        averageScale = glm::mix(t0.averageScale, t1.averageScale, shading.blend);
-        averageBias = glm::mix(t0.averageBias, t1.averageBias, shading.blend);
-    }
+    if (tables_.size() > 1) std::tie(shading.node, shading.blend) = roughnessNode(roughness);
     // E is linear in F0 (the table's scale and bias), so is its average.
+    const auto [averageScale, averageBias] = averageTerms(tables_, shading.node, shading.blend);
     shading.averageAlbedo = glm::min(Rgb{1.0f}, shading.f0 * averageScale + Rgb{averageBias});
     if (coated_) {
         shading.coat = std::clamp(coat, 0.0f, 1.0f);
         coatRoughness = std::clamp(coatRoughness, 0.0f, 1.0f);
         shading.coatAlpha = std::max(ggx::kMinAlpha, coatRoughness * coatRoughness);
-        float coatScale = coatTables_[0].averageScale, coatBias = coatTables_[0].averageBias;
-        if (coatTables_.size() > 1) {
-            std::tie(shading.coatNode, shading.coatBlend) = roughnessNode(coatRoughness);
-            const AlbedoTable &t0 = coatTables_[std::size_t(shading.coatNode)],
-                              &t1 = coatTables_[std::size_t(shading.coatNode) + 1];
-            coatScale = glm::mix(t0.averageScale, t1.averageScale, shading.coatBlend);
-            coatBias = glm::mix(t0.averageBias, t1.averageBias, shading.coatBlend);
-        }
+        if (coatTables_.size() > 1) std::tie(shading.coatNode, shading.coatBlend) = roughnessNode(coatRoughness);
+        const auto [coatScale, coatBias] = averageTerms(coatTables_, shading.coatNode, shading.coatBlend);
         shading.coatAverage = shading.coat * std::min(1.0f, kDielectricF0 * coatScale + coatBias);
     }
     return shading;
+}
+
+std::pair<float, float> MicrofacetMaterial::averageTerms(const std::vector<AlbedoTable>& tables, int node,
+                                                         float blend) {
+    if (tables.size() == 1) return {tables[0].averageScale, tables[0].averageBias};
+    const AlbedoTable &t0 = tables[std::size_t(node)], &t1 = tables[std::size_t(node) + 1];
+    return {glm::mix(t0.averageScale, t1.averageScale, blend), glm::mix(t0.averageBias, t1.averageBias, blend)};
 }
 
 std::pair<float, float> MicrofacetMaterial::albedoTerms(const std::vector<AlbedoTable>& tables, int node, float blend,
@@ -214,23 +204,31 @@ Rgb MicrofacetMaterial::diffuseReflectance() const {
     const Shading shading = textured ? shadingOf(baseColor_.mean(), metallic_.mean(), roughness_.mean(),
                                                  coat_.weight.mean(), coat_.roughness.mean())
                                      : constant_;
-    const float underCoat = 1.0f - shading.coatAverage;
-    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo) * (underCoat * underCoat);
+    return meanBaseAlbedo(shading);
 }
 
 Rgb MicrofacetMaterial::diffuseReflectanceAt(const SurfaceSide& side) const {
     const Shading shading = shadingAt(side);
-    const float underCoat = 1.0f - shading.coatAverage;
-    return meanDiffuseAlbedo(shading.diffuse, shading.averageAlbedo) * (underCoat * underCoat);
+    return meanBaseAlbedo(shading);
 }
 
-Rgb MicrofacetMaterial::diffuseReflectanceToward(const SurfaceSide& side, const Vec3& wo) const {
-    const Shading shading = shadingAt(side);
-    const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
+Rgb MicrofacetMaterial::meanBaseAlbedo(const Shading& shading) {
+    // baseAlbedoToward averaged over cosine-weighted wo as well.
+    const Rgb remaining = Rgb{1.0f} - shading.averageAlbedo;
+    const float underCoat = 1.0f - shading.coatAverage;
+    return shading.diffuse * remaining * remaining * (underCoat * underCoat);
+}
+
+Rgb MicrofacetMaterial::baseAlbedoToward(const Shading& shading, float cosOut) const {
+    // c (1 - E(wo)) times the cosine-weighted mean of 1 - E(wi), and the same of the coat's.
     const Rgb base = shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
                      (Rgb{1.0f} - shading.averageAlbedo);
     if (shading.coat == 0.0f) return base;
     return base * ((1.0f - coatAlbedo(cosOut, shading)) * (1.0f - shading.coatAverage));
+}
+
+Rgb MicrofacetMaterial::diffuseReflectanceToward(const SurfaceSide& side, const Vec3& wo) const {
+    return baseAlbedoToward(shadingAt(side), std::max(0.0f, glm::dot(wo, side.normal)));
 }
 
 Rgb MicrofacetMaterial::diffuseReflectanceBetween(const SurfaceSide& side, const Vec3& wo, const Vec3& wi) const {
@@ -316,14 +314,9 @@ float MicrofacetMaterial::albedo(int lobe, const SurfaceSide& side, const Vec3& 
     const float cosOut = std::max(0.0f, glm::dot(wo, side.normal));
     const Shading shading = shadingAt(side);
     if (lobe == kCoatGlossy) return coatAlbedo(cosOut, shading);
-    // Below the coat: what it lets through from wo, and on average (the base) or about the
-    // mirror direction (the glossy lobe) on the way back.
+    if (lobe == kDiffuse) return maxComponent(baseAlbedoToward(shading, cosOut));
+    // The glossy lobe below the coat: through it from wo and back about the mirror direction.
     const float below = 1.0f - coatAlbedo(cosOut, shading);
-    // The base's albedo: c (1 - E(wo)) times the cosine-weighted mean of 1 - E(wi).
-    if (lobe == kDiffuse)
-        return maxComponent(shading.diffuse * (Rgb{1.0f} - specularAlbedo(shading.f0, cosOut, shading)) *
-                            (Rgb{1.0f} - shading.averageAlbedo)) *
-               (shading.coat == 0.0f ? 1.0f : below * (1.0f - shading.coatAverage));
     return maxComponent(specularAlbedo(shading.f0, cosOut, shading)) * (shading.coat == 0.0f ? 1.0f : below * below);
 }
 

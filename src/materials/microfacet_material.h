@@ -135,6 +135,8 @@ private:
     // E = F0 scale + bias's scale and bias at `cosine`, between tables[node] and tables[node + 1].
     static std::pair<float, float> albedoTerms(const std::vector<AlbedoTable>& tables, int node, float blend,
                                                float cosine);
+    // The same for E's average over cosine-weighted directions.
+    static std::pair<float, float> averageTerms(const std::vector<AlbedoTable>& tables, int node, float blend);
 
     bool smooth() const { return !roughness_.textured() && roughness_.constant() == 0.0f; }
     bool coatSmooth() const { return !coat_.roughness.textured() && coat_.roughness.constant() == 0.0f; }
@@ -145,6 +147,9 @@ private:
     // (1 - w E_c(wo)) (1 - w E_c(wi)): the share of the layers below the coat lets through; 1 uncoated.
     float coatTransmission(const Shading& shading, float cosOut, float cosIn) const;
     Rgb diffuseWeight(const Shading& shading, float cosOut, float cosIn) const;
+    // The base's albedo toward wo (cos theta_o = cosOut), and averaged over wo too.
+    Rgb baseAlbedoToward(const Shading& shading, float cosOut) const;
+    static Rgb meanBaseAlbedo(const Shading& shading);
 
     std::vector<AlbedoTable> tables_;      // one (constant roughness) or kRoughnessNodes
     std::vector<AlbedoTable> coatTables_;  // the coat's (F0 0.04); none uncoated
