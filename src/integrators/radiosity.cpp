@@ -20,13 +20,15 @@
 
 namespace lightpath {
 
-// The point the camera sees, in the final gather, where its material's diffuse part depends on the
-// directions (Material::diffuseDependsOnView: a base under a GGX layer or a coat): pi f toward the
-// eye for light from each direction, which a Lambertian kd would give for all alike.
+// The point the camera sees, as the final gather weighs the light arriving there: by its kd
+// (`albedo`: its patch's, times the texture there), or, where its material's diffuse part depends
+// on the directions (Material::diffuseDependsOnView: a base under a GGX layer or a coat), by that
+// part for each direction toward the eye (`bsdf` set), pi f.
 struct SeenPoint {
-    const Bsdf& bsdf;
-    Vec3 wo;
-    Rgb from(const Vec3& wi) const { return bsdf.diffuseReflectanceBetween(wo, wi); }
+    Rgb albedo{0.0f};
+    const Bsdf* bsdf = nullptr;
+    Vec3 wo{0.0f};
+    Rgb from(const Vec3& wi) const { return bsdf->diffuseReflectanceBetween(wo, wi); }
 };
 
 namespace {
@@ -1034,20 +1036,18 @@ void RadiosityIntegrator::traceCameraRay(const Ray& ray, PathState& path) const 
     }
     const int side = sideFacing(hit->normal, ray.direction);
     const std::uint32_t cluster = mesh_->patches()[found->patch].cluster;
-    const Rgb ratio = reflectanceRatio(*hit, ray, cluster, ctx);
-    if (options_.finalGather > 0) {
-        const Rgb albedo = reflectance_[cluster] * ratio;
-        const Material& material = *ctx.scene.materials[ctx.scene.objects[hit->object].material];
-        std::optional<ShadingPoint> shading;
-        std::optional<SeenPoint> seen;
-        if (material.diffuseDependsOnView()) {
-            shading.emplace(makeShadingPoint(*hit, ray, ctx));
-            seen.emplace(SeenPoint{shading->bsdf, -ray.direction});
-        }
-        emitDirectLight(*hit, side, albedo, path, seen ? &*seen : nullptr);
-        if (bounces_ > 1) gatherLaterBounces(*hit, side, albedo, path, seen ? &*seen : nullptr);
+    const Material& material = *ctx.scene.materials[ctx.scene.objects[hit->object].material];
+    if (options_.finalGather > 0 && material.diffuseDependsOnView()) {
+        const ShadingPoint shading = makeShadingPoint(*hit, ray, ctx);
+        const SeenPoint seen{Rgb{0.0f}, &shading.bsdf, -ray.direction};
+        emitDirectLight(*hit, side, seen, path);
+        if (bounces_ > 1) gatherLaterBounces(*hit, side, seen, path);
+    } else if (options_.finalGather > 0) {
+        const SeenPoint seen{reflectance_[cluster] * reflectanceRatio(*hit, ray, cluster, ctx)};
+        emitDirectLight(*hit, side, seen, path);
+        if (bounces_ > 1) gatherLaterBounces(*hit, side, seen, path);
     } else {
-        emitSolution(hit->point, *found, side, bounces_, ratio, false, path);
+        emitSolution(hit->point, *found, side, bounces_, reflectanceRatio(*hit, ray, cluster, ctx), false, path);
     }
     path.pop();
 }
@@ -1149,8 +1149,8 @@ void RadiosityIntegrator::emitSolution(const Vec3& point, const PatchLookup& at,
     while (path.size() > start) path.pop();
 }
 
-void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
-                                          const SeenPoint* seen) const {
+void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const SeenPoint& seen,
+                                          PathState& path) const {
     const RenderContext& ctx = path.context;
     const auto lights = ctx.lights.all();
     const Vec3 normal = side == 0 ? hit.normal : -hit.normal;
@@ -1173,16 +1173,16 @@ void RadiosityIntegrator::emitDirectLight(const SurfaceHit& hit, int side, const
         for (std::uint32_t k = 0; k < n * n; ++k) {
             const Vec2 cell{float(k % n), float(k / n)};
             addDirectOverKd(light, ctx, hit, normal, (cell + shiftLight) / float(n), (cell + shiftCosine) / float(n), sum,
-                            cast, seen);
+                            cast, seen.bsdf != nullptr ? &seen : nullptr);
         }
         path.counters.shadow += cast;
-        const Rgb value = seen != nullptr ? sum / float(n * n) : albedo * sum / float(n * n);
+        const Rgb value = seen.bsdf != nullptr ? sum / float(n * n) : seen.albedo * sum / float(n * n);
         if (!isBlack(value) || !ctx.skipEnabled) path.emit(event, value);
     }
 }
 
-void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
-                                             const SeenPoint* seen) const {
+void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, const SeenPoint& seen,
+                                             PathState& path) const {
     const RenderContext& ctx = path.context;
     // A Lambertian surface's bounce k is albedo times the mean of bounce k - 1's radiance over
     // cosine-weighted directions. The directions are stratified, a square pattern shifted as a
@@ -1192,7 +1192,7 @@ void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, co
     const std::uint32_t rays = strata * strata;
     const Vec2 shift = path.sampler->forVertex(path.key()).next2D();
     const Frame frame(side == 0 ? hit.normal : -hit.normal);
-    const Rgb weight = albedo / float(rays);
+    const Rgb weight = seen.albedo / float(rays);
     for (std::uint32_t k = 0; k < rays; ++k) {
         const Vec2 u{(float(k % strata) + shift.x) / float(strata), (float(k / strata) + shift.y) / float(strata)};
         const Vec3 direction = frame.toWorld(sampleCosineHemisphere(u));
@@ -1207,7 +1207,7 @@ void RadiosityIntegrator::gatherLaterBounces(const SurfaceHit& hit, int side, co
             continue;
         }
         const Rgb ratio = reflectanceRatio(*there, gatherRay, mesh_->patches()[found->patch].cluster, ctx);
-        const Rgb here = seen != nullptr ? seen->from(direction) / float(rays) : weight;
+        const Rgb here = seen.bsdf != nullptr ? seen.from(direction) / float(rays) : weight;
         emitSolution(there->point, *found, sideFacing(there->normal, direction), bounces_ - 1, here * ratio, true,
                      path);
         path.pop();

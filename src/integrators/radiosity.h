@@ -33,7 +33,7 @@ namespace lightpath {
 
 class PatchGradients;
 class ProgressBar;
-struct SeenPoint;  // radiosity.cpp: the final gather's view of a point whose diffuse part depends on the directions
+struct SeenPoint;  // radiosity.cpp: the point the final gather weighs the light at
 
 struct RadiosityStats {
     std::size_t patches = 0;
@@ -134,14 +134,11 @@ private:
     void completeGatherFields();
     // With the final gather, bounce 1 at a camera hit: every wanted light's direct light there,
     // sampled as the patches' own is (radiosity.cpp, addDirectOverKd), times the hit's kd.
-    // `seen`: the camera's point where its diffuse part depends on the directions, which then
-    // weighs each direction instead of `albedo` (null: albedo, a Lambertian kd).
-    void emitDirectLight(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
-                         const SeenPoint* seen) const;
+    // `seen`: what weighs the light arriving there (its kd, or its own diffuse part per direction).
+    void emitDirectLight(const SurfaceHit& hit, int side, const SeenPoint& seen, PathState& path) const;
     // The final gather (RadiosityOptions::finalGather): bounces 2..bounces_ at a camera hit, each
     // ray labelled by the object it meets and reading the solution's bounces there.
-    void gatherLaterBounces(const SurfaceHit& hit, int side, const Rgb& albedo, PathState& path,
-                            const SeenPoint* seen) const;
+    void gatherLaterBounces(const SurfaceHit& hit, int side, const SeenPoint& seen, PathState& path) const;
     // The vertex radiosities (vertexValues_) of every solved light and bounce, or of one.
     void computeVertexValues();
     void computeVertexValues(std::size_t light, int bounce);
