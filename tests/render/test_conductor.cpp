@@ -15,6 +15,7 @@
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
 #include "../support/direction_chi_square.h"
+#include "../support/ggx_albedo_reference.h"
 #include "../support/material_harness.h"
 #include "../support/paired_agreement.h"
 #include "../support/statistics.h"
@@ -65,30 +66,9 @@ TEST_CASE("conductor: exact Fresnel of eta + i k against Born and Wolf's closed 
         CHECK(fresnelConductor(cosI, 1.5f, 0.0f) == doctest::Approx(fresnelDielectric(cosI, 1.0f / 1.5f)).epsilon(1e-5));
 }
 
-// The single-scattering albedo of GGX with Born and Wolf's F and height-correlated Smith G2, in
-// double from Walter et al. 2007 and Heitz 2014 (eq. 99), integrated over microfacet normals m:
-// E(wo) = integral F(wo.m) D(m) G2(wo, wi) (wo.m) / cos theta_o dm, wi the mirror of wo about m,
-// by the midpoint rule in theta_m and phi_m.
+// The single-scattering albedo of GGX with Born and Wolf's exact F (tests/support/ggx_albedo_reference.h).
 double albedoReference(double cosOut, double alpha, double eta, double k) {
-    const double a2 = alpha * alpha;
-    const double ox = std::sqrt(1.0 - cosOut * cosOut), oz = cosOut;
-    auto lambda = [&](double cz) { return 0.5 * (std::sqrt(1.0 + a2 * (1.0 - cz * cz) / (cz * cz)) - 1.0); };
-    const int thetaSteps = 2000, phiSteps = 180;
-    const double dTheta = 0.5 * kPiD / thetaSteps, dPhi = 2.0 * kPiD / phiSteps;
-    double sum = 0.0;
-    for (int t = 0; t < thetaSteps; ++t) {
-        const double theta = (t + 0.5) * dTheta, cm = std::cos(theta), sm = std::sin(theta);
-        const double d = a2 / (kPiD * std::pow((a2 - 1.0) * cm * cm + 1.0, 2.0));
-        for (int p = 0; p < phiSteps; ++p) {
-            const double om = ox * sm * std::cos((p + 0.5) * dPhi) + oz * cm;
-            if (om <= 0.0) continue;
-            const double iz = 2.0 * om * cm - oz;
-            if (iz <= 0.0) continue;
-            const double g2 = 1.0 / (1.0 + lambda(oz) + lambda(iz));
-            sum += bornWolfReflectance(om, eta, k) * d * g2 * om / oz * sm * dTheta * dPhi;
-        }
-    }
-    return sum;
+    return test::ggxAlbedoWithFresnel(cosOut, alpha, [&](double om) { return bornWolfReflectance(om, eta, k); }, 2000, 180);
 }
 
 TEST_CASE("conductor: white furnace, its albedo is the GGX single-scattering albedo with exact Fresnel, never above 1") {
