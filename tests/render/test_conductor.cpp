@@ -24,8 +24,6 @@
 namespace lightpath {
 namespace conductor_test {
 
-constexpr double kPiD = 3.14159265358979323846;
-
 // Unpolarised reflectance of a metal eta + i k from the outside (index 1), the real-valued closed
 // form of Born and Wolf (Principles of Optics, 14.4.1), with a^2 + b^2 = sqrt((eta^2 - k^2 -
 // sin^2)^2 + 4 eta^2 k^2) and a^2 = (a^2 + b^2 + eta^2 - k^2 - sin^2) / 2:
