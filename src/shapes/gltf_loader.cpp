@@ -739,24 +739,27 @@ private:
         }
     }
 
-    // POSITION: FLOAT, or (KHR_mesh_quantization) BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT,
-    // normalized or not, which the node's transform scales back.
-    std::vector<Vec3> positions(int index, const std::string& where) const {
+    // A VEC3 accessor's elements, FLOAT or of the integer types `integers` allows (quantizedElements).
+    std::vector<Vec3> vectors(int index, const std::string& where, unsigned integers, bool normalizedOnly,
+                              std::string_view expected) const {
         return quantizedElements<3>(
-            index, TINYGLTF_TYPE_VEC3, where, quantized_ ? kByte | kUnsignedByte | kShort | kUnsignedShort : 0u, false,
-            quantized_ ? "expected FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT components"
-                       : "expected FLOAT components",
+            index, TINYGLTF_TYPE_VEC3, where, integers, normalizedOnly, expected,
             [](const std::array<float, 3>& e) { return Vec3(e[0], e[1], e[2]); },
             [](const std::array<float, 3>& e) { return " is " + formatVec3(Vec3(e[0], e[1], e[2])) + "; expected numbers "; });
     }
 
+    // POSITION: FLOAT, or (KHR_mesh_quantization) BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT,
+    // normalized or not, which the node's transform scales back.
+    std::vector<Vec3> positions(int index, const std::string& where) const {
+        if (!quantized_) return vectors(index, where, 0u, false, "expected FLOAT components");
+        return vectors(index, where, kByte | kUnsignedByte | kShort | kUnsignedShort, false,
+                       "expected FLOAT, BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT components");
+    }
+
     // NORMAL: FLOAT, or (KHR_mesh_quantization) normalized BYTE or SHORT.
     std::vector<Vec3> normals(int index, const std::string& where) const {
-        return quantizedElements<3>(
-            index, TINYGLTF_TYPE_VEC3, where, quantized_ ? kByte | kShort : 0u, true,
-            quantized_ ? "expected FLOAT, or normalized BYTE or SHORT, components" : "expected FLOAT components",
-            [](const std::array<float, 3>& e) { return Vec3(e[0], e[1], e[2]); },
-            [](const std::array<float, 3>& e) { return " is " + formatVec3(Vec3(e[0], e[1], e[2])) + "; expected numbers "; });
+        if (!quantized_) return vectors(index, where, 0u, false, "expected FLOAT components");
+        return vectors(index, where, kByte | kShort, true, "expected FLOAT, or normalized BYTE or SHORT, components");
     }
 
     // TANGENT: xyz a unit tangent, w the bitangent's sign, +1 or -1 (glTF 2.0, 3.7.2.1); any other
