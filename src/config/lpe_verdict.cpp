@@ -57,15 +57,19 @@ Judgement judgeExpression(const lpe::NamedExpression& aov, const IntegratorInfo*
     if (!lpe::haveCommonPath(languages(expression, integrator, false))) {
         // Volume events occur only where a scene has media and the integrator renders them (its
         // refusal of the others is RenderConfig::judge's); there the labels decide.
-        const bool volumesHere = scene && integrator && integrator->rendersMedia && !scene->media.empty();
+        const bool scattering = scene && std::any_of(scene->media.begin(), scene->media.end(),
+                                                     [](const MediumSlot& m) { return m->scatters(); });
+        const bool volumesHere = scene && integrator && integrator->rendersMedia && scattering;
         if (!volumesHere) {
             const std::string why = "it needs a volume event (V): only a scene with [media] fills it, under an "
                                     "integrator that renders media (" + mediaRenderers() + ")";
+            // Media that only absorb (a tinted glass's inside) make no V event either.
+            const bool absorbing = scene && !scene->media.empty() && !scattering;
+            const std::string lack = absorbing ? "no medium that scatters (its media only absorb)" : "no medium ([media])";
+            if (!isPresetMember(aov, scene)) return {Verdict::BlackHere, absorbing ? "in this scene " + lack : why};
             // A preset's volume AOV (classes') is written black without a word, as its other AOVs are.
-            if (!isPresetMember(aov, scene)) return {Verdict::BlackHere, why};
-            const bool sceneLacks = scene && scene->media.empty();
-            return {Verdict::PresetBlack, sceneLacks ? "in this scene no medium ([media])" : why,
-                    sceneLacks ? "no medium ([media])" : ""};
+            const bool sceneLacks = scene && !scattering;
+            return {Verdict::PresetBlack, sceneLacks ? "in this scene " + lack : why, sceneLacks ? lack : ""};
         }
         // A label that labels nothing here (a misspelt medium) is on no event, as for surfaces below.
         auto [placement, unknown] = placeLabels(aov, *scene);

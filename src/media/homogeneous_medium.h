@@ -26,6 +26,7 @@ public:
     // False for a grey sigma_t (every channel drives the same distance) and for a medium that
     // scatters nothing (no distance is drawn).
     bool choosesChannel() const override;
+    bool scatters() const override { return !isBlack(sigmaS); }
     HenyeyGreensteinPhase phase(const Vec3&) const override { return HenyeyGreensteinPhase(g); }
 };
 

@@ -42,6 +42,9 @@ public:
     // Whether sampleDistance reads uChannel: false when no channel choice can change its result,
     // so the caller may skip computing that number (Sampler::skip1D keeps later ones the same).
     virtual bool choosesChannel() const { return true; }
+    // Whether a ray can scatter in it (a `V` event): false for a medium that only absorbs (tinted
+    // glass's interior), where no path has a V.
+    virtual bool scatters() const { return true; }
     // T between distances t0 <= t1 along the ray, per channel.
     virtual Rgb transmittance(const Ray& ray, float t0, float t1) const = 0;
     virtual HenyeyGreensteinPhase phase(const Vec3& p) const = 0;

@@ -91,6 +91,18 @@ TEST_CASE("the scene's events: an expression needing what no material or light o
     }
 }
 
+TEST_CASE("the scene's events: a volume event needs a medium that scatters, not one that only absorbs") {
+    const auto glassBall = [](const std::string& medium) {
+        return kMatteRoom + "[media.inside]\ntype = \"homogeneous\"\n" + medium + "\n" + withBall("kt = 0.9") +
+               "interior = \"inside\"\n";
+    };
+    const Judgement tinted = judge("E.*V.*L", load(glassBall("sigma_a = 0.5")));
+    CHECK(tinted.verdict == Verdict::BlackHere);
+    CHECK_MESSAGE(contains(tinted.reason, "no medium that scatters"), tinted.reason);
+    const Judgement milky = judge("E.*V.*L", load(glassBall("sigma_a = 0.5\nsigma_s = 0.1")));
+    CHECK_MESSAGE(milky.verdict == Verdict::Fillable, milky.reason);
+}
+
 TEST_CASE("the scene's events: a light path needs a light, and a point light is reached only after a diffuse or glossy event") {
     std::string dark = kMatteRoom;
     dark.erase(dark.find("[[lights]]"), std::string("[[lights]]\nname = \"lamp\"\nposition = [0, 3, 0]\n").size());
