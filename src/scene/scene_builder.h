@@ -13,6 +13,7 @@
 #include "geometry/shapes.h"
 #include "materials/material.h"
 #include "math/types.h"
+#include "media/medium.h"
 #include "scene/camera.h"
 #include "scene/scene_light.h"
 #include "schema/format.h"
@@ -47,6 +48,18 @@ public:
     // An object labelled `name` (empty: by its material's name) made of the scene's material
     // number `material`; a mesh makes one per material its faces use. Returns the object index.
     virtual std::uint32_t addObject(std::string name, std::uint32_t material) = 0;
+    // A medium a model file brings (glTF's KHR_materials_volume); returns its index in the scene's
+    // media, for setInterior.
+    virtual std::uint32_t addMedium(MediumSlot medium) {
+        (void)medium;
+        return kNoMedium;
+    }
+    // Object `object` (from addObject) bounds medium `medium`: a ray through its surface enters it.
+    // A declaration's `interior`, where given, replaces it.
+    virtual void setInterior(std::uint32_t object, std::uint32_t medium) {
+        (void)object;
+        (void)medium;
+    }
     // The index of the scene's material named as `material` is, which wins if there is one (its
     // [materials] table or an earlier mesh's: how a scene retunes an MTL material), else of
     // `material`, added (a mesh's MTL material, or its grey).

@@ -349,6 +349,11 @@ public:
         scene_.objects.push_back({std::move(name), material});
         return static_cast<std::uint32_t>(scene_.objects.size() - 1);
     }
+    std::uint32_t addMedium(MediumSlot medium) override {
+        scene_.media.push_back(std::move(medium));
+        return static_cast<std::uint32_t>(scene_.media.size() - 1);
+    }
+    void setInterior(std::uint32_t object, std::uint32_t medium) override { scene_.objects[object].interior = medium; }
     std::uint32_t sceneMaterial(MaterialSlot material) override {
         for (std::uint32_t i = 0; i < scene_.materials.size(); ++i)
             if (scene_.materials[i]->name == material->name) return i;
@@ -404,11 +409,12 @@ void readShape(const TomlTable& table, const ShapeType& type, Scene& scene) {
     const std::size_t firstObject = scene.objects.size();
     LoadingScene builder(scene);
     asSceneError([&] { type.addTo(values, builder); });
-    // Every object the declaration added (a mesh's parts) bounds the same medium, if its kind can.
+    // Every object the declaration added (a mesh's parts) bounds the same medium, if its kind can:
+    // its `interior`, else what its file gave (SceneBuilder::setInterior), else vacuum.
     const bool enclosesVolume = type.schema.find(kShapeInteriorParameter.name) != nullptr;
     for (std::size_t i = firstObject; i < scene.objects.size(); ++i) {
         scene.objects[i].enclosesVolume = enclosesVolume;
-        scene.objects[i].interior = interior;
+        if (interior != kNoMedium) scene.objects[i].interior = interior;
     }
 }
 

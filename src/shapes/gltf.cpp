@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "media/homogeneous_medium.h"
 #include "scene/light_type.h"
 #include "scene/scene_loader.h"
 #include "scene/shape_type.h"
@@ -127,6 +128,10 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
     const std::string name = values.has("name") ? values.text("name") : std::string();
     std::vector<std::uint32_t> sceneObject(model.objects.size());
     const std::uint32_t whole = override ? scene.addShapeObject(values) : 0;
+    // The media the file's volumes bound (KHR_materials_volume), one per material, made once and
+    // named after it. A scene's `interior` (or `material`) overrides them, as it does materials.
+    std::vector<std::uint32_t> medium(model.materials.size(), kNoMedium);
+    const bool ownMedia = !values.has(kShapeInteriorParameter.name);
     for (std::size_t i = 0; i < model.objects.size(); ++i) {
         if (override) {
             sceneObject[i] = whole;
@@ -135,6 +140,15 @@ void addGltf(const ParameterValues& values, SceneBuilder& scene) {
         const GltfObject& object = model.objects[i];
         const std::uint32_t material = scene.sceneMaterial(model.materials[object.material]);
         sceneObject[i] = scene.addObject(name.empty() ? object.label : name, material);
+        const std::optional<Rgb>& absorption = model.absorption[object.material];
+        if (!ownMedia || !absorption) continue;
+        if (medium[object.material] == kNoMedium) {
+            HomogeneousMedium absorbing;
+            absorbing.sigmaA = *absorption;
+            absorbing.name = model.materials[object.material]->name;
+            medium[object.material] = scene.addMedium(MediumSlot(absorbing));
+        }
+        scene.setInterior(sceneObject[i], medium[object.material]);
     }
     for (std::size_t i = 0; i < model.triangles.size(); ++i) {
         const Triangle& t = model.triangles[i];

@@ -32,10 +32,10 @@ namespace lightpath {
 namespace {
 
 // The extensions the Reader reads; docs: scenes/README.md, [[gltf]].
-constexpr std::array<std::string_view, 8> kReadExtensions{"KHR_lights_punctual",        "KHR_materials_clearcoat",
-                                                          "KHR_materials_emissive_strength", "KHR_materials_ior",
-                                                          "KHR_materials_specular",      "KHR_materials_transmission",
-                                                          "KHR_mesh_quantization",       "KHR_texture_transform"};
+constexpr std::array<std::string_view, 9> kReadExtensions{
+    "KHR_lights_punctual",        "KHR_materials_clearcoat",    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",          "KHR_materials_specular",     "KHR_materials_transmission",
+    "KHR_materials_volume",       "KHR_mesh_quantization",      "KHR_texture_transform"};
 
 // glTF's own default material (glTF 2.0, 3.9.6): metallic-roughness with every factor 1.
 constexpr const char* kDefaultMaterialLabel = "gltf-default";
@@ -300,6 +300,7 @@ private:
                 material->textured = true;
             }
             out_.materials.push_back(std::move(material));
+            out_.absorption.push_back(volumeAbsorption(m, where, transmission > 0.0));
             uvSetOfMaterial_.push_back(uvSet_);
         }
         materialLabels_ = std::move(taken);
@@ -331,6 +332,46 @@ private:
         if (e.Has("clearcoatNormalTexture"))
             warn(at + ".clearcoatNormalTexture is not read: the coat takes the surface's normal");
         return coat;
+    }
+
+    // KHR_materials_volume: the surface bounds a medium that absorbs sigma_a = -ln(attenuationColor)
+    // / attenuationDistance per channel (Beer-Lambert: white light is attenuationColor after that
+    // distance). Only where light enters (a transmitting material) and the surface is no thin wall
+    // (thicknessFactor > 0) with a finite distance. thicknessTexture is a rasteriser's stand-in for
+    // the distance a ray travels inside, which a ray tracer measures: not read, and not needed.
+    std::optional<Rgb> volumeAbsorption(const tinygltf::Material& m, const std::string& where, bool transmits) {
+        const auto found = m.extensions.find("KHR_materials_volume");
+        if (found == m.extensions.end()) return std::nullopt;
+        const std::string at = where + ".extensions.KHR_materials_volume";
+        const tinygltf::Value& e = found->second;
+        if (!e.IsObject()) fail(at, "expected an object");
+        const double thickness = number(extensionNumber(m.extensions, "KHR_materials_volume", "thicknessFactor", 0.0), 0.0,
+                                        kMaxMagnitude, at + ".thicknessFactor");
+        // Absent, the distance is infinite: nothing is absorbed.
+        double distance = std::numeric_limits<double>::infinity();
+        if (e.Has("attenuationDistance")) {
+            distance = extensionNumber(m.extensions, "KHR_materials_volume", "attenuationDistance", distance);
+            if (!(distance > 0.0) || !finite(distance))
+                fail(at + ".attenuationDistance", "expected a number above 0 and at most " +
+                                                      std::string(kMaxMagnitudeText) + ", got " + formatNumber(distance));
+        }
+        Rgb colour{1.0f};
+        if (e.Has("attenuationColor")) {
+            const tinygltf::Value& c = e.Get("attenuationColor");
+            if (!c.IsArray() || c.ArrayLen() != 3) fail(at + ".attenuationColor", "expected three numbers from 0 to 1");
+            for (int k = 0; k < 3; ++k) {
+                const tinygltf::Value& x = c.Get(k);
+                const double value = x.IsNumber() ? x.GetNumberAsDouble() : std::nan("");
+                if (!(value >= 0.0 && value <= 1.0)) fail(at + ".attenuationColor", "expected three numbers from 0 to 1");
+                colour[k] = float(value);
+            }
+        }
+        if (!transmits || thickness == 0.0 || std::isinf(distance)) return std::nullopt;
+        // A channel of 0 absorbs everything: the largest coefficient a scene may hold.
+        Rgb sigma;
+        for (int k = 0; k < 3; ++k)
+            sigma[k] = float(std::min(-std::log(double(colour[k])) / distance, kMaxMagnitude));
+        return sigma;
     }
 
     // A textureInfo inside an extension object (tinygltf leaves it as JSON): its index, texCoord
@@ -509,6 +550,7 @@ private:
             material->name = label(kDefaultMaterialLabel, kDefaultMaterialLabel, materialLabels_, "the default material");
             defaultMaterial_ = std::uint32_t(out_.materials.size());
             out_.materials.push_back(std::move(material));
+            out_.absorption.emplace_back();
         }
         return defaultMaterial_;
     }

@@ -10,6 +10,7 @@
 // collisions numbered.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ struct GltfCamera {
 
 struct GltfModel {
     std::vector<MaterialSlot> materials;  // named by label; the last may be the glTF default
+    // Per material: the absorption sigma_a of the medium its surface bounds (KHR_materials_volume),
+    // or none (no extension, a thin wall, an opaque surface, or nothing absorbed).
+    std::vector<std::optional<Rgb>> absorption;
     std::vector<GltfObject> objects;
     std::vector<Triangle> triangles;      // `object` indexes `objects`
     std::vector<TriangleNormals> normals; // empty, or one per triangle (zero: shade flat)

@@ -308,6 +308,51 @@ TEST_CASE("[[gltf]] lighting: a sun's lux read as W/m^2 by 683 (standard), and u
     CHECK(sumRaw == doctest::Approx(sumUnitless).epsilon(1e-6));
 }
 
+// KHR_materials_volume (volume.gltf): a unit cube of index-1 glass, so rays pass straight through
+// without reflection, bounding a medium that turns white light into attenuationColor [0.8, 0.5, 1]
+// after 0.5. Seen face on through a white sky, each ray inside crosses 1: Beer-Lambert gives
+// attenuationColor^(1 / 0.5) = [0.64, 0.25, 1] by hand. The same cube as a thin wall (thickness 0,
+// glTF's default) absorbs nothing, the control.
+Film renderThroughCube(const std::string& extensionChange, const std::string& integrator) {
+    const test::TempFolder temp("lightpath-gltf-volume");
+    std::ifstream in(kData / "volume.gltf");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string thickness = "\"thicknessFactor\": 1";
+    REQUIRE(text.find(thickness) != std::string::npos);
+    if (!extensionChange.empty()) text.replace(text.find(thickness), thickness.size(), extensionChange);
+    std::ofstream(temp.path() / "cube.gltf") << text;
+    const std::string scene = "[world]\nbackground = 1\n[camera]\neye = [0, 0, 3]\nlook_at = [0, 0, 0]\n"
+                              "projection = \"orthographic\"\nheight = 2\nresolution = [16, 16]\n"
+                              "[[gltf]]\nfile = \"cube.gltf\"\n";
+    RenderOptions options;
+    options.integrator = integrator;
+    options.samplesPerPixel = 4;
+    return Renderer(loadSceneFromText(scene, temp.path() / "cube.toml"), AovSet(classesSet()), options).render().film;
+}
+
+// The largest difference, relative per channel, between the middle 4x4 pixels (inside the cube's
+// face, which covers the middle 8x8) and `expected`.
+double worstInside(const Film& film, const Rgb& expected) {
+    double worst = 0.0;
+    for (int y = 6; y < 10; ++y)
+        for (int x = 6; x < 10; ++x)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::fabs(double(film.at(0, x, y)[c]) - expected[c]) / expected[c]);
+    return worst;
+}
+
+TEST_CASE("a glTF volume (KHR_materials_volume) absorbs as Beer-Lambert: attenuationColor^(distance / attenuationDistance)") {
+    const Rgb throughCube{0.8f * 0.8f, 0.5f * 0.5f, 1.0f};
+    for (const char* integrator : {"whitted", "path"}) {
+        CAPTURE(integrator);
+        CHECK(worstInside(renderThroughCube("", integrator), throughCube) < 1e-4);
+        // A thin wall (thicknessFactor 0) bounds no volume: the sky comes through unchanged.
+        const Film thin = renderThroughCube("\"thicknessFactor\": 0", integrator);
+        CHECK(worstInside(thin, Rgb{1.0f}) < 1e-4);
+        CHECK(worstInside(thin, throughCube) > 0.5);
+    }
+}
+
 TEST_CASE("a glTF emissive material (emissiveFactor, KHR_materials_emissive_strength) renders as its TOML scene") {
     const Film gltf = renderSmall(kData / "emissive.gltf", "raycast", 256);
     const Film toml = renderSmall(kData / "emissive.toml", "raycast", 256);

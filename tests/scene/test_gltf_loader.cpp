@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,7 @@
 #include "materials/dielectric_material.h"
 #include "materials/microfacet_material.h"
 #include "materials/phong_material.h"
+#include "media/homogeneous_medium.h"
 #include "scene/scene_loader.h"
 
 #include "../support/temp_folder.h"
@@ -203,7 +205,8 @@ TEST_CASE("a glTF file requiring an extension lightpath does not read is refused
                                    ": extensionsRequired[0]: the file requires \"KHR_draco_mesh_compression\", which "
                                    "lightpath does not read (it reads KHR_lights_punctual, KHR_materials_clearcoat, "
                                    "KHR_materials_emissive_strength, KHR_materials_ior, KHR_materials_specular, "
-                                   "KHR_materials_transmission, KHR_mesh_quantization, KHR_texture_transform)");
+                                   "KHR_materials_transmission, KHR_materials_volume, KHR_mesh_quantization, "
+                                   "KHR_texture_transform)");
     // Used only: rendered, the extension named in a warning; the ones it reads are not.
     const Scene scene = loadScene(variant("used.gltf", ""));
     CHECK(warns(scene, "extensionsUsed: KHR_draco_mesh_compression is not read by lightpath: the render leaves it out"));
@@ -343,6 +346,78 @@ TEST_CASE("a glTF material's KHR_materials_clearcoat is its clear coat; a bad fa
                                                      "\"clearcoatTexture\": {\"index\": -2}}");
     CHECK(errorOf(texture) == texture.string() + ": materials[0].extensions.KHR_materials_clearcoat.clearcoatTexture"
                                                  ".index: expected a texture index of 0 or more");
+}
+
+// KHR_materials_volume (volume.gltf, a glass cube): the object of a transmitting material with a
+// thickness and a finite attenuationDistance bounds a medium that absorbs -ln(attenuationColor) /
+// attenuationDistance per channel and scatters nothing, named after the material. A thin wall, an
+// opaque material or an infinite distance bound none; a TOML `interior` replaces the file's.
+TEST_CASE("a glTF material's KHR_materials_volume makes its object bound an absorbing medium; bad values are located errors") {
+    const test::TempFolder temp("lightpath-gltf-volume");
+    std::ifstream in(kData / "volume.gltf");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string key = "\"KHR_materials_volume\": {";
+    const auto begin = text.find(key);
+    REQUIRE(begin != std::string::npos);
+    const auto end = text.find('}', begin) + 1;
+    // volume.gltf with the material's extension object replaced by {`body`}, and `from` by `to`.
+    const auto variant = [&](const std::string& file, const std::string& body, const std::string& from = "",
+                             const std::string& to = "") {
+        std::string changed = text;
+        changed.replace(begin, end - begin, key + body + "}");
+        if (!from.empty()) {
+            REQUIRE(changed.find(from) != std::string::npos);
+            changed.replace(changed.find(from), from.size(), to);
+        }
+        std::ofstream(temp.path() / file) << changed;
+        return temp.path() / file;
+    };
+    const std::string tinted = "\"thicknessFactor\": 1, \"attenuationDistance\": 0.5, \"attenuationColor\": ";
+    const Scene scene = loadScene(kData / "volume.gltf");
+    REQUIRE(scene.media.size() == 1);
+    REQUIRE(scene.objects.size() == 1);
+    CHECK(scene.objects[0].enclosesVolume);
+    CHECK(scene.objects[0].interior == 0);
+    const auto& medium = dynamic_cast<const HomogeneousMedium&>(*scene.media[0]);
+    CHECK(medium.name == "Tinted_Glass");
+    CHECK(medium.sigmaA.r == doctest::Approx(-std::log(0.8) / 0.5).scale(0).epsilon(1e-6));
+    CHECK(medium.sigmaA.g == doctest::Approx(-std::log(0.5) / 0.5).scale(0).epsilon(1e-6));
+    CHECK(medium.sigmaA.b == 0.0f);
+    CHECK(isBlack(medium.sigmaS));
+    CHECK(!medium.scatters());
+    CHECK(!warns(scene, "KHR_materials_volume"));
+
+    CHECK(loadScene(variant("same.gltf", tinted + "[0.8, 0.5, 1]")).media.size() == 1);
+    CHECK(loadScene(variant("thin.gltf", "\"attenuationDistance\": 0.5, \"attenuationColor\": [0.8, 0.5, 1]")).media.empty());
+    CHECK(loadScene(variant("infinite.gltf", "\"thicknessFactor\": 1, \"attenuationColor\": [0.8, 0.5, 1]")).media.empty());
+    CHECK(loadScene(variant("opaque.gltf", tinted + "[0.8, 0.5, 1]", "\"transmissionFactor\": 1", "\"transmissionFactor\": 0"))
+              .media.empty());
+    // A channel that keeps nothing absorbs as much as a scene's number may say.
+    const Scene black = loadScene(variant("black.gltf", tinted + "[0, 0.5, 1]"));
+    REQUIRE(black.media.size() == 1);
+    CHECK(dynamic_cast<const HomogeneousMedium&>(*black.media[0]).sigmaA.r == float(kMaxMagnitude));
+
+    // A scene's interior fills the model instead, and the file's medium is not added.
+    std::ofstream(temp.path() / "fog.toml") << "[media.fog]\ntype = \"homogeneous\"\nsigma_s = 0.5\n"
+                                               "[[gltf]]\nfile = \"" + (kData / "volume.gltf").string() +
+                                                   "\"\ninterior = \"fog\"\n";
+    const Scene fog = loadScene(temp.path() / "fog.toml");
+    REQUIRE(fog.media.size() == 1);
+    CHECK(fog.media[0]->name == "fog");
+    CHECK(fog.objects[0].interior == 0);
+
+    const fs::path zero = variant("zero.gltf", "\"thicknessFactor\": 1, \"attenuationDistance\": 0");
+    CHECK(errorOf(zero) == zero.string() + ": materials[0].extensions.KHR_materials_volume.attenuationDistance: "
+                                           "expected a number above 0 and at most 1e6, got 0");
+    const fs::path bright = variant("bright.gltf", tinted + "[1.5, 0.5, 1]");
+    CHECK(errorOf(bright) == bright.string() + ": materials[0].extensions.KHR_materials_volume.attenuationColor: "
+                                               "expected three numbers from 0 to 1");
+    const fs::path two = variant("two.gltf", tinted + "[0.8, 0.5]");
+    CHECK(errorOf(two) == two.string() + ": materials[0].extensions.KHR_materials_volume.attenuationColor: "
+                                         "expected three numbers from 0 to 1");
+    const fs::path negative = variant("negative.gltf", "\"thicknessFactor\": -1");
+    CHECK(errorOf(negative).find(negative.string() + ": materials[0].extensions.KHR_materials_volume.thicknessFactor: "
+                                                     "expected a number from 0") == 0);
 }
 
 // glTF 2.0, 3.10.3: an orthographic camera's xmag and ymag are half its view's width and height.

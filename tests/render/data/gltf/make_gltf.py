@@ -12,6 +12,9 @@ directional.gltf  the same lit by a directional light tilted by its node; direct
 sparse.gltf    positions through sparse accessors (glTF 2.0, 3.6.2.3), one over a bufferView, one
                over zeros; bad_sparse.gltf with its substitution's indices out of order.
 bad_index.gltf an index beyond the vertices (the located error).
+volume.gltf    a unit cube of clear glass of index 1 (KHR_materials_transmission, KHR_materials_ior)
+               bounding an absorbing medium (KHR_materials_volume: attenuationColor [0.8, 0.5, 1]
+               after 0.5): seen through, white light leaves it as attenuationColor^(1 / 0.5).
 Run: python3 make_gltf.py
 """
 import base64
@@ -68,6 +71,25 @@ class Builder:
     def mesh(self, name, points, normal, order, component, material):
         prim = {"attributes": {"POSITION": self.vec3(points), "NORMAL": self.vec3([normal] * len(points))},
                 "indices": self.indices(order, component), "material": material}
+        self.meshes.append({"name": name, "primitives": [prim]})
+        return len(self.meshes) - 1
+
+    def cube(self, name, half, material):
+        """A cube of side 2 half about the origin, each face two triangles wound counter-clockwise seen
+        from outside, with its outward normal."""
+        points, normals, order = [], [], []
+        # (normal, u, v) with u x v = normal: corners -u-v, u-v, u+v, -u+v turn counter-clockwise.
+        faces = [((1, 0, 0), (0, 1, 0), (0, 0, 1)), ((-1, 0, 0), (0, 0, 1), (0, 1, 0)),
+                 ((0, 1, 0), (0, 0, 1), (1, 0, 0)), ((0, -1, 0), (1, 0, 0), (0, 0, 1)),
+                 ((0, 0, 1), (1, 0, 0), (0, 1, 0)), ((0, 0, -1), (0, 1, 0), (1, 0, 0))]
+        for n, u, v in faces:
+            first = len(points)
+            for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                points.append(tuple(half * (n[i] + su * u[i] + sv * v[i]) for i in range(3)))
+                normals.append(n)
+            order += [first, first + 1, first + 2, first, first + 2, first + 3]
+        prim = {"attributes": {"POSITION": self.vec3(points), "NORMAL": self.vec3(normals)},
+                "indices": self.indices(order, 5121), "material": material}
         self.meshes.append({"name": name, "primitives": [prim]})
         return len(self.meshes) - 1
 
@@ -203,9 +225,23 @@ def bad_index():
     write("bad_index.gltf", b.document(materials=MATERIALS[:1], nodes=[{"mesh": 0}], scenes=[{"nodes": [0]}]))
 
 
+def volume():
+    b = Builder()
+    b.cube("Cube", 0.5, 0)
+    glass = {"name": "Tinted Glass",
+             "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0, "roughnessFactor": 0},
+             "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_ior": {"ior": 1},
+                            "KHR_materials_volume": {"thicknessFactor": 1, "attenuationDistance": 0.5,
+                                                     "attenuationColor": [0.8, 0.5, 1]}}}
+    write("volume.gltf", b.document(
+        materials=[glass], nodes=[{"name": "Cube", "mesh": 0}], scenes=[{"nodes": [0]}], scene=0,
+        extensionsUsed=["KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"]))
+
+
 point()
 spot()
 directional()
 emissive()
 sparse()
 bad_index()
+volume()
