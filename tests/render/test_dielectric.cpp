@@ -189,7 +189,10 @@ TEST_CASE("dielectric: eval is Walter's BSDF and reciprocal with the eta^2 rule,
                 CAPTURE(wi.z);
                 CHECK(forward == doctest::Approx(walter).epsilon(2e-3));
                 const double nWi = through ? ni : no;
-                CHECK(forward / (no * no) == doctest::Approx(backward / (nWi * nWi)).epsilon(2e-3));
+                // Relative, but for values below 1e-3 (the lobes reach 1-100): those are held to 2e-6,
+                // as the half vector seen from the dense side loses digits to cancellation there
+                // (up to 2% of a value of 1e-7).
+                CHECK(forward / (no * no) == doctest::Approx(backward / (nWi * nWi)).epsilon(2e-3).scale(1e-3));
                 CHECK(backwardSameSide == doctest::Approx(backward).epsilon(1e-5));
             }
         }
