@@ -367,10 +367,11 @@ private:
             }
         }
         if (!transmits || thickness == 0.0 || std::isinf(distance)) return std::nullopt;
-        // A channel of 0 absorbs everything: the largest coefficient a scene may hold.
+        // A channel of 0 absorbs everything: the largest coefficient a scene may hold. ln(1 / c),
+        // not -ln(c): a channel of 1 absorbs +0, not -0.
         Rgb sigma;
         for (int k = 0; k < 3; ++k)
-            sigma[k] = float(std::min(-std::log(double(colour[k])) / distance, kMaxMagnitude));
+            sigma[k] = float(std::min(std::log(1.0 / double(colour[k])) / distance, kMaxMagnitude));
         return sigma;
     }
 

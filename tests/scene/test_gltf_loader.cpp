@@ -383,6 +383,7 @@ TEST_CASE("a glTF material's KHR_materials_volume makes its object bound an abso
     CHECK(medium.sigmaA.r == doctest::Approx(-std::log(0.8) / 0.5).scale(0).epsilon(1e-6));
     CHECK(medium.sigmaA.g == doctest::Approx(-std::log(0.5) / 0.5).scale(0).epsilon(1e-6));
     CHECK(medium.sigmaA.b == 0.0f);
+    CHECK(!std::signbit(medium.sigmaA.b));
     CHECK(isBlack(medium.sigmaS));
     CHECK(!medium.scatters());
     CHECK(!warns(scene, "KHR_materials_volume"));
