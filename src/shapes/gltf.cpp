@@ -191,6 +191,8 @@ LIGHTPATH_REGISTER_SHAPE(lightpath::ShapeType{
        "applied first, about the file's origin: one factor for every axis or one per axis"},
       {"rotate_y", lightpath::ParameterType::Number, "degrees", "0", {}, "then a turn about the y axis (x towards −z)"},
       {"translate", lightpath::ParameterType::Point, "m", "[0, 0, 0]", {}, "then a move by this vector"},
-      lightpath::kShapeInteriorParameter},
+      {lightpath::kShapeInteriorParameter.name, lightpath::ParameterType::Name, "", "", {},
+       "a medium of `[media]` filling every part, in place of the file's own (KHR_materials_volume); default: "
+       "the file's, else none (vacuum)"}},
      ""},
     1002, "gltf", lightpath::addGltf, lightpath::ShapeStorage::triangles})
