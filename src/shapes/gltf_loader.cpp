@@ -149,6 +149,23 @@ private:
                 }
     }
 
+    // An extension object's colour `key`: three numbers from 0 to `high`, else white when absent;
+    // anything else is an error located at `at`.key.
+    Rgb extensionRgb(const tinygltf::Value& extension, const std::string& key, double high, const std::string& at) const {
+        Rgb colour{1.0f};
+        if (!extension.Has(key)) return colour;
+        const std::string expected = "expected three numbers from 0 to " + formatNumber(high);
+        const tinygltf::Value& c = extension.Get(key);
+        if (!c.IsArray() || c.ArrayLen() != 3) fail(at + "." + key, expected);
+        for (int k = 0; k < 3; ++k) {
+            const tinygltf::Value& x = c.Get(k);
+            const double value = x.IsNumber() ? x.GetNumberAsDouble() : std::nan("");
+            if (!(value >= 0.0 && value <= high)) fail(at + "." + key, expected);
+            colour[k] = float(value);
+        }
+        return colour;
+    }
+
     // A number in an extension object, else `fallback`.
     static double extensionNumber(const tinygltf::ExtensionMap& extensions, const std::string& extension,
                                   const std::string& key, double fallback) {
@@ -169,17 +186,7 @@ private:
         const std::string at = where + ".extensions.KHR_materials_specular";
         const tinygltf::Value& e = found->second;
         if (!e.IsObject()) fail(at, "expected an object");
-        Rgb colour{1.0f};
-        if (e.Has("specularColorFactor")) {
-            const tinygltf::Value& c = e.Get("specularColorFactor");
-            if (!c.IsArray() || c.ArrayLen() != 3) fail(at + ".specularColorFactor", "expected three numbers");
-            for (int k = 0; k < 3; ++k) {
-                const tinygltf::Value& x = c.Get(k);
-                if (!x.IsNumber() || !(x.GetNumberAsDouble() >= 0.0) || !finite(x.GetNumberAsDouble()))
-                    fail(at + ".specularColorFactor", "expected three numbers from 0" + std::string(kMagnitudeRange));
-                colour[k] = float(x.GetNumberAsDouble());
-            }
-        }
+        const Rgb colour = extensionRgb(e, "specularColorFactor", kMaxMagnitude, at);
         const double weight = number(extensionNumber(m.extensions, "KHR_materials_specular", "specularFactor", 1.0), 0.0,
                                      1.0, at + ".specularFactor");
         if (weight != 1.0)
@@ -355,17 +362,7 @@ private:
                 fail(at + ".attenuationDistance", "expected a number above 0 and at most " +
                                                       std::string(kMaxMagnitudeText) + ", got " + formatNumber(distance));
         }
-        Rgb colour{1.0f};
-        if (e.Has("attenuationColor")) {
-            const tinygltf::Value& c = e.Get("attenuationColor");
-            if (!c.IsArray() || c.ArrayLen() != 3) fail(at + ".attenuationColor", "expected three numbers from 0 to 1");
-            for (int k = 0; k < 3; ++k) {
-                const tinygltf::Value& x = c.Get(k);
-                const double value = x.IsNumber() ? x.GetNumberAsDouble() : std::nan("");
-                if (!(value >= 0.0 && value <= 1.0)) fail(at + ".attenuationColor", "expected three numbers from 0 to 1");
-                colour[k] = float(value);
-            }
-        }
+        const Rgb colour = extensionRgb(e, "attenuationColor", 1.0, at);
         if (!transmits || thickness == 0.0 || std::isinf(distance)) return std::nullopt;
         // A channel of 0 absorbs everything: the largest coefficient a scene may hold. ln(1 / c),
         // not -ln(c): a channel of 1 absorbs +0, not -0.
