@@ -17,7 +17,6 @@
 #include "cli/lpe_command.h"
 #include "config/render_config.h"
 #include "film/aov_set.h"
-#include "io/image_module.h"
 #include "io/image_writer.h"
 #include "lpe/analysis.h"
 #include "lpe/error.h"
@@ -150,12 +149,8 @@ void renderDifference(const Exercise& exercise, const std::string& yours, const 
                 options.samplesPerPixel, meanOf(difference.layer(1)), meanOf(difference.layer(2)),
                 meanOf(difference.layer(0)));
     try {
-        locateImageModule();
-        imageCodec();
         for (const auto& file : writeFilm(difference, output, {{"lightpath:exercise", exercise.id}}))
             std::cout << "wrote " << file.string() << '\n';
-    } catch (const ImageModuleError& e) {
-        throw CLI::RuntimeError(e.what(), kExitFailure);
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }

@@ -22,7 +22,6 @@
 #include "cli/serve_command.h"
 #include "cli/stress_command.h"
 #include "cli/types_command.h"
-#include "io/image_module.h"
 #include "render/memory_limit.h"
 
 namespace {

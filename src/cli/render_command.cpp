@@ -15,7 +15,6 @@
 #include "config/exit_codes.h"
 #include "config/lpe_verdict.h"
 #include "config/messages.h"
-#include "io/image_module.h"
 #include "io/image_writer.h"
 #include "io/text_file.h"
 
@@ -29,10 +28,9 @@ struct RenderCommand {
     bool stats = false;
 };
 
-// Wall time spent writing the output, and how much of it went on waiting for the image module.
+// Wall time spent writing the output.
 struct WriteStats {
     double seconds = 0.0;
-    double moduleWaitSeconds = 0.0;
     std::size_t files = 0;
 };
 
@@ -65,8 +63,8 @@ void printStats(const RenderStats& stats, const WriteStats& write, const std::st
     std::printf("time          %.3f s on %d thread%s (%.3f s CPU): %.0f samples/s, %.2f M rays/s\n", stats.seconds,
                 stats.threads, stats.threads == 1 ? "" : "s", stats.cpuSeconds, static_cast<double>(stats.samples) / stats.seconds,
                 static_cast<double>(r.total()) / stats.seconds * 1e-6);
-    std::printf("wall time     rendering %.3f s, writing %.3f s (%zu file%s; %.3f s of it waiting for the image module)\n",
-                stats.seconds, write.seconds, write.files, write.files == 1 ? "" : "s", write.moduleWaitSeconds);
+    std::printf("wall time     rendering %.3f s, writing %.3f s (%zu file%s)\n", stats.seconds, write.seconds, write.files,
+                write.files == 1 ? "" : "s");
     if (!stats.workerCpuSeconds.empty()) {
         // CPU time is what load on the machine does not stretch: serial + the busiest worker is
         // the render's time on an idle machine.
@@ -159,7 +157,6 @@ void run(const RenderCommand& command) {
     const AovSet aovs = config.buildAovSet(scene, judge);
     RenderOptions options = config.renderOptions();
     options.cancel = &interrupted;
-    options.onWorkersStarted = loadImageModule;
     PixelMemory memory;
     try {
         memory = Renderer::pixelMemory(scene, aovs, options);
@@ -185,14 +182,6 @@ void run(const RenderCommand& command) {
         throw CLI::RuntimeError(e.what(), kExitBadInput);
     }
 
-    // Every input is accepted: an image will be written. Fail now if it could not be; the image
-    // module (OpenImageIO) is loaded by the calling thread once the other workers render
-    // (RenderOptions::onWorkersStarted says why then).
-    try {
-        locateImageModule();
-    } catch (const ImageModuleError& e) {
-        throw CLI::RuntimeError(e.what(), kExitFailure);
-    }
     if (!command.readyFile.empty() && !std::ofstream(command.readyFile))
         throw CLI::RuntimeError("--ready-file: cannot create " + command.readyFile, kExitFailure);
 
@@ -204,8 +193,7 @@ void run(const RenderCommand& command) {
                            {"lightpath:spp", std::to_string(options.samplesPerPixel)},
                            {"lightpath:max_depth", std::to_string(options.maxDepth)},
                            {"lightpath:seconds", std::to_string(result.stats.seconds)},
-                           // the workers' own CPU time: without the image module's load, which
-                           // a 1-thread render otherwise counts in its wall seconds
+                           // the workers' own CPU time, which load on the machine does not stretch
                            {"lightpath:cpu_seconds", std::to_string(result.stats.cpuSeconds)}};
     for (const auto& e : aovs.expressions()) metadata.emplace_back("lightpath:lpe:" + e.name, e.expression);
     // A preset's AOV this integrator or this scene cannot fill is written black, so the set still
@@ -215,15 +203,11 @@ void run(const RenderCommand& command) {
     WriteStats write;
     const auto writeStart = std::chrono::steady_clock::now();
     try {
-        imageCodec();
-        write.moduleWaitSeconds = secondsSince(writeStart);
         setActivity("writing " + command.output);
         const auto files = writeFilm(result.film, command.output, metadata, options.threads);
         write.seconds = secondsSince(writeStart);
         write.files = files.size();
         for (const auto& file : files) std::cout << "wrote " << file.string() << "\n";
-    } catch (const ImageModuleError& e) {
-        throw CLI::RuntimeError(e.what(), kExitFailure);
     } catch (const ImageWriteError& e) {
         throw CLI::RuntimeError(e.what(), kExitFailure);
     }

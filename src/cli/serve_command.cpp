@@ -13,7 +13,6 @@
 
 #include "config/exit_codes.h"
 #include "config/render_config.h"
-#include "io/image_module.h"
 #include "serve/server.h"
 #include "serve/session.h"
 
@@ -62,7 +61,6 @@ void run(const ServeCommand& command) {
     } catch (const std::runtime_error& e) {
         throw CLI::RuntimeError(std::string("--host/--port: ") + e.what(), kExitBadInput);
     }
-    loadImageModule();  // the page asks for PNGs at once: have OpenImageIO loaded by then
     if (!isLoopback(command.host))
         std::cerr << "warning: --host " << command.host
                   << ": anyone who can reach this address can use the server; it has no authentication (docs/serve.md)\n";

@@ -1,11 +1,13 @@
 #pragma once
 // The interface between lightpath and its image module, liblightpath-image.so: the only code that
-// includes OpenImageIO. Debian's libOpenImageIO pulls in about 260 shared libraries, which take
-// the dynamic loader half a second to map; a command that writes no image must not pay that, so
-// the module is opened with dlopen on first use (io/image_module.h) and this header is all the
-// two sides share. Both are built together by the same compiler, so the types may be C++.
+// includes OpenImageIO, for its TextureSystem (filtered, MIP-mapped, cached texture lookups) and
+// its readers of every image format a texture may come in. Debian's libOpenImageIO pulls in about
+// 260 shared libraries, which take the dynamic loader a quarter to half a second of CPU to bind;
+// a command whose scene has no texture must not pay that (renders write their EXR and PNG files
+// through OpenEXR and libpng: io/exr_file.h, io/png_file.h), so the module is opened with dlopen
+// on first use (io/image_module.h) and this header is all the two sides share. Both are built
+// together by the same compiler, so the types may be C++.
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace lightpath {
@@ -14,27 +16,7 @@ namespace lightpath {
 // or nullptr when `interfaceVersion` is not the one it was built with (a stale module).
 inline constexpr const char* kImageCodecEntryPoint = "lightpathImageCodec";
 // Bumped whenever anything in this header changes.
-inline constexpr int kImageCodecInterfaceVersion = 5;
-
-enum class PixelFormat { UInt8, Float32 };
-
-// One image file to write: `channelNames.size()` interleaved values per pixel, row by row.
-struct ImageFileSpec {
-    int width = 0;
-    int height = 0;
-    std::vector<std::string> channelNames;
-    PixelFormat format = PixelFormat::UInt8;
-    std::vector<std::pair<std::string, std::string>> textAttributes;  // metadata and options
-    std::vector<std::pair<std::string, int>> intAttributes;           // e.g. png:compressionLevel
-};
-
-// An image read back: every channel as float, interleaved, row by row.
-struct ImageData {
-    int width = 0;
-    int height = 0;
-    std::vector<std::string> channelNames;
-    std::vector<float> pixels;
-};
+inline constexpr int kImageCodecInterfaceVersion = 6;
 
 // A filtered texture lookup (OpenImageIO's TextureSystem::texture): the texture coordinates (s, t)
 // of a surface point and their change across one pixel in x and in y, which set the filter.
@@ -63,17 +45,6 @@ struct TextureFileHandle;
 
 class ImageCodec {
 public:
-    // Writes `pixels` as format `formatName` ("png", "exr") into `file`, whatever its name's
-    // extension. Returns an empty string, or why it could not. Safe to call from several
-    // threads at once, each for its own file.
-    virtual std::string write(const std::string& formatName, const std::string& file, const ImageFileSpec& spec,
-                              const void* pixels) const = 0;
-    // The same file's bytes in `bytes`, written in memory: no file, no folder (what `serve`
-    // answers with). Returns an empty string, or why it could not.
-    virtual std::string encode(const std::string& formatName, const ImageFileSpec& spec, const void* pixels,
-                               std::vector<unsigned char>& bytes) const = 0;
-    // Reads `file` into `image`. Returns an empty string, or why it could not.
-    virtual std::string read(const std::string& file, ImageData& image) const = 0;
     // Opens a texture (MIP-mapped on first use if it has no levels, tiled, cached); nullptr with
     // `error` set when it cannot be read. Handles live as long as the process. An sRGB or an
     // in-memory image is decoded once into memory (linearised), never written to disk.

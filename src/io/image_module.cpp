@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -26,6 +27,21 @@ std::vector<fs::path> placesToLook() {
     places.emplace_back(LIGHTPATH_IMAGE_MODULE_BUILD_PATH);
 #endif
     return places;
+}
+
+// The module's path: the first of placesToLook that exists; throws ImageModuleError naming every
+// place it looked.
+fs::path locateImageModule() {
+    const std::vector<fs::path> places = placesToLook();
+    std::string looked;
+    for (const fs::path& place : places) {
+        std::error_code error;
+        if (fs::is_regular_file(place, error)) return place;
+        looked += (looked.empty() ? "" : ", ") + place.string();
+    }
+    throw ImageModuleError(std::string("cannot read textures: the image module ") + kModuleFileName +
+                           " is not at " + looked + " (it is built with lightpath: cmake --build build --target " +
+                           "lightpath-image; or set " + kModuleVariable + " to its path)");
 }
 
 struct LoadResult {
@@ -63,21 +79,6 @@ const LoadResult& loaded() {
 }
 
 }  // namespace
-
-fs::path locateImageModule() {
-    const std::vector<fs::path> places = placesToLook();
-    std::string looked;
-    for (const fs::path& place : places) {
-        std::error_code error;
-        if (fs::is_regular_file(place, error)) return place;
-        looked += (looked.empty() ? "" : ", ") + place.string();
-    }
-    throw ImageModuleError(std::string("cannot read or write images: the image module ") + kModuleFileName +
-                           " is not at " + looked + " (it is built with lightpath: cmake --build build --target " +
-                           "lightpath-image; or set " + kModuleVariable + " to its path)");
-}
-
-void loadImageModule() { loaded(); }
 
 const ImageCodec& imageCodec() {
     const LoadResult& result = loaded();

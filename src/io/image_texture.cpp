@@ -55,19 +55,16 @@ private:
     int alphaChannel_ = -1;
 };
 
+// A missing or broken image module is no fault of the scene: ImageModuleError goes to the
+// command, which fails with exit code 1 (a file that cannot be read is the scene's, in `error`).
 std::shared_ptr<const Texture> openImageTexture(const TextureSource& source, std::string& error) {
-    try {
-        const ImageCodec& codec = imageCodec();
-        const TextureRequest::ColorSpace colorSpace = source.colorSpace == TextureColorSpace::srgb     ? TextureRequest::ColorSpace::Srgb
-                                                      : source.colorSpace == TextureColorSpace::linear ? TextureRequest::ColorSpace::Linear
-                                                                                                       : TextureRequest::ColorSpace::Automatic;
-        TextureFileHandle* handle = codec.openTexture({source.file, source.bytes, colorSpace}, error);
-        if (handle == nullptr) return nullptr;
-        return std::make_shared<const ImageTexture>(codec, handle);
-    } catch (const ImageModuleError& e) {
-        error = e.what();
-        return nullptr;
-    }
+    const ImageCodec& codec = imageCodec();
+    const TextureRequest::ColorSpace colorSpace = source.colorSpace == TextureColorSpace::srgb     ? TextureRequest::ColorSpace::Srgb
+                                                  : source.colorSpace == TextureColorSpace::linear ? TextureRequest::ColorSpace::Linear
+                                                                                                   : TextureRequest::ColorSpace::Automatic;
+    TextureFileHandle* handle = codec.openTexture({source.file, source.bytes, colorSpace}, error);
+    if (handle == nullptr) return nullptr;
+    return std::make_shared<const ImageTexture>(codec, handle);
 }
 
 const bool kRegistered = (registerTextureOpener(openImageTexture), true);

@@ -11,7 +11,8 @@
 #include <thread>
 
 #include "film/large_buffer.h"
-#include "io/image_module.h"
+#include "io/exr_file.h"
+#include "io/png_file.h"
 #include "io/text_file.h"
 
 namespace lightpath {
@@ -27,8 +28,7 @@ constexpr const char* kBeautyLayer = "beauty";
 // 0.51 s and 611 KB; level 6 without filters 0.22 s, 576 KB; level 1 without filters 0.148 s,
 // 1.0 MB. Rendered images (smooth shading, AOVs mostly black) compress well without filters, and
 // trying five filters on every row costs more than it saves; level 1 is zlib's fastest.
-constexpr int kPngCompressionLevel = 1;
-constexpr int kPngRowFilter = 8;  // PNG_FILTER_NONE
+constexpr PngCompression kPngCompression{.level = 1, .rowFilters = false};
 constexpr std::size_t kPngBytesPerPixel = 3;  // 8-bit R, G, B
 
 std::string lowerExtension(const fs::path& path) {
@@ -109,19 +109,15 @@ ImageFileSpec exrSpec(const Film& film, const ImageMetadata& metadata) {
         const std::string prefix = name == kBeautyLayer ? "" : name + ".";
         for (const char* c : {"R", "G", "B"}) spec.channelNames.push_back(prefix + c);
     }
-    spec.textAttributes.emplace_back("compression", "zip");
     return spec;
 }
 
-std::string writeExr(const ImageCodec& codec, const Film& film, const fs::path& temporary, const ImageMetadata& metadata) {
-    return codec.write("exr", temporary.string(), exrSpec(film, metadata), film.interleaved().data());
-}
+const float* exrPixels(const Film& film) { return reinterpret_cast<const float*>(film.interleaved().data()); }
 
 // One layer as an 8-bit sRGB PNG: its spec, and its pixels.
 ImageFileSpec pngSpec(const Film& film, const ImageMetadata& metadata) {
     ImageFileSpec spec = specFor(film, PixelFormat::UInt8, metadata);
     spec.channelNames = {"R", "G", "B"};
-    spec.intAttributes = {{"png:compressionLevel", kPngCompressionLevel}, {"png:filter", kPngRowFilter}};
     return spec;
 }
 
@@ -135,9 +131,8 @@ std::vector<unsigned char, LargeBufferAllocator<unsigned char>> pngPixels(const 
     return encoded;
 }
 
-std::string writePng(const ImageCodec& codec, const Film& film, std::size_t layer, const fs::path& temporary,
-                     const ImageMetadata& metadata) {
-    return codec.write("png", temporary.string(), pngSpec(film, metadata), pngPixels(film, layer, 1.0f).data());
+std::string writePng(const Film& film, std::size_t layer, const fs::path& temporary, const ImageMetadata& metadata) {
+    return writePngFile(temporary, pngSpec(film, metadata), pngPixels(film, layer, 1.0f).data(), kPngCompression);
 }
 
 // Runs task(0..count-1) on up to `threads` threads (0: one per core); returns the first failure.
@@ -176,25 +171,21 @@ std::string runInParallel(std::size_t count, int threads, const Task& task) {
     return firstError;
 }
 
-}  // namespace
-
-namespace {
-
-std::vector<unsigned char> encoded(const char* format, const ImageFileSpec& spec, const void* pixels) {
-    std::vector<unsigned char> bytes;
-    const std::string failure = imageCodec().encode(format, spec, pixels, bytes);
+std::vector<unsigned char> checked(const std::string& failure, std::vector<unsigned char>& bytes) {
     if (!failure.empty()) throw ImageWriteError(failure);
-    return bytes;
+    return std::move(bytes);
 }
 
 }  // namespace
 
 std::vector<unsigned char> encodeExr(const Film& film, const ImageMetadata& metadata) {
-    return encoded("exr", exrSpec(film, metadata), film.interleaved().data());
+    std::vector<unsigned char> bytes;
+    return checked(encodeExrBytes(exrSpec(film, metadata), exrPixels(film), bytes), bytes);
 }
 
 std::vector<unsigned char> encodePng(const Film& film, std::size_t layer, float scale) {
-    return encoded("png", pngSpec(film, {}), pngPixels(film, layer, scale).data());
+    std::vector<unsigned char> bytes;
+    return checked(encodePngBytes(pngSpec(film, {}), pngPixels(film, layer, scale).data(), kPngCompression, bytes), bytes);
 }
 
 unsigned char toSrgb8(float linear) { return srgb8Table().encode(linear); }
@@ -229,13 +220,12 @@ std::vector<fs::path> writeFilm(const Film& film, const fs::path& path, const Im
         for (const fs::path& t : temporaries) fs::remove(t, ignored);
     };
     try {
-        const ImageCodec& codec = imageCodec();
         if (path.has_parent_path()) fs::create_directories(path.parent_path());
         const bool exr = lowerExtension(path) == ".exr";
         // One task per file: PNG layers are tone-mapped and compressed side by side.
         const std::string error = runInParallel(targets.size(), threads, [&](std::size_t i) {
-            const std::string failure = exr ? writeExr(codec, film, temporaries[i], metadata)
-                                            : writePng(codec, film, i, temporaries[i], metadata);
+            const std::string failure = exr ? writeExrFile(temporaries[i], exrSpec(film, metadata), exrPixels(film))
+                                            : writePng(film, i, temporaries[i], metadata);
             return failure.empty() ? failure : targets[i].string() + ": cannot write image (" + failure + ")";
         });
         if (!error.empty()) throw ImageWriteError(error);

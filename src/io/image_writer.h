@@ -1,6 +1,5 @@
 #pragma once
-// Writes a film with OpenImageIO, through the image module loaded on first use (io/image_module.h;
-// docs/design.md, "Output"):
+// Writes a film as image files (docs/design.md, "Output"), through OpenEXR and libpng:
 //   NAME.exr  one multi-layer EXR: the layer "beauty" as R,G,B and each other layer as
 //             <layer>.R/.G/.B, the metadata as header attributes;
 //   NAME.png  the beauty as NAME.png and every other layer as NAME.<layer>.png, clamped and

@@ -328,9 +328,7 @@ RenderResult Renderer::render(std::uint64_t seed, int samplesPerPixel, const Pas
             passesCpu += threadCpuSeconds() - before;
             nextTile.value = 0;
         }
-        runWorkers(static_cast<unsigned>(threadCount), errors, work, [&] {
-            if (pass == 0 && options_.onWorkersStarted) options_.onWorkersStarted();
-        });
+        runWorkers(static_cast<unsigned>(threadCount), errors, work);
         if (observer && progressive && pass + 1 < passes && !cancelled() && !errors.failed()) observer(film, (pass + 1) * perPass);
     }
     const double afterWorkersCpu = threadCpuSeconds();

@@ -68,11 +68,6 @@ struct RenderOptions {
     // The integrator's own parameters (its schema's; config/render_config.h fills them): when
     // set, they replace the integrator's defaults and `radiosity` above.
     std::optional<ParameterValues> integratorParameters;
-    // Called on the calling thread once every worker thread of render() exists, before it renders
-    // its own share. Creating a thread waits for a dlopen() in progress on another thread
-    // (glibc's loader lock): a library loaded during the render (the image module) is loaded
-    // here, or the second worker may wait for all of it (seen: 1.5 s of a 0.15 s render).
-    std::function<void()> onWorkersStarted;
 };
 
 struct RenderStats {

@@ -36,24 +36,18 @@ private:
     std::exception_ptr first_;
 };
 
-// Runs work(0) on the calling thread and work(1) ... work(count - 1) on their own threads, calls
-// started() once they all exist, joins them, and rethrows the first exception any of them threw.
-// Workers see errors.failed() once one has thrown, and should stop.
-template <typename Work, typename Started>
-void runWorkers(unsigned count, WorkerErrors& errors, const Work& work, const Started& started) {
+// Runs work(0) on the calling thread and work(1) ... work(count - 1) on their own threads, joins
+// them, and rethrows the first exception any of them threw. Workers see errors.failed() once one
+// has thrown, and should stop.
+template <typename Work>
+void runWorkers(unsigned count, WorkerErrors& errors, const Work& work) {
     {
         std::vector<std::jthread> helpers;
         helpers.reserve(count > 0 ? count - 1 : 0);
         for (unsigned w = 1; w < count; ++w) helpers.emplace_back([&errors, &work, w] { errors.capture([&] { work(w); }); });
-        errors.capture(started);
         errors.capture([&] { work(0u); });
     }
     errors.rethrow();
-}
-
-template <typename Work>
-void runWorkers(unsigned count, WorkerErrors& errors, const Work& work) {
-    runWorkers(count, errors, work, [] {});
 }
 
 }  // namespace lightpath

@@ -1,7 +1,11 @@
-// writeFilm and readFilm through the image module (liblightpath-image.so): an EXR reads back bit
-// for bit, every PNG holds its own layer whichever thread wrote it, and a file that cannot be
-// written leaves no output, no temporary and any older image as it was.
+// writeFilm and readFilm (OpenEXR, libpng): an EXR reads back bit for bit, every PNG holds its
+// own layer whichever thread wrote it (read back by libpng's own simplified reader), and a file
+// that cannot be written leaves no output, no temporary and any older image as it was.
 #include <doctest/doctest.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfStringAttribute.h>
+#include <png.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -30,6 +34,24 @@ std::string contents(const fs::path& file) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// An 8-bit RGB PNG decoded by libpng's simplified API, which converts any PNG to the format
+// asked for: what a viewer would show.
+struct PngPixels {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+PngPixels readPng(const fs::path& file) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE_MESSAGE(png_image_begin_read_from_file(&image, file.c_str()) != 0, image.message);
+    image.format = PNG_FORMAT_RGB;
+    PngPixels png{static_cast<int>(image.width), static_cast<int>(image.height), {}};
+    png.rgb.resize(PNG_IMAGE_SIZE(image));
+    REQUIRE_MESSAGE(png_image_finish_read(&image, nullptr, png.rgb.data(), 0, nullptr) != 0, image.message);
+    return png;
+}
+
 // Every layer and pixel different, with values below 0 and above 1 that PNG must clamp.
 Film patternFilm() {
     Film film(37, 23, {"beauty", "direct", "mirror", "rest"});
@@ -53,6 +75,27 @@ TEST_CASE("a multi-layer EXR reads back bit for bit, layer names included") {
     CHECK(std::equal(a.begin(), a.end(), b.begin(), b.end()));
 }
 
+TEST_CASE("an EXR or a PNG encoded in memory (serve's answers) is the file's bytes; the EXR keeps the metadata") {
+    const Film film = patternFilm();
+    const fs::path directory = freshDirectory("memory");
+    const ImageMetadata metadata{{"lightpath:test", "yes"}, {"lightpath:lpe:caustic", "E(D|G)S+<L.>"}};
+    writeFilm(film, directory / "film.exr", metadata);
+    const std::vector<unsigned char> exr = encodeExr(film, metadata);
+    const std::string file = contents(directory / "film.exr");
+    CHECK(std::string(exr.begin(), exr.end()) == file);
+    Imf::InputFile in((directory / "film.exr").c_str());
+    for (const auto& [key, value] : metadata) {
+        const auto* attribute = in.header().findTypedAttribute<Imf::StringAttribute>(key);
+        REQUIRE_MESSAGE(attribute != nullptr, key);
+        CHECK(attribute->value() == value);
+    }
+    const std::vector<fs::path> pngs = writeFilm(film, directory / "film.png", {});
+    for (std::size_t l = 0; l < pngs.size(); ++l) {
+        const std::vector<unsigned char> png = encodePng(film, l);
+        CHECK_MESSAGE(std::string(png.begin(), png.end()) == contents(pngs[l]), pngs[l].string());
+    }
+}
+
 TEST_CASE("each PNG holds its own layer, sRGB-encoded, whichever thread wrote it") {
     const Film film = patternFilm();
     for (int threads : {1, 3}) {
@@ -62,13 +105,16 @@ TEST_CASE("each PNG holds its own layer, sRGB-encoded, whichever thread wrote it
         REQUIRE(written.size() == film.layerCount());
         CHECK(written[1].filename() == "film.direct.png");
         for (std::size_t l = 0; l < film.layerCount(); ++l) {
-            const Film png = readFilm(written[l]);  // R, G, B as floats: code / 255
-            REQUIRE(png.width() == film.width());
+            const PngPixels png = readPng(written[l]);
+            REQUIRE(png.width == film.width());
+            REQUIRE(png.height == film.height());
             int mismatches = 0;
             for (int y = 0; y < film.height(); ++y)
                 for (int x = 0; x < film.width(); ++x)
                     for (int c = 0; c < 3; ++c)
-                        if (std::lround(png.at(0, x, y)[c] * 255.0f) != toSrgb8(film.at(l, x, y)[c])) ++mismatches;
+                        if (png.rgb[(static_cast<std::size_t>(y) * static_cast<std::size_t>(png.width) + static_cast<std::size_t>(x)) * 3 +
+                                    static_cast<std::size_t>(c)] != toSrgb8(film.at(l, x, y)[c]))
+                            ++mismatches;
             CHECK_MESSAGE(mismatches == 0, written[l].string());
         }
     }

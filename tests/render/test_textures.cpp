@@ -15,7 +15,7 @@
 #include "film/aov_presets.h"
 #include "film/aov_set.h"
 #include "io/image_codec.h"
-#include "io/image_module.h"
+#include "io/png_file.h"
 #include "materials/microfacet_material.h"
 #include "render/renderer.h"
 #include "scene/scene_loader.h"
@@ -43,7 +43,7 @@ public:
         ImageFileSpec spec;
         spec.width = spec.height = kTexels;
         spec.channelNames = {"R", "G", "B"};
-        error_ = imageCodec().write("png", path().string(), spec, pixels.data());
+        error_ = writePngFile(path(), spec, pixels.data(), {});
     }
 
     std::filesystem::path path() const { return folder_.path() / "checker.png"; }
@@ -277,7 +277,7 @@ std::string writeRow(const test::TempFolder& folder, const std::string& name, co
     spec.height = 1;
     spec.channelNames = {"R", "G", "B"};
     const std::string file = (folder.path() / name).string();
-    REQUIRE(imageCodec().write("png", file, spec, pixels.data()).empty());
+    REQUIRE(writePngFile(file, spec, pixels.data(), {}).empty());
     return file;
 }
 
