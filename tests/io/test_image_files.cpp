@@ -84,10 +84,10 @@ TEST_CASE("an EXR or a PNG encoded in memory (serve's answers) is the file's byt
     const std::string file = contents(directory / "film.exr");
     CHECK(std::string(exr.begin(), exr.end()) == file);
     Imf::InputFile in((directory / "film.exr").c_str());
-    for (const auto& [key, value] : metadata) {
-        const auto* attribute = in.header().findTypedAttribute<Imf::StringAttribute>(key);
-        REQUIRE_MESSAGE(attribute != nullptr, key);
-        CHECK(attribute->value() == value);
+    for (const auto& entry : metadata) {  // no structured binding: clang 14 cannot capture one in CHECK's lambda
+        const auto* attribute = in.header().findTypedAttribute<Imf::StringAttribute>(entry.first);
+        REQUIRE_MESSAGE(attribute != nullptr, entry.first);
+        CHECK(attribute->value() == entry.second);
     }
     const std::vector<fs::path> pngs = writeFilm(film, directory / "film.png", {});
     for (std::size_t l = 0; l < pngs.size(); ++l) {
