@@ -422,7 +422,7 @@ double asymmetry(const Film& film) {
 
 }  // namespace
 
-TEST_CASE("emitters: a two-sided emissive quad lights both its sides alike in every integrator") {
+TEST_CASE("emitters: a two-sided emissive quad lights both its sides alike in every integrator" * doctest::test_suite("statistical")) {
     const AovSet aovs(classesSet());
     const Scene twoSided = lampBetweenFloorAndCeiling(true), oneSided = lampBetweenFloorAndCeiling(false);
     for (const std::string integrator : {"raycast", "raster", "whitted", "path", "bdpt", "radiosity", "photon", "sppm"}) {

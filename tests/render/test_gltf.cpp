@@ -165,7 +165,8 @@ CyclesComparison compareWithCycles(Scene scene, const std::vector<std::vector<do
 // colour attribute (its material's base colour) exports it as COLOR_0. An orthographic camera (Blender's
 // Orthographic Scale over the image's width) exports xmag and ymag: seen through a pinhole, the same
 // view is far off.
-TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blender: a point lamp, a sun, an emitter, an orthographic camera") {
+TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blender: a point lamp, a sun, an emitter, an orthographic camera" *
+          doctest::test_suite("statistical")) {
     for (const std::string light : {"point", "sun", "emissive", "vertex-colors", "orthographic"}) {
         CAPTURE(light);
         const auto cycles = readBlockMeans(kData / "blender" / (light + "-cycles.txt"));
@@ -193,7 +194,7 @@ TEST_CASE("a Blender scene exported to glTF renders as Cycles renders it in Blen
 // are where the projection puts them: a black plane's edge 18.5 rows from the centre of a 96 x 64
 // render covers its pixel to 0.0002 of the analytic fraction in lightpath, 0.014 more in Cycles
 // 3.4. The control: the card without its alpha (opaque) is far off.
-TEST_CASE("a Blender scene's cut-outs (Alpha Clip, Alpha Blend) render as Cycles renders them") {
+TEST_CASE("a Blender scene's cut-outs (Alpha Clip, Alpha Blend) render as Cycles renders them" * doctest::test_suite("statistical")) {
     for (const std::string file : {"cutout-mask", "cutout-blend"}) {
         CAPTURE(file);
         const auto cycles = readBlockMeans(kData / "blender" / (file + "-cycles.txt"));
