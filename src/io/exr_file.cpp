@@ -48,22 +48,22 @@ void useEveryCore() {
 }
 
 Imf::Header headerFor(const ImageFileSpec& spec) {
-    Imf::Header header(spec.width, spec.height);  // ZIP compression, 16 scanlines per chunk
-    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::Header header(spec.width, spec.height);
+    header.compression() = Imf::ZIP_COMPRESSION;  // 16 scanlines per chunk
     for (const std::string& name : spec.channelNames) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
     for (const auto& [key, value] : spec.textAttributes) header.insert(key, Imf::StringAttribute(value));
     return header;
 }
 
-// Slices into the interleaved pixels. OpenEXR's Slice takes a mutable pointer for reading and
-// writing alike; a writer only reads through it.
-Imf::FrameBuffer frameBufferFor(const ImageFileSpec& spec, const float* pixels) {
-    const std::size_t channels = spec.channelNames.size();
-    const std::size_t xStride = channels * sizeof(float), yStride = xStride * static_cast<std::size_t>(spec.width);
+// Float slices into interleaved pixels, `names.size()` per pixel, row by row over `window`: what a
+// writer reads from and a reader fills (OpenEXR takes the same slices for both).
+Imf::FrameBuffer interleavedFrameBuffer(const std::vector<std::string>& names, const float* pixels,
+                                        const Imath::Box2i& window) {
+    const std::size_t xStride = names.size() * sizeof(float);
+    const std::size_t yStride = xStride * static_cast<std::size_t>(window.max.x - window.min.x + 1);
     Imf::FrameBuffer frameBuffer;
-    for (std::size_t c = 0; c < channels; ++c)
-        frameBuffer.insert(spec.channelNames[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(pixels + c)),
-                                                            xStride, yStride));
+    for (std::size_t c = 0; c < names.size(); ++c)
+        frameBuffer.insert(names[c], Imf::Slice::Make(Imf::FLOAT, pixels + c, window, xStride, yStride));
     return frameBuffer;
 }
 
@@ -79,7 +79,7 @@ std::string write(Target&& target, const ImageFileSpec& spec, const float* pixel
     useEveryCore();
     try {
         Imf::OutputFile out(std::forward<Target>(target), headerFor(spec));
-        out.setFrameBuffer(frameBufferFor(spec, pixels));
+        out.setFrameBuffer(interleavedFrameBuffer(spec.channelNames, pixels, out.header().dataWindow()));
         out.writePixels(spec.height);
     } catch (const std::bad_alloc&) {
         return "out of memory";
@@ -115,11 +115,8 @@ std::string readExrFile(const std::filesystem::path& file, ImageData& image) {
         const std::size_t channels = image.channelNames.size();
         if (image.width <= 0 || image.height <= 0 || channels == 0) return "an empty image";
         image.pixels.assign(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * channels, 0.0f);
-        const std::size_t xStride = channels * sizeof(float), yStride = xStride * static_cast<std::size_t>(image.width);
-        Imf::FrameBuffer frameBuffer;
-        for (std::size_t c = 0; c < channels; ++c)  // half and uint channels are converted to float
-            frameBuffer.insert(image.channelNames[c], Imf::Slice::Make(Imf::FLOAT, image.pixels.data() + c, window, xStride, yStride));
-        in.setFrameBuffer(frameBuffer);
+        // Half and uint channels are converted to float.
+        in.setFrameBuffer(interleavedFrameBuffer(image.channelNames, image.pixels.data(), window));
         in.readPixels(window.min.y, window.max.y);
     } catch (const std::bad_alloc&) {
         return "out of memory";

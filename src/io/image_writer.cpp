@@ -12,6 +12,7 @@
 
 #include "film/large_buffer.h"
 #include "io/exr_file.h"
+#include "io/exr_layers.h"
 #include "io/png_file.h"
 #include "io/text_file.h"
 
@@ -19,8 +20,6 @@ namespace lightpath {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr const char* kBeautyLayer = "beauty";
 
 // PNG is lossless at any setting; the choice trades file size for time. Measured on the seven
 // PNGs of a 1920x1080 Whitted render of scenes/lecture-room.toml, CPU seconds on one thread
@@ -105,10 +104,8 @@ ImageFileSpec specFor(const Film& film, PixelFormat format, const ImageMetadata&
 ImageFileSpec exrSpec(const Film& film, const ImageMetadata& metadata) {
     static_assert(sizeof(Rgb) == 3 * sizeof(float));
     ImageFileSpec spec = specFor(film, PixelFormat::Float32, metadata);
-    for (const std::string& name : film.layerNames()) {
-        const std::string prefix = name == kBeautyLayer ? "" : name + ".";
-        for (const char* c : {"R", "G", "B"}) spec.channelNames.push_back(prefix + c);
-    }
+    for (const std::string& name : film.layerNames())
+        for (const char* c : kRgbChannels) spec.channelNames.push_back(exrChannelName(name, c));
     return spec;
 }
 
