@@ -217,7 +217,7 @@ template <typename Keep>
 bool SceneGeometry::covered(const Ray& ray, const SurfaceHit& hit) const {
     const SurfaceCoverage* coverage = hit.object < coverage_.size() ? coverage_[hit.object].get() : nullptr;
     return coverage == nullptr ||
-           coverage->covers(uvAt(hit.primitive, hit.point, hit.normal),
+           coverage->covers(uvAt(hit.primitive, hit.point, hit.normal), vertexAlphaAt(hit),
                             coverageSample(ray, hit.primitive, glm::dot(hit.normal, ray.direction) < 0.0f));
 }
 
@@ -498,6 +498,12 @@ Rgb SceneGeometry::vertexColorAt(const SurfaceHit& hit) const {
     const TriangleColors& c = triangleColors_[index];
     const Vec3 w = barycentricsOf(triangles_[index], hit.point);
     return w.x * c.a + w.y * c.b + w.z * c.c;
+}
+
+float SceneGeometry::vertexAlphaAt(const SurfaceHit& hit) const {
+    if (triangleColors_.empty() || hit.primitive < shapes_.size()) return 1.0f;
+    const std::uint32_t index = hit.primitive - firstTriangle();
+    return glm::dot(barycentricsOf(triangles_[index], hit.point), triangleColors_[index].alpha);
 }
 
 Vec2 SceneGeometry::uvAt(std::uint32_t id, const Vec3& point, const Vec3& normal, const Vec3* barycentrics) const {

@@ -101,6 +101,8 @@ public:
     Vec2 uvAt(std::uint32_t id, const Vec3& point, const Vec3& normal, const Vec3* barycentrics = nullptr) const;
     // The vertex colour at a hit (glTF's COLOR_0): a triangle's corner colours interpolated, else white.
     Rgb vertexColorAt(const SurfaceHit& hit) const;
+    // Its alpha there (COLOR_0's fourth component, interpolated), else 1: what cut-outs multiply.
+    float vertexAlphaAt(const SurfaceHit& hit) const;
 
     const NumericsOptions& numerics() const { return numerics_; }
     Accelerator accelerator() const { return accelerator_; }

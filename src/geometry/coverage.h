@@ -15,11 +15,12 @@ namespace lightpath {
 class SurfaceCoverage {
 public:
     virtual ~SurfaceCoverage() = default;
-    // Whether a ray meets the surface at texture coordinates `uv`. `u` in [0, 1) is the ray's own
-    // uniform number there (coverageSample): a fractional coverage of 0.3 stops the rays whose u is
-    // below 0.3, a stochastic transparency that averages to the blend over a pixel's samples
-    // (Enderton et al. 2010; pbrt-v4's alpha test).
-    virtual bool covers(Vec2 uv, float u) const = 0;
+    // Whether a ray meets the surface at texture coordinates `uv`, where the mesh's own alpha
+    // (glTF's COLOR_0 alpha; 1 without) is `vertexAlpha`. `u` in [0, 1) is the ray's own uniform
+    // number there (coverageSample): a fractional coverage of 0.3 stops the rays whose u is below
+    // 0.3, a stochastic transparency that averages to the blend over a pixel's samples (Enderton
+    // et al. 2010; pbrt-v4's alpha test).
+    virtual bool covers(Vec2 uv, float vertexAlpha, float u) const = 0;
 };
 
 // The uniform number of `ray` where it meets primitive `primitive` from its front (`front`) or

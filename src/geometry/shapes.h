@@ -47,9 +47,11 @@ struct TriangleTangents {
 };
 
 // The colours at a triangle's corners (glTF's COLOR_0, linear RGB), which multiply its material's
-// base colour; white where a mesh has none.
+// base colour, and their alphas (COLOR_0's fourth component), which multiply its alpha; white and
+// 1 where a mesh has none.
 struct TriangleColors {
     Rgb a{1.0f}, b{1.0f}, c{1.0f};
+    Vec3 alpha{1.0f};  // at a, b, c
 };
 
 // A surface point's texture coordinates and the surface's derivatives along them (pbrt-v4's

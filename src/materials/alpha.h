@@ -23,11 +23,13 @@ public:
     // alpha at `uv`: the texture read at its finest level (bilinear), so the mask's outline stays
     // sharp however far away the surface is.
     float at(Vec2 uv) const;
-    bool covers(Vec2 uv, float u) const override {
-        const float alpha = at(uv);
+    // glTF 2.0, 3.9.4: the vertex colour's alpha multiplies the material's before the cutoff.
+    bool covers(Vec2 uv, float vertexAlpha, float u) const override {
+        const float alpha = at(uv) * vertexAlpha;
         return cutoff_ ? alpha >= *cutoff_ : u < alpha;
     }
-    // Covered everywhere: a constant that every ray meets.
+    // Covered everywhere, by itself: a constant that every ray meets (unless a vertex alpha below
+    // 1 multiplies it).
     bool opaque() const { return !texture_ && (cutoff_ ? factor_ >= *cutoff_ : factor_ >= 1.0f); }
 
 private:

@@ -198,15 +198,27 @@ private:
     }
 
     // Which materials' primitives carry COLOR_0 (the last slot: primitives without a material): their
-    // base colour is multiplied by it (glTF 2.0, 3.7.2.1), a material's parameter built once.
+    // base colour is multiplied by it (glTF 2.0, 3.7.2.1), a material's parameter built once. And
+    // which MASK or BLEND materials' primitives give some vertex an alpha below 1: that alpha
+    // multiplies theirs, so they keep their cut-out even where their own alpha is 1.
     void findVertexColors() {
         coloredMaterial_.assign(model_.materials.size() + 1, false);
-        for (const tinygltf::Mesh& mesh : model_.meshes)
-            for (const tinygltf::Primitive& primitive : mesh.primitives)
-                if (primitive.attributes.count("COLOR_0") != 0) {
-                    const bool named = primitive.material >= 0 && std::size_t(primitive.material) < model_.materials.size();
-                    coloredMaterial_[named ? std::size_t(primitive.material) : model_.materials.size()] = true;
-                }
+        vertexAlphaMaterial_.assign(model_.materials.size(), false);
+        for (std::size_t m = 0; m < model_.meshes.size(); ++m)
+            for (std::size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
+                const tinygltf::Primitive& primitive = model_.meshes[m].primitives[p];
+                const auto color = primitive.attributes.find("COLOR_0");
+                if (color == primitive.attributes.end()) continue;
+                const bool named = primitive.material >= 0 && std::size_t(primitive.material) < model_.materials.size();
+                coloredMaterial_[named ? std::size_t(primitive.material) : model_.materials.size()] = true;
+                if (!named || vertexAlphaMaterial_[std::size_t(primitive.material)]) continue;
+                const std::string& mode = model_.materials[std::size_t(primitive.material)].alphaMode;
+                if (mode != "MASK" && mode != "BLEND") continue;
+                const std::string where = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) +
+                                          "].attributes.COLOR_0";
+                for (const Vec4& c : vertexColors(color->second, where))
+                    if (c.w < 1.0f) vertexAlphaMaterial_[std::size_t(primitive.material)] = true;
+            }
     }
 
     // `parameter`, times the vertex colour when the material's primitives have one.
@@ -297,7 +309,7 @@ private:
             // from both too, as Blender's mesh lights do in Cycles (Blender writes doubleSided
             // unless backface culling is on).
             material->twoSidedEmission = m.doubleSided;
-            material->alpha = alpha(m, float(base[3]), where, baseColorTexture);
+            material->alpha = alpha(m, float(base[3]), where, baseColorTexture, vertexAlphaMaterial_[i]);
             material->vertexColored = vertexColors;
             material->name = label(m.name, "material-" + std::to_string(i), taken, where);
             if (auto texture = open(m.normalTexture, TextureColorSpace::linear, where + ".normalTexture")) {
@@ -397,12 +409,14 @@ private:
     }
 
     // glTF 2.0, 3.9.4: alpha is baseColorTexture's alpha (1 without an alpha channel) times
-    // baseColorFactor's. MASK: the surface is where alpha >= alphaCutoff (default 0.5), cut out
-    // elsewhere; BLEND: alpha is the fraction of light it stops, as Cycles renders it (a
-    // stochastic cut-out, materials/alpha.h); OPAQUE (the default) ignores alpha. Null: opaque.
+    // baseColorFactor's, times COLOR_0's where a primitive has one (SceneGeometry::vertexAlphaAt).
+    // MASK: the surface is where alpha >= alphaCutoff (default 0.5), cut out elsewhere; BLEND:
+    // alpha is the fraction of light it stops, as Cycles renders it (a stochastic cut-out,
+    // materials/alpha.h); OPAQUE (the default) ignores alpha. Null: opaque. vertexAlpha: some
+    // vertex of the material's primitives has an alpha below 1.
     template <class BaseColorTexture>
     std::shared_ptr<const Alpha> alpha(const tinygltf::Material& m, float factor, const std::string& where,
-                                       const BaseColorTexture& baseColorTexture) {
+                                       const BaseColorTexture& baseColorTexture, bool vertexAlpha) {
         if (m.alphaMode == "OPAQUE" || m.alphaMode.empty()) return nullptr;
         if (m.alphaMode != "MASK" && m.alphaMode != "BLEND")
             fail(where + ".alphaMode", "expected OPAQUE, MASK or BLEND, got \"" + printableName(m.alphaMode) + "\"");
@@ -414,7 +428,7 @@ private:
             alpha = std::make_shared<const Alpha>(texture->first, factor, cutoff, texture->second);
         else
             alpha = std::make_shared<const Alpha>(factor, cutoff);
-        return alpha->opaque() ? nullptr : alpha;
+        return alpha->opaque() && !vertexAlpha ? nullptr : alpha;
     }
 
     // ---- textures
@@ -828,18 +842,18 @@ private:
             [](const std::array<float, 2>&) { return std::string(" is not a pair of numbers "); });
     }
 
-    // COLOR_0: linear RGB or RGBA (its alpha not read), of FLOAT or of normalized UNSIGNED_BYTE or
+    // COLOR_0: linear RGB or RGBA (alpha 1 for RGB), of FLOAT or of normalized UNSIGNED_BYTE or
     // UNSIGNED_SHORT, each from 0 to 1 (glTF 2.0, 3.7.2.1).
-    std::vector<Rgb> vertexColors(int index, const std::string& where) const {
+    std::vector<Vec4> vertexColors(int index, const std::string& where) const {
         const bool rgba = index >= 0 && std::size_t(index) < model_.accessors.size() &&
                           model_.accessors[std::size_t(index)].type == TINYGLTF_TYPE_VEC4;
         const View v = view(index, rgba ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, where);
         const std::string at = where + ": accessor " + std::to_string(index);
         const bool normalized = model_.accessors[std::size_t(index)].normalized;
-        std::vector<Rgb> out(v.count);
+        std::vector<Vec4> out(v.count, Vec4(1.0f));
         for (std::size_t i = 0; i < v.count; ++i) {
             const unsigned char* p = v.data + i * v.stride;
-            for (int c = 0; c < 3; ++c) {
+            for (int c = 0; c < (rgba ? 4 : 3); ++c) {
                 float x = 0.0f;
                 if (v.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
                     std::memcpy(&x, p + 4 * c, sizeof x);
@@ -945,7 +959,7 @@ private:
                 tangentsOf = perVertex(primitive, "TANGENT", count, at, "tangents",
                                        [&](int i, const std::string& w) { return tangents(i, w); });
             }
-            const std::vector<Rgb> colors = perVertex(primitive, "COLOR_0", count, at, "colours",
+            const std::vector<Vec4> colors = perVertex(primitive, "COLOR_0", count, at, "colours",
                                                       [&](int i, const std::string& w) { return vertexColors(i, w); });
             std::vector<std::uint32_t> order;
             if (primitive.indices >= 0) {
@@ -998,7 +1012,9 @@ private:
                 // Colours for every triangle once any has them, white for the others.
                 if (!colors.empty() && out_.colors.size() + 1 < out_.triangles.size())
                     out_.colors.resize(out_.triangles.size() - 1);
-                if (!colors.empty()) out_.colors.push_back({colors[i], colors[j], colors[k]});
+                if (!colors.empty())
+                    out_.colors.push_back({Rgb(colors[i]), Rgb(colors[j]), Rgb(colors[k]),
+                                           Vec3(colors[i].w, colors[j].w, colors[k].w)});
                 else if (!out_.colors.empty()) out_.colors.push_back({});
             };
             if (mode == TINYGLTF_MODE_TRIANGLES) {
@@ -1099,6 +1115,7 @@ private:
     static constexpr int kMaxUvSet = 31;  // far above any exporter's; keeps the attribute's name short
     std::vector<int> uvSetOfMaterial_;
     std::vector<bool> coloredMaterial_;  // per material (and, last, none): some primitive has COLOR_0
+    std::vector<bool> vertexAlphaMaterial_;  // per material: MASK or BLEND, and some COLOR_0 alpha is below 1
     int uvSet_ = kNoUvSet;
 };
 

@@ -80,14 +80,14 @@ double litFraction(Scene scene, const std::string& integrator, int spp = 16, int
 // Stripes along u, as stripes-rgba.png makes them at cutoff 0.5: covered where fract(u) < 0.5.
 class Stripes final : public SurfaceCoverage {
 public:
-    bool covers(Vec2 uv, float) const override { return uv.x - std::floor(uv.x) < 0.5f; }
+    bool covers(Vec2 uv, float, float) const override { return uv.x - std::floor(uv.x) < 0.5f; }
 };
 
 // Stops the fraction `alpha` of rays, by their own number.
 class Fraction final : public SurfaceCoverage {
 public:
     explicit Fraction(float alpha) : alpha_(alpha) {}
-    bool covers(Vec2, float u) const override { return u < alpha_; }
+    bool covers(Vec2, float, float u) const override { return u < alpha_; }
 
 private:
     float alpha_;

@@ -288,6 +288,80 @@ TEST_CASE("a glTF mesh's COLOR_0 multiplies its base colour: the white floor tim
     }
 }
 
+// glTF 2.0, 3.9.4: COLOR_0's alpha multiplies a MASK or BLEND material's. make_vertex_colors.py's
+// floor of alpha 1 with corner alphas 0, 0, 1 (a, b, c), seen from above under a light straight
+// down, black beyond: alpha is c's barycentric weight, (8 - z) / 16 on the floor, 0.5 along z = 0
+// through the image's middle row. MASK: at pixel centres (the rasteriser) the floor is the white
+// floor's where alpha is above the cutoff 0.5 and black below. BLEND: each ray meets it with
+// probability alpha, so each band of rows, over 16 samples per pixel (ray casting), holds that
+// fraction of the white floor's light.
+TEST_CASE("glTF's COLOR_0 alpha multiplies a MASK or BLEND material's: cut at the cutoff where it falls below, and blended in proportion") {
+    std::ifstream in(kData / "vertex-colors.toml");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto sceneOf = [&](const std::string& file) {
+        std::string changed = text;
+        changed.replace(changed.rfind("FILE"), 4, file);
+        return loadSceneFromText(changed, kData / "vertex-colors.toml");
+    };
+    // The rasteriser at pixel centres; ray casting for 16 samples a pixel.
+    const auto render = [](const Scene& scene, int spp) {
+        RenderOptions options;
+        options.integrator = spp == 1 ? "raster" : "raycast";
+        options.samplesPerPixel = spp;
+        return Renderer(scene, AovSet(classesSet()), options).render().film;
+    };
+    const Scene whiteScene = sceneOf("vertex-colors-white.gltf");
+    const Camera camera(whiteScene.camera);
+    // Alpha at the point a pixel's centre sees: c's weight, c = (0, -8) and the edge ab at z = 8.
+    const auto alphaAt = [&](int x, int y) {
+        const Ray ray = camera.generateRay(float(x) + 0.5f, float(y) + 0.5f);
+        return (8.0 - double(ray.at(-ray.origin.y / ray.direction.y).z)) / 16.0;
+    };
+
+    SUBCASE("MASK: the floor where alpha >= 0.5, nothing where it is below") {
+        const Film white = render(whiteScene, 1), mask = render(sceneOf("vertex-alpha-mask.gltf"), 1);
+        int kept = 0, cut = 0;
+        for (int y = 0; y < white.height(); ++y)
+            for (int x = 0; x < white.width(); ++x) {
+                const double alpha = alphaAt(x, y);
+                if (!(white.at(0, x, y).g > 0.0f)) continue;  // beyond the triangle
+                if (std::fabs(alpha - 0.5) < 0.01) continue;  // at the cutoff: round-off decides
+                CAPTURE(alpha);
+                if (alpha > 0.5) {
+                    CHECK(mask.at(0, x, y).g == doctest::Approx(white.at(0, x, y).g).epsilon(1e-6));
+                    ++kept;
+                } else {
+                    CHECK(mask.at(0, x, y).g == 0.0f);
+                    ++cut;
+                }
+            }
+        CHECK(kept > 500);
+        CHECK(cut > 500);
+    }
+    SUBCASE("BLEND: each band of rows keeps its mean alpha of the light") {
+        const Film white = render(whiteScene, 16), blend = render(sceneOf("vertex-alpha-blend.gltf"), 16);
+        constexpr int kBand = 8;
+        for (int y0 = 0; y0 < white.height(); y0 += kBand) {
+            double kept = 0.0, all = 0.0, alpha = 0.0;
+            int pixels = 0;
+            for (int y = y0; y < std::min(y0 + kBand, white.height()); ++y)
+                for (int x = 0; x < white.width(); ++x) {
+                    if (!(white.at(0, x, y).g > 0.0f)) continue;  // beyond the triangle
+                    kept += blend.at(0, x, y).g;
+                    all += white.at(0, x, y).g;
+                    alpha += alphaAt(x, y);
+                    ++pixels;
+                }
+            const double expected = alpha / pixels, measured = kept / all;
+            CAPTURE(y0);
+            CAPTURE(expected);
+            CAPTURE(measured);
+            // 16 x 384 rays a band, each kept with probability alpha: a standard deviation under 0.007.
+            CHECK(std::fabs(measured - expected) < 0.03);
+        }
+    }
+}
+
 TEST_CASE("[[gltf]] lighting: a sun's lux read as W/m^2 by 683 (standard), and unchanged by unitless and raw") {
     const test::TempFolder temp("lightpath-gltf-sun");
     std::filesystem::copy_file(kData / "directional.gltf", temp.path() / "directional.gltf");

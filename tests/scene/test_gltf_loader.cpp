@@ -264,7 +264,7 @@ TEST_CASE("a glTF material's alphaMode and alphaCutoff become its alpha; a bad o
     CHECK(floorAlpha(loadScene(variant("blend.gltf", "\"alphaMode\": \"BLEND\""))) == nullptr);
     const auto all = floorAlpha(loadScene(variant("high.gltf", "\"alphaMode\": \"MASK\", \"alphaCutoff\": 1.5")));
     REQUIRE(all != nullptr);
-    CHECK_FALSE(all->covers({0.3f, 0.6f}, 0.0f));
+    CHECK_FALSE(all->covers({0.3f, 0.6f}, 1.0f, 0.0f));
     CHECK(floorAlpha(loadScene(variant("opaque.gltf", "\"alphaMode\": \"OPAQUE\", \"alphaCutoff\": 1.5"))) == nullptr);
     const fs::path clip = variant("clip.gltf", "\"alphaMode\": \"CLIP\"");
     CHECK(errorOf(clip) == clip.string() + ": materials[0].alphaMode: expected OPAQUE, MASK or BLEND, got \"CLIP\"");
