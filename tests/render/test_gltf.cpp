@@ -210,19 +210,21 @@ TEST_CASE("a Blender scene's cut-outs (Alpha Clip, Alpha Blend) render as Cycles
     }
 }
 
+// vertex-colors.toml with the glTF `file` of make_vertex_colors.py in it.
+Scene vertexColorScene(const std::string& file) {
+    std::ifstream in(kData / "vertex-colors.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.rfind("FILE"), 4, file);
+    return loadSceneFromText(text, kData / "vertex-colors.toml");
+}
+
 // glTF 2.0, 3.7.2.1: COLOR_0 multiplies the base colour. A floor triangle of base colour 1 and
 // F0 0 (a Lambertian base alone) under a light straight down, seen from above by the rasteriser
 // (pixel centres): each pixel is the white floor's times the corners' colours interpolated at the
 // point that pixel's centre sees, barycentric weights worked here from the corners. The path
 // tracer, bdpt and radiosity agree on the coloured floor's mean (each reads the colour).
 TEST_CASE("a glTF mesh's COLOR_0 multiplies its base colour: the white floor times the corners' colours, interpolated") {
-    std::ifstream in(kData / "vertex-colors.toml");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto sceneOf = [&](const std::string& file) {
-        std::string changed = text;
-        changed.replace(changed.rfind("FILE"), 4, file);
-        return loadSceneFromText(changed, kData / "vertex-colors.toml");
-    };
+    const auto sceneOf = vertexColorScene;
     const auto render = [](const Scene& scene, const char* integrator, int spp) {
         RenderOptions options;
         options.integrator = integrator;
@@ -296,13 +298,7 @@ TEST_CASE("a glTF mesh's COLOR_0 multiplies its base colour: the white floor tim
 // probability alpha, so each band of rows, over 16 samples per pixel (ray casting), holds that
 // fraction of the white floor's light.
 TEST_CASE("glTF's COLOR_0 alpha multiplies a MASK or BLEND material's: cut at the cutoff where it falls below, and blended in proportion") {
-    std::ifstream in(kData / "vertex-colors.toml");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto sceneOf = [&](const std::string& file) {
-        std::string changed = text;
-        changed.replace(changed.rfind("FILE"), 4, file);
-        return loadSceneFromText(changed, kData / "vertex-colors.toml");
-    };
+    const auto sceneOf = vertexColorScene;
     // The rasteriser at pixel centres; ray casting for 16 samples a pixel.
     const auto render = [](const Scene& scene, int spp) {
         RenderOptions options;
